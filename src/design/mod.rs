@@ -1,0 +1,3 @@
+//! Design sources: programs that produce crease patterns.
+
+pub mod classic;

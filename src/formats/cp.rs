@@ -1,0 +1,14 @@
+//! PLACEHOLDER: written by the cp format work.
+
+use super::{Imported, ParseError};
+use crate::pattern::CreasePattern;
+
+/// Parses a file's text.
+pub fn read_str(_text: &str) -> Result<Imported, ParseError> {
+    todo!()
+}
+
+/// Renders a pattern.
+pub fn write_string(_pattern: &CreasePattern) -> String {
+    todo!()
+}

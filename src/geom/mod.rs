@@ -1,0 +1,9 @@
+//! Plane geometry shared by every stage: segments, polygons, angles.
+//!
+//! Vectors are glam's `DVec2`/`DVec3` (f64). Tolerances are explicit arguments.
+
+pub mod angle;
+pub mod polygon;
+pub mod segment;
+
+pub use glam::{DVec2, DVec3};
