@@ -140,7 +140,7 @@ fn parse_coords(v: &Value, factor: f64, key: Key) -> Result<Vec<DVec3>, ParseErr
         let mut xyz = [0.0; 3];
         for (j, x) in comps.iter().enumerate() {
             let value = number(x, key, &[i, j])? * factor;
-            if !(value.abs() <= MAX_COORDINATE) {
+            if !value.is_finite() || value.abs() > MAX_COORDINATE {
                 return Err(key.err(
                     &[i, j],
                     format!("coordinate {value:e} is beyond the limit of ±{MAX_COORDINATE:e}"),

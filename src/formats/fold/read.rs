@@ -6,6 +6,7 @@ use serde_json::{Map, Value};
 use super::frames::{FRAMES_KEY, file_frames, is_file_level, resolve_frame};
 use super::raw::{FRAME_TEXT_KEYS, parse_frame};
 use super::values::strings;
+use super::write::is_our_folded_frame;
 use super::{CREATOR, SOURCE_CREATOR_KEY, shape};
 use crate::formats::{Imported, ParseError};
 use crate::pattern::{FoldedState, Metadata, PatternError};
@@ -61,6 +62,8 @@ fn json_error(e: &serde_json::Error) -> ParseError {
         .map_or(full.as_str(), |i| &full[..i]);
     let message = if message.contains("recursion limit") {
         "JSON nested too deeply (more than 128 levels of arrays and objects)".to_string()
+    } else if message.contains("number out of range") {
+        "invalid JSON: number out of range (beyond ±1.8e308)".to_string()
     } else if e.is_eof() {
         format!("the JSON text ends too early ({message}): the file is truncated")
     } else {
@@ -127,12 +130,38 @@ fn attach_folded_frame(root: &Map<String, Value>, imported: &mut Imported) {
         match folded_frame(&resolved, i, imported) {
             Ok(folded) => {
                 imported.folded = Some(folded);
+                take_written_frame(&mut imported.pattern.meta.file_extra, i);
                 return;
             }
             Err(why) => imported
                 .warnings
                 .push(format!("frame {i} (foldedForm) ignored: {why}")),
         }
+    }
+}
+
+/// Removes frame `i` from the kept `file_frames` when it has the shape the writer gives a
+/// folded state and no frame inherits from it (the writer adds it back from
+/// [`Imported::folded`], so read → write round trips neither lose nor duplicate it). Later
+/// frames' `frame_parent` ids are renumbered; an emptied `file_frames` is removed.
+fn take_written_frame(file_extra: &mut Map<String, Value>, i: usize) {
+    let Some(Value::Array(list)) = file_extra.get_mut(FRAMES_KEY) else {
+        return;
+    };
+    let is_parent = |f: &Value| f.get("frame_parent").and_then(Value::as_u64) == Some(i as u64);
+    if !list.get(i - 1).is_some_and(is_our_folded_frame) || list.iter().any(is_parent) {
+        return;
+    }
+    list.remove(i - 1);
+    for frame in list.iter_mut() {
+        if let Some(p) = frame.get_mut("frame_parent")
+            && let Some(n) = p.as_u64().filter(|&n| n > i as u64)
+        {
+            *p = Value::from(n - 1);
+        }
+    }
+    if list.is_empty() {
+        file_extra.shift_remove(FRAMES_KEY);
     }
 }
 

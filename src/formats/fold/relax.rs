@@ -50,7 +50,7 @@ pub(super) fn fit_lengths(points: &mut [DVec2], rods: &[Rod]) -> f64 {
             *p += *d;
         }
         let after = worst_error(points, rods);
-        if !(after < error) {
+        if after.is_nan() || after >= error {
             points.copy_from_slice(&before);
             break;
         }

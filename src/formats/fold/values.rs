@@ -102,13 +102,11 @@ pub(super) fn index(
 ) -> Result<u32, ParseError> {
     let i = integer(v, what, key, path)?;
     if i >= count as u64 {
-        return Err(key.err(
-            path,
-            format!(
-                "{what} {i} does not exist (there are {count} {what} ids, 0 to {})",
-                { count as i128 - 1 }
-            ),
-        ));
+        let range = match count {
+            0 => format!("there are no {what} ids here"),
+            n => format!("{what} ids run from 0 to {}", n - 1),
+        };
+        return Err(key.err(path, format!("{what} {i} does not exist ({range})")));
     }
     u32::try_from(i).map_err(|_| key.err(path, format!("{what} {i} exceeds the id limit")))
 }

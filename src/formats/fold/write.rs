@@ -63,7 +63,8 @@ fn write_file_keys(root: &mut Map<String, Value>, meta: &Metadata) {
     }
 }
 
-/// The key frame: metadata, classes, unit, geometry, derived keys, then the frame extras.
+/// The key frame: metadata, classes, unit, geometry, derived keys, then the frame extras in
+/// their order.
 fn write_frame(root: &mut Map<String, Value>, cp: &CreasePattern) {
     let meta = &cp.meta;
     let mut frame = Map::new();
@@ -78,11 +79,6 @@ fn write_frame(root: &mut Map<String, Value>, cp: &CreasePattern) {
     if !meta.frame_extra.contains_key("frame_classes") {
         frame.insert("frame_classes".into(), Value::from(vec!["creasePattern"]));
     }
-    let is_frame_meta = |k: &str| k.starts_with("frame_");
-    extend_new(
-        &mut frame,
-        meta.frame_extra.iter().filter(|(k, _)| is_frame_meta(k)),
-    );
     frame.insert("frame_unit".into(), Value::from(unit_name(cp.units)));
     let coords = cp
         .vertices
@@ -92,10 +88,7 @@ fn write_frame(root: &mut Map<String, Value>, cp: &CreasePattern) {
     write_edges(&mut frame, &cp.edges);
     write_faces(&mut frame, cp.faces.as_deref(), &cp.face_orders);
     write_derived(&mut frame, cp);
-    extend_new(
-        &mut frame,
-        meta.frame_extra.iter().filter(|(k, _)| !is_frame_meta(k)),
-    );
+    extend_new(&mut frame, meta.frame_extra.iter());
     extend_new(root, frame.iter());
 }
 
@@ -206,7 +199,7 @@ fn add_folded_frame(root: &mut Map<String, Value>, cp: &CreasePattern, folded: &
 }
 
 /// A frame of the shape [`write_string`] gives a folded state.
-fn is_our_folded_frame(v: &Value) -> bool {
+pub(super) fn is_our_folded_frame(v: &Value) -> bool {
     v.get("frame_parent") == Some(&Value::from(0))
         && v.get("frame_inherit") == Some(&Value::Bool(true))
         && strings(v.get("frame_classes")).contains(&"foldedForm")
