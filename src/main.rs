@@ -1,1 +1,9 @@
-fn main() {}
+//! The `foldcam` command: a thin front end over the library (see `cli/`).
+
+mod cli;
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    cli::run()
+}
