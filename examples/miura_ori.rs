@@ -13,7 +13,12 @@ fn main() -> ExitCode {
     let out = std::env::args_os()
         .nth(1)
         .map_or_else(|| PathBuf::from("miura_ori.fold"), PathBuf::from);
-    let pattern = match MiuraOri { columns: 12, rows: 10, ..MiuraOri::default() }.build() {
+    let params = MiuraOri {
+        columns: 12,
+        rows: 10,
+        ..MiuraOri::default()
+    };
+    let pattern = match params.build() {
         Ok(p) => p,
         Err(e) => {
             eprintln!("miura_ori: {e}");

@@ -13,7 +13,11 @@ fn main() -> ExitCode {
     let out = std::env::args_os()
         .nth(1)
         .map_or_else(|| PathBuf::from("square_twist.fold"), PathBuf::from);
-    let pattern = match SquareTwist { twist_deg: 30.0, ..SquareTwist::default() }.build() {
+    let params = SquareTwist {
+        twist_deg: 30.0,
+        ..SquareTwist::default()
+    };
+    let pattern = match params.build() {
         Ok(p) => p,
         Err(e) => {
             eprintln!("square_twist: {e}");

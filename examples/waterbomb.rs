@@ -13,7 +13,12 @@ fn main() -> ExitCode {
     let out = std::env::args_os()
         .nth(1)
         .map_or_else(|| PathBuf::from("waterbomb.fold"), PathBuf::from);
-    let pattern = match Waterbomb { columns: 6, rows: 6, size: 25.0 }.build() {
+    let params = Waterbomb {
+        columns: 6,
+        rows: 6,
+        size: 25.0,
+    };
+    let pattern = match params.build() {
         Ok(p) => p,
         Err(e) => {
             eprintln!("waterbomb: {e}");

@@ -13,7 +13,8 @@ fn main() -> ExitCode {
     let out = std::env::args_os()
         .nth(1)
         .map_or_else(|| PathBuf::from("yoshimura.fold"), PathBuf::from);
-    let pattern = match Yoshimura::default().build() {
+    let params = Yoshimura::default();
+    let pattern = match params.build() {
         Ok(p) => p,
         Err(e) => {
             eprintln!("yoshimura: {e}");
