@@ -12,7 +12,9 @@ fn foldcam(args: &[&str], dir: &Path) -> Output {
 }
 
 fn example(name: &str) -> String {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/patterns").join(name);
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/patterns")
+        .join(name);
     p.to_string_lossy().into_owned()
 }
 
@@ -40,9 +42,17 @@ fn convert_round_trips_through_every_format() {
         assert!(o.status.success(), "convert to {ext}: {}", text(&o.stderr));
         let back = format!("back-{ext}.fold");
         let o = foldcam(&["convert", &out, &back], dir.path());
-        assert!(o.status.success(), "convert {ext} back: {}", text(&o.stderr));
-        let a = foldcam::formats::load(Path::new(&src)).expect("source loads").pattern;
-        let b = foldcam::formats::load(&dir.path().join(&back)).expect("result loads").pattern;
+        assert!(
+            o.status.success(),
+            "convert {ext} back: {}",
+            text(&o.stderr)
+        );
+        let a = foldcam::formats::load(Path::new(&src))
+            .expect("source loads")
+            .pattern;
+        let b = foldcam::formats::load(&dir.path().join(&back))
+            .expect("result loads")
+            .pattern;
         assert_eq!(a.edges.len(), b.edges.len(), "edge count through {ext}");
         let folds = |p: &foldcam::pattern::CreasePattern| {
             p.edges.iter().filter(|e| e.assignment.is_fold()).count()
@@ -60,7 +70,10 @@ fn check_exit_codes_follow_the_verdict() {
     assert_eq!(bad.status.code(), Some(1));
     let out = text(&bad.stdout).to_lowercase();
     assert!(out.contains("kawasaki") && out.contains("maekawa"), "{out}");
-    let json = foldcam(&["check", "--json", &example("broken-vertex.fold")], dir.path());
+    let json = foldcam(
+        &["check", "--json", &example("broken-vertex.fold")],
+        dir.path(),
+    );
     assert_eq!(json.status.code(), Some(1));
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).expect("valid JSON");
     let kinds: Vec<&str> = v["findings"]
@@ -69,16 +82,35 @@ fn check_exit_codes_follow_the_verdict() {
         .iter()
         .filter_map(|f| f["kind"].as_str())
         .collect();
-    assert!(kinds.contains(&"kawasaki") && kinds.contains(&"maekawa"), "{kinds:?}");
+    assert!(
+        kinds.contains(&"kawasaki") && kinds.contains(&"maekawa"),
+        "{kinds:?}"
+    );
 }
 
 #[test]
 fn vertex_angle_limit_fails_the_check() {
     let dir = tempfile::tempdir().expect("temp dir");
     // flat-vertex.fold's smallest sector is 60°.
-    let ok = foldcam(&["check", "--min-vertex-angle", "50", &example("flat-vertex.fold")], dir.path());
+    let ok = foldcam(
+        &[
+            "check",
+            "--min-vertex-angle",
+            "50",
+            &example("flat-vertex.fold"),
+        ],
+        dir.path(),
+    );
     assert_eq!(ok.status.code(), Some(0), "{}", text(&ok.stdout));
-    let tight = foldcam(&["check", "--min-vertex-angle", "70", &example("flat-vertex.fold")], dir.path());
+    let tight = foldcam(
+        &[
+            "check",
+            "--min-vertex-angle",
+            "70",
+            &example("flat-vertex.fold"),
+        ],
+        dir.path(),
+    );
     assert_eq!(tight.status.code(), Some(1), "{}", text(&tight.stdout));
 }
 
@@ -86,7 +118,15 @@ fn vertex_angle_limit_fails_the_check() {
 fn preview_writes_a_png_of_the_requested_width() {
     let dir = tempfile::tempdir().expect("temp dir");
     let o = foldcam(
-        &["preview", &example("broken-vertex.fold"), "-o", "p.png", "--width", "321", "--check"],
+        &[
+            "preview",
+            &example("broken-vertex.fold"),
+            "-o",
+            "p.png",
+            "--width",
+            "321",
+            "--check",
+        ],
         dir.path(),
     );
     assert!(o.status.success(), "{}", text(&o.stderr));
@@ -110,9 +150,20 @@ fn generated_patterns_pass_their_check() {
 fn demo_runs_end_to_end() {
     let dir = tempfile::tempdir().expect("temp dir");
     let o = foldcam(&["demo", "--out", "d", "--width", "300"], dir.path());
-    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    assert!(
+        o.status.success(),
+        "{}\n{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
     let files = listing(&dir.path().join("d"));
-    for stem in ["miura-ori", "square-twist", "waterbomb", "yoshimura", "broken-vertex"] {
+    for stem in [
+        "miura-ori",
+        "square-twist",
+        "waterbomb",
+        "yoshimura",
+        "broken-vertex",
+    ] {
         for ext in ["fold", "svg", "cp", "png"] {
             let name = format!("{stem}.{ext}");
             assert!(files.contains(&name), "{name} missing from {files:?}");
@@ -148,10 +199,22 @@ fn malformed_inputs_fail_cleanly_without_output() {
         std::fs::write(dir.path().join(name), content).expect("write input");
         let o = foldcam(&["convert", name, "out.fold"], dir.path());
         let err = text(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{name}: exit {:?}, stderr {err}", o.status.code());
-        assert!(err.contains(name), "{name}: message does not name the file: {err}");
+        assert_eq!(
+            o.status.code(),
+            Some(2),
+            "{name}: exit {:?}, stderr {err}",
+            o.status.code()
+        );
+        assert!(
+            err.contains(name),
+            "{name}: message does not name the file: {err}"
+        );
         assert!(!err.contains("panicked"), "{name}: panicked: {err}");
-        assert_eq!(listing(dir.path()), vec![name.to_string()], "{name}: output left behind");
+        assert_eq!(
+            listing(dir.path()),
+            vec![name.to_string()],
+            "{name}: output left behind"
+        );
     }
 }
 
