@@ -176,4 +176,50 @@ mod tests {
         assert_eq!(rep, vec![0, 1, 0, 0]);
         assert_eq!(merged, 2);
     }
+
+    /// Brute force: the same grouping from all pairs within `tol`.
+    fn brute(points: &[DVec2], tol: f64) -> Vec<u32> {
+        let mut parent: Vec<u32> = (0..points.len() as u32).collect();
+        for i in 0..points.len() {
+            for j in 0..i {
+                if points[i].distance(points[j]) <= tol {
+                    union(&mut parent, i as u32, j as u32);
+                }
+            }
+        }
+        (0..points.len() as u32)
+            .map(|i| find(&mut parent, i))
+            .collect()
+    }
+
+    #[test]
+    fn agrees_with_brute_force_across_cell_borders() {
+        // Points jittered around lattice positions that are multiples of the cell size, so
+        // many pairs straddle borders; a fixed LCG keeps the case reproducible.
+        let tol = 0.01;
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rand = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut pts = Vec::new();
+        for _ in 0..600 {
+            let base = DVec2::new((rand() * 6.0).floor(), (rand() * 6.0).floor()) * 0.64;
+            let jitter = DVec2::new(rand() - 0.5, rand() - 0.5) * 0.03;
+            pts.push(base + jitter);
+        }
+        let (rep, merged) = merge_close(&pts, tol);
+        let want = brute(&pts, tol);
+        assert_eq!(rep, want);
+        assert_eq!(
+            merged,
+            rep.iter()
+                .enumerate()
+                .filter(|(i, r)| **r != *i as u32)
+                .count()
+        );
+        assert!(merged > 0 && merged < pts.len() - 36);
+    }
 }
