@@ -140,9 +140,9 @@ fn parse_line(line: &str) -> Result<Option<(Assignment, DVec2, DVec2)>, String> 
             fields.len()
         ));
     };
-    let line_type: i64 = kind
-        .parse()
-        .map_err(|_| format!("line type {kind:?} is not an integer (1 cut, 2 mountain, 3 valley)"))?;
+    let line_type: i64 = kind.parse().map_err(|_| {
+        format!("line type {kind:?} is not an integer (1 cut, 2 mountain, 3 valley)")
+    })?;
     let a = DVec2::new(coordinate("x0", x0)?, -coordinate("y0", y0)?);
     let b = DVec2::new(coordinate("x1", x1)?, -coordinate("y1", y1)?);
     Ok(Some((assignment_of(line_type), a, b)))
@@ -166,7 +166,11 @@ fn coordinate(name: &str, field: &str) -> Result<f64, String> {
 
 fn zero_length_warning(lines: &[usize]) -> String {
     let shown: Vec<String> = lines.iter().take(5).map(usize::to_string).collect();
-    let more = if lines.len() > shown.len() { ", …" } else { "" };
+    let more = if lines.len() > shown.len() {
+        ", …"
+    } else {
+        ""
+    };
     format!(
         "{} zero-length line(s) were dropped (line {}{more})",
         lines.len(),

@@ -136,12 +136,7 @@ impl Collector {
     }
 
     /// Adds the segments of one path.
-    fn segments(
-        &mut self,
-        path: &usvg::Path,
-        t: DAffine2,
-        style: Style,
-    ) -> Result<(), String> {
+    fn segments(&mut self, path: &usvg::Path, t: DAffine2, style: Style) -> Result<(), String> {
         use usvg::tiny_skia_path::PathSegment;
         let map = |p: usvg::tiny_skia_path::Point| {
             t.transform_point2(DVec2::new(f64::from(p.x), f64::from(p.y)))
@@ -256,7 +251,11 @@ fn off_palette_warning((colour, off): (&Rgb, &OffPalette)) -> String {
         String::from("no id")
     } else {
         let named: Vec<String> = off.ids.iter().map(|id| format!("\"{id}\"")).collect();
-        let more = if off.elements > off.ids.len() { ", …" } else { "" };
+        let more = if off.elements > off.ids.len() {
+            ", …"
+        } else {
+            ""
+        };
         format!("id {}{more}", named.join(", "))
     };
     format!(

@@ -70,7 +70,12 @@ mod tests {
 
     #[test]
     fn a_straight_quad_is_one_chord() {
-        let pts = quad(DVec2::ZERO, DVec2::new(1.0, 1.0), DVec2::new(2.0, 2.0), 0.01);
+        let pts = quad(
+            DVec2::ZERO,
+            DVec2::new(1.0, 1.0),
+            DVec2::new(2.0, 2.0),
+            0.01,
+        );
         assert_eq!(pts, vec![DVec2::new(2.0, 2.0)]);
     }
 

@@ -14,7 +14,8 @@
 //!   warning.
 //!
 //! The result is in millimetres with y up (see [`frame`] for the units and the origin), then
-//! planarised so shared endpoints merge and crossings split.
+//! planarised so shared endpoints merge and crossings split, with a tolerance of
+//! [`MERGE_TOLERANCE`] of the drawing's size (drawing programs round coordinates).
 //!
 //! **Writing** ([`write_string`]) produces what Origami Simulator opens: one `<line>` per edge
 //! in the exact palette colours, `stroke-opacity` = |fold angle| / 180 on mountain and valley
@@ -36,5 +37,5 @@ mod read;
 pub mod write;
 
 pub use collect::{CURVE_TOLERANCE_MM, MAX_SEGMENTS};
-pub use read::read_str;
+pub use read::{MERGE_TOLERANCE, merge_tolerance, read_str};
 pub use write::write_string;

@@ -140,12 +140,18 @@ mod tests {
             };
             let o = opacity_of(assignment, Some(a));
             let back = fold_angle(assignment, o).unwrap_or(f64::NAN);
-            assert!((back.abs() - f64::abs(a)).abs() < 1e-12, "{a} -> {o} -> {back}");
+            assert!(
+                (back.abs() - f64::abs(a)).abs() < 1e-12,
+                "{a} -> {o} -> {back}"
+            );
         }
         assert_eq!(opacity_of(Assignment::Mountain, None), 1.0);
         assert_eq!(opacity_of(Assignment::Flat, Some(0.0)), 1.0);
         assert_eq!(fold_angle(Assignment::Flat, 0.3), Some(0.0));
         assert_eq!(fold_angle(Assignment::Boundary, 1.0), None);
-        assert_eq!(colour_of(Assignment::Join), colour_of(Assignment::Unassigned));
+        assert_eq!(
+            colour_of(Assignment::Join),
+            colour_of(Assignment::Unassigned)
+        );
     }
 }

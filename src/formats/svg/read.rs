@@ -6,7 +6,16 @@ use usvg::roxmltree;
 use super::collect::Collector;
 use super::frame;
 use crate::formats::{Imported, ParseError};
-use crate::pattern::{PlanarizeOptions, planarize};
+use crate::pattern::{CreasePattern, PlanarizeOptions, planarize};
+
+/// Merge tolerance relative to the drawing's size (1e-5: 2 µm on a 200 mm sheet).
+///
+/// Larger than planarisation's default on purpose: drawing programs print SVG coordinates
+/// with two to four decimals of a pixel, so endpoints meant to coincide differ by up to
+/// 1e-3 px, and usvg holds coordinates in `f32` (relative error 6e-8 of their magnitude,
+/// before transforms). Both would leave endpoints unmerged, and slivers of a few µm, at
+/// planarisation's default of 1e-7.
+pub const MERGE_TOLERANCE: f64 = 1e-5;
 
 /// The SVG namespace.
 const SVG_NS: &str = "http://www.w3.org/2000/svg";
@@ -26,7 +35,10 @@ const SVG_NS: &str = "http://www.w3.org/2000/svg";
 pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
-        return Err(ParseError::new("file", "the file is empty, not an SVG document"));
+        return Err(ParseError::new(
+            "file",
+            "the file is empty, not an SVG document",
+        ));
     }
     let options = roxmltree::ParsingOptions {
         allow_dtd: true,
@@ -47,10 +59,11 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     let mut pattern = collector.pattern;
     pattern.meta.title = child_text(doc.root_element(), "title");
     pattern.meta.description = child_text(doc.root_element(), "desc");
+    let tolerance = merge_tolerance(&pattern);
     let report = planarize(
         &mut pattern,
         &PlanarizeOptions {
-            tolerance: None,
+            tolerance: Some(tolerance),
             faces: false,
         },
     );
@@ -68,6 +81,17 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
         folded: None,
         warnings,
     })
+}
+
+/// Distance below which endpoints merge (and a point splits a line it touches), in
+/// millimetres: [`MERGE_TOLERANCE`] of the larger of the drawing's diagonal and its largest
+/// coordinate magnitude.
+pub fn merge_tolerance(pattern: &CreasePattern) -> f64 {
+    let Some((lo, hi)) = pattern.bounds() else {
+        return 1e-12;
+    };
+    let magnitude = lo.abs().max(hi.abs()).max_element();
+    (lo.distance(hi).max(magnitude) * MERGE_TOLERANCE).max(1e-12)
 }
 
 /// True for an element of this local name in the SVG namespace (or in none).

@@ -78,8 +78,16 @@ impl Frame {
         let size = (max - min).max(DVec2::splat(extent * 1e-3));
         let center = (min + max) / 2.0;
         let min = DVec2::new(
-            if max.x > min.x { min.x } else { center.x - size.x / 2.0 },
-            if max.y > min.y { min.y } else { center.y - size.y / 2.0 },
+            if max.x > min.x {
+                min.x
+            } else {
+                center.x - size.x / 2.0
+            },
+            if max.y > min.y {
+                min.y
+            } else {
+                center.y - size.y / 2.0
+            },
         );
         let magnitude = extent.log10().floor() as i64;
         let decimals = (10 - magnitude).clamp(0, 20) as usize;
