@@ -373,20 +373,16 @@ fn curves_are_flattened_with_a_warning() {
 }
 
 #[test]
-fn unstroked_elements_are_ignored_with_a_warning() {
+fn unstroked_elements_and_text_are_ignored_with_a_warning() {
     let imported = read(
         "<rect x='0' y='0' width='10' height='10' fill='red'/>\
+         <text x='5' y='5' stroke='red'>label</text>\
          <line x1='0' y1='0' x2='10' y2='0' stroke='red'/>",
     );
     assert_eq!(imported.pattern.edges.len(), 1);
-    assert!(
-        imported
-            .warnings
-            .iter()
-            .any(|w| w.contains("without a stroke")),
-        "{:?}",
-        imported.warnings
-    );
+    let w = imported.warnings.join("\n");
+    assert!(w.contains("1 element(s) without a stroke"), "{w}");
+    assert!(w.contains("1 text element(s)"), "{w}");
 }
 
 #[test]
@@ -415,6 +411,13 @@ fn errors_name_the_problem() {
     )
     .expect_err("zero width");
     assert!(no_size.message.contains("size"), "{no_size}");
+
+    let mut deep = String::new();
+    (0..2000).for_each(|_| deep.push_str("<g>"));
+    deep.push_str("<line x1='0' y1='0' x2='5' y2='5' stroke='red'/>");
+    (0..2000).for_each(|_| deep.push_str("</g>"));
+    let too_deep = svg::read_str(&doc(&deep)).expect_err("nested too deeply");
+    assert!(too_deep.message.contains("nested"), "{too_deep}");
 
     let huge = svg::read_str(&doc(
         "<line x1='0' y1='0' x2='1e30' y2='0' stroke='red' id='far'/>",
@@ -465,12 +468,13 @@ fn written_svg_uses_the_palette_and_millimetres() {
         .find(|n| n.attribute("stroke") == Some("#ff0000"))
         .expect("one mountain");
     assert_eq!(mountain.attribute("stroke-opacity"), Some("0.5"));
-    let groups: Vec<_> = xml
-        .descendants()
-        .filter(|n| n.has_tag_name("g"))
-        .filter_map(|n| n.attribute("id"))
-        .collect();
-    assert_eq!(groups, vec!["boundary", "mountain"]);
+    // Origami Simulator reads only the root's children: no groups, lines sorted by kind.
+    assert!(lines.iter().all(|n| n.parent() == Some(root)));
+    let classes: Vec<_> = lines.iter().filter_map(|n| n.attribute("class")).collect();
+    assert_eq!(
+        classes,
+        vec!["boundary", "boundary", "boundary", "boundary", "mountain"]
+    );
     let title = xml.descendants().find(|n| n.has_tag_name("title"));
     assert_eq!(
         title.and_then(|t| t.text()),

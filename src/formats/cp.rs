@@ -22,7 +22,8 @@
 //! down, like SVG; the reader negates y to get the pattern's y-up frame without mirroring,
 //! and the writer negates it back. ORIPA's default sheet is 400 units wide, spanning
 //! −200..200 on both axes; the coordinates carry no physical unit, so patterns read are
-//! [`Units::Unitless`] (give them a size with `--size` or `--scale`). Numbers are written with
+//! [`Units::Unitless`] (give them a size with `--size` or `--scale`); a pattern in millimetres
+//! is written with its millimetre numbers. Numbers are written with
 //! the shortest decimal form that parses back to the same `f64`, so a round trip is exact.
 //!
 //! The reader refuses lines with the wrong number of fields, a non-integer type, a number it

@@ -17,9 +17,10 @@
 //! planarised so shared endpoints merge and crossings split, with a tolerance of
 //! [`MERGE_TOLERANCE`] of the drawing's size (drawing programs round coordinates).
 //!
-//! **Writing** ([`write_string`]) produces what Origami Simulator opens: one `<line>` per edge
-//! in the exact palette colours, `stroke-opacity` = |fold angle| / 180 on mountain and valley
-//! lines, sizes in millimetres. See [`write`] for the layout and number precision.
+//! **Writing** ([`write_string`]) produces what Origami Simulator opens: one `<line>` per edge,
+//! all direct children of the root (Origami Simulator ignores grouped elements), in the exact
+//! palette colours, `stroke-opacity` = |fold angle| / 180 on mountain and valley lines, sizes
+//! in millimetres. See [`write`](mod@write) for the layout and number precision.
 //!
 //! **Precision of a round trip.** The writer's numbers are exact to 5e-11 of the pattern's
 //! size, but usvg holds coordinates, transforms and opacities in `f32`: reading back gives

@@ -30,7 +30,7 @@ const SVG_NS: &str = "http://www.w3.org/2000/svg";
 /// # Errors
 /// Text that is not XML (naming the line and column), a root element other than `<svg>`, an
 /// SVG usvg refuses (no valid size, too many elements), coordinates beyond
-/// [`crate::pattern::MAX_COORDINATE`], more than [`super::collect::MAX_SEGMENTS`] segments, or
+/// [`crate::pattern::MAX_COORDINATE`], more than [`super::MAX_SEGMENTS`] segments, or
 /// no stroked line at all.
 pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -145,6 +145,11 @@ fn xml_error(e: roxmltree::Error) -> ParseError {
 
 fn usvg_error(e: usvg::Error) -> ParseError {
     match e {
+        usvg::Error::ParsingFailed(roxmltree::Error::NodesLimitReached) => ParseError::new(
+            "file",
+            "elements are nested more than 1024 levels deep (or `<use>` references loop), \
+             beyond what the SVG reader accepts",
+        ),
         usvg::Error::ParsingFailed(x) => xml_error(x),
         usvg::Error::InvalidSize => ParseError::new(
             "<svg>",

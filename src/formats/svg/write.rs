@@ -7,11 +7,13 @@
 //!   (user units, which readers take as CSS pixels).
 //! - y is negated (the pattern's y points up, SVG's down); the reader negates it back and
 //!   keeps the user-space origin, so coordinates survive a round trip.
-//! - one plain `<g id="mountain">` (etc.) per assignment present, carrying `fill="none"` and a
-//!   stroke width of 1/500 of the larger side for display. Every `<line>` carries its own
-//!   `stroke` (Origami Simulator reads colours and opacities from the line itself, not from
-//!   its group) and, for mountain and valley lines with a known fold angle below 180°,
-//!   `stroke-opacity` = |angle| / 180.
+//! - every `<line>` is a direct child of `<svg>`, because Origami Simulator reads only the
+//!   root's children (it asks users to "ungroup all"): lines come sorted by assignment, each
+//!   run after a comment naming it, each line with `class="mountain"` (etc.) so stylesheets
+//!   and scripts can still select a kind. Every line carries its own `stroke` (Origami
+//!   Simulator reads colours and opacities from the line itself) and, for mountain and valley
+//!   lines with a known fold angle below 180°, `stroke-opacity` = |angle| / 180. The root
+//!   carries `fill="none"` and a stroke width of 1/500 of the larger side, for display.
 //! - Join edges (`J`) have no palette colour and are written as unassigned (magenta).
 //!
 //! Numbers: coordinates are rounded to a step of 10^(⌊log10 E⌋ − 10), E the larger side of the
@@ -37,11 +39,13 @@ pub fn write_string(pattern: &CreasePattern) -> String {
     let _ = writeln!(
         out,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{w}{unit}\" \
-         height=\"{h}{unit}\" viewBox=\"{x} {y} {w} {h}\">",
+         height=\"{h}{unit}\" viewBox=\"{x} {y} {w} {h}\" fill=\"none\" \
+         stroke-width=\"{sw}\" stroke-linecap=\"round\">",
         w = frame.num(frame.size.x),
         h = frame.num(frame.size.y),
         x = frame.num(frame.min.x),
         y = frame.num(frame.min.y),
+        sw = frame.num(frame.size.max_element() / 500.0),
     );
     if let Some(title) = &pattern.meta.title {
         let _ = writeln!(out, "<title>{}</title>", escape(title));
@@ -50,7 +54,7 @@ pub fn write_string(pattern: &CreasePattern) -> String {
         let _ = writeln!(out, "<desc>{}</desc>", escape(desc));
     }
     for assignment in Assignment::ALL {
-        write_group(&mut out, pattern, &frame, assignment);
+        write_kind(&mut out, pattern, &frame, assignment);
     }
     out.push_str("</svg>\n");
     out
@@ -116,23 +120,23 @@ fn trim_number(mut s: String) -> String {
     s
 }
 
-fn write_group(out: &mut String, pattern: &CreasePattern, frame: &Frame, assignment: Assignment) {
-    let mut edges = pattern.edges.iter().filter(|e| e.assignment == assignment);
-    let Some(first) = edges.next() else {
+fn write_kind(out: &mut String, pattern: &CreasePattern, frame: &Frame, assignment: Assignment) {
+    let mut edges = pattern
+        .edges
+        .iter()
+        .filter(|e| e.assignment == assignment)
+        .peekable();
+    if edges.peek().is_none() {
         return;
-    };
+    }
     let colour = colour_of(assignment).hex();
-    let _ = writeln!(
-        out,
-        "<g id=\"{}\" fill=\"none\" stroke-width=\"{}\" stroke-linecap=\"round\">",
-        assignment.name(),
-        frame.num(frame.size.max_element() / 500.0)
-    );
-    for edge in std::iter::once(first).chain(edges) {
+    let name = assignment.name();
+    let _ = writeln!(out, "<!-- {name} -->");
+    for edge in edges {
         let [a, b] = edge.vertices.map(|v| pattern.position(v));
         let _ = write!(
             out,
-            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{colour}\"",
+            "<line class=\"{name}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{colour}\"",
             frame.num(a.x),
             frame.num(-a.y),
             frame.num(b.x),
@@ -148,7 +152,6 @@ fn write_group(out: &mut String, pattern: &CreasePattern, frame: &Frame, assignm
         }
         out.push_str("/>\n");
     }
-    out.push_str("</g>\n");
 }
 
 /// Escapes text for XML content and attribute values.
@@ -199,6 +202,13 @@ mod tests {
         let f = Frame::of(&cp);
         assert!(f.size.x > 0.0 && f.size.y == 50.0);
         assert!((f.min.x + f.size.x / 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn an_empty_pattern_is_still_an_svg() {
+        let text = write_string(&CreasePattern::new());
+        let doc = usvg::roxmltree::Document::parse(&text).expect("well-formed");
+        assert_eq!(doc.root_element().attribute("viewBox"), Some("0 -1 1 1"));
     }
 
     #[test]
