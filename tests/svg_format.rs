@@ -8,6 +8,11 @@ use foldcam::pattern::{Assignment, CreasePattern, Units};
 use glam::DVec2;
 use proptest::prelude::*;
 
+#[path = "svg_format/grid.rs"]
+mod grid;
+
+use grid::{build, grid_spec};
+
 /// Millimetres per CSS pixel.
 const MM_PER_PX: f64 = 25.4 / 96.0;
 
@@ -507,94 +512,6 @@ fn title_and_geometry_survive_a_round_trip() {
         .find(|e| e.assignment == Assignment::Mountain);
     let angle = m.and_then(|e| e.fold_angle).unwrap_or(f64::NAN);
     assert!((angle + 90.0).abs() < 2e-5, "{angle}");
-}
-
-/// A random planar pattern: a grid of `nx × ny` cells of random size, offset from the origin,
-/// with a random assignment and fold angle per grid edge and an optional diagonal per cell.
-#[derive(Debug, Clone)]
-struct GridSpec {
-    nx: usize,
-    ny: usize,
-    cell: DVec2,
-    origin: DVec2,
-    edges: Vec<(u8, Option<f64>)>,
-    diagonals: Vec<u8>,
-}
-
-const ROUND_TRIP_ASSIGNMENTS: [Assignment; 6] = [
-    Assignment::Boundary,
-    Assignment::Mountain,
-    Assignment::Valley,
-    Assignment::Flat,
-    Assignment::Unassigned,
-    Assignment::Cut,
-];
-
-fn grid_spec() -> impl Strategy<Value = GridSpec> {
-    (
-        1usize..5,
-        1usize..5,
-        0.5f64..200.0,
-        0.3f64..3.0,
-        -1000.0f64..1000.0,
-        -1000.0f64..1000.0,
-    )
-        .prop_flat_map(|(nx, ny, w, aspect, ox, oy)| {
-            let grid_edges = nx * (ny + 1) + ny * (nx + 1) + nx * ny;
-            let angle = prop_oneof![Just(None), (0.0f64..=180.0).prop_map(Some)];
-            (
-                proptest::collection::vec((0u8..6, angle), grid_edges),
-                proptest::collection::vec(0u8..3, nx * ny),
-            )
-                .prop_map(move |(edges, diagonals)| GridSpec {
-                    nx,
-                    ny,
-                    cell: DVec2::new(w, w * aspect),
-                    origin: DVec2::new(ox, oy),
-                    edges,
-                    diagonals,
-                })
-        })
-}
-
-fn build(spec: &GridSpec) -> CreasePattern {
-    let mut cp = CreasePattern::new();
-    let id = |i: usize, j: usize| foldcam::pattern::VertexId::new(j * (spec.nx + 1) + i);
-    for j in 0..=spec.ny {
-        for i in 0..=spec.nx {
-            cp.add_vertex(spec.origin + spec.cell * DVec2::new(i as f64, j as f64));
-        }
-    }
-    let mut pairs = Vec::new();
-    for j in 0..=spec.ny {
-        for i in 0..spec.nx {
-            pairs.push((id(i, j), id(i + 1, j)));
-        }
-    }
-    for i in 0..=spec.nx {
-        for j in 0..spec.ny {
-            pairs.push((id(i, j), id(i, j + 1)));
-        }
-    }
-    for (k, &d) in spec.diagonals.iter().enumerate() {
-        let (i, j) = (k % spec.nx, k / spec.nx);
-        match d {
-            1 => pairs.push((id(i, j), id(i + 1, j + 1))),
-            2 => pairs.push((id(i + 1, j), id(i, j + 1))),
-            _ => {}
-        }
-    }
-    for (&(a, b), &(kind, magnitude)) in pairs.iter().zip(&spec.edges) {
-        let assignment = ROUND_TRIP_ASSIGNMENTS[kind as usize];
-        let e = cp.add_edge(a, b, assignment);
-        cp.edges[e.index()].fold_angle = match assignment {
-            Assignment::Mountain => magnitude.map(|m| -m),
-            Assignment::Valley => magnitude,
-            Assignment::Flat => Some(0.0),
-            _ => None,
-        };
-    }
-    cp
 }
 
 /// The fold angle the SVG convention gives back for an edge.
