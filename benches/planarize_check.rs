@@ -1,9 +1,9 @@
 //! Planarising and checking a million-edge grid (issue 2's size target: under 1 s).
 //!
-//! Cases, all on a 707 × 707 flat-foldable square grid (1,000,912 edges):
+//! Cases, all on a 707 × 707 flat-foldable square grid (1,001,112 edges):
 //! - `planarize/clean`: the grid as a clean graph (shared vertices): detects that nothing needs
 //!   doing, which is the cost every import pays;
-//! - `planarize/segments`: the same grid drawn as 1,000,912 loose segments (two vertices each,
+//! - `planarize/segments`: the same grid drawn as 1,001,112 loose segments (two vertices each,
 //!   as an SVG or `.cp` import delivers it): every vertex merges;
 //! - `check`: Kawasaki, Maekawa, vertex angle and shortest edge over the clean grid;
 //! - `planarize_and_check/segments`: the whole `foldcam check` pipeline from loose segments.
