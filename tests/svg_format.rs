@@ -223,6 +223,26 @@ fn off_palette_colours_map_to_the_nearest_with_one_warning_each() {
 }
 
 #[test]
+fn many_off_palette_colours_share_one_warning_beyond_a_dozen() {
+    let body: String = (0..20)
+        .map(|i| {
+            format!(
+                "<line x1='0' y1='{i}' x2='10' y2='{i}' stroke='rgb({},0,0)'/>",
+                200 + i
+            )
+        })
+        .collect();
+    let imported = read(&body);
+    assert_eq!(imported.pattern.edges.len(), 20);
+    let w = &imported.warnings;
+    assert_eq!(w.len(), 13, "{w:?}");
+    assert!(
+        w[12].contains("8 more off-palette stroke colours on 8 element"),
+        "{w:?}"
+    );
+}
+
+#[test]
 fn opacity_sets_the_fold_angle() {
     let imported = read(
         "<line x1='0' y1='0' x2='10' y2='0' stroke='blue' stroke-opacity='0.25'/>\

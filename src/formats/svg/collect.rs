@@ -29,6 +29,9 @@ pub const MAX_SEGMENTS: usize = 10_000_000;
 /// At most this many element ids are named in one warning.
 const IDS_NAMED: usize = 3;
 
+/// At most this many off-palette colours get a warning of their own; the rest share one.
+const COLOURS_NAMED: usize = 12;
+
 /// One off-palette colour: how many elements used it and which ids.
 #[derive(Debug)]
 struct OffPalette {
@@ -218,7 +221,25 @@ impl Collector {
 
     /// The warnings for everything skipped or approximated.
     pub fn warnings(&self) -> Vec<String> {
-        let mut out: Vec<String> = self.off_palette.iter().map(off_palette_warning).collect();
+        let mut out: Vec<String> = self
+            .off_palette
+            .iter()
+            .take(COLOURS_NAMED)
+            .map(off_palette_warning)
+            .collect();
+        if self.off_palette.len() > COLOURS_NAMED {
+            let rest = &self
+                .off_palette
+                .values()
+                .skip(COLOURS_NAMED)
+                .collect::<Vec<_>>();
+            out.push(format!(
+                "{} more off-palette stroke colours on {} element(s) were read as the nearest \
+                 palette colour",
+                rest.len(),
+                rest.iter().map(|o| o.elements).sum::<usize>()
+            ));
+        }
         if self.no_stroke > 0 {
             out.push(format!(
                 "{} element(s) without a stroke were ignored (creases are stroked lines)",
