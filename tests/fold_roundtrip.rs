@@ -4,7 +4,8 @@
 use std::path::PathBuf;
 
 use foldcam::formats::fold::{
-    HOLES_KEY, UNKNOWN_ANGLE_KEY, read_frame_str, read_str, write_string,
+    HOLES_KEY, UNKNOWN_ANGLE_KEY, frame_count, parse_root, read_frame_str, read_str, resolve_frame,
+    write_string,
 };
 use foldcam::pattern::{
     Assignment, CreasePattern, Edge, Face, FaceId, FoldedState, Metadata, Units, VertexId,
@@ -320,6 +321,8 @@ fn frames_inherit_from_their_parents() {
     assert_eq!(one.vertices.len(), 3);
     assert_eq!(one.edges[1].assignment, Assignment::Mountain);
     assert_eq!(one.meta.title.as_deref(), Some("one"));
+    assert!(!one.meta.frame_extra.contains_key("frame_parent"));
+    assert!(!one.meta.frame_extra.contains_key("frame_inherit"));
     let two = read_frame_str(FRAMES, 2).expect("frame 2").pattern;
     assert_eq!(two.vertices[2], DVec2::new(2.0, 2.0));
     assert_eq!(two.edges[2].assignment, Assignment::Valley);
@@ -482,4 +485,48 @@ fn edges_are_taken_from_faces_when_missing() {
     assert_eq!(diagonal.map(|e| e.assignment), Some(Assignment::Unassigned));
     assert_eq!(cp.assignment_counts()[0], 4, "four boundary edges");
     assert!(!imported.warnings.is_empty());
+}
+
+#[test]
+fn resolve_frame_exposes_inherited_keys() {
+    let root = parse_root(FRAMES).expect("parses");
+    assert_eq!(frame_count(&root), Ok(4));
+    let two = resolve_frame(&root, 2).expect("frame 2");
+    assert_eq!(two["edges_assignment"], json!(["B", "M", "V"]));
+    assert!(!two.contains_key("file_title"));
+}
+
+#[test]
+fn other_frames_stay_when_the_folded_frame_is_taken() {
+    // Frame 1 is a folded state in the writer's shape; frames 2 and 3 are someone else's,
+    // frame 3 a child of frame 2.
+    let text = r#"{
+        "vertices_coords": [[0, 0], [1, 0], [0, 1]],
+        "edges_vertices": [[0, 1], [1, 2], [2, 0]],
+        "faces_vertices": [[0, 1, 2]],
+        "file_frames": [
+            {"frame_classes": ["foldedForm"], "frame_parent": 0, "frame_inherit": true,
+             "vertices_coords": [[0, 0, 0], [1, 0, 0], [0, 0, 1]]},
+            {"frame_title": "other", "vertices_coords": [[0, 0]]},
+            {"frame_parent": 2, "frame_inherit": true, "frame_title": "child"}
+        ]
+    }"#;
+    let first = read_str(text).expect("reads");
+    let folded = first.folded.as_ref().expect("frame 1 is the folded state");
+    assert_eq!(folded.positions[2], DVec3::new(0.0, 0.0, 1.0));
+    let kept = &first.pattern.meta.file_extra["file_frames"];
+    assert_eq!(kept.as_array().map(Vec::len), Some(2));
+    assert_eq!(
+        kept[1]["frame_parent"],
+        json!(1),
+        "renumbered after taking frame 1"
+    );
+    let written = write_string(&first.pattern, first.folded.as_ref());
+    let second = read_str(&written).expect("reads back");
+    assert_eq!(second.pattern, first.pattern);
+    assert_eq!(second.folded, first.folded);
+    // The child still inherits from "other" in the rewritten file.
+    let child = read_frame_str(&written, 2).expect("child");
+    assert_eq!(child.pattern.meta.title.as_deref(), Some("child"));
+    assert_eq!(child.pattern.vertices.len(), 1);
 }

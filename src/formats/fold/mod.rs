@@ -57,7 +57,7 @@ mod values;
 mod write;
 
 pub use frames::{frame_count, resolve_frame};
-pub use read::{read_frame_str, read_str};
+pub use read::{parse_root, read_frame_str, read_str};
 pub use unfold::{Unfolding, unfold};
 pub use write::write_string;
 

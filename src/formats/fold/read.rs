@@ -25,6 +25,12 @@ pub fn read_frame_str(text: &str, frame: usize) -> Result<Imported, ParseError> 
     let resolved = resolve_frame(&root, frame)?;
     let raw = parse_frame(&resolved, frame)?;
     let mut imported = shape::build(raw, frame)?;
+    if frame > 0 {
+        // The frame is read as a key frame: its links to other frames no longer apply.
+        for key in ["frame_parent", "frame_inherit"] {
+            imported.pattern.meta.frame_extra.shift_remove(key);
+        }
+    }
     fill_metadata(&root, frame, &mut imported.pattern.meta);
     if frame == 0 && imported.folded.is_none() {
         attach_folded_frame(&root, &mut imported);
@@ -33,8 +39,9 @@ pub fn read_frame_str(text: &str, frame: usize) -> Result<Imported, ParseError> 
     Ok(imported)
 }
 
-/// The top-level object, with JSON errors located by line and column.
-pub(super) fn parse_root(text: &str) -> Result<Map<String, Value>, ParseError> {
+/// Parses a FOLD file's text into its top-level object (for [`super::resolve_frame`] and
+/// [`super::frame_count`]); JSON errors are located by line and column.
+pub fn parse_root(text: &str) -> Result<Map<String, Value>, ParseError> {
     if text.trim().is_empty() {
         return Err(ParseError::new(
             "file",

@@ -164,13 +164,15 @@ fn write_faces(
     }
 }
 
-/// The derived keys the input had, recomputed from the model.
+/// The derived keys the input had, recomputed from the model (none for a pattern that fails
+/// [`CreasePattern::validate`]).
 fn write_derived(frame: &mut Map<String, Value>, cp: &CreasePattern) {
     let wanted: Vec<&str> = DERIVED_KEYS
         .into_iter()
         .filter(|k| cp.meta.derived_keys.iter().any(|d| d == k))
         .collect();
-    if wanted.is_empty() {
+    // Deriving indexes vertices by the edges' and faces' ids: only for a sound pattern.
+    if wanted.is_empty() || cp.validate().is_err() {
         return;
     }
     let fans = VertexFans::new(cp);
