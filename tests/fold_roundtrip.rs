@@ -530,3 +530,73 @@ fn other_frames_stay_when_the_folded_frame_is_taken() {
     assert_eq!(child.pattern.meta.title.as_deref(), Some("child"));
     assert_eq!(child.pattern.vertices.len(), 1);
 }
+
+// ---------------------------------------------------------------------------------------
+// Folded states with a known crease pattern
+
+/// An accordion: a strip of `widths.len()` rectangles of height `h` joined along vertical
+/// creases, folded by `angles` (degrees, one per crease) about those creases. Returns the
+/// flat vertex positions and the FOLD text of the folded state.
+fn accordion(widths: &[f64], h: f64, angles: &[f64]) -> (Vec<DVec2>, String) {
+    let mut flat = Vec::new();
+    let mut folded = Vec::new();
+    let (mut x, mut p, mut heading) = (0.0, DVec3::ZERO, 0.0f64);
+    for i in 0..=widths.len() {
+        for y in [0.0, h] {
+            flat.push(DVec2::new(x, y));
+            folded.push(p + DVec3::new(0.0, y, 0.0));
+        }
+        if let Some(&w) = widths.get(i) {
+            if i > 0 {
+                heading += angles[i - 1].to_radians();
+            }
+            x += w;
+            p += DVec3::new(heading.cos(), 0.0, heading.sin()) * w;
+        }
+    }
+    let faces: Vec<Value> = (0..widths.len() as u32)
+        .map(|i| json!([2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1]))
+        .collect();
+    let coords: Vec<Value> = folded.iter().map(|q| json!([q.x, q.y, q.z])).collect();
+    let text = json!({
+        "frame_classes": ["foldedForm"],
+        "frame_unit": "mm",
+        "vertices_coords": coords,
+        "faces_vertices": faces,
+    });
+    (flat, text.to_string())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    #[test]
+    fn folded_accordions_unfold_to_their_pattern(
+        widths in prop::collection::vec(0.5..20.0f64, 2..8),
+        h in 0.5..20.0f64,
+        angles in prop::collection::vec(
+            prop_oneof![-170.0..-10.0f64, 10.0..170.0f64], 7),
+    ) {
+        let (flat, text) = accordion(&widths, h, &angles);
+        let imported = read_str(&text).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert!(imported.folded.is_some());
+        let cp = &imported.pattern;
+        prop_assert_eq!(cp.vertices.len(), flat.len());
+        // Congruent to the strip it was folded from: every pairwise distance agrees.
+        for i in 0..flat.len() {
+            for j in 0..i {
+                let want = flat[i].distance(flat[j]);
+                let got = cp.vertices[i].distance(cp.vertices[j]);
+                prop_assert!((got - want).abs() <= 1e-9 * want.max(1.0), "{} {}: {} vs {}", i, j, got, want);
+            }
+        }
+        // Not mirrored: the faces come out counter-clockwise like the strip's.
+        for f in cp.faces.iter().flatten() {
+            let area = foldcam::geom::polygon::signed_area(f.outer.iter().map(|v| cp.vertices[v.index()]));
+            prop_assert!(area > 0.0);
+        }
+        // The edges come from the faces: boundary where one face, unassigned across creases.
+        prop_assert_eq!(cp.edges.len(), 3 * widths.len() + 1);
+        prop_assert_eq!(cp.assignment_counts()[4], widths.len() - 1);
+    }
+}

@@ -168,7 +168,16 @@ fn origami_simulator_patterns_become_flat() {
             let l2 = cp.vertices[a.index()].distance(cp.vertices[b.index()]);
             assert!((l2 - l3).abs() <= 1e-6 * l3, "{name}: {l2} vs {l3}");
         }
-        // Read as (x, −z): the first vertex of the file.
+        // Faces counter-clockwise (Origami Simulator's run clockwise once y is turned up).
+        for f in cp.faces.iter().flatten() {
+            let ring = f.outer.iter().map(|v| cp.vertices[v.index()]);
+            assert!(foldcam::geom::polygon::signed_area(ring) > 0.0, "{name}");
+        }
+        assert!(
+            imported.warnings.iter().any(|w| w.contains("reversed")),
+            "{name}"
+        );
+        // Read as (x, −z), the SVG it was drawn from with y turned up: the first vertex.
         let first = p3(0);
         assert!(cp.vertices[0].distance(glam::DVec2::new(first.x, -first.z)) < 1e-6);
     }

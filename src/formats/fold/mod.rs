@@ -9,7 +9,9 @@
 //!   `"unit"` or no `frame_unit` gives [`Units::Unitless`](crate::pattern::Units::Unitless);
 //! - reads `vertices_coords` as 2D when every z is absent or 0; rotates coplanar 3D
 //!   coordinates (Origami Simulator writes flat patterns in the x–z plane) onto the xy plane,
-//!   the plane's normal pointing along the positive direction of its dominant axis;
+//!   the plane's normal pointing along the positive direction of its dominant axis (so an
+//!   Origami Simulator pattern reads as the SVG it came from), and reverses the faces if they
+//!   then all run clockwise;
 //! - treats non-coplanar 3D coordinates, and 2D frames of class `foldedForm` whose faces
 //!   overlap (some faces flipped), as a folded state: it is returned in
 //!   [`Imported::folded`] and the crease pattern is its isometric unfolding (see [`unfold`]);

@@ -10,6 +10,9 @@
 //!   unfolded the same way. A `foldedForm` frame whose faces all face one way is read as the
 //!   crease pattern it is (Origami Simulator labels its flat patterns `foldedForm`).
 //!
+//! Rotated 3D patterns whose faces all run clockwise get them reversed (see
+//! [`reverse_clockwise_faces`]); 2D input keeps its faces exactly as written.
+//!
 //! When a frame is read as a crease pattern although it claimed `foldedForm` or `3D`, those
 //! words in `frame_classes`/`frame_attributes` are replaced by `creasePattern`/`2D`, so the
 //! written file describes what it holds. `frame_classes: ["creasePattern"]` alone is dropped:
@@ -31,7 +34,7 @@ const COPLANAR_TOLERANCE: f64 = 1e-7;
 
 /// The pattern (and folded state) a frame describes; `meta` gets only the frame's extras and
 /// derived keys.
-pub(super) fn build(raw: RawFrame, frame: usize) -> Result<Imported, ParseError> {
+pub(super) fn build(mut raw: RawFrame, frame: usize) -> Result<Imported, ParseError> {
     let mut warnings = Vec::new();
     if raw.edges_from_faces {
         warnings.push(format!(
@@ -62,19 +65,54 @@ pub(super) fn build(raw: RawFrame, frame: usize) -> Result<Imported, ParseError>
                         .into(),
                 );
             }
+            if raw.is_3d && reverse_clockwise_faces(&pts, &mut raw) {
+                warnings.push(
+                    "the faces ran clockwise in the rotated plane; reversed them (and faceOrders)"
+                        .into(),
+                );
+            }
             Ok(as_pattern(raw, pts, warnings))
         }
         _ => as_folded(raw, warnings, frame),
     }
 }
 
-/// Whether the faces (with at least one of non-negligible area) have both orientations.
-fn faces_flipped(pts: &[DVec2], faces: &[Face]) -> bool {
+/// Signed areas of the faces' outer cycles, and the largest magnitude.
+fn face_areas(pts: &[DVec2], faces: &[Face]) -> (Vec<f64>, f64) {
     let areas: Vec<f64> = faces
         .iter()
         .map(|f| signed_area(f.outer.iter().filter_map(|v| pts.get(v.index()).copied())))
         .collect();
     let largest = areas.iter().fold(0.0f64, |m, a| m.max(a.abs()));
+    (areas, largest)
+}
+
+/// When every face (of non-negligible area) runs clockwise, reverses all face cycles and
+/// flips the `faceOrders` signs (the normals flip), so the faces run counter-clockwise as
+/// the model expects. Used for rotated 3D input: Origami Simulator traces faces in its
+/// y-down x–z frame, so they run clockwise once the drawing is turned y-up.
+fn reverse_clockwise_faces(pts: &[DVec2], raw: &mut RawFrame) -> bool {
+    let Some(faces) = raw.faces.as_mut() else {
+        return false;
+    };
+    let (areas, largest) = face_areas(pts, faces);
+    let eps = 1e-9 * largest;
+    if largest == 0.0 || areas.iter().any(|&a| a > eps) {
+        return false;
+    }
+    for f in faces.iter_mut() {
+        f.outer.reverse();
+        f.holes.iter_mut().for_each(|h| h.reverse());
+    }
+    for order in &mut raw.face_orders {
+        order.2 = -order.2;
+    }
+    true
+}
+
+/// Whether the faces (with at least one of non-negligible area) have both orientations.
+fn faces_flipped(pts: &[DVec2], faces: &[Face]) -> bool {
+    let (areas, largest) = face_areas(pts, faces);
     let eps = 1e-9 * largest;
     areas.iter().any(|&a| a > eps) && areas.iter().any(|&a| a < -eps)
 }
