@@ -8,7 +8,7 @@
 use glam::DVec3;
 use serde_json::{Map, Value};
 
-use super::values::{Key, array, describe, index, number, same_length};
+use super::values::{Key, array, describe, index, number, same_length, strings};
 use super::{DERIVED_KEYS, HOLES_KEY, UNKNOWN_ANGLE_KEY, units};
 use crate::formats::ParseError;
 use crate::pattern::{Assignment, Edge, Face, FaceId, MAX_COORDINATE, Units, VertexId};
@@ -69,42 +69,14 @@ pub(super) fn parse_frame(map: &Map<String, Value>, frame: usize) -> Result<RawF
         Some(v) => parse_coords(v, factor, Key::new(frame, COORDS))?,
         None => Vec::new(),
     };
-    let n = coords.len();
-    let mut faces = map
-        .get(FACES)
-        .map(|v| parse_faces(v, n, Key::new(frame, FACES)))
-        .transpose()?;
-    if let (Some(faces), Some(v)) = (faces.as_mut(), map.get(HOLES_KEY)) {
-        parse_holes(v, n, faces, Key::new(frame, HOLES_KEY))?;
-    }
-    let (mut edges, edges_from_faces) = match (map.get(EDGES), &faces) {
-        (Some(v), _) => (parse_edges(v, n, Key::new(frame, EDGES))?, false),
-        (None, Some(f)) => (edges_of_faces(f), true),
-        (None, None) => (Vec::new(), false),
-    };
-    if edges_from_faces || map.get(EDGES).is_none() {
-        refuse_orphans(map, frame)?;
-    }
-    if let Some(v) = map.get(ASSIGNMENT) {
-        parse_assignments(v, &mut edges, Key::new(frame, ASSIGNMENT))?;
-    }
-    if let Some(v) = map.get(ANGLE) {
-        parse_angles(v, &mut edges, Key::new(frame, ANGLE))?;
-    }
-    if let Some(v) = map.get(UNKNOWN_ANGLE_KEY) {
-        parse_unknown_angles(v, &mut edges, Key::new(frame, UNKNOWN_ANGLE_KEY))?;
-    }
+    let faces = parse_all_faces(map, coords.len(), frame)?;
+    let (edges, edges_from_faces) = parse_all_edges(map, coords.len(), faces.as_deref(), frame)?;
+    let face_count = faces.as_ref().map_or(0, Vec::len);
     let face_orders = match map.get(ORDERS) {
-        Some(v) => parse_orders(
-            v,
-            faces.as_ref().map_or(0, Vec::len),
-            Key::new(frame, ORDERS),
-        )?,
+        Some(v) => parse_orders(v, face_count, Key::new(frame, ORDERS))?,
         None => Vec::new(),
     };
-    let counts = [n, edges.len(), faces.as_ref().map_or(0, Vec::len)];
-    let derived = check_derived(map, counts, frame)?;
-    let folded_class = super::values::strings(map.get("frame_classes")).contains(&"foldedForm");
+    let derived = check_derived(map, [coords.len(), edges.len(), face_count], frame)?;
     let extra = map
         .iter()
         .filter(|(k, _)| !CONSUMED.contains(&k.as_str()) && !DERIVED_KEYS.contains(&k.as_str()))
@@ -118,10 +90,55 @@ pub(super) fn parse_frame(map: &Map<String, Value>, frame: usize) -> Result<RawF
         edges_from_faces,
         faces,
         face_orders,
-        folded_class,
+        folded_class: strings(map.get("frame_classes")).contains(&"foldedForm"),
         derived,
         extra,
     })
+}
+
+/// `faces_vertices` with the holes of [`HOLES_KEY`].
+fn parse_all_faces(
+    map: &Map<String, Value>,
+    n: usize,
+    frame: usize,
+) -> Result<Option<Vec<Face>>, ParseError> {
+    let Some(v) = map.get(FACES) else {
+        return Ok(None);
+    };
+    let mut faces = parse_faces(v, n, Key::new(frame, FACES))?;
+    if let Some(h) = map.get(HOLES_KEY) {
+        parse_holes(h, n, &mut faces, Key::new(frame, HOLES_KEY))?;
+    }
+    Ok(Some(faces))
+}
+
+/// `edges_vertices` (or the faces' edges when it is missing) with assignments and fold
+/// angles; the flag tells whether the edges came from the faces.
+fn parse_all_edges(
+    map: &Map<String, Value>,
+    n: usize,
+    faces: Option<&[Face]>,
+    frame: usize,
+) -> Result<(Vec<Edge>, bool), ParseError> {
+    let (mut edges, from_faces) = match (map.get(EDGES), faces) {
+        (Some(v), _) => (parse_edges(v, n, Key::new(frame, EDGES))?, false),
+        (None, faces) => {
+            refuse_orphans(map, frame)?;
+            let derived = faces.map(edges_of_faces).unwrap_or_default();
+            let from_faces = !derived.is_empty();
+            (derived, from_faces)
+        }
+    };
+    if let Some(v) = map.get(ASSIGNMENT) {
+        parse_assignments(v, &mut edges, Key::new(frame, ASSIGNMENT))?;
+    }
+    if let Some(v) = map.get(ANGLE) {
+        parse_angles(v, &mut edges, Key::new(frame, ANGLE))?;
+    }
+    if let Some(v) = map.get(UNKNOWN_ANGLE_KEY) {
+        parse_unknown_angles(v, &mut edges, Key::new(frame, UNKNOWN_ANGLE_KEY))?;
+    }
+    Ok((edges, from_faces))
 }
 
 /// `vertices_coords`: 2 or 3 finite numbers per vertex, scaled by `factor`, within

@@ -82,28 +82,21 @@ fn json_error(e: &serde_json::Error) -> ParseError {
 /// Titles, creator and file-level extras from the root; frame-level titles from the
 /// frame extras.
 fn fill_metadata(root: &Map<String, Value>, frame: usize, meta: &mut Metadata) {
-    let frame_texts: Vec<Option<String>> = FRAME_TEXT_KEYS
-        .iter()
-        .map(|k| take_string(&mut meta.frame_extra, k))
-        .collect();
+    let [title, author, description] =
+        FRAME_TEXT_KEYS.map(|k| take_string(&mut meta.frame_extra, k));
     let mut file_extra: Map<String, Value> = root
         .iter()
         .filter(|(k, _)| is_file_level(k) && k.as_str() != "file_spec")
         .filter(|(k, _)| frame == 0 || k.as_str() != FRAMES_KEY)
         .map(|(k, v)| (k.clone(), v.clone()))
         .collect();
-    let mut fields = [&mut meta.title, &mut meta.author, &mut meta.description];
-    for ((field, frame_text), file_key) in
-        fields
-            .iter_mut()
-            .zip(frame_texts)
-            .zip(["file_title", "file_author", "file_description"])
-    {
-        **field = match frame_text {
-            Some(t) => Some(t),
-            None => take_string(&mut file_extra, file_key),
-        };
-    }
+    // The frame's own text wins; the file-level one then stays among the extras.
+    let mut pick = |frame_text: Option<String>, file_key: &str| {
+        frame_text.or_else(|| take_string(&mut file_extra, file_key))
+    };
+    meta.title = pick(title, "file_title");
+    meta.author = pick(author, "file_author");
+    meta.description = pick(description, "file_description");
     let source = take_string(&mut file_extra, SOURCE_CREATOR_KEY);
     let creator = take_string(&mut file_extra, "file_creator");
     meta.creator = source.or(creator.filter(|c| c != CREATOR));
