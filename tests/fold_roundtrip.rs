@@ -600,3 +600,48 @@ proptest! {
         prop_assert_eq!(cp.assignment_counts()[4], widths.len() - 1);
     }
 }
+
+#[test]
+fn tilted_flat_pattern_is_rotated_onto_xy() {
+    // A 3 × 2 rectangle with a diagonal, turned into a tilted plane and moved away.
+    let flat = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(3.0, 0.0),
+        DVec2::new(3.0, 2.0),
+        DVec2::new(0.0, 2.0),
+    ];
+    let rotation = glam::DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 1.1);
+    let coords: Vec<Value> = flat
+        .iter()
+        .map(|p| rotation * p.extend(0.0) + DVec3::new(5.0, -7.0, 11.0))
+        .map(|q| json!([q.x, q.y, q.z]))
+        .collect();
+    let text = json!({
+        "frame_unit": "cm",
+        "vertices_coords": coords,
+        "edges_vertices": [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]],
+        "edges_assignment": ["B", "B", "B", "B", "V"],
+        "faces_vertices": [[0, 1, 2], [0, 2, 3]],
+        "frame_attributes": ["3D"]
+    })
+    .to_string();
+    let imported = read_str(&text).expect("reads");
+    assert!(imported.folded.is_none());
+    assert!(
+        imported.warnings.iter().any(|w| w.contains("one plane")),
+        "{:?}",
+        imported.warnings
+    );
+    let cp = &imported.pattern;
+    for i in 0..4 {
+        for j in 0..i {
+            let want = 10.0 * flat[i].distance(flat[j]);
+            assert!((cp.vertices[i].distance(cp.vertices[j]) - want).abs() < 1e-9);
+        }
+    }
+    for f in cp.faces.iter().flatten() {
+        let ring = f.outer.iter().map(|v| cp.vertices[v.index()]);
+        assert!(foldcam::geom::polygon::signed_area(ring) > 0.0);
+    }
+    assert_eq!(cp.meta.frame_extra["frame_attributes"], json!(["2D"]));
+}

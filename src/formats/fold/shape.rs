@@ -60,10 +60,13 @@ pub(super) fn build(mut raw: RawFrame, frame: usize) -> Result<Imported, ParseEr
     match flat {
         Some(pts) if !flat_folded => {
             if raw.folded_class {
-                warnings.push(
-                    "frame_classes says foldedForm, but the faces do not overlap: read as a crease pattern"
-                        .into(),
-                );
+                let why = match raw.faces {
+                    Some(_) => "the faces do not overlap",
+                    None => "it has no faces to unfold",
+                };
+                warnings.push(format!(
+                    "frame_classes says foldedForm, but {why}: read as a crease pattern"
+                ));
             }
             if raw.is_3d && reverse_clockwise_faces(&pts, &mut raw) {
                 warnings.push(
