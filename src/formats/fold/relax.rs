@@ -24,7 +24,7 @@ pub(super) struct Rod {
 }
 
 /// Outer (Gauss–Newton) iterations at most.
-const MAX_STEPS: usize = 20;
+const MAX_STEPS: usize = 10;
 
 /// Stop when every relative residual is below this.
 const TARGET: f64 = 1e-14;
@@ -88,7 +88,7 @@ fn gauss_newton_step(points: &[DVec2], rods: &[Rod]) -> Vec<DVec2> {
     let mut p = s.clone();
     let mut gamma = norm2(&s);
     let start = gamma;
-    for _ in 0..(4 * points.len()).clamp(50, 2000) {
+    for _ in 0..(4 * points.len()).clamp(50, 1000) {
         if gamma <= 1e-30 * start || gamma == 0.0 {
             break;
         }

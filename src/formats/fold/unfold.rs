@@ -318,18 +318,23 @@ impl<'a> Unfolder<'a> {
     fn finish(mut self) -> Unfolding {
         let (before, after) = self.relax();
         let mut warnings = Vec::new();
+        let s = &self.stats;
         if before > RELAX_BELOW && after < before {
+            let rest = if after > LENGTHS_KEPT {
+                "; what remains is geometry that does not unfold flat"
+            } else {
+                ""
+            };
             warnings.push(format!(
                 "the folded state is not exactly developable (faces not quite flat, e.g. rounded \
                  coordinates): adjusted the unfolding to bring edge length errors from {before:.1e} \
-                 down to {after:.1e} (relative)"
+                 down to {after:.1e} (relative){rest}"
             ));
-        }
-        let s = &self.stats;
-        if s.conflicts > 0 && after > LENGTHS_KEPT {
+        } else if s.conflicts > 0 && after > LENGTHS_KEPT {
             warnings.push(format!(
                 "the folded state is not developable: {} vertex placements disagree (by up to {:.3e}); \
-                 the first was kept, so some edge lengths differ from the folded state",
+                 the first was kept, so edge lengths differ from the folded state by up to {after:.1e} \
+                 (relative)",
                 s.conflicts, s.max_gap
             ));
         }
