@@ -434,3 +434,65 @@ fn empty_pattern_passes() {
     assert!(report.passed());
     assert!(report.summary.shortest_edge.is_none());
 }
+
+#[test]
+fn degree_six_vertex_follows_kawasaki() {
+    // Sectors 40°, 70°, 60°, 50°, 80°, 60°: alternate sums 40 + 60 + 80 = 70 + 50 + 60 = 180.
+    let sectors = [40.0, 70.0, 60.0, 50.0, 80.0, 60.0];
+    let assignments = [M, M, V, M, M, V];
+    let mut at = 0.0;
+    let spokes: Vec<(f64, Assignment)> = sectors
+        .iter()
+        .zip(assignments)
+        .map(|(s, a)| {
+            let spoke = (at, a);
+            at += s;
+            spoke
+        })
+        .collect();
+    assert!(check(&single_vertex(&spokes), &CheckOptions::default()).passed());
+    // Widening one sector by 3° and narrowing the next by 3° breaks it by 3°.
+    let mut moved = spokes.clone();
+    moved[2].0 += 3.0;
+    let report = check(&single_vertex(&moved), &CheckOptions::default());
+    let f: Vec<_> = report.of_kind(FindingKind::Kawasaki).collect();
+    assert_eq!(f.len(), 1);
+    assert!((f[0].value - 3.0).abs() < 1e-9);
+}
+
+/// Reads "rotate crease eN about vK by X° (counter-)clockwise" from a Kawasaki hint.
+fn parse_rotation(hint: &str) -> Option<(usize, f64)> {
+    let words: Vec<&str> = hint.split_whitespace().collect();
+    let edge = words.get(2)?.strip_prefix('e')?.parse().ok()?;
+    let degrees: f64 = words.get(6)?.strip_suffix('°')?.parse().ok()?;
+    let sign = match *words.get(7)? {
+        "counter-clockwise" => 1.0,
+        "clockwise" => -1.0,
+        _ => return None,
+    };
+    Some((edge, sign * degrees))
+}
+
+#[test]
+fn following_the_kawasaki_hint_repairs_the_vertex() {
+    for (theta, delta) in [(60.0, 1.0), (45.0, -2.5), (70.0, 4.0)] {
+        let mut cp = miura(theta, delta);
+        let report = check(&cp, &CheckOptions::default());
+        let hint = &report
+            .of_kind(FindingKind::Kawasaki)
+            .next()
+            .expect("finding")
+            .hint;
+        let (edge, degrees) = parse_rotation(hint).expect(hint);
+        // Rotate the crease's far end about the centre (vertex 0).
+        let far = cp.edges[edge].other(VertexId(0));
+        let p = cp.vertices[far.index()];
+        cp.vertices[far.index()] = DVec2::from_angle(degrees.to_radians()).rotate(p);
+        let opts = CheckOptions {
+            kawasaki_tolerance_deg: 1e-3,
+            ..CheckOptions::default()
+        };
+        let after = check(&cp, &opts);
+        assert_eq!(after.of_kind(FindingKind::Kawasaki).count(), 0, "{hint}");
+    }
+}
