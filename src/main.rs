@@ -1,1 +1,3 @@
+//! The `foldcam` command (the CLI lands once the format readers are merged).
+
 fn main() {}

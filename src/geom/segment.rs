@@ -19,7 +19,8 @@ pub enum Crossing {
 }
 
 /// Intersects segments `a0–a1` and `b0–b1`. `eps` is the tolerance on the cross product,
-/// relative to the product of the lengths, below which segments count as parallel.
+/// relative to the product of the lengths, below which segments count as parallel; collinear
+/// segments that share less than `eps` of the first's length touch at a point.
 pub fn intersect(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2, eps: f64) -> Crossing {
     let r = a1 - a0;
     let s = b1 - b0;
@@ -38,8 +39,16 @@ pub fn intersect(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2, eps: f64) -> Crossi
         let t0 = qp.dot(r) / rr;
         let t1 = (b1 - a0).dot(r) / rr;
         let (lo, hi) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
-        return if hi < 0.0 || lo > 1.0 {
+        let (from, to) = (lo.max(0.0), hi.min(1.0));
+        return if from > to {
             Crossing::None
+        } else if to - from <= eps {
+            // Collinear, touching end to end at one point.
+            let u = (a0.lerp(a1, from) - b0).dot(s) / s.length_squared();
+            Crossing::Point {
+                t: from,
+                u: u.clamp(0.0, 1.0),
+            }
         } else {
             Crossing::Overlap
         };
@@ -93,5 +102,7 @@ mod tests {
         let far = intersect(a.0, a.1, DVec2::new(3.0, 0.0), DVec2::new(4.0, 0.0), 1e-12);
         assert_eq!(near, Crossing::Overlap);
         assert_eq!(far, Crossing::None);
+        let end_to_end = intersect(a.0, a.1, a.1, DVec2::new(5.0, 0.0), 1e-12);
+        assert_eq!(end_to_end, Crossing::Point { t: 1.0, u: 0.0 });
     }
 }

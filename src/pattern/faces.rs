@@ -10,7 +10,7 @@ use glam::DVec2;
 
 use super::vertex_fan::VertexFans;
 use super::{CreasePattern, Face, VertexId};
-use crate::geom::polygon::{contains_point, signed_area};
+use crate::geom::polygon::contains_point;
 
 /// The faces of a planar pattern and the outlines of its components.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -42,7 +42,7 @@ pub fn find_faces(cp: &CreasePattern) -> FaceSet {
     let mut faces = Vec::new();
     let mut negative = Vec::new();
     for cycle in cycles {
-        let area = signed_area(cycle.iter().map(|&v| cp.position(v)));
+        let area = cycle_area(cp, &cycle);
         if area > 0.0 {
             faces.push((Face::simple(cycle), area));
         } else {
@@ -94,6 +94,24 @@ fn trace_cycles(cp: &CreasePattern, fans: &VertexFans) -> Vec<Vec<VertexId>> {
         cycles.push(cycle);
     }
     cycles
+}
+
+/// Signed area of a cycle, or 0 when it is zero up to rounding (a tree traced around both
+/// sides, whose terms cancel): the shoelace terms are taken about the first vertex and the
+/// sum is compared with the sum of their magnitudes.
+fn cycle_area(cp: &CreasePattern, cycle: &[VertexId]) -> f64 {
+    let o = cp.position(cycle[0]);
+    let (mut sum, mut mag) = (0.0, 0.0);
+    for w in cycle.windows(2).skip(1) {
+        let t = (cp.position(w[0]) - o).perp_dot(cp.position(w[1]) - o);
+        sum += t;
+        mag += t.abs();
+    }
+    if sum.abs() <= 1e-10 * mag {
+        0.0
+    } else {
+        0.5 * sum
+    }
 }
 
 fn spoke_owners(fans: &VertexFans) -> Vec<VertexId> {

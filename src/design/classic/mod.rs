@@ -1,1 +1,72 @@
-//! PLACEHOLDER
+//! Classic crease patterns generated from parameters: Miura-ori, the square twist, the
+//! waterbomb base and tessellation, the Yoshimura pattern, and a flat-foldable square grid.
+//!
+//! All lengths are millimetres; every generator returns a pattern whose interior vertices
+//! satisfy Kawasaki's and Maekawa's theorems (tests check this with [`crate::check`]) with the
+//! sheet outline as boundary edges and faces computed. Invalid parameters give a
+//! [`ClassicError`] naming the parameter.
+
+mod miura;
+mod square_twist;
+mod waterbomb;
+mod yoshimura;
+
+pub use miura::{MiuraOri, grid};
+pub use square_twist::SquareTwist;
+pub use waterbomb::{Waterbomb, waterbomb_base};
+pub use yoshimura::Yoshimura;
+
+use crate::pattern::{CreasePattern, PlanarizeOptions, planarize};
+
+/// A generator parameter out of range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{parameter} = {value}: {expected}")]
+pub struct ClassicError {
+    /// The parameter's name.
+    pub parameter: &'static str,
+    /// The value given.
+    pub value: f64,
+    /// What is allowed.
+    pub expected: &'static str,
+}
+
+/// Checks that `value` is finite and positive.
+fn positive(parameter: &'static str, value: f64) -> Result<f64, ClassicError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(ClassicError {
+            parameter,
+            value,
+            expected: "must be a finite number greater than 0",
+        })
+    }
+}
+
+/// Checks a count is between 1 and `max`.
+fn count(parameter: &'static str, value: usize, max: usize) -> Result<usize, ClassicError> {
+    if (1..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(ClassicError {
+            parameter,
+            value: value as f64,
+            expected: "must be a whole number between 1 and the generator's limit",
+        })
+    }
+}
+
+/// Cleans a generated drawing (merging shared vertices, splitting outline edges where creases
+/// end on them) and traces its faces.
+fn finish(mut cp: CreasePattern, title: String) -> CreasePattern {
+    cp.meta.title = Some(title);
+    cp.meta.creator = Some("foldcam".into());
+    planarize(
+        &mut cp,
+        &PlanarizeOptions {
+            tolerance: None,
+            faces: true,
+        },
+    );
+    cp
+}

@@ -1,0 +1,42 @@
+//! Generates Miura-ori: parallelogram cells, one pleat family straight, the other zigzag, checks it and writes it.
+//!
+//! ```text
+//! cargo run --example miura_ori -- [OUT.fold|OUT.svg|OUT.cp]
+//! ```
+
+use foldcam::check::{CheckOptions, check};
+use foldcam::design::classic::MiuraOri;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let out = std::env::args_os()
+        .nth(1)
+        .map_or_else(|| PathBuf::from("miura_ori.fold"), PathBuf::from);
+    let params = MiuraOri {
+        columns: 12,
+        rows: 10,
+        ..MiuraOri::default()
+    };
+    let pattern = match params.build() {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("miura_ori: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let report = check(&pattern, &CheckOptions::default());
+    println!(
+        "{}: {} vertices, {} edges, flat-foldable at every interior vertex: {}",
+        pattern.meta.title.as_deref().unwrap_or("miura_ori"),
+        pattern.vertices.len(),
+        pattern.edges.len(),
+        report.passed()
+    );
+    if let Err(e) = foldcam::formats::save(&out, &pattern, None) {
+        eprintln!("miura_ori: {e}");
+        return ExitCode::from(2);
+    }
+    println!("wrote {}", out.display());
+    ExitCode::SUCCESS
+}

@@ -1,0 +1,89 @@
+//! Argument groups shared by several subcommands, validated where they enter.
+
+use clap::Args;
+
+use foldcam::check::CheckOptions;
+use foldcam::pattern::{CreasePattern, Units};
+
+/// Parses a finite number greater than zero.
+pub fn positive(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("{s} must be a finite number greater than 0"))
+    }
+}
+
+/// Parses an angle in degrees within [0, 180].
+pub fn degrees(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
+    if v.is_finite() && (0.0..=180.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("{s} must be an angle between 0 and 180 degrees"))
+    }
+}
+
+/// Giving a unitless pattern a physical size.
+#[derive(Args, Clone, Debug, Default)]
+pub struct ScaleArgs {
+    /// Millimetres per pattern unit (for unitless inputs such as ORIPA files or FOLD files with
+    /// frame_unit "unit"); also rescales patterns already in millimetres.
+    #[arg(long, value_parser = positive, conflicts_with = "size")]
+    pub scale: Option<f64>,
+    /// Scale so the longer side of the pattern's bounding box is this many millimetres.
+    #[arg(long, value_parser = positive)]
+    pub size: Option<f64>,
+}
+
+impl ScaleArgs {
+    /// Applies the scale, if one was given.
+    pub fn apply(&self, cp: &mut CreasePattern) {
+        let factor = match (self.scale, self.size) {
+            (Some(f), _) => f,
+            (None, Some(size)) => {
+                let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
+                if extent > 0.0 { size / extent } else { 1.0 }
+            }
+            (None, None) => return,
+        };
+        if factor != 1.0 || cp.units == Units::Unitless {
+            cp.scale_to_mm(factor);
+        }
+    }
+}
+
+/// Limits for `check` and `preview --check`.
+#[derive(Args, Clone, Debug)]
+pub struct CheckArgs {
+    /// Smallest allowed angle between neighbouring creases at a vertex, degrees (Tachi's
+    /// δ_corner; 30 for 0.5 mm stainless is a common choice).
+    #[arg(long, value_name = "DEG", value_parser = degrees)]
+    pub min_vertex_angle: Option<f64>,
+    /// Largest allowed |fold angle|, degrees (180 − δ_fold).
+    #[arg(long, value_name = "DEG", value_parser = degrees)]
+    pub max_fold_angle: Option<f64>,
+    /// Shortest allowed edge, in the pattern's unit (mm unless unitless).
+    #[arg(long, value_name = "LEN", value_parser = positive)]
+    pub min_edge: Option<f64>,
+    /// Tolerance of Kawasaki's alternating angle sum, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 0.01, value_parser = degrees)]
+    pub kawasaki_tolerance: f64,
+    /// Skip Kawasaki and Maekawa (for patterns not meant to fold flat).
+    #[arg(long)]
+    pub no_flat_foldability: bool,
+}
+
+impl CheckArgs {
+    /// The library options these arguments describe.
+    pub fn options(&self) -> CheckOptions {
+        CheckOptions {
+            flat_foldability: !self.no_flat_foldability,
+            kawasaki_tolerance_deg: self.kawasaki_tolerance,
+            min_vertex_angle_deg: self.min_vertex_angle,
+            max_fold_angle_deg: self.max_fold_angle,
+            min_edge_length: self.min_edge,
+        }
+    }
+}

@@ -1,0 +1,57 @@
+//! `foldcam convert IN OUT`.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use foldcam::formats;
+
+use super::Outcome;
+use super::args::ScaleArgs;
+use super::input;
+
+/// Convert between FOLD, SVG and ORIPA .cp.
+#[derive(clap::Args)]
+#[command(after_help = "Examples:\n  foldcam convert bird.cp bird.fold\n  \
+    foldcam convert bird.fold bird.svg --size 150\n  foldcam convert drawing.svg clean.fold --planarize")]
+pub struct Args {
+    /// Input file (.fold, .svg or .cp).
+    pub input: PathBuf,
+    /// Output file (.fold, .svg or .cp); written atomically.
+    pub output: PathBuf,
+    /// Clean the pattern into a planar graph (split crossings, merge close vertices, drop
+    /// duplicates) and compute its faces. SVG and .cp inputs are always cleaned.
+    #[arg(long)]
+    pub planarize: bool,
+    /// Merge tolerance for --planarize, in the pattern's unit (default 1e-7 of the diagonal).
+    #[arg(long, value_parser = super::args::positive, requires = "planarize")]
+    pub tolerance: Option<f64>,
+    #[command(flatten)]
+    pub scale: ScaleArgs,
+}
+
+/// Runs the conversion.
+pub fn run(args: Args) -> Result<Outcome> {
+    formats::Format::from_path(&args.output).ok_or_else(|| {
+        anyhow::anyhow!(
+            "{}: unknown output type (expected one of {})",
+            args.output.display(),
+            formats::Format::EXTENSIONS
+        )
+    })?;
+    let mut imported = input::load(&args.input)?;
+    if args.planarize {
+        input::clean(&args.input, &mut imported, args.tolerance);
+        let faces = foldcam::pattern::faces::find_faces(&imported.pattern).faces;
+        imported.pattern.faces = Some(faces);
+    }
+    args.scale.apply(&mut imported.pattern);
+    let cp = &imported.pattern;
+    formats::save(&args.output, cp, imported.folded.as_ref())?;
+    eprintln!(
+        "foldcam: wrote {} ({} vertices, {} edges)",
+        args.output.display(),
+        cp.vertices.len(),
+        cp.edges.len()
+    );
+    Ok(Outcome::Done)
+}

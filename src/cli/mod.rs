@@ -1,0 +1,75 @@
+//! Command-line front end: argument parsing and one file per subcommand. Each subcommand
+//! returns an [`Outcome`] or an error; [`run`] prints errors as `foldcam: <file>: <problem>` and
+//! maps them to exit codes (0 done, 1 a check failed, 2 bad usage or input).
+
+mod args;
+mod check;
+mod convert;
+mod demo;
+mod generate;
+mod input;
+mod preview;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// What a successful subcommand reports to the shell.
+pub enum Outcome {
+    /// Everything passed.
+    Done,
+    /// The work was done but a check failed (exit 1).
+    CheckFailed,
+}
+
+#[derive(Parser)]
+#[command(
+    name = "foldcam",
+    version,
+    about = "Crease patterns to machine files: import, convert, check and preview fold designs",
+    long_about = "foldcam reads crease patterns (FOLD 1.2, Origami Simulator SVG, ORIPA .cp), \
+                  cleans them into planar graphs, checks local flat-foldability and fabrication \
+                  limits, draws previews and writes them back in any of those formats.\n\n\
+                  Exit status: 0 success, 1 a check failed, 2 bad usage or bad input.",
+    after_help = "Examples:\n  foldcam demo\n  foldcam generate miura -o miura.fold\n  \
+                  foldcam convert pattern.cp pattern.fold\n  foldcam check pattern.fold --min-vertex-angle 30\n  \
+                  foldcam preview pattern.svg -o pattern.png --check"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Convert between FOLD, SVG and ORIPA .cp (formats from the extensions).
+    Convert(convert::Args),
+    /// Check flat-foldability (Kawasaki, Maekawa) and fabrication limits.
+    Check(check::Args),
+    /// Draw a crease pattern as a PNG.
+    Preview(preview::Args),
+    /// Generate a classic pattern: Miura-ori, square twist, waterbomb, Yoshimura, grid.
+    Generate(generate::Args),
+    /// Run the whole pipeline on bundled examples and write the results to a folder.
+    Demo(demo::Args),
+}
+
+/// Parses the command line, runs the subcommand and returns its exit code.
+pub fn run() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Convert(a) => convert::run(a),
+        Command::Check(a) => check::run(a),
+        Command::Preview(a) => preview::run(a),
+        Command::Generate(a) => generate::run(a),
+        Command::Demo(a) => demo::run(a),
+    };
+    match result {
+        Ok(Outcome::Done) => ExitCode::SUCCESS,
+        Ok(Outcome::CheckFailed) => ExitCode::from(1),
+        Err(e) => {
+            eprintln!("foldcam: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}

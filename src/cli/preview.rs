@@ -1,0 +1,73 @@
+//! `foldcam preview IN -o OUT.png`.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use foldcam::check::check;
+use foldcam::formats::write_atomic;
+use foldcam::render::{PreviewOptions, preview_png};
+
+use super::Outcome;
+use super::args::CheckArgs;
+use super::input;
+
+/// Draw a crease pattern as a PNG.
+#[derive(clap::Args)]
+#[command(
+    long_about = "Draws the pattern with the usual origami line styles: valley dashed blue, \
+                  mountain dash-dot red, boundary black, cut green, flat grey, unassigned \
+                  magenta, with a scale bar. With --check, faults found by `foldcam check` are \
+                  ringed.",
+    after_help = "Examples:\n  foldcam preview bird.fold -o bird.png\n  \
+                  foldcam preview tess.svg -o tess.png --width 2400 --check --min-vertex-angle 30"
+)]
+pub struct Args {
+    /// Input file (.fold, .svg or .cp).
+    pub input: PathBuf,
+    /// Output PNG; written atomically.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Image width in pixels (16 to 16384); the height follows the pattern's aspect ratio.
+    #[arg(long, default_value_t = 1200)]
+    pub width: u32,
+    /// Run the checks and ring every fault on the image.
+    #[arg(long)]
+    pub check: bool,
+    #[command(flatten)]
+    pub limits: CheckArgs,
+}
+
+/// Renders the preview.
+pub fn run(args: Args) -> Result<Outcome> {
+    let is_png = args
+        .output
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !is_png {
+        bail!("{}: the preview is written as PNG: use a .png name", args.output.display());
+    }
+    let mut imported = input::load(&args.input)?;
+    input::clean(&args.input, &mut imported, None);
+    let cp = &imported.pattern;
+    let findings = if args.check {
+        let report = check(cp, &args.limits.options());
+        eprintln!(
+            "foldcam: {}: {} fault(s) ringed",
+            args.input.display(),
+            report.findings.len()
+        );
+        report.findings
+    } else {
+        Vec::new()
+    };
+    let options = PreviewOptions {
+        width: args.width,
+        ..PreviewOptions::default()
+    };
+    let png = preview_png(cp, &options, &findings)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
+    write_atomic(&args.output, &png)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", args.output.display()))?;
+    eprintln!("foldcam: wrote {}", args.output.display());
+    Ok(Outcome::Done)
+}

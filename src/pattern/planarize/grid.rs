@@ -1,0 +1,123 @@
+//! A uniform grid over the edges: each edge is listed in every cell its tolerance-widened
+//! segment passes through, so two edges that come within the tolerance of each other share at
+//! least one cell.
+//!
+//! The cell size is chosen so there are about as many cells as edges (capped at four times as
+//! many), which keeps the average cell short for drawings of evenly sized creases. Patterns
+//! with a few very long edges among many short ones stay correct but test more pairs.
+
+use glam::DVec2;
+use rayon::prelude::*;
+
+/// Edges bucketed by cell, as compressed rows.
+pub(super) struct EdgeGrid {
+    /// Start of each non-empty cell's run in `edges`.
+    pub runs: Vec<u32>,
+    /// Edge indices, grouped by cell.
+    pub edges: Vec<u32>,
+}
+
+impl EdgeGrid {
+    /// Builds the grid for segments `segs` (end positions), widened by `tol`.
+    pub fn new(segs: &[(DVec2, DVec2)], tol: f64) -> Self {
+        let Some((lo, hi)) = bounds(segs) else {
+            return EdgeGrid {
+                runs: vec![0],
+                edges: Vec::new(),
+            };
+        };
+        let size = (hi - lo).max(DVec2::splat(tol.max(f64::MIN_POSITIVE)));
+        let n = segs.len().max(1) as f64;
+        let mut cell = (size.x * size.y / n).sqrt().max(size.max_element() / n);
+        cell = cell.max(4.0 * tol);
+        let cols = ((size.x / cell).floor() as u64 + 1).min(1 << 31);
+        let spec = CellSpec {
+            origin: lo,
+            inv: 1.0 / cell,
+            cell,
+            cols,
+            tol,
+        };
+        let mut pairs: Vec<(u64, u32)> = segs
+            .par_iter()
+            .enumerate()
+            .fold(Vec::new, |mut out, (i, &(a, b))| {
+                spec.cover(a, b, |key| out.push((key, i as u32)));
+                out
+            })
+            .reduce(Vec::new, |mut x, mut y| {
+                x.append(&mut y);
+                x
+            });
+        pairs.par_sort_unstable();
+        let mut runs = Vec::new();
+        let mut last = u64::MAX;
+        for (i, &(key, _)) in pairs.iter().enumerate() {
+            if key != last {
+                runs.push(i as u32);
+                last = key;
+            }
+        }
+        runs.push(pairs.len() as u32);
+        EdgeGrid {
+            runs,
+            edges: pairs.into_iter().map(|(_, e)| e).collect(),
+        }
+    }
+
+    /// The edge lists of the cells holding two or more edges.
+    pub fn crowded_cells(&self) -> impl ParallelIterator<Item = &[u32]> {
+        self.runs.par_windows(2).filter_map(|w| {
+            let cell = &self.edges[w[0] as usize..w[1] as usize];
+            (cell.len() >= 2).then_some(cell)
+        })
+    }
+}
+
+struct CellSpec {
+    origin: DVec2,
+    inv: f64,
+    cell: f64,
+    cols: u64,
+    tol: f64,
+}
+
+impl CellSpec {
+    fn col(&self, x: f64) -> u64 {
+        (((x - self.origin.x) * self.inv).floor().max(0.0) as u64).min(self.cols - 1)
+    }
+
+    fn row(&self, y: f64) -> u64 {
+        ((y - self.origin.y) * self.inv).floor().max(0.0) as u64
+    }
+
+    /// Calls `visit` with the key of every cell the widened segment `a–b` touches: column by
+    /// column, the rows spanned by the part of the segment over that column.
+    fn cover(&self, a: DVec2, b: DVec2, mut visit: impl FnMut(u64)) {
+        let t = self.tol;
+        let (c0, c1) = (self.col(a.x.min(b.x) - t), self.col(a.x.max(b.x) + t));
+        let d = b - a;
+        for c in c0..=c1 {
+            let x0 = self.origin.x + c as f64 * self.cell - t;
+            let x1 = x0 + self.cell + 2.0 * t;
+            let (ya, yb) = if d.x.abs() <= f64::EPSILON * (a.x.abs() + 1.0) {
+                (a.y, b.y)
+            } else {
+                let ta = ((x0 - a.x) / d.x).clamp(0.0, 1.0);
+                let tb = ((x1 - a.x) / d.x).clamp(0.0, 1.0);
+                (a.y + d.y * ta, a.y + d.y * tb)
+            };
+            let (r0, r1) = (self.row(ya.min(yb) - t), self.row(ya.max(yb) + t));
+            for r in r0..=r1 {
+                visit(r * self.cols + c);
+            }
+        }
+    }
+}
+
+fn bounds(segs: &[(DVec2, DVec2)]) -> Option<(DVec2, DVec2)> {
+    let first = segs.first()?.0;
+    Some(segs.iter().fold((first, first), |(lo, hi), &(a, b)| {
+        (lo.min(a).min(b), hi.max(a).max(b))
+    }))
+}

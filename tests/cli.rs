@@ -1,0 +1,231 @@
+//! The `foldcam` binary end to end: exit codes, messages that name the file, atomic outputs.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn foldcam(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the foldcam binary runs")
+}
+
+fn example(name: &str) -> String {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/patterns")
+        .join(name);
+    p.to_string_lossy().into_owned()
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Files in `dir`, sorted (to see that nothing was left behind).
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("temp dir readable")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn convert_round_trips_through_every_format() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let src = example("flat-vertex.fold");
+    for ext in ["svg", "cp", "fold"] {
+        let out = format!("out.{ext}");
+        let o = foldcam(&["convert", &src, &out], dir.path());
+        assert!(o.status.success(), "convert to {ext}: {}", text(&o.stderr));
+        let back = format!("back-{ext}.fold");
+        let o = foldcam(&["convert", &out, &back], dir.path());
+        assert!(
+            o.status.success(),
+            "convert {ext} back: {}",
+            text(&o.stderr)
+        );
+        let a = foldcam::formats::load(Path::new(&src))
+            .expect("source loads")
+            .pattern;
+        let b = foldcam::formats::load(&dir.path().join(&back))
+            .expect("result loads")
+            .pattern;
+        assert_eq!(a.edges.len(), b.edges.len(), "edge count through {ext}");
+        let folds = |p: &foldcam::pattern::CreasePattern| {
+            p.edges.iter().filter(|e| e.assignment.is_fold()).count()
+        };
+        assert_eq!(folds(&a), folds(&b), "mountain/valley count through {ext}");
+    }
+}
+
+#[test]
+fn check_exit_codes_follow_the_verdict() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let good = foldcam(&["check", &example("flat-vertex.fold")], dir.path());
+    assert_eq!(good.status.code(), Some(0), "{}", text(&good.stdout));
+    let bad = foldcam(&["check", &example("broken-vertex.fold")], dir.path());
+    assert_eq!(bad.status.code(), Some(1));
+    let out = text(&bad.stdout).to_lowercase();
+    assert!(out.contains("kawasaki") && out.contains("maekawa"), "{out}");
+    let json = foldcam(
+        &["check", "--json", &example("broken-vertex.fold")],
+        dir.path(),
+    );
+    assert_eq!(json.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).expect("valid JSON");
+    let kinds: Vec<&str> = v["findings"]
+        .as_array()
+        .expect("findings array")
+        .iter()
+        .filter_map(|f| f["kind"].as_str())
+        .collect();
+    assert!(
+        kinds.contains(&"kawasaki") && kinds.contains(&"maekawa"),
+        "{kinds:?}"
+    );
+}
+
+#[test]
+fn vertex_angle_limit_fails_the_check() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    // flat-vertex.fold's smallest sector is 60°.
+    let ok = foldcam(
+        &[
+            "check",
+            "--min-vertex-angle",
+            "50",
+            &example("flat-vertex.fold"),
+        ],
+        dir.path(),
+    );
+    assert_eq!(ok.status.code(), Some(0), "{}", text(&ok.stdout));
+    let tight = foldcam(
+        &[
+            "check",
+            "--min-vertex-angle",
+            "70",
+            &example("flat-vertex.fold"),
+        ],
+        dir.path(),
+    );
+    assert_eq!(tight.status.code(), Some(1), "{}", text(&tight.stdout));
+}
+
+#[test]
+fn preview_writes_a_png_of_the_requested_width() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = foldcam(
+        &[
+            "preview",
+            &example("broken-vertex.fold"),
+            "-o",
+            "p.png",
+            "--width",
+            "321",
+            "--check",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let img = image::open(dir.path().join("p.png")).expect("a PNG");
+    assert_eq!(img.width(), 321);
+}
+
+#[test]
+fn generated_patterns_pass_their_check() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for kind in ["miura", "square-twist", "waterbomb", "yoshimura"] {
+        let out = format!("{kind}.fold");
+        let o = foldcam(&["generate", kind, "-o", &out], dir.path());
+        assert!(o.status.success(), "{kind}: {}", text(&o.stderr));
+        let c = foldcam(&["check", &out], dir.path());
+        assert_eq!(c.status.code(), Some(0), "{kind}: {}", text(&c.stdout));
+    }
+}
+
+#[test]
+fn demo_runs_end_to_end() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = foldcam(&["demo", "--out", "d", "--width", "300"], dir.path());
+    assert!(
+        o.status.success(),
+        "{}\n{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+    let files = listing(&dir.path().join("d"));
+    for stem in [
+        "miura-ori",
+        "square-twist",
+        "waterbomb",
+        "yoshimura",
+        "broken-vertex",
+    ] {
+        for ext in ["fold", "svg", "cp", "png"] {
+            let name = format!("{stem}.{ext}");
+            assert!(files.contains(&name), "{name} missing from {files:?}");
+        }
+    }
+}
+
+/// Malformed inputs: exit 2, the message names the file, no panic, and no output file (nor
+/// a temporary one) is left behind.
+#[test]
+fn malformed_inputs_fail_cleanly_without_output() {
+    let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+    let cases: Vec<(&str, String)> = vec![
+        ("empty.fold", String::new()),
+        ("truncated.fold", r#"{"vertices_coords": [[0,0],[1,"#.into()),
+        ("deep.fold", deep),
+        ("mismatch.fold", r#"{"vertices_coords":[[0,0],[1,0]],"edges_vertices":[[0,1]],"edges_assignment":["M","V"]}"#.into()),
+        ("negative.fold", r#"{"vertices_coords":[[0,0],[1,0]],"edges_vertices":[[0,-1]]}"#.into()),
+        ("missing.fold", r#"{"vertices_coords":[[0,0],[1,0]],"edges_vertices":[[0,7]]}"#.into()),
+        ("nonnumeric.fold", r#"{"vertices_coords":[[0,"a"],[1,0]],"edges_vertices":[[0,1]]}"#.into()),
+        ("huge.fold", r#"{"vertices_coords":[[0,0],[1e12,0]],"edges_vertices":[[0,1]]}"#.into()),
+        ("overflow.fold", r#"{"vertices_coords":[[0,0],[1e400,0]],"edges_vertices":[[0,1]]}"#.into()),
+        ("onevertex.fold", r#"{"vertices_coords":[[0,0],[1,0]],"edges_vertices":[[0]]}"#.into()),
+        ("letter.fold", r#"{"vertices_coords":[[0,0],[1,0]],"edges_vertices":[[0,1]],"edges_assignment":["X"]}"#.into()),
+        ("angle.fold", r#"{"vertices_coords":[[0,0],[1,0]],"edges_vertices":[[0,1]],"edges_foldAngle":[270]}"#.into()),
+        ("notxml.svg", "this is not < xml".into()),
+        ("nolines.svg", r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><circle cx="5" cy="5" r="2" fill="red"/></svg>"#.into()),
+        ("bad.cp", "2 0 0 1 1\n3 0 zero 1 1\n".into()),
+        ("short.cp", "2 0 0 1\n".into()),
+    ];
+    for (name, content) in cases {
+        let dir = tempfile::tempdir().expect("temp dir");
+        std::fs::write(dir.path().join(name), content).expect("write input");
+        let o = foldcam(&["convert", name, "out.fold"], dir.path());
+        let err = text(&o.stderr);
+        assert_eq!(
+            o.status.code(),
+            Some(2),
+            "{name}: exit {:?}, stderr {err}",
+            o.status.code()
+        );
+        assert!(
+            err.contains(name),
+            "{name}: message does not name the file: {err}"
+        );
+        assert!(!err.contains("panicked"), "{name}: panicked: {err}");
+        assert_eq!(
+            listing(dir.path()),
+            vec![name.to_string()],
+            "{name}: output left behind"
+        );
+    }
+}
+
+#[test]
+fn bad_usage_exits_2() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = foldcam(&["convert", "a.fold", "b.xyz"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    let o = foldcam(&["check", "--min-vertex-angle", "-5", "a.fold"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    let o = foldcam(&["check", "does-not-exist.fold"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("does-not-exist.fold"));
+}
