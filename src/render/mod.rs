@@ -9,9 +9,10 @@
 //!
 //! The width is the caller's (16 to 16384 pixels); the height follows the aspect ratio and is
 //! capped at 4 × the width and 16384 pixels ([`layout`]). Geometry stays f64 until it is
-//! handed to tiny-skia as f32 pixel coordinates. Cost: one path per assignment, so millions
-//! of edges draw in one pass per style.
+//! handed to tiny-skia as f32 pixel coordinates. Cost: one path per assignment, with the edges
+//! of each straight crease line chained into one polyline so dashes run on across vertices.
 
+mod chain;
 pub mod font;
 pub mod layout;
 mod preview;

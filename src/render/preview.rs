@@ -3,10 +3,10 @@
 use glam::DVec2;
 use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform};
 
-use super::font;
 use super::layout::{Layout, MAX_SIZE, MIN_SIZE, length_label, nice_length};
 use super::style::{DRAW_ORDER, FAULT_COLOR, LineStyle, SCALE_BAR_COLOR, line_style};
 use super::{PreviewOptions, RenderError};
+use super::{chain, font};
 use crate::check::Finding;
 use crate::pattern::{Assignment, CreasePattern, Units};
 
@@ -98,7 +98,8 @@ fn push_segment(pb: &mut PathBuilder, (a, b): (DVec2, DVec2)) {
     pb.line_to(b.x as f32, b.y as f32);
 }
 
-/// Strokes every edge of one assignment as one path (dashes restart on each edge).
+/// Strokes every edge of one assignment as one path of straight polylines (see [`chain`]), so
+/// dashes run on along a crease line.
 fn draw_lines(
     pixmap: &mut Pixmap,
     cp: &CreasePattern,
@@ -107,13 +108,16 @@ fn draw_lines(
     style: &LineStyle,
 ) {
     let mut pb = PathBuilder::new();
-    for (i, e) in cp.edges.iter().enumerate() {
-        if e.assignment == assignment
-            && let Some(seg) = edge_px(cp, layout, i)
-        {
-            push_segment(&mut pb, seg);
+    chain::for_each_polyline(cp, assignment, |points| {
+        for (i, &p) in points.iter().enumerate() {
+            let q = layout.to_px(p);
+            if i == 0 {
+                pb.move_to(q.x as f32, q.y as f32);
+            } else {
+                pb.line_to(q.x as f32, q.y as f32);
+            }
         }
-    }
+    });
     let Some(path) = pb.finish() else {
         return;
     };
