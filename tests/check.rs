@@ -406,6 +406,8 @@ fn text_report_caps_each_kind_and_ends_with_the_verdict() {
     let lines = text.lines().filter(|l| l.starts_with("short_edge")).count();
     assert_eq!(lines, 50);
     assert!(text.contains("and 10 more short_edge"), "{text}");
+    assert!(text.contains("min edge 1 mm"), "{text}");
+    assert!(text.contains("0.1000 mm long"), "{text}");
     assert!(
         text.trim_end()
             .lines()

@@ -4,7 +4,7 @@
 
 use super::report::EdgeMeasure;
 use super::{CheckOptions, Finding, FindingKind, Quantity};
-use crate::pattern::{CreasePattern, EdgeId};
+use crate::pattern::{CreasePattern, EdgeId, Units};
 
 /// Results of the edge pass.
 #[derive(Default)]
@@ -59,6 +59,10 @@ fn short_edge(
 ) -> Finding {
     let [a, b] = cp.edges[id.index()].vertices;
     let assignment = cp.edges[id.index()].assignment.name();
+    let unit = match cp.units {
+        Units::Millimetres => "mm",
+        Units::Unitless => "units",
+    };
     Finding {
         kind: FindingKind::ShortEdge,
         vertex: None,
@@ -69,9 +73,10 @@ fn short_edge(
         quantity: Quantity::Length,
         mv_counts: None,
         message: format!(
-            "{assignment} edge {a}–{b} is {length:.4} long, below the limit of {limit}"
+            "{assignment} edge {a}–{b} is {length:.4} {unit} long, below the limit of {limit} \
+             {unit}"
         ),
-        hint: format!("merge {a} and {b}, or move them at least {limit} apart"),
+        hint: format!("merge {a} and {b}, or move them at least {limit} {unit} apart"),
     }
 }
 

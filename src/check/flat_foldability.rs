@@ -185,10 +185,13 @@ pub(super) fn maekawa(cp: &CreasePattern, v: VertexId, fan: &[Spoke]) -> Maekawa
     }))
 }
 
+fn plural(n: u32) -> &'static str {
+    if n == 1 { "" } else { "s" }
+}
+
 /// How many creases to flip, and which way, to reach |M − V| = 2 (even degree).
 fn maekawa_hint(m: u32, v: u32) -> String {
     let diff = i64::from(m) - i64::from(v);
-    let plural = |n: u32| if n == 1 { "" } else { "s" };
     if diff > 2 {
         let k = (diff - 2) / 2;
         format!("flip {k} of the {m} mountain{} to valley", plural(m))

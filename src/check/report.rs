@@ -193,6 +193,22 @@ impl CheckReport {
                 e.edge
             );
         }
+        out.push_str(&self.limits_line(unit));
+    }
+
+    fn limits_line(&self, unit: &str) -> String {
+        let o = &self.options;
+        let show = |v: Option<f64>, suffix: &str| match v {
+            Some(v) => format!("{v}{suffix}"),
+            None => "off".to_string(),
+        };
+        format!(
+            "limits: Kawasaki tolerance {}°, min vertex angle {}, max fold angle {}, min edge {}\n",
+            o.kawasaki_tolerance_deg,
+            show(o.min_vertex_angle_deg, "°"),
+            show(o.max_fold_angle_deg, "°"),
+            show(o.min_edge_length, &format!(" {unit}")),
+        )
     }
 
     fn verdict(&self) -> String {
@@ -232,5 +248,7 @@ fn finding_line(f: &Finding) -> String {
 }
 
 fn fmt_point(p: DVec2) -> String {
-    format!("({:.3}, {:.3})", p.x, p.y)
+    // Values that print as zero print without a sign.
+    let clean = |x: f64| if x.abs() < 5e-4 { 0.0 } else { x };
+    format!("({:.3}, {:.3})", clean(p.x), clean(p.y))
 }
