@@ -498,3 +498,50 @@ fn following_the_kawasaki_hint_repairs_the_vertex() {
         assert_eq!(after.of_kind(FindingKind::Kawasaki).count(), 0, "{hint}");
     }
 }
+
+/// `k` sector angles of at least 5° summing to 180°, from positive weights.
+fn parts(weights: &[f64]) -> Vec<f64> {
+    let free = 180.0 - 5.0 * weights.len() as f64;
+    let total: f64 = weights.iter().sum();
+    weights.iter().map(|w| 5.0 + free * w / total).collect()
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+    /// Any vertex whose alternate sectors each sum to 180° passes; rotating one crease by δ
+    /// (within its sectors) gives a Kawasaki error of |δ|.
+    #[test]
+    fn random_flat_vertices_and_their_perturbations(
+        even in proptest::collection::vec(1.0f64..100.0, 1..5),
+        odd_seed in proptest::collection::vec(1.0f64..100.0, 4),
+        pick in 0usize..8,
+        frac in -0.9f64..0.9,
+    ) {
+        let k = even.len();
+        let (even, odd) = (parts(&even), parts(&odd_seed[..k]));
+        let sectors: Vec<f64> = (0..2 * k).map(|i| if i % 2 == 0 { even[i / 2] } else { odd[i / 2] }).collect();
+        let mut at = 0.0;
+        let mut spokes = Vec::new();
+        for (i, s) in sectors.iter().enumerate() {
+            spokes.push((at, if i <= k { M } else { V }));
+            at += s;
+        }
+        let flat = check(&single_vertex(&spokes), &CheckOptions::default());
+        proptest::prop_assert!(flat.passed(), "{}", flat.to_text("mm"));
+
+        let j = pick % (2 * k);
+        let room = sectors[j].min(sectors[(j + 2 * k - 1) % (2 * k)]) - 1.0;
+        let delta = frac * room;
+        spokes[j].0 += delta;
+        let report = check(&single_vertex(&spokes), &CheckOptions::default());
+        let found: Vec<_> = report.of_kind(FindingKind::Kawasaki).collect();
+        if delta.abs() > 0.011 {
+            proptest::prop_assert_eq!(found.len(), 1);
+            proptest::prop_assert!((found[0].value - delta.abs()).abs() < 1e-7);
+        } else if delta.abs() < 0.009 {
+            proptest::prop_assert!(found.is_empty());
+        }
+        proptest::prop_assert_eq!(report.of_kind(FindingKind::Maekawa).count(), 0);
+    }
+}
