@@ -48,7 +48,9 @@ use crate::pattern::faces::find_faces;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
-pub use report::{AssignmentCounts, CheckSummary, EdgeMeasure, VertexMeasure};
+pub use report::{
+    AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
+};
 
 /// Which checks to run and their limits.
 #[derive(Clone, Debug, PartialEq, Serialize)]
