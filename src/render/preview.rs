@@ -163,9 +163,10 @@ fn draw_fault_edges(
     pixmap.stroke_path(&path, &halo, &stroke, Transform::identity(), None);
 }
 
-/// A semi-transparent ring around every finding's position (drawn on top).
+/// A semi-transparent ring around every finding's position (drawn on top); its radius is six
+/// line widths, at least 10 px and 1/80 of the image width.
 fn draw_fault_rings(pixmap: &mut Pixmap, layout: &Layout, faults: &[Finding], lw: f32) {
-    let radius = (6.0 * lw).max(10.0);
+    let radius = (6.0 * lw).max(10.0).max(layout.width as f32 / 80.0);
     let mut pb = PathBuilder::new();
     for f in faults {
         let p = layout.to_px(f.position);
