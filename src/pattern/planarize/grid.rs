@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 /// Edges bucketed by cell, as compressed rows.
 pub(super) struct EdgeGrid {
-    /// Start of each non-empty cell's run in `edges`.
+    /// Start of each cell's run in `edges` (one more entry than there are cells).
     pub runs: Vec<u32>,
     /// Edge indices, grouped by cell.
     pub edges: Vec<u32>,
@@ -30,39 +30,35 @@ impl EdgeGrid {
         let n = segs.len().max(1) as f64;
         let mut cell = (size.x * size.y / n).sqrt().max(size.max_element() / n);
         cell = cell.max(4.0 * tol);
-        let cols = ((size.x / cell).floor() as u64 + 1).min(1 << 31);
+        let cols = (size.x + 2.0 * tol) / cell;
+        let rows = (size.y + 2.0 * tol) / cell;
         let spec = CellSpec {
-            origin: lo,
+            origin: lo - DVec2::splat(tol),
             inv: 1.0 / cell,
             cell,
-            cols,
+            cols: cols.floor() as u64 + 1,
+            rows: rows.floor() as u64 + 1,
             tol,
         };
-        let mut pairs: Vec<(u64, u32)> = segs
-            .par_iter()
-            .enumerate()
-            .fold(Vec::new, |mut out, (i, &(a, b))| {
-                spec.cover(a, b, |key| out.push((key, i as u32)));
-                out
-            })
-            .reduce(Vec::new, |mut x, mut y| {
-                x.append(&mut y);
-                x
+        // Counting sort by cell: count, prefix sums, scatter (the cells are few and dense, so
+        // this beats a comparison sort of (cell, edge) pairs).
+        let mut runs = vec![0u32; (spec.cols * spec.rows) as usize + 1];
+        for &(a, b) in segs {
+            spec.cover(a, b, |key| runs[key as usize + 1] += 1);
+        }
+        for i in 1..runs.len() {
+            runs[i] += runs[i - 1];
+        }
+        let mut fill = runs.clone();
+        let mut edges = vec![0u32; runs[runs.len() - 1] as usize];
+        for (i, &(a, b)) in segs.iter().enumerate() {
+            spec.cover(a, b, |key| {
+                let slot = &mut fill[key as usize];
+                edges[*slot as usize] = i as u32;
+                *slot += 1;
             });
-        pairs.par_sort_unstable();
-        let mut runs = Vec::new();
-        let mut last = u64::MAX;
-        for (i, &(key, _)) in pairs.iter().enumerate() {
-            if key != last {
-                runs.push(i as u32);
-                last = key;
-            }
         }
-        runs.push(pairs.len() as u32);
-        EdgeGrid {
-            runs,
-            edges: pairs.into_iter().map(|(_, e)| e).collect(),
-        }
+        EdgeGrid { runs, edges }
     }
 
     /// The edge lists of the cells holding two or more edges.
@@ -79,6 +75,7 @@ struct CellSpec {
     inv: f64,
     cell: f64,
     cols: u64,
+    rows: u64,
     tol: f64,
 }
 
@@ -88,7 +85,7 @@ impl CellSpec {
     }
 
     fn row(&self, y: f64) -> u64 {
-        ((y - self.origin.y) * self.inv).floor().max(0.0) as u64
+        (((y - self.origin.y) * self.inv).floor().max(0.0) as u64).min(self.rows - 1)
     }
 
     /// Calls `visit` with the key of every cell the widened segment `a–b` touches: column by

@@ -1,15 +1,19 @@
 //! Merging vertices closer than a tolerance.
 //!
-//! Vertices are bucketed in a hash grid of cell size `tol`, so two vertices within `tol` of each
-//! other are in the same or neighbouring cells; a union–find joins them. Merging is transitive
-//! (a chain of vertices each within `tol` of the next collapses to one), and the survivor of
-//! each group is its lowest-numbered vertex, which keeps its position: results do not depend
-//! on hash order.
-
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
+//! Vertices are sorted by the cell of a grid whose cells are much larger than the tolerance
+//! (64 × `tol`, or coarser for huge coordinate ranges), so two vertices within `tol` share a
+//! cell unless one lies within `tol` of a cell border, in which case the few neighbouring cells
+//! it is that close to are searched too. Candidate pairs are found in parallel; a union–find
+//! joins them. Merging is transitive (a chain of vertices each within `tol` of the next
+//! collapses to one), and the survivor of each group is its lowest-numbered vertex, which keeps
+//! its position: results do not depend on thread scheduling.
 
 use glam::DVec2;
+use rayon::prelude::*;
+
+/// Cell size over tolerance: large enough that few points sit near a border, small enough that
+/// distinct vertices of a real drawing rarely share a cell.
+const CELL_OVER_TOL: f64 = 64.0;
 
 /// Maps every vertex to the representative of its group (`rep[i] <= i`). Returns the map and
 /// the number of vertices merged into others.
@@ -18,34 +22,20 @@ pub(super) fn merge_close(points: &[DVec2], tol: f64) -> (Vec<u32>, usize) {
     if tol <= 0.0 || points.len() < 2 {
         return (parent, 0);
     }
-    let inv = 1.0 / tol;
-    let cell_of = |p: DVec2| ((p.x * inv).floor() as i64, (p.y * inv).floor() as i64);
-    let mut cells: HashMap<(i64, i64), u32, BuildHasherDefault<CellHasher>> =
-        HashMap::with_capacity_and_hasher(points.len(), Default::default());
-    // Each cell holds the head of a linked list of its vertices (next[] chains them).
-    let mut next = vec![u32::MAX; points.len()];
-    for (i, &p) in points.iter().enumerate() {
-        let slot = cells.entry(cell_of(p)).or_insert(u32::MAX);
-        next[i] = *slot;
-        *slot = i as u32;
-    }
-    let tol2 = tol * tol;
-    for (i, &p) in points.iter().enumerate() {
-        let (cx, cy) = cell_of(p);
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                let Some(&head) = cells.get(&(cx + dx, cy + dy)) else {
-                    continue;
-                };
-                let mut j = head;
-                while j != u32::MAX {
-                    if (j as usize) < i && points[j as usize].distance_squared(p) <= tol2 {
-                        union(&mut parent, i as u32, j);
-                    }
-                    j = next[j as usize];
-                }
-            }
-        }
+    let grid = SortedCells::new(points, tol);
+    let pairs: Vec<(u32, u32)> = grid
+        .runs()
+        .par_iter()
+        .fold(Vec::new, |mut out, run| {
+            grid.close_pairs(points, run.clone(), tol, &mut out);
+            out
+        })
+        .reduce(Vec::new, |mut a, mut b| {
+            a.append(&mut b);
+            a
+        });
+    for (a, b) in pairs {
+        union(&mut parent, a, b);
     }
     let mut merged = 0;
     for i in 0..parent.len() {
@@ -56,6 +46,99 @@ pub(super) fn merge_close(points: &[DVec2], tol: f64) -> (Vec<u32>, usize) {
         }
     }
     (parent, merged)
+}
+
+/// Vertex indices sorted by cell.
+struct SortedCells {
+    origin: DVec2,
+    cell: f64,
+    /// `(cell key, vertex)`, sorted.
+    keys: Vec<((i64, i64), u32)>,
+}
+
+impl SortedCells {
+    fn new(points: &[DVec2], tol: f64) -> Self {
+        let (lo, hi) = points.iter().fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), &p| (lo.min(p), hi.max(p)),
+        );
+        // Keep cell indices far inside i64 even for a 1e9 range at a tiny tolerance.
+        let cell = (CELL_OVER_TOL * tol).max((hi - lo).max_element() / (1u64 << 40) as f64);
+        let mut grid = SortedCells {
+            origin: lo,
+            cell,
+            keys: Vec::new(),
+        };
+        let mut keys: Vec<((i64, i64), u32)> = points
+            .par_iter()
+            .enumerate()
+            .map(|(i, &p)| (grid.key(p), i as u32))
+            .collect();
+        keys.par_sort_unstable();
+        grid.keys = keys;
+        grid
+    }
+
+    fn key(&self, p: DVec2) -> (i64, i64) {
+        let c = ((p - self.origin) / self.cell).floor();
+        (c.x as i64, c.y as i64)
+    }
+
+    /// The ranges of `keys` that share a cell.
+    fn runs(&self) -> Vec<std::ops::Range<usize>> {
+        let mut runs = Vec::new();
+        let mut start = 0;
+        for i in 1..=self.keys.len() {
+            if i == self.keys.len() || self.keys[i].0 != self.keys[start].0 {
+                runs.push(start..i);
+                start = i;
+            }
+        }
+        runs
+    }
+
+    /// Pushes every pair within `tol` that has a member in `run` (one cell): pairs inside the
+    /// cell, and pairs with the neighbouring cells that a member is within `tol` of.
+    fn close_pairs(
+        &self,
+        points: &[DVec2],
+        run: std::ops::Range<usize>,
+        tol: f64,
+        out: &mut Vec<(u32, u32)>,
+    ) {
+        let tol2 = tol * tol;
+        let cell = &self.keys[run.clone()];
+        for (k, &(_, i)) in cell.iter().enumerate() {
+            let p = points[i as usize];
+            for &(_, j) in &cell[k + 1..] {
+                if points[j as usize].distance_squared(p) <= tol2 {
+                    out.push((i, j));
+                }
+            }
+            let (c, lo, hi) = (self.key(p), self.key(p - tol), self.key(p + tol));
+            if lo == c && hi == c {
+                continue;
+            }
+            // Near a border: look in the neighbouring cells; each pair is taken from the side
+            // of the smaller cell key only, so it is found once.
+            for x in lo.0..=hi.0 {
+                for y in lo.1..=hi.1 {
+                    if (x, y) <= c {
+                        continue;
+                    }
+                    let start = self.keys.partition_point(|k| k.0 < (x, y));
+                    for &(key, j) in &self.keys[start..] {
+                        if key != (x, y) {
+                            break;
+                        }
+                        if points[j as usize].distance_squared(p) <= tol2 {
+                            out.push((i, j));
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -77,28 +160,6 @@ fn union(parent: &mut [u32], a: u32, b: u32) {
     }
 }
 
-/// A fast multiplicative hasher for integer cell keys (no protection against adversarial
-/// collisions is needed: keys come from coordinates already validated and bounded).
-#[derive(Default)]
-pub(super) struct CellHasher(u64);
-
-impl Hasher for CellHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(b as u64);
-        }
-    }
-    fn write_i64(&mut self, n: i64) {
-        self.write_u64(n as u64);
-    }
-    fn write_u64(&mut self, n: u64) {
-        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -114,5 +175,51 @@ mod tests {
         let (rep, merged) = merge_close(&pts, 0.2);
         assert_eq!(rep, vec![0, 1, 0, 0]);
         assert_eq!(merged, 2);
+    }
+
+    /// Brute force: the same grouping from all pairs within `tol`.
+    fn brute(points: &[DVec2], tol: f64) -> Vec<u32> {
+        let mut parent: Vec<u32> = (0..points.len() as u32).collect();
+        for i in 0..points.len() {
+            for j in 0..i {
+                if points[i].distance(points[j]) <= tol {
+                    union(&mut parent, i as u32, j as u32);
+                }
+            }
+        }
+        (0..points.len() as u32)
+            .map(|i| find(&mut parent, i))
+            .collect()
+    }
+
+    #[test]
+    fn agrees_with_brute_force_across_cell_borders() {
+        // Points jittered around lattice positions that are multiples of the cell size, so
+        // many pairs straddle borders; a fixed LCG keeps the case reproducible.
+        let tol = 0.01;
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rand = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut pts = Vec::new();
+        for _ in 0..600 {
+            let base = DVec2::new((rand() * 6.0).floor(), (rand() * 6.0).floor()) * 0.64;
+            let jitter = DVec2::new(rand() - 0.5, rand() - 0.5) * 0.03;
+            pts.push(base + jitter);
+        }
+        let (rep, merged) = merge_close(&pts, tol);
+        let want = brute(&pts, tol);
+        assert_eq!(rep, want);
+        assert_eq!(
+            merged,
+            rep.iter()
+                .enumerate()
+                .filter(|(i, r)| **r != *i as u32)
+                .count()
+        );
+        assert!(merged > 0 && merged < pts.len() - 36);
     }
 }

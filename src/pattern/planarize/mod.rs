@@ -18,6 +18,7 @@ mod merge;
 mod split;
 
 use glam::DVec2;
+use rayon::prelude::*;
 
 use super::faces::find_faces;
 use super::{CreasePattern, Edge, VertexId};
@@ -187,27 +188,32 @@ fn remove_zero_length(cp: &mut CreasePattern, report: &mut PlanarizeReport) {
 /// Keeps one edge per vertex pair: the strongest assignment, the first among equals; the
 /// survivors keep their original order and orientation.
 fn remove_duplicates(cp: &mut CreasePattern, report: &mut PlanarizeReport) {
-    let key = |e: &Edge| {
-        let [a, b] = e.vertices;
-        (a.min(b), a.max(b))
-    };
-    let mut order: Vec<u32> = (0..cp.edges.len() as u32).collect();
-    order.sort_unstable_by_key(|&i| (key(&cp.edges[i as usize]), i));
+    // Sort (vertex pair, edge) keys once, then scan runs of equal pairs.
+    let mut order: Vec<(u64, u32)> = cp
+        .edges
+        .par_iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let [a, b] = e.vertices;
+            let key = ((a.0.min(b.0) as u64) << 32) | a.0.max(b.0) as u64;
+            (key, i as u32)
+        })
+        .collect();
+    order.par_sort_unstable();
     let mut keep = vec![false; cp.edges.len()];
-    let mut g = 0;
-    while g < order.len() {
-        let k = key(&cp.edges[order[g] as usize]);
-        let mut best = order[g];
-        let mut h = g + 1;
-        while h < order.len() && key(&cp.edges[order[h] as usize]) == k {
-            let s = cp.edges[order[h] as usize].assignment.strength();
-            if s > cp.edges[best as usize].assignment.strength() {
-                best = order[h];
-            }
-            h += 1;
-        }
-        keep[best as usize] = true;
-        g = h;
+    for run in order.chunk_by(|x, y| x.0 == y.0) {
+        let best = run
+            .iter()
+            .map(|&(_, i)| i as usize)
+            .reduce(|best, i| {
+                let (sb, si) = (
+                    cp.edges[best].assignment.strength(),
+                    cp.edges[i].assignment.strength(),
+                );
+                if si > sb { i } else { best }
+            })
+            .unwrap_or_default();
+        keep[best] = true;
     }
     let before = cp.edges.len();
     let mut i = 0;

@@ -1,0 +1,300 @@
+//! Walks usvg's tree and turns every stroked path into crease segments.
+//!
+//! usvg has already turned lines, polylines, polygons, rectangles, circles and ellipses into
+//! paths, resolved CSS and inheritance, and instantiated `<use>`. For each path this module
+//! takes the stroke colour (matched to the palette), the stroke opacity times the opacity of
+//! every enclosing group (element `opacity` attributes become such groups), and the path's
+//! absolute transform; straight segments become edges, curves are flattened into chords of at
+//! most [`CURVE_TOLERANCE_MM`] deviation. Elements without a stroke, stroked with a gradient or
+//! pattern, and images are skipped and counted for the warnings.
+//!
+//! Precision: usvg stores coordinates, transforms and opacities as `f32`, so coordinates carry
+//! a relative error of about 1e-7 of their magnitude and fold angles about 1e-5 degrees.
+
+use std::collections::BTreeMap;
+
+use glam::{DAffine2, DVec2};
+
+use super::flatten;
+use super::palette::{self, Match, Rgb};
+use crate::formats::ParseError;
+use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
+
+/// Largest chord deviation allowed when flattening curves, in millimetres.
+pub const CURVE_TOLERANCE_MM: f64 = 0.01;
+
+/// Most edges read from one file; larger drawings are refused with an error.
+pub const MAX_SEGMENTS: usize = 10_000_000;
+
+/// At most this many element ids are named in one warning.
+const IDS_NAMED: usize = 3;
+
+/// At most this many off-palette colours get a warning of their own; the rest share one.
+const COLOURS_NAMED: usize = 12;
+
+/// One off-palette colour: how many elements used it and which ids.
+#[derive(Debug)]
+struct OffPalette {
+    matched: Match,
+    elements: usize,
+    ids: Vec<String>,
+}
+
+/// The pattern collected so far and the counts behind the warnings.
+pub struct Collector {
+    to_pattern: DAffine2,
+    /// The segments read, as unmerged vertex pairs.
+    pub pattern: CreasePattern,
+    elements: usize,
+    no_stroke: usize,
+    non_colour: usize,
+    images: usize,
+    curves: usize,
+    chords: usize,
+    off_palette: BTreeMap<Rgb, OffPalette>,
+}
+
+/// The style of one stroked element.
+#[derive(Clone, Copy)]
+struct Style {
+    assignment: Assignment,
+    fold_angle: Option<f64>,
+}
+
+impl Collector {
+    /// A collector mapping canvas pixels to the pattern with `to_pattern`.
+    pub fn new(to_pattern: DAffine2) -> Self {
+        Collector {
+            to_pattern,
+            pattern: CreasePattern {
+                units: Units::Millimetres,
+                ..CreasePattern::default()
+            },
+            elements: 0,
+            no_stroke: 0,
+            non_colour: 0,
+            images: 0,
+            curves: 0,
+            chords: 0,
+            off_palette: BTreeMap::new(),
+        }
+    }
+
+    /// Collects every path below `group`, whose accumulated opacity is `opacity`.
+    pub fn group(&mut self, group: &usvg::Group, opacity: f64) -> Result<(), ParseError> {
+        for child in group.children() {
+            match child {
+                usvg::Node::Group(g) => self.group(g, opacity * f64::from(g.opacity().get()))?,
+                usvg::Node::Path(p) => self.path(p, opacity)?,
+                usvg::Node::Image(_) => self.images += 1,
+                usvg::Node::Text(_) => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn path(&mut self, path: &usvg::Path, opacity: f64) -> Result<(), ParseError> {
+        self.elements += 1;
+        let Some(stroke) = path.stroke() else {
+            self.no_stroke += 1;
+            return Ok(());
+        };
+        let usvg::Paint::Color(c) = stroke.paint() else {
+            self.non_colour += 1;
+            return Ok(());
+        };
+        let matched = palette::nearest(Rgb(c.red, c.green, c.blue));
+        if !matched.exact {
+            self.note_off_palette(Rgb(c.red, c.green, c.blue), matched, path.id());
+        }
+        let alpha = opacity * f64::from(stroke.opacity().get());
+        let style = Style {
+            assignment: matched.assignment,
+            fold_angle: palette::fold_angle(matched.assignment, alpha),
+        };
+        let transform = self.to_pattern * affine(path.abs_transform());
+        self.segments(path, transform, style)
+            .map_err(|message| ParseError::new(self.place(path), message))
+    }
+
+    fn note_off_palette(&mut self, colour: Rgb, matched: Match, id: &str) {
+        let entry = self.off_palette.entry(colour).or_insert(OffPalette {
+            matched,
+            elements: 0,
+            ids: Vec::new(),
+        });
+        entry.elements += 1;
+        if !id.is_empty() && entry.ids.len() < IDS_NAMED {
+            entry.ids.push(id.to_string());
+        }
+    }
+
+    /// Names the current element for an error message.
+    fn place(&self, path: &usvg::Path) -> String {
+        if path.id().is_empty() {
+            format!("stroked element {} (in document order)", self.elements)
+        } else {
+            format!("element id=\"{}\"", path.id())
+        }
+    }
+
+    /// Adds the segments of one path.
+    fn segments(&mut self, path: &usvg::Path, t: DAffine2, style: Style) -> Result<(), String> {
+        use usvg::tiny_skia_path::PathSegment;
+        let map = |p: usvg::tiny_skia_path::Point| {
+            t.transform_point2(DVec2::new(f64::from(p.x), f64::from(p.y)))
+        };
+        let (mut start, mut current) = (DVec2::ZERO, DVec2::ZERO);
+        for segment in path.data().segments() {
+            match segment {
+                PathSegment::MoveTo(p) => (start, current) = (map(p), map(p)),
+                PathSegment::LineTo(p) => current = self.line(current, map(p), style)?,
+                PathSegment::QuadTo(p1, p) => {
+                    let points = flatten::quad(current, map(p1), map(p), CURVE_TOLERANCE_MM);
+                    current = self.polyline(current, &points, style)?;
+                }
+                PathSegment::CubicTo(p1, p2, p) => {
+                    let points =
+                        flatten::cubic(current, map(p1), map(p2), map(p), CURVE_TOLERANCE_MM);
+                    current = self.polyline(current, &points, style)?;
+                }
+                PathSegment::Close => current = self.line(current, start, style)?,
+            }
+        }
+        Ok(())
+    }
+
+    /// Adds the chords of a flattened curve starting at `from`; returns the end point.
+    fn polyline(&mut self, from: DVec2, points: &[DVec2], style: Style) -> Result<DVec2, String> {
+        self.curves += 1;
+        self.chords += points.len();
+        let mut current = from;
+        for &p in points {
+            current = self.line(current, p, style)?;
+        }
+        Ok(current)
+    }
+
+    /// Adds one straight segment (skipping zero-length ones); returns its end.
+    fn line(&mut self, a: DVec2, b: DVec2, style: Style) -> Result<DVec2, String> {
+        for p in [a, b] {
+            if !(p.is_finite() && p.abs().max_element() <= MAX_COORDINATE) {
+                return Err(format!(
+                    "point ({}, {}) mm lies outside ±{MAX_COORDINATE:e} mm",
+                    p.x, p.y
+                ));
+            }
+        }
+        if a == b {
+            return Ok(b);
+        }
+        if self.pattern.edges.len() >= MAX_SEGMENTS {
+            return Err(format!(
+                "the drawing has more than {MAX_SEGMENTS} line segments, the most read"
+            ));
+        }
+        let e = self.pattern.add_segment(a, b, style.assignment);
+        self.pattern.edges[e.index()].fold_angle = style.fold_angle;
+        Ok(b)
+    }
+
+    /// True when no segment was read.
+    pub fn is_empty(&self) -> bool {
+        self.pattern.edges.is_empty()
+    }
+
+    /// Why an SVG without segments was refused.
+    pub fn empty_message(&self) -> String {
+        let mut message = String::from(
+            "the SVG holds no stroked lines in the crease palette (Origami Simulator draws \
+             each crease as a stroked line: red mountain, blue valley, black boundary, green \
+             cut, yellow facet, magenta unassigned)",
+        );
+        if self.elements > 0 {
+            message.push_str(&format!(
+                "; of its {} shapes, {} have no stroke and {} a gradient or pattern stroke",
+                self.elements, self.no_stroke, self.non_colour
+            ));
+        }
+        message
+    }
+
+    /// The warnings for everything skipped or approximated.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out: Vec<String> = self
+            .off_palette
+            .iter()
+            .take(COLOURS_NAMED)
+            .map(off_palette_warning)
+            .collect();
+        if self.off_palette.len() > COLOURS_NAMED {
+            let rest = &self
+                .off_palette
+                .values()
+                .skip(COLOURS_NAMED)
+                .collect::<Vec<_>>();
+            out.push(format!(
+                "{} more off-palette stroke colours on {} element(s) were read as the nearest \
+                 palette colour",
+                rest.len(),
+                rest.iter().map(|o| o.elements).sum::<usize>()
+            ));
+        }
+        if self.no_stroke > 0 {
+            out.push(format!(
+                "{} element(s) without a stroke were ignored (creases are stroked lines)",
+                self.no_stroke
+            ));
+        }
+        if self.non_colour > 0 {
+            out.push(format!(
+                "{} element(s) stroked with a gradient or pattern were ignored (creases need \
+                 a plain stroke colour)",
+                self.non_colour
+            ));
+        }
+        if self.images > 0 {
+            out.push(format!("{} embedded image(s) were ignored", self.images));
+        }
+        if self.curves > 0 {
+            out.push(format!(
+                "{} curved segment(s) were flattened into {} straight edges (within \
+                 {CURVE_TOLERANCE_MM} mm); creases are straight",
+                self.curves, self.chords
+            ));
+        }
+        out
+    }
+}
+
+fn off_palette_warning((colour, off): (&Rgb, &OffPalette)) -> String {
+    let ids = if off.ids.is_empty() {
+        String::from("no id")
+    } else {
+        let named: Vec<String> = off.ids.iter().map(|id| format!("\"{id}\"")).collect();
+        let more = if off.elements > off.ids.len() {
+            ", …"
+        } else {
+            ""
+        };
+        format!("id {}{more}", named.join(", "))
+    };
+    format!(
+        "stroke colour {} is not in the crease palette: {} element(s) ({ids}) read as {} \
+         (nearest palette colour {})",
+        colour.hex(),
+        off.elements,
+        off.matched.assignment.name(),
+        off.matched.palette.hex()
+    )
+}
+
+/// usvg's `f32` transform as an `f64` affine map.
+fn affine(t: usvg::Transform) -> DAffine2 {
+    let f = f64::from;
+    DAffine2::from_cols(
+        DVec2::new(f(t.sx), f(t.ky)),
+        DVec2::new(f(t.kx), f(t.sy)),
+        DVec2::new(f(t.tx), f(t.ty)),
+    )
+}

@@ -1,0 +1,160 @@
+//! The SVG reader: XML and SVG errors, the root element, title and description, and the
+//! hand-off to [`super::collect`] and planarisation.
+
+use usvg::roxmltree;
+
+use super::collect::Collector;
+use super::frame;
+use crate::formats::{Imported, ParseError};
+use crate::pattern::{CreasePattern, PlanarizeOptions, planarize};
+
+/// Merge tolerance relative to the drawing's size (1e-5: 2 µm on a 200 mm sheet).
+///
+/// Larger than planarisation's default on purpose: drawing programs print SVG coordinates
+/// with two to four decimals of a pixel, so endpoints meant to coincide differ by up to
+/// 1e-3 px, and usvg holds coordinates in `f32` (relative error 6e-8 of their magnitude,
+/// before transforms). Both would leave endpoints unmerged, and slivers of a few µm, at
+/// planarisation's default of 1e-7.
+pub const MERGE_TOLERANCE: f64 = 1e-5;
+
+/// The SVG namespace.
+const SVG_NS: &str = "http://www.w3.org/2000/svg";
+
+/// Parses an SVG crease pattern drawn in Origami Simulator's colours.
+///
+/// The pattern comes back in millimetres with y pointing up, planarised (coincident endpoints
+/// merged, crossings split, duplicates removed), its title and description taken from the
+/// root's `<title>` and `<desc>`. Warnings name off-palette colours, ignored elements and
+/// flattened curves.
+///
+/// # Errors
+/// Text that is not XML (naming the line and column), a root element other than `<svg>`, an
+/// SVG usvg refuses (no valid size, too many elements), coordinates beyond
+/// [`crate::pattern::MAX_COORDINATE`], more than [`super::MAX_SEGMENTS`] segments, or
+/// no stroked line at all.
+pub fn read_str(text: &str) -> Result<Imported, ParseError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if text.trim().is_empty() {
+        return Err(ParseError::new(
+            "file",
+            "the file is empty, not an SVG document",
+        ));
+    }
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..Default::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text, options).map_err(xml_error)?;
+    check_root(doc.root_element())?;
+    let tree = usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(usvg_error)?;
+    let size = tree.size();
+    let canvas = (f64::from(size.width()), f64::from(size.height()));
+    let mut collector = Collector::new(frame::canvas_to_pattern(doc.root_element(), canvas));
+    collector.group(tree.root(), 1.0)?;
+    if collector.is_empty() {
+        return Err(ParseError::new("file", collector.empty_message()));
+    }
+    let mut warnings = collector.warnings();
+    warnings.extend(text_warning(&doc));
+    let mut pattern = collector.pattern;
+    pattern.meta.title = child_text(doc.root_element(), "title");
+    pattern.meta.description = child_text(doc.root_element(), "desc");
+    let tolerance = merge_tolerance(&pattern);
+    let report = planarize(
+        &mut pattern,
+        &PlanarizeOptions {
+            tolerance: Some(tolerance),
+            faces: false,
+        },
+    );
+    if report.duplicates_removed > 0 {
+        warnings.push(format!(
+            "{} line(s) drawn over others were merged (the stronger assignment kept)",
+            report.duplicates_removed
+        ));
+    }
+    pattern
+        .validate()
+        .map_err(|e| ParseError::new("file", e.to_string()))?;
+    Ok(Imported {
+        pattern,
+        folded: None,
+        warnings,
+    })
+}
+
+/// Distance below which endpoints merge (and a point splits a line it touches), in
+/// millimetres: [`MERGE_TOLERANCE`] of the larger of the drawing's diagonal and its largest
+/// coordinate magnitude.
+pub fn merge_tolerance(pattern: &CreasePattern) -> f64 {
+    let Some((lo, hi)) = pattern.bounds() else {
+        return 1e-12;
+    };
+    let magnitude = lo.abs().max(hi.abs()).max_element();
+    (lo.distance(hi).max(magnitude) * MERGE_TOLERANCE).max(1e-12)
+}
+
+/// True for an element of this local name in the SVG namespace (or in none).
+fn is_svg_element(node: roxmltree::Node, name: &str) -> bool {
+    let tag = node.tag_name();
+    node.is_element() && tag.name() == name && matches!(tag.namespace(), None | Some(SVG_NS))
+}
+
+fn check_root(root: roxmltree::Node) -> Result<(), ParseError> {
+    if is_svg_element(root, "svg") {
+        return Ok(());
+    }
+    let pos = root.document().text_pos_at(root.range().start);
+    Err(ParseError::new(
+        format!("line {}", pos.row),
+        format!(
+            "the root element is <{}>, not <svg>: this is not an SVG document",
+            root.tag_name().name()
+        ),
+    ))
+}
+
+/// The trimmed text of the first child element `name` of the root, if not empty.
+fn child_text(root: roxmltree::Node, name: &str) -> Option<String> {
+    let node = root.children().find(|n| is_svg_element(*n, name))?;
+    let text: String = node
+        .descendants()
+        .filter(|n| n.is_text())
+        .filter_map(|n| n.text())
+        .collect();
+    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    (!text.is_empty()).then_some(text)
+}
+
+/// A warning when the document holds text, which is not read.
+fn text_warning(doc: &roxmltree::Document) -> Option<String> {
+    let count = doc
+        .descendants()
+        .filter(|n| is_svg_element(*n, "text"))
+        .count();
+    (count > 0).then(|| format!("{count} text element(s) were ignored"))
+}
+
+fn xml_error(e: roxmltree::Error) -> ParseError {
+    let pos = e.pos();
+    ParseError::new(
+        format!("line {}, column {}", pos.row, pos.col),
+        format!("not well-formed XML: {e}"),
+    )
+}
+
+fn usvg_error(e: usvg::Error) -> ParseError {
+    match e {
+        usvg::Error::ParsingFailed(roxmltree::Error::NodesLimitReached) => ParseError::new(
+            "file",
+            "elements are nested more than 1024 levels deep (or `<use>` references loop), \
+             beyond what the SVG reader accepts",
+        ),
+        usvg::Error::ParsingFailed(x) => xml_error(x),
+        usvg::Error::InvalidSize => ParseError::new(
+            "<svg>",
+            "the SVG has no valid size: width and height must be positive (or a viewBox given)",
+        ),
+        other => ParseError::new("file", format!("not a usable SVG: {other}")),
+    }
+}
