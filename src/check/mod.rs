@@ -44,7 +44,7 @@ use glam::DVec2;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::pattern::faces::find_faces;
+use crate::pattern::faces::find_faces_with;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
@@ -272,7 +272,7 @@ fn interior_mask(cp: &CreasePattern, fans: &VertexFans) -> Vec<bool> {
         })
         .collect();
     if mask.iter().any(|&m| m) {
-        let outer = find_faces(cp).outer_vertex_mask(n);
+        let outer = find_faces_with(cp, fans).outer_vertex_mask(n);
         for (m, o) in mask.iter_mut().zip(outer) {
             *m &= !o;
         }
