@@ -1,3 +1,9 @@
-//! The `foldcam` command (the CLI lands once the format readers are merged).
+//! The `foldcam` command: a thin front end over the library (see `cli/`).
 
-fn main() {}
+mod cli;
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    cli::run()
+}

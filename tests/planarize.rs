@@ -1,6 +1,7 @@
 //! Planarisation: crossings split, touches split, duplicates merged, faces traced; random
 //! drawings come out as planar graphs with Euler's formula holding.
 
+use foldcam::geom::polygon::contains_point;
 use foldcam::geom::segment::{Crossing, intersect};
 use foldcam::pattern::faces::find_faces;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
@@ -246,10 +247,26 @@ proptest! {
         let faces = cp.faces.as_ref().map_or(0, |f| f.len()) as i64;
         let (v, e) = (cp.vertices.len() as i64, cp.edges.len() as i64);
         prop_assert_eq!(v - e + faces, components(&cp) as i64);
-        // Every face outline is counter-clockwise and holes clockwise.
+        // Every face outline is counter-clockwise, and each hole lies inside its face.
         for f in cp.faces.iter().flatten() {
-            let area = foldcam::geom::polygon::signed_area(f.outer.iter().map(|&v| cp.position(v)));
-            prop_assert!(area > 0.0);
+            let ring: Vec<DVec2> = f.outer.iter().map(|&v| cp.position(v)).collect();
+            prop_assert!(foldcam::geom::polygon::signed_area(ring.iter().copied()) > 0.0);
+            for hole in &f.holes {
+                let p = cp.position(hole[0]);
+                prop_assert!(contains_point(&ring, p), "hole at {p} outside its face");
+            }
+        }
+        // Outlines left on the unbounded face are inside no face of another component.
+        let set = find_faces(&cp);
+        for cycle in &set.outer {
+            let p = cp.position(cycle[0]);
+            for f in cp.faces.iter().flatten() {
+                if f.outer.iter().any(|v| cycle.contains(v)) {
+                    continue;
+                }
+                let ring: Vec<DVec2> = f.outer.iter().map(|&v| cp.position(v)).collect();
+                prop_assert!(!contains_point(&ring, p), "outline at {p} is inside a face");
+            }
         }
     }
 }
@@ -272,4 +289,34 @@ fn regression_long_diagonal_crossed_by_short_segment() {
     let r = planarize(&mut cp, &opts(true));
     assert_eq!(r.crossings, 1);
     assert_eq!((cp.vertices.len(), cp.edges.len()), (5, 4));
+}
+
+#[test]
+fn islands_nest_inside_holes_and_separate_sheets_stay_outside() {
+    let mut cp = CreasePattern::new();
+    let square = |cp: &mut CreasePattern, x: f64, y: f64, s: f64, k: Assignment| {
+        let c = [(x, y), (x + s, y), (x + s, y + s), (x, y + s)];
+        for i in 0..4 {
+            seg(cp, c[i], c[(i + 1) % 4], k);
+        }
+    };
+    square(&mut cp, 0.0, 0.0, 100.0, Assignment::Boundary); // sheet
+    square(&mut cp, 20.0, 20.0, 60.0, Assignment::Cut); // hole cut in it
+    square(&mut cp, 40.0, 40.0, 20.0, Assignment::Boundary); // island inside the hole
+    square(&mut cp, 200.0, 0.0, 50.0, Assignment::Boundary); // a second sheet
+    planarize(&mut cp, &opts(true));
+    let set = find_faces(&cp);
+    assert_eq!(set.faces.len(), 4);
+    assert_eq!(set.outer.len(), 2, "two sheets on the unbounded face");
+    let area = |f: &foldcam::pattern::Face| {
+        foldcam::geom::polygon::signed_area(f.outer.iter().map(|&v| cp.position(v)))
+    };
+    for f in &set.faces {
+        let expected_holes = match area(f).round() as i64 {
+            10_000 => 1, // the sheet holds the hole's outline
+            3_600 => 1,  // the hole's inside holds the island
+            _ => 0,
+        };
+        assert_eq!(f.holes.len(), expected_holes, "face of area {}", area(f));
+    }
 }

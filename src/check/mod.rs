@@ -1,16 +1,63 @@
-//! PLACEHOLDER: pattern checks (written by the checks work).
+//! Pattern checks: local flat-foldability (Kawasaki, Maekawa), vertex angles, edge lengths and
+//! fold angles, collected into a [`CheckReport`].
+//!
+//! # What is checked
+//! - **Kawasaki** at every interior vertex: with the creases sorted counter-clockwise and
+//!   α₀ … αₙ₋₁ the sector angles between consecutive ones, the alternating sum
+//!   Σ (−1)ⁱ αᵢ must be 0, i.e. the even sectors and the odd sectors each sum to 180°. The
+//!   reported error is half the alternating sum, |Σ even − 180°|: rotating one crease by that
+//!   angle fixes the vertex, and a crease rotated by δ from a flat-foldable position gives an
+//!   error of exactly δ. An odd number of creases fails outright (quantity
+//!   [`Quantity::Creases`]); such vertices are not checked for Maekawa, which an odd degree
+//!   cannot satisfy either.
+//! - **Maekawa** at every interior vertex of even degree whose creases are all mountain or
+//!   valley: |M − V| = 2. Vertices with an unassigned crease are skipped and counted in
+//!   [`CheckSummary::maekawa_skipped_unassigned`].
+//! - **Vertex angle** (Tachi's δ_corner) at every vertex: the smallest sector between
+//!   neighbouring spokes where both are creases or one is a crease and the other is an outline
+//!   (B or C), against [`CheckOptions::min_vertex_angle_deg`]. The sector between two outline
+//!   edges is never counted (it may be the outside of the sheet).
+//! - **Short edges** (any assignment) against [`CheckOptions::min_edge_length`]; the shortest
+//!   edge is always in the summary.
+//! - **Fold angles** where known: |angle| > [`CheckOptions::max_fold_angle_deg`] fails.
+//!
+//! # Creases and interior vertices
+//! Creases are the edges that fold: mountain, valley and unassigned. Flat facet lines (F) and
+//! joins (J) do not fold and are ignored by Kawasaki, Maekawa and the vertex angle. A vertex is
+//! interior when none of its edges is a boundary or cut and it does not lie on the unbounded
+//! face of the planar graph ([`crate::pattern::faces::find_faces`]), so patterns without any
+//! boundary edge are handled too. Vertices without creases are skipped.
+//!
+//! # Contract and cost
+//! The pattern must be validated and planar (as after [`crate::pattern::planarize()`]); on a
+//! non-planar pattern the results are still defined but the interior test may be wrong.
+//! Angles are in degrees, lengths in the pattern's unit. The cost is O(E log d) for the fans
+//! and faces plus a parallel pass over the vertices; nothing is allocated per vertex unless it
+//! fails a check.
+
+mod edges;
+mod flat_foldability;
+mod report;
+mod vertex;
 
 use glam::DVec2;
+use rayon::prelude::*;
 use serde::Serialize;
 
+use crate::pattern::faces::find_faces_with;
+use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
+pub use report::{
+    AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
+};
+
 /// Which checks to run and their limits.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct CheckOptions {
     /// Kawasaki and Maekawa at interior vertices.
     pub flat_foldability: bool,
-    /// Tolerance of Kawasaki's alternating sum, degrees.
+    /// Tolerance of Kawasaki's error (half the alternating sum of sector angles), degrees.
     pub kawasaki_tolerance_deg: f64,
     /// Smallest allowed angle between neighbouring creases at a vertex, degrees (Tachi's
     /// δ_corner); `None` disables the check.
@@ -33,8 +80,8 @@ impl Default for CheckOptions {
     }
 }
 
-/// The kind of a finding.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+/// The kind of a finding, in the order findings are listed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FindingKind {
     /// Kawasaki's theorem fails.
@@ -49,6 +96,52 @@ pub enum FindingKind {
     FoldAngle,
 }
 
+impl FindingKind {
+    /// Every kind, in listing order.
+    pub const ALL: [FindingKind; 5] = [
+        FindingKind::Kawasaki,
+        FindingKind::Maekawa,
+        FindingKind::VertexAngle,
+        FindingKind::ShortEdge,
+        FindingKind::FoldAngle,
+    ];
+
+    /// The snake-case name used in text and JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            FindingKind::Kawasaki => "kawasaki",
+            FindingKind::Maekawa => "maekawa",
+            FindingKind::VertexAngle => "vertex_angle",
+            FindingKind::ShortEdge => "short_edge",
+            FindingKind::FoldAngle => "fold_angle",
+        }
+    }
+}
+
+/// What [`Finding::value`] and [`Finding::limit`] measure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// An angle in degrees.
+    Degrees,
+    /// A length in the pattern's unit.
+    Length,
+    /// A number of creases (Kawasaki at an odd-degree vertex: the value is the degree, the
+    /// limit 0 stands for "any even number").
+    Creases,
+    /// |M − V| (Maekawa: the limit is 2).
+    MountainValleyDifference,
+}
+
+/// Mountain and valley counts at a vertex (Maekawa findings).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct MvCounts {
+    /// Mountain creases.
+    pub mountains: u32,
+    /// Valley creases.
+    pub valleys: u32,
+}
+
 /// One failed check.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Finding {
@@ -56,25 +149,47 @@ pub struct Finding {
     pub kind: FindingKind,
     /// The vertex concerned, if any.
     pub vertex: Option<VertexId>,
-    /// The edge concerned, if any.
+    /// The edge concerned, if any (for a vertex-angle finding: a crease of the narrowest
+    /// sector).
     pub edge: Option<EdgeId>,
-    /// Where to look, in pattern coordinates.
+    /// Where to look, in pattern coordinates (the vertex, or the edge's midpoint).
     pub position: DVec2,
-    /// The measured quantity (degrees or length).
+    /// The measured quantity (see [`Finding::quantity`]).
     pub value: f64,
     /// The limit it was compared with.
     pub limit: f64,
-    /// A readable account.
+    /// What `value` and `limit` measure.
+    pub quantity: Quantity,
+    /// Mountain and valley counts, for Maekawa findings.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mv_counts: Option<MvCounts>,
+    /// A readable account, with the measured value and the limit.
     pub message: String,
     /// What to do about it.
     pub hint: String,
 }
 
+impl Finding {
+    /// How far the finding is from passing, in its own quantity (larger is worse); an
+    /// odd-degree vertex is infinitely bad.
+    pub fn severity(&self) -> f64 {
+        match (self.kind, self.quantity) {
+            (_, Quantity::Creases) => f64::INFINITY,
+            (FindingKind::VertexAngle | FindingKind::ShortEdge, _) => self.limit - self.value,
+            _ => (self.value - self.limit).abs(),
+        }
+    }
+}
+
 /// The result of [`check`].
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct CheckReport {
-    /// Every failure.
+    /// Every failure, sorted by kind, then from the worst to the least bad.
     pub findings: Vec<Finding>,
+    /// Counts and extremes of the whole pattern.
+    pub summary: CheckSummary,
+    /// The options the checks ran with.
+    pub options: CheckOptions,
 }
 
 impl CheckReport {
@@ -82,9 +197,85 @@ impl CheckReport {
     pub fn passed(&self) -> bool {
         self.findings.is_empty()
     }
+
+    /// The findings of one kind.
+    pub fn of_kind(&self, kind: FindingKind) -> impl Iterator<Item = &Finding> {
+        self.findings.iter().filter(move |f| f.kind == kind)
+    }
 }
 
-/// Runs the checks.
-pub fn check(_cp: &CreasePattern, _opts: &CheckOptions) -> CheckReport {
-    todo!()
+/// Runs the checks (see the module docs for what each one means).
+pub fn check(cp: &CreasePattern, opts: &CheckOptions) -> CheckReport {
+    let fans = VertexFans::new(cp);
+    let interior = if opts.flat_foldability {
+        interior_mask(cp, &fans)
+    } else {
+        Vec::new()
+    };
+    let ctx = vertex::Context {
+        cp,
+        fans: &fans,
+        interior: &interior,
+        opts,
+    };
+    let vertices = (0..cp.vertices.len())
+        .into_par_iter()
+        .fold(vertex::Tally::default, |acc, v| {
+            acc.add(&ctx, VertexId::new(v))
+        })
+        .reduce(vertex::Tally::default, vertex::Tally::merge);
+    let edge_tally = edges::check_edges(cp, opts);
+    let mut findings = vertices.findings;
+    findings.extend(edge_tally.findings);
+    sort_findings(&mut findings);
+    let summary = CheckSummary {
+        vertices: cp.vertices.len(),
+        edges: cp.edges.len(),
+        interior_vertices_checked: vertices.checked,
+        assignments: AssignmentCounts::of(cp),
+        shortest_edge: edge_tally.shortest,
+        smallest_crease_angle: vertices.smallest_angle,
+        largest_fold_angle: edge_tally.largest_fold,
+        maekawa_skipped_unassigned: vertices.maekawa_skipped,
+        flat_foldability_checked: opts.flat_foldability,
+    };
+    CheckReport {
+        findings,
+        summary,
+        options: opts.clone(),
+    }
+}
+
+/// Sorts by kind, then worst first, then by vertex and edge id for a stable order.
+fn sort_findings(findings: &mut [Finding]) {
+    findings.sort_by(|a, b| {
+        a.kind
+            .cmp(&b.kind)
+            .then(b.severity().total_cmp(&a.severity()))
+            .then(a.vertex.cmp(&b.vertex))
+            .then(a.edge.cmp(&b.edge))
+    });
+}
+
+/// Marks interior vertices: no boundary or cut edge and not on the unbounded face. Faces are
+/// traced only when some vertex could be interior.
+fn interior_mask(cp: &CreasePattern, fans: &VertexFans) -> Vec<bool> {
+    let n = cp.vertices.len();
+    let mut mask: Vec<bool> = (0..n)
+        .into_par_iter()
+        .map(|v| {
+            let spokes = fans.of(VertexId::new(v));
+            !spokes.is_empty()
+                && spokes
+                    .iter()
+                    .all(|s| !cp.edges[s.edge.index()].assignment.is_boundary_like())
+        })
+        .collect();
+    if mask.iter().any(|&m| m) {
+        let outer = find_faces_with(cp, fans).outer_vertex_mask(n);
+        for (m, o) in mask.iter_mut().zip(outer) {
+            *m &= !o;
+        }
+    }
+    mask
 }

@@ -11,7 +11,7 @@ use anyhow::{Context, Result, bail};
 use foldcam::check::{CheckOptions, check};
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
 use foldcam::formats::{self, Format, write_atomic};
-use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
+use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, Units, planarize};
 use foldcam::render::{PreviewOptions, preview_png};
 
 use super::Outcome;
@@ -52,8 +52,10 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut cases = classics()?;
     for (name, text) in SAMPLES {
         let format = Format::from_path(Path::new(name)).context("sample extension")?;
-        let mut imported = formats::parse(format, text).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+        let mut imported =
+            formats::parse(format, text).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
         planarize(&mut imported.pattern, &PlanarizeOptions::default());
+        give_size(&mut imported.pattern, UNITLESS_SIZE_MM);
         let stem = name.rsplit_once('.').map_or(*name, |(s, _)| s);
         cases.push((stem.to_string(), imported.pattern));
     }
@@ -106,6 +108,18 @@ pub fn run(args: Args) -> Result<Outcome> {
     Ok(Outcome::Done)
 }
 
+/// Size given to unitless samples (ORIPA files), as `--size` would: SVG and G-code need one.
+const UNITLESS_SIZE_MM: f64 = 150.0;
+
+fn give_size(cp: &mut CreasePattern, size: f64) {
+    if cp.units == Units::Unitless {
+        let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
+        if extent > 0.0 {
+            cp.scale_to_mm(size / extent);
+        }
+    }
+}
+
 fn classics() -> Result<Vec<(String, CreasePattern)>> {
     Ok(vec![
         ("miura-ori".into(), MiuraOri::default().build()?),
@@ -147,11 +161,17 @@ fn compare(a: &CreasePattern, b: &CreasePattern, cp_vocabulary: bool) -> String 
     if a.edges.len() != b.edges.len() {
         return format!("edges {}≠{}", a.edges.len(), b.edges.len());
     }
-    let scale = a.bounds().map_or(1.0, |(lo, hi)| lo.distance(hi).max(1e-12));
+    let scale = a
+        .bounds()
+        .map_or(1.0, |(lo, hi)| lo.distance(hi).max(1e-12));
     let same = sa.len() == sb.len()
         && sa
             .iter()
             .zip(&sb)
             .all(|((ka, la), (kb, lb))| ka == kb && (la - lb).abs() <= 1e-6 * scale);
-    if same { "ok".into() } else { "lengths differ".into() }
+    if same {
+        "ok".into()
+    } else {
+        "lengths differ".into()
+    }
 }

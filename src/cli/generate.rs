@@ -26,8 +26,10 @@ pub enum Kind {
 
 /// Generate a classic pattern.
 #[derive(clap::Args)]
-#[command(after_help = "Examples:\n  foldcam generate miura -o miura.fold --columns 12 --rows 8\n  \
-    foldcam generate square-twist -o twist.svg --twist 30\n  foldcam generate yoshimura -o yoshi.cp")]
+#[command(
+    after_help = "Examples:\n  foldcam generate miura -o miura.fold --columns 12 --rows 8\n  \
+    foldcam generate square-twist -o twist.svg --twist 30\n  foldcam generate yoshimura -o yoshi.cp"
+)]
 pub struct Args {
     /// Which pattern.
     pub kind: Kind,

@@ -44,7 +44,10 @@ pub fn run(args: Args) -> Result<Outcome> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("png"));
     if !is_png {
-        bail!("{}: the preview is written as PNG: use a .png name", args.output.display());
+        bail!(
+            "{}: the preview is written as PNG: use a .png name",
+            args.output.display()
+        );
     }
     let mut imported = input::load(&args.input)?;
     input::clean(&args.input, &mut imported, None);

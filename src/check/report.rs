@@ -1,0 +1,254 @@
+//! The summary of a check and the readable text report.
+//!
+//! The text lists at most [`TEXT_FINDINGS_PER_KIND`] findings of each kind (the JSON form,
+//! via `serde`, keeps all of them), then a final `PASS` or `FAIL` line.
+
+use std::fmt::Write as _;
+
+use glam::DVec2;
+use serde::Serialize;
+
+use super::{CheckReport, Finding, FindingKind};
+use crate::pattern::{Assignment, CreasePattern, EdgeId, VertexId};
+
+/// Findings of each kind listed by [`CheckReport::to_text`]; the rest are counted.
+pub const TEXT_FINDINGS_PER_KIND: usize = 50;
+
+/// Number of edges of each assignment.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct AssignmentCounts {
+    /// B edges.
+    pub boundary: usize,
+    /// M edges.
+    pub mountain: usize,
+    /// V edges.
+    pub valley: usize,
+    /// F edges.
+    pub flat: usize,
+    /// U edges.
+    pub unassigned: usize,
+    /// C edges.
+    pub cut: usize,
+    /// J edges.
+    pub join: usize,
+}
+
+impl AssignmentCounts {
+    /// Counts the edges of a pattern.
+    pub fn of(cp: &CreasePattern) -> Self {
+        let mut c = AssignmentCounts::default();
+        for e in &cp.edges {
+            *c.slot(e.assignment) += 1;
+        }
+        c
+    }
+
+    fn slot(&mut self, a: Assignment) -> &mut usize {
+        match a {
+            Assignment::Boundary => &mut self.boundary,
+            Assignment::Mountain => &mut self.mountain,
+            Assignment::Valley => &mut self.valley,
+            Assignment::Flat => &mut self.flat,
+            Assignment::Unassigned => &mut self.unassigned,
+            Assignment::Cut => &mut self.cut,
+            Assignment::Join => &mut self.join,
+        }
+    }
+
+    /// The count for one assignment.
+    pub fn get(&self, a: Assignment) -> usize {
+        let mut copy = *self;
+        *copy.slot(a)
+    }
+}
+
+/// A measurement taken at a vertex.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct VertexMeasure {
+    /// The vertex.
+    pub vertex: VertexId,
+    /// Its position.
+    pub position: DVec2,
+    /// The angle, degrees.
+    pub degrees: f64,
+}
+
+/// A measurement taken on an edge.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct EdgeMeasure {
+    /// The edge.
+    pub edge: EdgeId,
+    /// Its midpoint.
+    pub position: DVec2,
+    /// The value: a length in the pattern's unit, or a signed fold angle in degrees.
+    pub value: f64,
+}
+
+impl EdgeMeasure {
+    /// A measure of `edge` at `position`.
+    pub fn new(edge: EdgeId, position: DVec2, value: f64) -> Self {
+        EdgeMeasure {
+            edge,
+            position,
+            value,
+        }
+    }
+}
+
+/// Counts and extremes of a checked pattern.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct CheckSummary {
+    /// Number of vertices.
+    pub vertices: usize,
+    /// Number of edges.
+    pub edges: usize,
+    /// Interior vertices with at least one crease, checked for Kawasaki (and Maekawa).
+    pub interior_vertices_checked: usize,
+    /// Edges by assignment.
+    pub assignments: AssignmentCounts,
+    /// The shortest edge (value: its length).
+    pub shortest_edge: Option<EdgeMeasure>,
+    /// The narrowest sector between neighbouring creases (or a crease and an outline).
+    pub smallest_crease_angle: Option<VertexMeasure>,
+    /// The largest |fold angle| among edges that have one (value: signed degrees).
+    pub largest_fold_angle: Option<EdgeMeasure>,
+    /// Interior vertices not checked for Maekawa because a crease there is unassigned.
+    pub maekawa_skipped_unassigned: usize,
+    /// Whether Kawasaki and Maekawa ran.
+    pub flat_foldability_checked: bool,
+}
+
+impl CheckReport {
+    /// A readable report: the summary, one line per finding (at most
+    /// [`TEXT_FINDINGS_PER_KIND`] per kind) and a final `PASS` or `FAIL` line. `unit_label`
+    /// names the length unit ("mm", "units").
+    pub fn to_text(&self, unit_label: &str) -> String {
+        let mut out = String::new();
+        self.write_summary(&mut out, unit_label);
+        for kind in FindingKind::ALL {
+            let mut of_kind = self.of_kind(kind);
+            for f in of_kind.by_ref().take(TEXT_FINDINGS_PER_KIND) {
+                out.push_str(&finding_line(f));
+                out.push('\n');
+            }
+            let rest = of_kind.count();
+            if rest > 0 {
+                let _ = writeln!(out, "  … and {rest} more {} findings", kind.name());
+            }
+        }
+        out.push_str(&self.verdict());
+        out.push('\n');
+        out
+    }
+
+    fn write_summary(&self, out: &mut String, unit: &str) {
+        let s = &self.summary;
+        let a = &s.assignments;
+        let _ = writeln!(
+            out,
+            "{} vertices, {} edges (B {}, M {}, V {}, F {}, U {}, C {}, J {})",
+            s.vertices,
+            s.edges,
+            a.boundary,
+            a.mountain,
+            a.valley,
+            a.flat,
+            a.unassigned,
+            a.cut,
+            a.join
+        );
+        if s.flat_foldability_checked {
+            let _ = writeln!(
+                out,
+                "interior vertices checked (Kawasaki, Maekawa): {}; Maekawa skipped at {} with \
+                 unassigned creases",
+                s.interior_vertices_checked, s.maekawa_skipped_unassigned
+            );
+        } else {
+            out.push_str("flat-foldability not checked\n");
+        }
+        if let Some(e) = &s.shortest_edge {
+            let _ = writeln!(
+                out,
+                "shortest edge: {} ({:.4} {unit}) at {}",
+                e.edge,
+                e.value,
+                fmt_point(e.position)
+            );
+        }
+        if let Some(v) = &s.smallest_crease_angle {
+            let _ = writeln!(
+                out,
+                "smallest crease angle: {:.3}° at {} {}",
+                v.degrees,
+                v.vertex,
+                fmt_point(v.position)
+            );
+        }
+        if let Some(e) = &s.largest_fold_angle {
+            let _ = writeln!(
+                out,
+                "largest |fold angle|: {:.3}° on {}",
+                e.value.abs(),
+                e.edge
+            );
+        }
+        out.push_str(&self.limits_line(unit));
+    }
+
+    fn limits_line(&self, unit: &str) -> String {
+        let o = &self.options;
+        let show = |v: Option<f64>, suffix: &str| match v {
+            Some(v) => format!("{v}{suffix}"),
+            None => "off".to_string(),
+        };
+        format!(
+            "limits: Kawasaki tolerance {}°, min vertex angle {}, max fold angle {}, min edge {}\n",
+            o.kawasaki_tolerance_deg,
+            show(o.min_vertex_angle_deg, "°"),
+            show(o.max_fold_angle_deg, "°"),
+            show(o.min_edge_length, &format!(" {unit}")),
+        )
+    }
+
+    fn verdict(&self) -> String {
+        if self.passed() {
+            return "PASS".to_string();
+        }
+        let counts: Vec<String> = FindingKind::ALL
+            .iter()
+            .filter_map(|&k| {
+                let n = self.of_kind(k).count();
+                (n > 0).then(|| format!("{} {n}", k.name()))
+            })
+            .collect();
+        format!(
+            "FAIL: {} findings ({})",
+            self.findings.len(),
+            counts.join(", ")
+        )
+    }
+}
+
+/// One line: kind, element, position, message, hint.
+fn finding_line(f: &Finding) -> String {
+    let element = match (f.vertex, f.edge) {
+        (Some(v), _) => v.to_string(),
+        (None, Some(e)) => e.to_string(),
+        (None, None) => "-".to_string(),
+    };
+    format!(
+        "{:<12} {:<8} at {}: {}; hint: {}",
+        f.kind.name(),
+        element,
+        fmt_point(f.position),
+        f.message,
+        f.hint
+    )
+}
+
+fn fmt_point(p: DVec2) -> String {
+    // Values that print as zero print without a sign.
+    let clean = |x: f64| if x.abs() < 5e-4 { 0.0 } else { x };
+    format!("({:.3}, {:.3})", clean(p.x), clean(p.y))
+}

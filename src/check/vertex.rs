@@ -1,0 +1,173 @@
+//! The per-vertex pass: flat-foldability at interior vertices and the smallest angle between
+//! neighbouring creases at every vertex, folded into a [`Tally`] so the pass can run in
+//! parallel without allocating per vertex.
+
+use std::f64::consts::TAU;
+
+use super::flat_foldability::{self, Maekawa, is_crease};
+use super::report::VertexMeasure;
+use super::{CheckOptions, Finding, FindingKind, Quantity};
+use crate::geom::angle::ccw_between;
+use crate::pattern::vertex_fan::{Spoke, VertexFans};
+use crate::pattern::{CreasePattern, EdgeId, VertexId};
+
+/// What every vertex needs to see.
+pub(super) struct Context<'a> {
+    /// The pattern.
+    pub cp: &'a CreasePattern,
+    /// Its fans.
+    pub fans: &'a VertexFans,
+    /// Interior vertices (empty when flat-foldability is not checked).
+    pub interior: &'a [bool],
+    /// The options.
+    pub opts: &'a CheckOptions,
+}
+
+/// Accumulated results of the vertex pass.
+#[derive(Default)]
+pub(super) struct Tally {
+    /// Failures found.
+    pub findings: Vec<Finding>,
+    /// Interior vertices with creases that were checked.
+    pub checked: usize,
+    /// Interior vertices not checked for Maekawa because of an unassigned crease.
+    pub maekawa_skipped: usize,
+    /// The narrowest crease sector seen.
+    pub smallest_angle: Option<VertexMeasure>,
+}
+
+impl Tally {
+    /// Adds the results of vertex `v`.
+    pub fn add(mut self, ctx: &Context<'_>, v: VertexId) -> Self {
+        let fan = ctx.fans.of(v);
+        if ctx.interior.get(v.index()).copied().unwrap_or(false) {
+            self.flat_foldability(ctx, v, fan);
+        }
+        if let Some(narrow) = narrowest_sector(ctx.cp, fan) {
+            let degrees = narrow.angle.to_degrees();
+            if self.smallest_angle.is_none_or(|m| degrees < m.degrees) {
+                self.smallest_angle = Some(VertexMeasure {
+                    vertex: v,
+                    position: ctx.cp.position(v),
+                    degrees,
+                });
+            }
+            if let Some(limit) = ctx.opts.min_vertex_angle_deg
+                && degrees < limit
+            {
+                self.findings
+                    .push(vertex_angle_finding(ctx.cp, v, narrow, limit));
+            }
+        }
+        self
+    }
+
+    fn flat_foldability(&mut self, ctx: &Context<'_>, v: VertexId, fan: &[Spoke]) {
+        let degree = fan.iter().filter(|s| is_crease(ctx.cp, s)).count();
+        if degree == 0 {
+            return;
+        }
+        self.checked += 1;
+        let tol = ctx.opts.kawasaki_tolerance_deg;
+        if let Some(f) = flat_foldability::kawasaki(ctx.cp, v, fan, tol) {
+            self.findings.push(f);
+        }
+        if degree % 2 == 1 {
+            return;
+        }
+        match flat_foldability::maekawa(ctx.cp, v, fan) {
+            Maekawa::Pass => {}
+            Maekawa::Skipped => self.maekawa_skipped += 1,
+            Maekawa::Fail(f) => self.findings.push(*f),
+        }
+    }
+
+    /// Combines two tallies (order-preserving: `self` came first).
+    pub fn merge(mut self, other: Self) -> Self {
+        self.findings.extend(other.findings);
+        self.checked += other.checked;
+        self.maekawa_skipped += other.maekawa_skipped;
+        self.smallest_angle = match (self.smallest_angle, other.smallest_angle) {
+            (Some(a), Some(b)) => Some(if b.degrees < a.degrees { b } else { a }),
+            (a, b) => a.or(b),
+        };
+        self
+    }
+}
+
+/// The narrowest counted sector at a vertex.
+#[derive(Clone, Copy, Debug)]
+struct Sector {
+    /// Angle, radians.
+    angle: f64,
+    /// The clockwise-side spoke's edge.
+    from: EdgeId,
+    /// The counter-clockwise-side spoke's edge.
+    to: EdgeId,
+    /// A crease among the two (for highlighting).
+    crease: EdgeId,
+}
+
+/// The narrowest sector between consecutive relevant spokes (creases and outlines) where at
+/// least one side is a crease. Streams over the fan without allocating.
+fn narrowest_sector(cp: &CreasePattern, fan: &[Spoke]) -> Option<Sector> {
+    let kind = |s: &Spoke| {
+        let a = cp.edges[s.edge.index()].assignment;
+        if a.may_fold() {
+            Some(true)
+        } else if a.is_boundary_like() {
+            Some(false)
+        } else {
+            None
+        }
+    };
+    let mut relevant = fan.iter().filter_map(|s| kind(s).map(|c| (s, c)));
+    let first = relevant.next()?;
+    let mut prev = first;
+    let mut best: Option<Sector> = None;
+    let mut consider = |a: (&Spoke, bool), b: (&Spoke, bool), angle: f64| {
+        if !(a.1 || b.1) || best.is_some_and(|s| s.angle <= angle) {
+            return;
+        }
+        best = Some(Sector {
+            angle,
+            from: a.0.edge,
+            to: b.0.edge,
+            crease: if a.1 { a.0.edge } else { b.0.edge },
+        });
+    };
+    let mut count = 1;
+    for cur in relevant {
+        consider(prev, cur, ccw_between(prev.0.angle, cur.0.angle));
+        prev = cur;
+        count += 1;
+    }
+    if count >= 2 {
+        consider(prev, first, first.0.angle + TAU - prev.0.angle);
+    }
+    best
+}
+
+fn vertex_angle_finding(cp: &CreasePattern, v: VertexId, s: Sector, limit: f64) -> Finding {
+    let deg = s.angle.to_degrees();
+    Finding {
+        kind: FindingKind::VertexAngle,
+        vertex: Some(v),
+        edge: Some(s.crease),
+        position: cp.position(v),
+        value: deg,
+        limit,
+        quantity: Quantity::Degrees,
+        mv_counts: None,
+        message: format!(
+            "{} and {} meet at {deg:.3}°, below the limit of {limit}°",
+            s.from, s.to
+        ),
+        hint: format!(
+            "open the sector by {:.3}° (move an end of {} or {}), or merge the two lines",
+            limit - deg,
+            s.from,
+            s.to
+        ),
+    }
+}
