@@ -229,3 +229,63 @@ fn bad_usage_exits_2() {
     assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("does-not-exist.fold"));
 }
+
+#[test]
+fn frame_option_reads_a_later_frame_with_inheritance() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let fold = r#"{
+      "file_spec": 1.2, "frame_unit": "mm",
+      "vertices_coords": [[0,0],[10,0],[10,10]],
+      "edges_vertices": [[0,1],[1,2],[2,0]],
+      "edges_assignment": ["B","B","V"],
+      "file_frames": [{"frame_parent": 0, "frame_inherit": true,
+                       "vertices_coords": [[0,0],[20,0],[20,20]]}]
+    }"#;
+    std::fs::write(dir.path().join("multi.fold"), fold).expect("write");
+    let o = foldcam(
+        &["convert", "multi.fold", "f1.fold", "--frame", "1"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let cp = foldcam::formats::load(&dir.path().join("f1.fold"))
+        .expect("loads")
+        .pattern;
+    let (_, hi) = cp.bounds().expect("vertices");
+    assert_eq!(hi, glam::DVec2::new(20.0, 20.0), "frame 1's coordinates");
+    assert_eq!(cp.edges.len(), 3, "edges inherited from frame 0");
+    let o = foldcam(
+        &["convert", "multi.fold", "f9.fold", "--frame", "9"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("multi.fold"));
+    let o = foldcam(
+        &["check", &example("preliminary-base.cp"), "--frame", "1"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2), "--frame on a .cp file");
+}
+
+#[test]
+fn scale_gives_a_unitless_pattern_millimetres() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = foldcam(
+        &[
+            "convert",
+            &example("preliminary-base.cp"),
+            "sized.fold",
+            "--size",
+            "150",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let cp = foldcam::formats::load(&dir.path().join("sized.fold"))
+        .expect("loads")
+        .pattern;
+    assert_eq!(cp.units, foldcam::pattern::Units::Millimetres);
+    let (lo, hi) = cp.bounds().expect("vertices");
+    assert!(((hi - lo).max_element() - 150.0).abs() < 1e-9);
+    let raw = std::fs::read_to_string(dir.path().join("sized.fold")).expect("read");
+    assert!(raw.contains("\"frame_unit\": \"mm\""), "{raw}");
+}

@@ -3,7 +3,7 @@
 use clap::Args;
 
 use foldcam::check::CheckOptions;
-use foldcam::pattern::{CreasePattern, Units};
+use foldcam::pattern::{CreasePattern, FoldedState, Units};
 
 /// Parses a finite number greater than zero.
 pub fn positive(s: &str) -> Result<f64, String> {
@@ -38,8 +38,8 @@ pub struct ScaleArgs {
 }
 
 impl ScaleArgs {
-    /// Applies the scale, if one was given.
-    pub fn apply(&self, cp: &mut CreasePattern) {
+    /// Applies the scale, if one was given, to the pattern and its folded state.
+    pub fn apply(&self, cp: &mut CreasePattern, folded: Option<&mut FoldedState>) {
         let factor = match (self.scale, self.size) {
             (Some(f), _) => f,
             (None, Some(size)) => {
@@ -50,6 +50,9 @@ impl ScaleArgs {
         };
         if factor != 1.0 || cp.units == Units::Unitless {
             cp.scale_to_mm(factor);
+            for p in folded.into_iter().flat_map(|f| f.positions.iter_mut()) {
+                *p *= factor;
+            }
         }
     }
 }

@@ -25,6 +25,8 @@ use super::input;
 pub struct Args {
     /// Input file (.fold, .svg or .cp).
     pub input: PathBuf,
+    #[command(flatten)]
+    pub frame: input::FrameArg,
     /// Print the report as JSON (for scripts) instead of text.
     #[arg(long)]
     pub json: bool,
@@ -34,7 +36,7 @@ pub struct Args {
 
 /// Runs the checks and prints the report.
 pub fn run(args: Args) -> Result<Outcome> {
-    let mut imported = input::load(&args.input)?;
+    let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None);
     let cp = &imported.pattern;
     let report = check(cp, &args.limits.options());

@@ -12,10 +12,13 @@ use super::input;
 /// Convert between FOLD, SVG and ORIPA .cp.
 #[derive(clap::Args)]
 #[command(after_help = "Examples:\n  foldcam convert bird.cp bird.fold\n  \
-    foldcam convert bird.fold bird.svg --size 150\n  foldcam convert drawing.svg clean.fold --planarize")]
+    foldcam convert bird.fold bird.svg --size 150\n  foldcam convert drawing.svg clean.fold --planarize\n  \
+    foldcam convert animation.fold frame3.svg --frame 3")]
 pub struct Args {
     /// Input file (.fold, .svg or .cp).
     pub input: PathBuf,
+    #[command(flatten)]
+    pub frame: input::FrameArg,
     /// Output file (.fold, .svg or .cp); written atomically.
     pub output: PathBuf,
     /// Clean the pattern into a planar graph (split crossings, merge close vertices, drop
@@ -38,13 +41,14 @@ pub fn run(args: Args) -> Result<Outcome> {
             formats::Format::EXTENSIONS
         )
     })?;
-    let mut imported = input::load(&args.input)?;
+    let mut imported = input::load(&args.input, &args.frame)?;
     if args.planarize {
         input::clean(&args.input, &mut imported, args.tolerance);
         let faces = foldcam::pattern::faces::find_faces(&imported.pattern).faces;
         imported.pattern.faces = Some(faces);
     }
-    args.scale.apply(&mut imported.pattern);
+    args.scale
+        .apply(&mut imported.pattern, imported.folded.as_mut());
     let cp = &imported.pattern;
     formats::save(&args.output, cp, imported.folded.as_ref())?;
     eprintln!(

@@ -2,16 +2,43 @@
 
 use std::path::Path;
 
-use anyhow::Result;
+use anyhow::{Result, bail};
 use foldcam::formats::{self, Imported};
 use foldcam::pattern::{PlanarizeOptions, PlanarizeReport, Units, planarize};
 
-/// Reads `path`, prints the reader's warnings to stderr, and returns the import.
-pub fn load(path: &Path) -> Result<Imported> {
-    let imported = formats::load(path)?;
+/// Choosing a frame of a FOLD file.
+#[derive(clap::Args, Clone, Debug, Default)]
+pub struct FrameArg {
+    /// Read frame N of a FOLD file (0 is the key frame; later frames come from file_frames,
+    /// with frame_inherit resolved).
+    #[arg(long, value_name = "N")]
+    pub frame: Option<usize>,
+}
+
+/// Reads `path` (frame `frame.frame` for FOLD files), prints the reader's warnings to stderr,
+/// and returns the import.
+pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
+    let imported = match frame.frame {
+        None | Some(0) => formats::load(path)?,
+        Some(n) => load_frame(path, n)?,
+    };
     for w in &imported.warnings {
         eprintln!("foldcam: warning: {}: {w}", path.display());
     }
+    Ok(imported)
+}
+
+fn load_frame(path: &Path, n: usize) -> Result<Imported> {
+    if formats::Format::from_path(path) != Some(formats::Format::Fold) {
+        bail!("{}: --frame applies to FOLD files only", path.display());
+    }
+    let text = formats::read_text(path)?;
+    let imported = formats::fold::read_frame_str(&text, n)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    imported
+        .pattern
+        .validate()
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
     Ok(imported)
 }
 

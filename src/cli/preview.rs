@@ -24,6 +24,8 @@ use super::input;
 pub struct Args {
     /// Input file (.fold, .svg or .cp).
     pub input: PathBuf,
+    #[command(flatten)]
+    pub frame: input::FrameArg,
     /// Output PNG; written atomically.
     #[arg(short, long)]
     pub output: PathBuf,
@@ -49,7 +51,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             args.output.display()
         );
     }
-    let mut imported = input::load(&args.input)?;
+    let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None);
     let cp = &imported.pattern;
     let findings = if args.check {
