@@ -49,13 +49,6 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     args.scale
         .apply(&mut imported.pattern, imported.folded.as_mut());
-    let cp = &imported.pattern;
-    formats::save(&args.output, cp, imported.folded.as_ref())?;
-    eprintln!(
-        "foldcam: wrote {} ({} vertices, {} edges)",
-        args.output.display(),
-        cp.vertices.len(),
-        cp.edges.len()
-    );
+    input::save(&args.output, &imported.pattern, imported.folded.as_ref())?;
     Ok(Outcome::Done)
 }

@@ -5,7 +5,6 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::ValueEnum;
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
-use foldcam::formats;
 use foldcam::pattern::CreasePattern;
 
 use super::Outcome;
@@ -104,12 +103,6 @@ pub fn build(args: &Args) -> Result<CreasePattern> {
 /// Generates and writes the pattern.
 pub fn run(args: Args) -> Result<Outcome> {
     let cp = build(&args)?;
-    formats::save(&args.output, &cp, None)?;
-    eprintln!(
-        "foldcam: wrote {} ({} vertices, {} edges)",
-        args.output.display(),
-        cp.vertices.len(),
-        cp.edges.len()
-    );
+    super::input::save(&args.output, &cp, None)?;
     Ok(Outcome::Done)
 }

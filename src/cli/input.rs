@@ -4,7 +4,9 @@ use std::path::Path;
 
 use anyhow::{Result, bail};
 use foldcam::formats::{self, Imported};
-use foldcam::pattern::{PlanarizeOptions, PlanarizeReport, Units, planarize};
+use foldcam::pattern::{
+    CreasePattern, FoldedState, PlanarizeOptions, PlanarizeReport, Units, planarize,
+};
 
 /// Choosing a frame of a FOLD file.
 #[derive(clap::Args, Clone, Debug, Default)]
@@ -64,6 +66,18 @@ pub fn clean(path: &Path, imported: &mut Imported, tolerance: Option<f64>) -> Pl
         );
     }
     report
+}
+
+/// Writes the pattern (and folded state) and says so on stderr.
+pub fn save(path: &Path, cp: &CreasePattern, folded: Option<&FoldedState>) -> Result<()> {
+    formats::save(path, cp, folded)?;
+    eprintln!(
+        "foldcam: wrote {} ({} vertices, {} edges)",
+        path.display(),
+        cp.vertices.len(),
+        cp.edges.len()
+    );
+    Ok(())
 }
 
 /// The unit label of a pattern for messages.

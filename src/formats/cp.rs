@@ -36,9 +36,7 @@ use std::fmt::Write as _;
 use glam::DVec2;
 
 use super::{Imported, ParseError};
-use crate::pattern::{
-    Assignment, CreasePattern, MAX_COORDINATE, PlanarizeOptions, Units, planarize,
-};
+use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Most lines read from one file; larger files are refused with an error.
 pub const MAX_LINES: usize = 10_000_000;
@@ -106,27 +104,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     if !zero_length.is_empty() {
         warnings.push(zero_length_warning(&zero_length));
     }
-    let report = planarize(
-        &mut pattern,
-        &PlanarizeOptions {
-            tolerance: None,
-            faces: false,
-        },
-    );
-    if report.duplicates_removed > 0 {
-        warnings.push(format!(
-            "{} line(s) lying over others were merged (the stronger assignment kept)",
-            report.duplicates_removed
-        ));
-    }
-    pattern
-        .validate()
-        .map_err(|e| ParseError::new("file", e.to_string()))?;
-    Ok(Imported {
-        pattern,
-        folded: None,
-        warnings,
-    })
+    super::finish_drawing(pattern, None, "lying", warnings)
 }
 
 /// One text line: `None` when blank, else the assignment and the two end points (y up).

@@ -12,7 +12,7 @@ pub mod svg;
 
 use std::path::{Path, PathBuf};
 
-use crate::pattern::{CreasePattern, FoldedState, PatternError};
+use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions, planarize};
 
 pub use atomic::write_atomic;
 
@@ -150,6 +150,36 @@ pub fn read_text(path: &Path) -> Result<String, FormatError> {
             format!("byte {}", e.utf8_error().valid_up_to()),
             "file is not valid UTF-8 text",
         ),
+    })
+}
+
+/// The common end of the line-drawing readers (SVG, `.cp`): planarise the collected segments
+/// (merging within `tolerance`, default when `None`), note merged duplicates ("N line(s)
+/// `verb` over others were merged"), validate, and wrap up.
+pub(crate) fn finish_drawing(
+    mut pattern: CreasePattern,
+    tolerance: Option<f64>,
+    verb: &str,
+    mut warnings: Vec<String>,
+) -> Result<Imported, ParseError> {
+    let options = PlanarizeOptions {
+        tolerance,
+        faces: false,
+    };
+    let report = planarize(&mut pattern, &options);
+    if report.duplicates_removed > 0 {
+        warnings.push(format!(
+            "{} line(s) {verb} over others were merged (the stronger assignment kept)",
+            report.duplicates_removed
+        ));
+    }
+    pattern
+        .validate()
+        .map_err(|e| ParseError::new("file", e.to_string()))?;
+    Ok(Imported {
+        pattern,
+        folded: None,
+        warnings,
     })
 }
 

@@ -6,7 +6,7 @@ use usvg::roxmltree;
 use super::collect::Collector;
 use super::frame;
 use crate::formats::{Imported, ParseError};
-use crate::pattern::{CreasePattern, PlanarizeOptions, planarize};
+use crate::pattern::CreasePattern;
 
 /// Merge tolerance relative to the drawing's size (1e-5: 2 µm on a 200 mm sheet).
 ///
@@ -60,27 +60,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     pattern.meta.title = child_text(doc.root_element(), "title");
     pattern.meta.description = child_text(doc.root_element(), "desc");
     let tolerance = merge_tolerance(&pattern);
-    let report = planarize(
-        &mut pattern,
-        &PlanarizeOptions {
-            tolerance: Some(tolerance),
-            faces: false,
-        },
-    );
-    if report.duplicates_removed > 0 {
-        warnings.push(format!(
-            "{} line(s) drawn over others were merged (the stronger assignment kept)",
-            report.duplicates_removed
-        ));
-    }
-    pattern
-        .validate()
-        .map_err(|e| ParseError::new("file", e.to_string()))?;
-    Ok(Imported {
-        pattern,
-        folded: None,
-        warnings,
-    })
+    super::super::finish_drawing(pattern, Some(tolerance), "drawn", warnings)
 }
 
 /// Distance below which endpoints merge (and a point splits a line it touches), in
