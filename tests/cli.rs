@@ -289,3 +289,16 @@ fn scale_gives_a_unitless_pattern_millimetres() {
     let raw = std::fs::read_to_string(dir.path().join("sized.fold")).expect("read");
     assert!(raw.contains("\"frame_unit\": \"mm\""), "{raw}");
 }
+
+#[test]
+fn unitless_patterns_ask_for_a_size_until_given_one() {
+    let mut cp = foldcam::formats::load(Path::new(&example("preliminary-base.cp")))
+        .expect("loads")
+        .pattern;
+    let err = cp
+        .require_millimetres()
+        .expect_err("ORIPA files are unitless");
+    assert!(err.to_string().contains("--size"), "{err}");
+    cp.scale_to_mm(0.5);
+    assert_eq!(cp.require_millimetres(), Ok(()));
+}

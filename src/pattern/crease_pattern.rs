@@ -78,6 +78,14 @@ pub enum Units {
     Unitless,
 }
 
+/// A physical size was needed but the pattern is unitless.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "the pattern has no physical size (FOLD frame_unit \"unit\" or an ORIPA file): give one \
+     with --size MM (the longer side) or --scale MM_PER_UNIT"
+)]
+pub struct UnitlessError;
+
 /// Descriptive data and everything read from a file that the model does not interpret, kept
 /// so that writing the pattern back loses nothing.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -248,6 +256,15 @@ impl CreasePattern {
             *p *= factor;
         }
         self.units = Units::Millimetres;
+    }
+
+    /// Succeeds when the coordinates are millimetres; for a unitless pattern, the error every
+    /// command that needs a physical size (cutting, plotting) reports.
+    pub fn require_millimetres(&self) -> Result<(), UnitlessError> {
+        match self.units {
+            Units::Millimetres => Ok(()),
+            Units::Unitless => Err(UnitlessError),
+        }
     }
 
     /// Checks the structural invariants: finite coordinates within ±[`MAX_COORDINATE`],

@@ -18,7 +18,9 @@ pub mod planarize;
 pub mod vertex_fan;
 
 pub use assignment::{Assignment, UnknownAssignment};
-pub use crease_pattern::{CreasePattern, Edge, Face, MAX_COORDINATE, Metadata, Units};
+pub use crease_pattern::{
+    CreasePattern, Edge, Face, MAX_COORDINATE, Metadata, UnitlessError, Units,
+};
 pub use error::PatternError;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};

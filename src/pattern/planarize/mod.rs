@@ -76,6 +76,19 @@ impl PlanarizeReport {
 
 /// Turns `cp` into a clean planar graph (see the module docs). `cp` must be valid
 /// ([`CreasePattern::validate`]).
+///
+/// ```
+/// use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
+/// use glam::DVec2;
+///
+/// // Two strokes crossing in an X, as a drawing program writes them.
+/// let mut cp = CreasePattern::new();
+/// cp.add_segment(DVec2::new(0.0, 0.0), DVec2::new(10.0, 10.0), Assignment::Valley);
+/// cp.add_segment(DVec2::new(0.0, 10.0), DVec2::new(10.0, 0.0), Assignment::Mountain);
+/// let report = planarize(&mut cp, &PlanarizeOptions::default());
+/// assert_eq!(report.crossings, 1);
+/// assert_eq!((cp.vertices.len(), cp.edges.len()), (5, 4));
+/// ```
 pub fn planarize(cp: &mut CreasePattern, opts: &PlanarizeOptions) -> PlanarizeReport {
     let tol = opts.tolerance.unwrap_or_else(|| default_tolerance(cp));
     let mut report = PlanarizeReport {
