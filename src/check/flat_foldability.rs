@@ -36,7 +36,7 @@ pub(super) fn alternating_sum(angles: impl Iterator<Item = f64>) -> (f64, usize)
         match first {
             None => first = Some(a),
             Some(_) => {
-                let sign = if (n - 1) % 2 == 0 { 1.0 } else { -1.0 };
+                let sign = if (n - 1).is_multiple_of(2) { 1.0 } else { -1.0 };
                 sum += sign * (a - prev);
             }
         }
@@ -44,7 +44,7 @@ pub(super) fn alternating_sum(angles: impl Iterator<Item = f64>) -> (f64, usize)
         n += 1;
     }
     if let Some(a0) = first {
-        let sign = if (n - 1) % 2 == 0 { 1.0 } else { -1.0 };
+        let sign = if (n - 1).is_multiple_of(2) { 1.0 } else { -1.0 };
         sum += sign * (a0 + TAU - prev);
     }
     (sum, n)

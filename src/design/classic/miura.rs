@@ -63,7 +63,7 @@ impl MiuraOri {
             }
         }
         let column_kind = |i: usize| {
-            if i % 2 == 0 {
+            if i.is_multiple_of(2) {
                 Assignment::Mountain
             } else {
                 Assignment::Valley

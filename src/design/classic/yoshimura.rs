@@ -45,7 +45,7 @@ impl Yoshimura {
         // Points on each horizontal line: even lines at i·w, odd lines at (i + ½)·w plus the two
         // sheet edges; drawn as separate segments, merged by planarisation.
         let xs = |j: usize| -> Vec<f64> {
-            if j % 2 == 0 {
+            if j.is_multiple_of(2) {
                 (0..=n).map(|i| i as f64 * w).collect()
             } else {
                 let mut v = vec![0.0];
