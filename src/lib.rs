@@ -26,7 +26,11 @@
 
 pub mod check;
 pub mod design;
+pub mod fab;
 pub mod formats;
 pub mod geom;
+pub mod machine;
 pub mod pattern;
+pub mod post;
 pub mod render;
+pub mod sim;

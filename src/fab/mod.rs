@@ -1,0 +1,226 @@
+//! PLACEHOLDER: the fabrication plan — what the machine does to each line of a crease pattern.
+//!
+//! Data flows `CreasePattern` → [`plan`] → [`FabPlan`] (jobs of ordered toolpaths in machine
+//! coordinates) → `post` writers and the `sim` machine.
+
+pub mod geometry;
+pub mod plan;
+
+pub use plan::plan;
+
+use glam::{DAffine2, DVec2};
+use serde::Serialize;
+
+use crate::machine::SettingsByOperation;
+use crate::pattern::EdgeId;
+
+/// What a toolpath does to the sheet.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Operation {
+    /// Surface marking: registration marks, flat lines when asked for.
+    Mark,
+    /// Partial-depth score along a crease.
+    Score,
+    /// Dashed through-cuts along a crease.
+    Perforate,
+    /// Through-cut (outline, holes, slits).
+    Cut,
+    /// Pen plotting.
+    Plot,
+}
+
+impl Operation {
+    /// Every operation, in execution-group order (marks first, cuts last).
+    pub const ALL: [Operation; 5] = [
+        Operation::Mark,
+        Operation::Plot,
+        Operation::Score,
+        Operation::Perforate,
+        Operation::Cut,
+    ];
+
+    /// Lower-case name, as used in profiles, layers and the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Operation::Mark => "mark",
+            Operation::Score => "score",
+            Operation::Perforate => "perforate",
+            Operation::Cut => "cut",
+            Operation::Plot => "plot",
+        }
+    }
+
+    /// Parses a name given by [`Operation::name`].
+    pub fn from_name(s: &str) -> Option<Operation> {
+        Operation::ALL.into_iter().find(|o| o.name() == s)
+    }
+}
+
+/// What a closed or open cut line is, for ordering and kerf.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContourRole {
+    /// Not a cut contour (creases, marks).
+    None,
+    /// An open slit (cut edges that do not close): never offset.
+    Slit,
+    /// A closed contour around a hole: offset inward into the hole, cut before its container.
+    Hole,
+    /// A closed outer contour: offset outward, cut last.
+    Outer,
+}
+
+/// One toolpath: one or more strokes of one operation, each a polyline burned from its first
+/// point to its last with the tool on; the tool is off between strokes.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Toolpath {
+    /// The operation.
+    pub op: Operation,
+    /// The burns, in order. Coordinates are machine coordinates, mm.
+    pub strokes: Vec<Vec<DVec2>>,
+    /// Cut contour role.
+    pub role: ContourRole,
+    /// For holes: index (in the job's `paths`) of the contour that contains it, if any.
+    pub container: Option<usize>,
+    /// The pattern edges this toolpath realises (for coverage checks).
+    pub edges: Vec<EdgeId>,
+}
+
+/// Which face of the sheet faces the tool.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Side {
+    /// The pattern as drawn faces up.
+    Front,
+    /// The sheet turned over (mirrored about a vertical axis).
+    Back,
+}
+
+/// One job: what the machine does without the sheet being turned.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Job {
+    /// Name for files and messages, e.g. `front`.
+    pub name: String,
+    /// Which side faces the tool.
+    pub side: Side,
+    /// Pattern millimetres → machine coordinates (placement on the bed, y flip, mirroring).
+    #[serde(skip)]
+    pub to_machine: DAffine2,
+    /// Toolpaths in execution order.
+    pub paths: Vec<Toolpath>,
+}
+
+/// Totals of a plan, for `foldcam plan` and reports.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct PlanStats {
+    /// Burn length per operation, mm.
+    pub length_mm: Vec<(Operation, f64)>,
+    /// Number of tool-on events.
+    pub pierces: usize,
+    /// Travel (tool off) length, mm, in the planned order.
+    pub travel_mm: f64,
+    /// Travel length of the unoptimised order, mm (for comparison).
+    pub naive_travel_mm: f64,
+    /// Estimated job time, seconds (all jobs).
+    pub time_s: f64,
+}
+
+/// The fabrication plan.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FabPlan {
+    /// One job, or two for two-sided work (front, then back).
+    pub jobs: Vec<Job>,
+    /// Speed, power and passes per operation.
+    pub settings: SettingsByOperation,
+    /// Totals.
+    pub stats: PlanStats,
+    /// Remarks (skipped edges, vertex-angle warnings, …).
+    pub warnings: Vec<String>,
+}
+
+/// Holding tabs: short uncut gaps left in closed contours so parts stay in the sheet.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Tabs {
+    /// Gap length, mm.
+    pub width_mm: f64,
+    /// Roughly one tab per this much contour length, at least one per contour, mm.
+    pub spacing_mm: f64,
+}
+
+/// How to plan: every choice a user may change, resolved (material defaults overridden by
+/// the command line).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PlanOptions {
+    /// Operation per assignment.
+    pub mapping: crate::machine::OperationMapping,
+    /// Perforation geometry.
+    pub perforation: crate::machine::Perforation,
+    /// Kerf width, mm (closed contours are offset by half of it).
+    pub kerf_mm: f64,
+    /// Offset closed contours by half the kerf (outward for outer contours, inward for holes).
+    pub kerf_offset: bool,
+    /// Mountains from the front, valleys from the back (second job mirrored), with
+    /// registration marks.
+    pub two_sided: bool,
+    /// Holding tabs in closed contours.
+    pub tabs: Option<Tabs>,
+    /// Lead-in length on the scrap side of closed contours, mm.
+    pub lead_in_mm: Option<f64>,
+    /// Distance from the bed origin corner to the pattern, mm.
+    pub margin_mm: f64,
+    /// Order toolpaths to shorten travel (off: pattern order, for comparisons).
+    pub optimize: bool,
+}
+
+impl PlanOptions {
+    /// The material's defaults: its mapping, perforation and kerf, one side, no tabs or
+    /// lead-ins, 5 mm margin, optimised order.
+    pub fn from_material(material: &crate::machine::Material) -> Self {
+        PlanOptions {
+            mapping: material.mapping,
+            perforation: material.perforation,
+            kerf_mm: material.kerf_mm,
+            kerf_offset: true,
+            two_sided: false,
+            tabs: None,
+            lead_in_mm: None,
+            margin_mm: 5.0,
+            optimize: true,
+        }
+    }
+}
+
+/// Why a plan could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FabError {
+    /// The pattern has no physical size.
+    #[error(transparent)]
+    Unitless(#[from] crate::pattern::UnitlessError),
+    /// The pattern is larger than the bed.
+    #[error(
+        "the pattern ({width:.1} × {height:.1} mm with margins) does not fit the bed of \
+         {bed_width:.1} × {bed_height:.1} mm: scale it with --size or use a larger machine"
+    )]
+    DoesNotFit {
+        /// Pattern width plus margins, mm.
+        width: f64,
+        /// Pattern height plus margins, mm.
+        height: f64,
+        /// Bed width, mm.
+        bed_width: f64,
+        /// Bed height, mm.
+        bed_height: f64,
+    },
+    /// No edge maps to an operation.
+    #[error("nothing to do: no edge of the pattern maps to an operation")]
+    NothingToDo,
+    /// A geometric step failed (named).
+    #[error("{step}: {message}")]
+    Geometry {
+        /// The step, e.g. `kerf offset`.
+        step: &'static str,
+        /// What went wrong.
+        message: String,
+    },
+}

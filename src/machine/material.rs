@@ -1,0 +1,104 @@
+//! Material profiles.
+
+use serde::Serialize;
+
+use crate::fab::Operation;
+
+/// Speed, power and passes for one operation.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct OperationSettings {
+    /// Feed, mm/min.
+    pub speed_mm_min: f64,
+    /// Power as a fraction of the machine's range, 0..=1.
+    pub power: f64,
+    /// Repetitions.
+    pub passes: u32,
+}
+
+/// Settings per operation.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SettingsByOperation {
+    /// Through-cut.
+    pub cut: OperationSettings,
+    /// Perforation dashes.
+    pub perforate: OperationSettings,
+    /// Scoring (partial depth).
+    pub score: OperationSettings,
+    /// Marking (surface, registration marks, flat lines).
+    pub mark: OperationSettings,
+    /// Pen plotting (power ignored).
+    pub plot: OperationSettings,
+}
+
+impl SettingsByOperation {
+    /// The settings of `op`.
+    pub fn get(&self, op: Operation) -> OperationSettings {
+        match op {
+            Operation::Cut => self.cut,
+            Operation::Perforate => self.perforate,
+            Operation::Score => self.score,
+            Operation::Mark => self.mark,
+            Operation::Plot => self.plot,
+        }
+    }
+}
+
+/// Perforation geometry.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Perforation {
+    /// Length of each cut dash, mm.
+    pub cut_mm: f64,
+    /// Length of each uncut bridge, mm.
+    pub bridge_mm: f64,
+    /// Shortest dash worth cutting, mm.
+    pub min_dash_mm: f64,
+    /// Least uncut material between two cuts, mm (the web).
+    pub min_web_mm: f64,
+    /// Least uncut distance kept around every vertex, mm (grows at sharp vertex angles).
+    pub vertex_clearance_mm: f64,
+}
+
+/// Which operation each assignment gets.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct OperationMapping {
+    /// For mountain creases.
+    pub mountain: Option<Operation>,
+    /// For valley creases.
+    pub valley: Option<Operation>,
+    /// For unassigned creases.
+    pub unassigned: Option<Operation>,
+    /// For flat (facet) lines; `None` skips them.
+    pub flat: Option<Operation>,
+    /// For boundary and cut edges.
+    pub boundary: Option<Operation>,
+}
+
+/// Design limits the material imposes on patterns.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct DesignLimits {
+    /// Smallest angle between neighbouring creases, degrees (Tachi's δ_corner).
+    pub min_vertex_angle_deg: f64,
+    /// Largest fold angle, degrees (180 − δ_fold).
+    pub max_fold_angle_deg: f64,
+}
+
+/// A material, as loaded from `machines/materials/NAME.toml`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Material {
+    /// Short name (the file stem).
+    pub name: String,
+    /// Readable description.
+    pub description: String,
+    /// Sheet thickness, mm.
+    pub thickness_mm: f64,
+    /// Width of the cut, mm.
+    pub kerf_mm: f64,
+    /// Speed, power, passes per operation.
+    pub settings: SettingsByOperation,
+    /// Perforation geometry.
+    pub perforation: Perforation,
+    /// Default operation per assignment.
+    pub mapping: OperationMapping,
+    /// Design limits.
+    pub limits: DesignLimits,
+}

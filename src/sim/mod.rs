@@ -1,0 +1,1 @@
+//! PLACEHOLDER (sim work): the simulated machine.
