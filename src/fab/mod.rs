@@ -4,7 +4,11 @@
 //! coordinates) → `post` writers and the `sim` machine.
 
 pub mod geometry;
+pub mod order;
+pub mod placement;
 pub mod plan;
+pub mod sides;
+pub mod stats;
 
 pub use plan::plan;
 

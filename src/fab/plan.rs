@@ -1,15 +1,185 @@
-//! PLACEHOLDER (fab-order work): the plan: placement, sides, order, statistics.
+//! The fabrication plan: toolpaths placed on the bed, split into sides, ordered, totalled.
+//!
+//! [`plan`] runs the whole pipeline: millimetres required, toolpaths from
+//! [`super::geometry::toolpaths`], then [`plan_toolpaths`]:
+//! 1. **Sides** ([`super::sides`]): one job `front`, or with `two_sided` a `front` job
+//!    (mountains and everything else) and a `back` job (valleys, then all cuts), mirrored
+//!    about the sheet's vertical centre line, both with registration marks.
+//! 2. **Placement** ([`super::placement`]): the content's bounding box plus the margin, in the
+//!    bed's origin corner, converted to machine coordinates; stored in [`Job::to_machine`].
+//! 3. **Order** ([`super::order`]): precedence groups, nearest neighbour, 2-opt/Or-opt,
+//!    joining, each job from the machine origin.
+//! 4. **Statistics** ([`super::stats`]) and **warnings** (the material's design limits,
+//!    checked with [`crate::check::check`]).
+//!
+//! Cost: O(n log n) in the number of toolpaths plus bounded improvement work, and the check's
+//! O(E log d).
 
-use super::{FabError, FabPlan, PlanOptions};
-use crate::machine::{MachineProfile, Material};
+use glam::{DAffine2, DVec2};
+
+use super::placement::{bounds_of, place, transform_paths, union};
+use super::sides::{mirror, registration_marks, split};
+use super::stats::plan_stats;
+use super::{FabError, FabPlan, Job, PlanOptions, Side, Toolpath, geometry, order};
+use crate::check::{CheckOptions, FindingKind, check};
+use crate::machine::{Bed, MachineProfile, Material};
 use crate::pattern::CreasePattern;
 
 /// Plans `cp` (millimetres) for `machine` and `material`.
+///
+/// Errors: [`FabError::Unitless`] for a pattern without a physical size,
+/// [`FabError::NothingToDo`] when no edge maps to an operation, [`FabError::DoesNotFit`]
+/// when the pattern with its margins is larger than the bed, and the geometry's errors.
 pub fn plan(
-    _cp: &CreasePattern,
-    _machine: &MachineProfile,
-    _material: &Material,
-    _opts: &PlanOptions,
+    cp: &CreasePattern,
+    machine: &MachineProfile,
+    material: &Material,
+    opts: &PlanOptions,
 ) -> Result<FabPlan, FabError> {
-    todo!()
+    cp.require_millimetres()?;
+    let paths = geometry::toolpaths(cp, opts)?;
+    plan_toolpaths(cp, paths, machine, material, opts)
+}
+
+/// Plans given toolpaths of `cp` (pattern coordinates, mm, as [`geometry::toolpaths`] makes
+/// them): everything [`plan`] does after the geometry.
+pub fn plan_toolpaths(
+    cp: &CreasePattern,
+    mut paths: Vec<Toolpath>,
+    machine: &MachineProfile,
+    material: &Material,
+    opts: &PlanOptions,
+) -> Result<FabPlan, FabError> {
+    cp.require_millimetres()?;
+    for p in &mut paths {
+        p.strokes.retain(|s| !s.is_empty());
+    }
+    if paths.iter().all(|p| p.strokes.is_empty()) {
+        return Err(FabError::NothingToDo);
+    }
+    let mut warnings = design_limit_warnings(cp, material);
+    let (jobs, naive) = if opts.two_sided {
+        two_sided_jobs(cp, paths, &machine.bed, opts, &mut warnings)?
+    } else {
+        one_sided_job(cp, paths, &machine.bed, opts)?
+    };
+    let stats = plan_stats(&jobs, naive, &material.settings, machine);
+    Ok(FabPlan {
+        jobs,
+        settings: material.settings,
+        stats,
+        warnings,
+    })
+}
+
+/// One job `front`; returns it with the naive travel.
+fn one_sided_job(
+    cp: &CreasePattern,
+    paths: Vec<Toolpath>,
+    bed: &Bed,
+    opts: &PlanOptions,
+) -> Result<(Vec<Job>, f64), FabError> {
+    let extent = content_extent(cp, &paths)?;
+    let to_machine = place(extent, bed, opts.margin_mm)?;
+    let (job, naive) = make_job("front", Side::Front, to_machine, paths, opts);
+    Ok((vec![job], naive))
+}
+
+/// Jobs `front` and `back` with registration marks; returns them with the naive travel.
+fn two_sided_jobs(
+    cp: &CreasePattern,
+    paths: Vec<Toolpath>,
+    bed: &Bed,
+    opts: &PlanOptions,
+    warnings: &mut Vec<String>,
+) -> Result<(Vec<Job>, f64), FabError> {
+    let extent = content_extent(cp, &paths)?;
+    let marks = registration_marks(extent);
+    let sheet = union(Some(extent), bounds_of(&marks)).unwrap_or(extent);
+    let to_machine = place(sheet, bed, opts.margin_mm)?;
+    let flipped = to_machine * mirror((sheet.0.x + sheet.1.x) / 2.0);
+    let (front, back) = split(cp, paths);
+    if back.is_empty() {
+        warnings.push("two-sided: nothing to do from the back (no valley, no cut)".into());
+    }
+    let (front, naive_front) = make_job(
+        "front",
+        Side::Front,
+        to_machine,
+        with_marks(&marks, front),
+        opts,
+    );
+    let (back, naive_back) = make_job("back", Side::Back, flipped, with_marks(&marks, back), opts);
+    Ok((vec![front, back], naive_front + naive_back))
+}
+
+/// `marks` followed by `paths`, containers shifted accordingly.
+fn with_marks(marks: &[Toolpath], paths: Vec<Toolpath>) -> Vec<Toolpath> {
+    let shift = marks.len();
+    let mut out = marks.to_vec();
+    out.extend(paths.into_iter().map(|mut p| {
+        p.container = p.container.map(|c| c + shift);
+        p
+    }));
+    out
+}
+
+/// Transforms and orders `paths` into a job; also returns the travel of the given order.
+fn make_job(
+    name: &str,
+    side: Side,
+    to_machine: DAffine2,
+    mut paths: Vec<Toolpath>,
+    opts: &PlanOptions,
+) -> (Job, f64) {
+    transform_paths(&mut paths, &to_machine);
+    let naive = order::travel_mm(&paths, DVec2::ZERO);
+    let job = Job {
+        name: name.to_owned(),
+        side,
+        to_machine,
+        paths: order::order(paths, DVec2::ZERO, opts.optimize),
+    };
+    (job, naive)
+}
+
+/// The pattern's bounds together with every toolpath point (kerf offsets and lead-ins may
+/// reach past the pattern).
+fn content_extent(cp: &CreasePattern, paths: &[Toolpath]) -> Result<(DVec2, DVec2), FabError> {
+    union(cp.bounds(), bounds_of(paths)).ok_or(FabError::NothingToDo)
+}
+
+/// One warning per design limit of `material` that `cp` exceeds, with counts.
+pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<String> {
+    let limit = |v: f64| (v.is_finite() && v > 0.0).then_some(v);
+    let opts = CheckOptions {
+        flat_foldability: false,
+        min_vertex_angle_deg: limit(material.limits.min_vertex_angle_deg),
+        max_fold_angle_deg: limit(material.limits.max_fold_angle_deg),
+        min_edge_length: None,
+        ..CheckOptions::default()
+    };
+    let report = check(cp, &opts);
+    let mut out = Vec::new();
+    let angles = report.of_kind(FindingKind::VertexAngle).count();
+    if let (true, Some(l)) = (angles > 0, opts.min_vertex_angle_deg) {
+        let worst = report
+            .summary
+            .smallest_crease_angle
+            .as_ref()
+            .map(|m| m.degrees);
+        out.push(format!(
+            "{angles} vertices have creases closer than {l}°, the smallest angle {} allows{}",
+            material.name,
+            worst.map_or(String::new(), |w| format!(" (smallest {w:.1}°)"))
+        ));
+    }
+    let folds = report.of_kind(FindingKind::FoldAngle).count();
+    if let (true, Some(l)) = (folds > 0, opts.max_fold_angle_deg) {
+        out.push(format!(
+            "{folds} edges fold further than {l}°, the largest fold angle {} allows",
+            material.name
+        ));
+    }
+    out
 }
