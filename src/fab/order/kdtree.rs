@@ -95,7 +95,11 @@ impl KdTree {
                 *best = (d, Some(id));
             }
         }
-        let diff = if depth.is_multiple_of(2) { q.x - p.x } else { q.y - p.y };
+        let diff = if depth.is_multiple_of(2) {
+            q.x - p.x
+        } else {
+            q.y - p.y
+        };
         let (near, far) = if diff < 0.0 {
             ((lo, mid), (mid + 1, hi))
         } else {
