@@ -8,7 +8,7 @@
 //!    from `start`, the machine origin): the next toolpath is the one with the nearest entry,
 //!    found in a 2-d tree of entry points. Open paths may run backwards; closed contours
 //!    (one closed stroke) may start at any vertex; contours with lead-ins or tabs run as given.
-//! 3. **Improvement**: windowed 2-opt and Or-opt passes ([`improve`](self) module), bounded
+//! 3. **Improvement**: windowed 2-opt and Or-opt passes (`order/improve.rs`), bounded
 //!    work.
 //! 4. **Joining**: consecutive toolpaths that continue each other (same operation, end = start)
 //!    become one, saving a pierce.
