@@ -37,10 +37,18 @@ impl Splits {
     }
 }
 
-/// Finds every touch and crossing among `segs`.
-pub(super) fn find_splits(segs: &[Seg], tol: f64) -> Splits {
+/// Most edge pairs tested in one pass before the search gives up: beyond this the drawing
+/// has so many edges on top of each other that splitting them all would take minutes.
+pub const MAX_PAIR_TESTS: u64 = 400_000_000;
+
+/// Finds every touch and crossing among `segs`; `None` when the work would exceed the limits
+/// ([`MAX_PAIR_TESTS`], the grid's entry limit).
+pub(super) fn find_splits(segs: &[Seg], tol: f64) -> Option<Splits> {
     let ends: Vec<(DVec2, DVec2)> = segs.iter().map(|s| (s.p[0], s.p[1])).collect();
-    let grid = EdgeGrid::new(&ends, tol);
+    let grid = EdgeGrid::new(&ends, tol)?;
+    if grid.pair_count() > MAX_PAIR_TESTS {
+        return None;
+    }
     let mut splits = grid
         .crowded_cells()
         .fold(Splits::default, |mut out, cell| {
@@ -58,7 +66,7 @@ pub(super) fn find_splits(segs: &[Seg], tol: f64) -> Splits {
         .crossings
         .par_sort_unstable_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)));
     splits.crossings.dedup_by(|a, b| (a.0, a.1) == (b.0, b.1));
-    splits
+    Some(splits)
 }
 
 fn test_pair(segs: &[Seg], i: u32, j: u32, tol: f64, out: &mut Splits) {
