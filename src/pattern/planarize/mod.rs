@@ -190,13 +190,10 @@ fn split_pass(
     let too_complex = PlanarizeError::TooComplex {
         edges: cp.edges.len(),
     };
-    let splits = find_splits(&segs, tol).ok_or(too_complex.clone())?;
+    let max_splits = MAX_SPLITS_PER_EDGE * segs.len() + 1_000_000;
+    let splits = find_splits(&segs, tol, max_splits).ok_or(too_complex)?;
     if splits.touches.is_empty() && splits.crossings.is_empty() {
         return Ok(false);
-    }
-    let count = splits.touches.len() + 2 * splits.crossings.len();
-    if count > MAX_SPLITS_PER_EDGE * segs.len() + 1_000_000 {
-        return Err(too_complex);
     }
     let mut cuts: Vec<(u32, u32, DVec2)> = splits
         .touches
