@@ -41,14 +41,14 @@ fn bench(c: &mut Criterion) {
     g.bench_function("planarize/clean", |b| {
         b.iter_batched_ref(
             || clean.clone(),
-            |cp| planarize(cp, &opts),
+            |cp| planarize(cp, &opts).expect("planar"),
             BatchSize::LargeInput,
         )
     });
     g.bench_function("planarize/segments", |b| {
         b.iter_batched_ref(
             || loose.clone(),
-            |cp| planarize(cp, &opts),
+            |cp| planarize(cp, &opts).expect("planar"),
             BatchSize::LargeInput,
         )
     });
@@ -61,7 +61,7 @@ fn bench(c: &mut Criterion) {
         b.iter_batched_ref(
             || loose.clone(),
             |cp| {
-                planarize(cp, &opts);
+                planarize(cp, &opts).expect("planar");
                 check(cp, &check_opts)
             },
             BatchSize::LargeInput,

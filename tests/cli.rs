@@ -302,3 +302,46 @@ fn unitless_patterns_ask_for_a_size_until_given_one() {
     cp.scale_to_mm(0.5);
     assert_eq!(cp.require_millimetres(), Ok(()));
 }
+
+#[test]
+fn an_edgeless_fold_file_is_refused() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::write(dir.path().join("e.fold"), "{}").expect("write");
+    for args in [vec!["check", "e.fold"], vec!["convert", "e.fold", "e.svg"]] {
+        let o = foldcam(&args, dir.path());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(text(&o.stderr).contains("no edges"), "{}", text(&o.stderr));
+    }
+    assert_eq!(listing(dir.path()), vec!["e.fold".to_string()]);
+}
+
+#[test]
+fn an_absurd_scale_is_refused_without_output() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = foldcam(
+        &[
+            "convert",
+            &example("preliminary-base.cp"),
+            "big.fold",
+            "--scale",
+            "1e308",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stderr));
+    assert!(listing(dir.path()).is_empty());
+}
+
+#[test]
+fn piles_of_identical_lines_clean_quickly_to_one_edge() {
+    // 5,000 copies of one line (the crossing search would be cubic without deduplication).
+    let dir = tempfile::tempdir().expect("temp dir");
+    let pile: String = (0..5000).map(|_| "2 0 0 100 0\n").collect();
+    std::fs::write(dir.path().join("pile.cp"), pile).expect("write");
+    let o = foldcam(&["convert", "pile.cp", "one.fold"], dir.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let cp = foldcam::formats::load(&dir.path().join("one.fold"))
+        .expect("loads")
+        .pattern;
+    assert_eq!(cp.edges.len(), 1);
+}

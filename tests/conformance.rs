@@ -23,7 +23,7 @@ fn load(dir: &Path, name: &str) -> CreasePattern {
     let mut cp = formats::load(&dir.join(name))
         .unwrap_or_else(|e| panic!("{name}: {e}"))
         .pattern;
-    planarize(&mut cp, &PlanarizeOptions::default());
+    planarize(&mut cp, &PlanarizeOptions::default()).expect("planarises");
     cp
 }
 

@@ -181,11 +181,13 @@ fn testdata() -> Option<PathBuf> {
 #[test]
 fn every_testdata_file_round_trips() {
     let Some(dir) = testdata() else { return };
+    let mut count = 0;
     for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
         let path = entry.path();
         if path.extension().is_none_or(|e| e != "fold") {
             continue;
         }
+        count += 1;
         let name = path.display().to_string();
         let text = std::fs::read_to_string(&path).unwrap_or_default();
         let first = read_str(&text).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -213,6 +215,7 @@ fn every_testdata_file_round_trips() {
             }
         }
     }
+    assert!(count >= 7, "expected the 7 FOLD test files, read {count}");
 }
 
 #[test]

@@ -79,7 +79,7 @@ fn two_crossing_segments_become_four_edges_around_a_new_vertex() {
     let mut cp = CreasePattern::new();
     seg(&mut cp, (0.0, 0.0), (2.0, 2.0), Assignment::Mountain);
     seg(&mut cp, (0.0, 2.0), (2.0, 0.0), Assignment::Valley);
-    let r = planarize(&mut cp, &opts(false));
+    let r = planarize(&mut cp, &opts(false)).expect("planar");
     assert_eq!(r.crossings, 1);
     assert_eq!(cp.vertices.len(), 5);
     assert_eq!(cp.edges.len(), 4);
@@ -108,7 +108,7 @@ fn vertex_on_an_edge_splits_it() {
     let mut cp = CreasePattern::new();
     seg(&mut cp, (0.0, 0.0), (4.0, 0.0), Assignment::Boundary);
     seg(&mut cp, (1.0, 0.0), (1.0, 3.0), Assignment::Valley);
-    let r = planarize(&mut cp, &opts(false));
+    let r = planarize(&mut cp, &opts(false)).expect("planar");
     assert_eq!(r.crossings, 0);
     assert_eq!(cp.edges.len(), 3);
     assert_eq!(cp.vertices.len(), 4);
@@ -125,7 +125,7 @@ fn overlapping_collinear_edges_keep_the_stronger_assignment() {
     let mut cp = CreasePattern::new();
     seg(&mut cp, (0.0, 0.0), (3.0, 0.0), Assignment::Flat);
     seg(&mut cp, (1.0, 0.0), (2.0, 0.0), Assignment::Cut);
-    let r = planarize(&mut cp, &opts(false));
+    let r = planarize(&mut cp, &opts(false)).expect("planar");
     assert_eq!(cp.edges.len(), 3, "{cp:?}");
     assert_eq!(r.duplicates_removed, 1);
     for e in cp.edge_ids() {
@@ -152,7 +152,8 @@ fn near_vertices_merge_within_tolerance_only() {
             tolerance: Some(1e-6),
             faces: false,
         },
-    );
+    )
+    .expect("planar");
     assert_eq!(r.merged_vertices, 1);
     assert_eq!(cp.vertices.len(), 5);
     assert_eq!(
@@ -177,7 +178,7 @@ fn clean_pattern_is_left_exactly_as_it_was() {
         .frame_extra
         .insert("edges_custom".into(), serde_json::json!([1, 2, 3, 4, 5]));
     let before = cp.clone();
-    let r = planarize(&mut cp, &opts(false));
+    let r = planarize(&mut cp, &opts(false)).expect("planar");
     assert!(r.unchanged());
     assert_eq!(cp, before);
 }
@@ -196,7 +197,7 @@ fn square_with_diagonals_and_an_island_has_the_right_faces() {
     for k in 0..4 {
         seg(&mut cp, hole[k], hole[(k + 1) % 4], Assignment::Cut);
     }
-    planarize(&mut cp, &opts(true));
+    planarize(&mut cp, &opts(true)).expect("planar");
     let faces = cp.faces.as_ref().expect("faces computed");
     // Four triangles plus the hole's inside.
     assert_eq!(faces.len(), 5);
@@ -237,11 +238,11 @@ proptest! {
         for &(a, b, k) in &segs {
             seg(&mut cp, a, b, k);
         }
-        let r = planarize(&mut cp, &opts(true));
+        let r = planarize(&mut cp, &opts(true)).expect("planar");
         cp.validate().expect("planarised pattern is valid");
         assert_planar(&cp, r.tolerance);
         // Idempotent: a second pass changes nothing.
-        let again = planarize(&mut cp.clone(), &opts(true));
+        let again = planarize(&mut cp.clone(), &opts(true)).expect("planar");
         prop_assert!(again.unchanged(), "second pass changed: {again:?}");
         // Euler: V − E + (bounded faces) = C for a planar graph with C components.
         let faces = cp.faces.as_ref().map_or(0, |f| f.len()) as i64;
@@ -286,7 +287,7 @@ fn regression_long_diagonal_crossed_by_short_segment() {
         (50.0545509065193, 45.999368735682616),
         Assignment::Boundary,
     );
-    let r = planarize(&mut cp, &opts(true));
+    let r = planarize(&mut cp, &opts(true)).expect("planar");
     assert_eq!(r.crossings, 1);
     assert_eq!((cp.vertices.len(), cp.edges.len()), (5, 4));
 }
@@ -304,7 +305,7 @@ fn islands_nest_inside_holes_and_separate_sheets_stay_outside() {
     square(&mut cp, 20.0, 20.0, 60.0, Assignment::Cut); // hole cut in it
     square(&mut cp, 40.0, 40.0, 20.0, Assignment::Boundary); // island inside the hole
     square(&mut cp, 200.0, 0.0, 50.0, Assignment::Boundary); // a second sheet
-    planarize(&mut cp, &opts(true));
+    planarize(&mut cp, &opts(true)).expect("planar");
     let set = find_faces(&cp);
     assert_eq!(set.faces.len(), 4);
     assert_eq!(set.outer.len(), 2, "two sheets on the unbounded face");
@@ -319,4 +320,31 @@ fn islands_nest_inside_holes_and_separate_sheets_stay_outside() {
         };
         assert_eq!(f.holes.len(), expected_holes, "face of area {}", area(f));
     }
+}
+
+#[test]
+fn thousands_of_overlapping_distinct_lines_are_refused_not_hung() {
+    // 3,000 collinear segments with distinct ends all overlapping: splitting them all would
+    // make millions of pieces; planarisation stops with an error instead.
+    let mut cp = CreasePattern::new();
+    for k in 0..3000 {
+        let t = k as f64 * 1e-3;
+        seg(&mut cp, (t, 0.0), (100.0 - t, 0.0), Assignment::Mountain);
+    }
+    let err = planarize(&mut cp, &opts(false)).expect_err("too complex");
+    assert!(err.to_string().contains("too tangled"), "{err}");
+    cp.validate().expect("left valid");
+}
+
+#[test]
+fn coincident_vertex_piles_merge_in_one_group() {
+    let mut cp = CreasePattern::new();
+    for _ in 0..20_000 {
+        cp.add_vertex(DVec2::ZERO);
+    }
+    let far = cp.add_vertex(DVec2::ONE);
+    cp.add_edge(foldcam::pattern::VertexId(0), far, Assignment::Valley);
+    let r = planarize(&mut cp, &opts(false)).expect("planar");
+    assert_eq!(cp.vertices.len(), 2);
+    assert_eq!(r.merged_vertices, 19_999);
 }

@@ -33,7 +33,15 @@ pub(super) fn check_edges(cp: &CreasePattern, opts: &CheckOptions) -> EdgeTally 
         {
             tally.findings.push(short_edge(cp, id, mid, length, limit));
         }
-        if let Some(angle) = edge.fold_angle {
+        // A mountain or valley without a stored angle is a full fold (±180°), as in ORIPA
+        // files and as the FOLD writer records it.
+        let angle = edge.fold_angle.or_else(|| {
+            edge.assignment
+                .is_fold()
+                .then(|| edge.assignment.flat_folded_angle())
+                .flatten()
+        });
+        if let Some(angle) = angle {
             if tally
                 .largest_fold
                 .is_none_or(|s| angle.abs() > s.value.abs())

@@ -62,7 +62,8 @@ pub struct CheckOptions {
     /// Smallest allowed angle between neighbouring creases at a vertex, degrees (Tachi's
     /// δ_corner); `None` disables the check.
     pub min_vertex_angle_deg: Option<f64>,
-    /// Largest allowed |fold angle|, degrees; `None` disables the check.
+    /// Largest allowed |fold angle|, degrees; mountains and valleys without a stored angle
+    /// count as fully folded (±180°). `None` disables the check.
     pub max_fold_angle_deg: Option<f64>,
     /// Shortest allowed edge, in the pattern's unit; `None` only reports the shortest edge.
     pub min_edge_length: Option<f64>,

@@ -1,5 +1,6 @@
 //! Argument groups shared by several subcommands, validated where they enter.
 
+use anyhow::{Result, bail};
 use clap::Args;
 
 use foldcam::check::CheckOptions;
@@ -38,22 +39,40 @@ pub struct ScaleArgs {
 }
 
 impl ScaleArgs {
-    /// Applies the scale, if one was given, to the pattern and its folded state.
-    pub fn apply(&self, cp: &mut CreasePattern, folded: Option<&mut FoldedState>) {
+    /// Applies the scale, if one was given, to the pattern and its folded state; refuses a
+    /// scale that pushes coordinates past the 1e9 mm limit. Other FOLD frames kept from the
+    /// input would keep their old numbers, so they are dropped (with a warning).
+    pub fn apply(&self, cp: &mut CreasePattern, folded: Option<&mut FoldedState>) -> Result<()> {
         let factor = match (self.scale, self.size) {
             (Some(f), _) => f,
             (None, Some(size)) => {
                 let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
                 if extent > 0.0 { size / extent } else { 1.0 }
             }
-            (None, None) => return,
+            (None, None) => return Ok(()),
         };
+        let extent = cp
+            .bounds()
+            .map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs()).max_element());
+        let limit = foldcam::pattern::MAX_COORDINATE;
+        if !(extent * factor).is_finite() || extent * factor > limit {
+            bail!(
+                "a scale of {factor} puts coordinates at {:e} mm, beyond the limit of {limit:e} mm",
+                extent * factor
+            );
+        }
         if factor != 1.0 || cp.units == Units::Unitless {
             cp.scale_to_mm(factor);
             for p in folded.into_iter().flat_map(|f| f.positions.iter_mut()) {
                 *p *= factor;
             }
+            if cp.meta.file_extra.shift_remove("file_frames").is_some() {
+                eprintln!(
+                    "foldcam: warning: other frames (file_frames) were dropped: they are not rescaled"
+                );
+            }
         }
+        Ok(())
     }
 }
 

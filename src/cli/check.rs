@@ -37,7 +37,7 @@ pub struct Args {
 /// Runs the checks and prints the report.
 pub fn run(args: Args) -> Result<Outcome> {
     let mut imported = input::load(&args.input, &args.frame)?;
-    input::clean(&args.input, &mut imported, None);
+    input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
     let report = check(cp, &args.limits.options());
     if args.json {

@@ -43,12 +43,10 @@ pub fn run(args: Args) -> Result<Outcome> {
     })?;
     let mut imported = input::load(&args.input, &args.frame)?;
     if args.planarize {
-        input::clean(&args.input, &mut imported, args.tolerance);
-        let faces = foldcam::pattern::faces::find_faces(&imported.pattern).faces;
-        imported.pattern.faces = Some(faces);
+        input::clean(&args.input, &mut imported, args.tolerance, true)?;
     }
     args.scale
-        .apply(&mut imported.pattern, imported.folded.as_mut());
+        .apply(&mut imported.pattern, imported.folded.as_mut())?;
     input::save(&args.output, &imported.pattern, imported.folded.as_ref())?;
     Ok(Outcome::Done)
 }

@@ -54,7 +54,8 @@ pub fn run(args: Args) -> Result<Outcome> {
         let format = Format::from_path(Path::new(name)).context("sample extension")?;
         let mut imported =
             formats::parse(format, text).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-        planarize(&mut imported.pattern, &PlanarizeOptions::default());
+        planarize(&mut imported.pattern, &PlanarizeOptions::default())
+            .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
         give_size(&mut imported.pattern, UNITLESS_SIZE_MM);
         let stem = name.rsplit_once('.').map_or(*name, |(s, _)| s);
         cases.push((stem.to_string(), imported.pattern));

@@ -24,6 +24,13 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
         None | Some(0) => formats::load(path)?,
         Some(n) => load_frame(path, n)?,
     };
+    if imported.pattern.edges.is_empty() {
+        bail!(
+            "{}: the pattern holds no edges (and no faces to derive them from): nothing to \
+             check, draw or convert",
+            path.display()
+        );
+    }
     for w in &imported.warnings {
         eprintln!("foldcam: warning: {}: {w}", path.display());
     }
@@ -44,15 +51,32 @@ fn load_frame(path: &Path, n: usize) -> Result<Imported> {
     Ok(imported)
 }
 
-/// Planarises the pattern in place and says on stderr what changed, if anything.
-pub fn clean(path: &Path, imported: &mut Imported, tolerance: Option<f64>) -> PlanarizeReport {
-    let report = planarize(
-        &mut imported.pattern,
-        &PlanarizeOptions {
-            tolerance,
-            faces: false,
-        },
-    );
+/// Planarises the pattern in place (tracing faces when asked) and says on stderr what
+/// changed, if anything. A folded state no longer matches a changed pattern and is dropped.
+pub fn clean(
+    path: &Path,
+    imported: &mut Imported,
+    tolerance: Option<f64>,
+    faces: bool,
+) -> Result<PlanarizeReport> {
+    let options = PlanarizeOptions { tolerance, faces };
+    let report = planarize(&mut imported.pattern, &options)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    if report.assignment_conflicts > 0 {
+        eprintln!(
+            "foldcam: warning: {}: {} mountain and valley lines lie on top of each other; the \
+             first of each pair was kept",
+            path.display(),
+            report.assignment_conflicts
+        );
+    }
+    if !report.unchanged() && imported.folded.take().is_some() {
+        eprintln!(
+            "foldcam: warning: {}: the folded state was dropped: it does not match the cleaned \
+             pattern",
+            path.display()
+        );
+    }
     if !report.unchanged() {
         eprintln!(
             "foldcam: {}: cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, \
@@ -65,7 +89,7 @@ pub fn clean(path: &Path, imported: &mut Imported, tolerance: Option<f64>) -> Pl
             report.duplicates_removed
         );
     }
-    report
+    Ok(report)
 }
 
 /// Writes the pattern (and folded state) and says so on stderr.

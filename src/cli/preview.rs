@@ -52,7 +52,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         );
     }
     let mut imported = input::load(&args.input, &args.frame)?;
-    input::clean(&args.input, &mut imported, None);
+    input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
     let findings = if args.check {
         let report = check(cp, &args.limits.options());

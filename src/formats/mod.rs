@@ -166,7 +166,8 @@ pub(crate) fn finish_drawing(
         tolerance,
         faces: false,
     };
-    let report = planarize(&mut pattern, &options);
+    let report =
+        planarize(&mut pattern, &options).map_err(|e| ParseError::new("file", e.to_string()))?;
     if report.duplicates_removed > 0 {
         warnings.push(format!(
             "{} line(s) {verb} over others were merged (the stronger assignment kept)",

@@ -24,4 +24,4 @@ pub use crease_pattern::{
 pub use error::PatternError;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};
-pub use planarize::{PlanarizeOptions, PlanarizeReport, planarize};
+pub use planarize::{PlanarizeError, PlanarizeOptions, PlanarizeReport, planarize};

@@ -92,7 +92,7 @@ impl MiuraOri {
             }
         }
         let title = format!("Miura-ori {cols}×{rows}");
-        Ok(finish(cp, title))
+        finish(cp, title)
     }
 }
 

@@ -58,15 +58,17 @@ fn count(parameter: &'static str, value: usize, max: usize) -> Result<usize, Cla
 
 /// Cleans a generated drawing (merging shared vertices, splitting outline edges where creases
 /// end on them) and traces its faces.
-fn finish(mut cp: CreasePattern, title: String) -> CreasePattern {
+fn finish(mut cp: CreasePattern, title: String) -> Result<CreasePattern, ClassicError> {
     cp.meta.title = Some(title);
     cp.meta.creator = Some("foldcam".into());
-    planarize(
-        &mut cp,
-        &PlanarizeOptions {
-            tolerance: None,
-            faces: true,
-        },
-    );
-    cp
+    let options = PlanarizeOptions {
+        tolerance: None,
+        faces: true,
+    };
+    planarize(&mut cp, &options).map_err(|_| ClassicError {
+        parameter: "size",
+        value: cp.edges.len() as f64,
+        expected: "too many edges to clean: use fewer cells",
+    })?;
+    Ok(cp)
 }

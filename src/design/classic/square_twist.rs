@@ -86,7 +86,7 @@ impl SquareTwist {
             cp.add_segment(sq[k], sq[(k + 1) % 4], Assignment::Boundary);
         }
         let deg = self.twist_deg;
-        Ok(finish(cp, format!("Square twist {deg}°")))
+        finish(cp, format!("Square twist {deg}°"))
     }
 }
 

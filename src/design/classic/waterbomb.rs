@@ -67,7 +67,7 @@ impl Waterbomb {
                 cp.add_segment(mid, p(i, j + 1), outline(edge, Assignment::Valley));
             }
         }
-        Ok(finish(cp, format!("Waterbomb bases {nx}×{ny}")))
+        finish(cp, format!("Waterbomb bases {nx}×{ny}"))
     }
 }
 

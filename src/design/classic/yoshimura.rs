@@ -89,6 +89,6 @@ impl Yoshimura {
                 Assignment::Boundary,
             );
         }
-        Ok(finish(cp, format!("Yoshimura {n}×{rows}")))
+        finish(cp, format!("Yoshimura {n}×{rows}"))
     }
 }

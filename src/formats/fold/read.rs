@@ -36,7 +36,30 @@ pub fn read_frame_str(text: &str, frame: usize) -> Result<Imported, ParseError> 
         attach_folded_frame(&root, &mut imported);
     }
     imported.pattern.validate().map_err(pattern_error)?;
+    if frame == 0 {
+        let unit = resolved.get("frame_unit").and_then(Value::as_str);
+        pin_inherited_unit(&mut imported.pattern.meta, unit);
+    }
     Ok(imported)
+}
+
+/// The key frame's coordinates are converted to millimetres (and written with
+/// `frame_unit: "mm"`), but frames kept in `file_frames` keep their numbers: those that inherit
+/// the key frame's unit get it written into them, so they still read in their own unit.
+fn pin_inherited_unit(meta: &mut crate::pattern::Metadata, unit: Option<&str>) {
+    let Some(unit) = unit.filter(|u| *u != "mm" && *u != "unit") else {
+        return;
+    };
+    let Some(Value::Array(frames)) = meta.file_extra.get_mut("file_frames") else {
+        return;
+    };
+    for frame in frames.iter_mut().filter_map(Value::as_object_mut) {
+        let inherits = frame.get("frame_inherit").and_then(Value::as_bool) == Some(true);
+        let from_key = frame.get("frame_parent").and_then(Value::as_u64) == Some(0);
+        if inherits && from_key && !frame.contains_key("frame_unit") {
+            frame.insert("frame_unit".into(), Value::String(unit.into()));
+        }
+    }
 }
 
 /// Parses a FOLD file's text into its top-level object (for [`super::resolve_frame`] and

@@ -138,12 +138,13 @@ impl<'a> Unfolder<'a> {
         let mut queue = VecDeque::from([root]);
         while let Some(f) = queue.pop_front() {
             for (a, b) in cycle_edges(&self.faces[f]) {
-                let neighbours = self
-                    .edge_faces
-                    .get(&pair(a, b))
-                    .cloned()
-                    .unwrap_or_default();
-                for g in neighbours {
+                // Indexing instead of cloning the list: many faces may share one edge.
+                let key = pair(a, b);
+                let count = self.edge_faces.get(&key).map_or(0, Vec::len);
+                for k in 0..count {
+                    let Some(&g) = self.edge_faces.get(&key).and_then(|l| l.get(k)) else {
+                        break;
+                    };
                     if !self.visited[g] && self.normals[g].is_some() {
                         self.place_across(g, f, a, b);
                         queue.push_back(g);

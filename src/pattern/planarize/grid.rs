@@ -2,12 +2,18 @@
 //! segment passes through, so two edges that come within the tolerance of each other share at
 //! least one cell.
 //!
-//! The cell size is chosen so there are about as many cells as edges (capped at four times as
-//! many), which keeps the average cell short for drawings of evenly sized creases. Patterns
-//! with a few very long edges among many short ones stay correct but test more pairs.
+//! The cell size is the mean edge length (at least four tolerances), enlarged when that would
+//! make more than about four cells per edge, which keeps cells short for drawings of evenly
+//! sized creases. Patterns with a few very long edges among many short ones stay correct but
+//! test more pairs; the grid refuses to grow past [`MAX_ENTRIES_PER_EDGE`] entries per edge.
 
 use glam::DVec2;
 use rayon::prelude::*;
+
+/// Most grid entries per edge (on average) before the search gives up as too complex: an
+/// edge crossing many cells is one much longer than the mean, and many of those make the
+/// search quadratic.
+pub(super) const MAX_ENTRIES_PER_EDGE: u64 = 64;
 
 /// Edges bucketed by cell, as compressed rows.
 pub(super) struct EdgeGrid {
@@ -18,18 +24,27 @@ pub(super) struct EdgeGrid {
 }
 
 impl EdgeGrid {
-    /// Builds the grid for segments `segs` (end positions), widened by `tol`.
-    pub fn new(segs: &[(DVec2, DVec2)], tol: f64) -> Self {
+    /// Builds the grid for segments `segs` (end positions), widened by `tol`; `None` when the
+    /// grid would exceed [`MAX_ENTRIES_PER_EDGE`] entries per edge.
+    pub fn new(segs: &[(DVec2, DVec2)], tol: f64) -> Option<Self> {
         let Some((lo, hi)) = bounds(segs) else {
-            return EdgeGrid {
+            return Some(EdgeGrid {
                 runs: vec![0],
                 edges: Vec::new(),
-            };
+            });
         };
         let size = (hi - lo).max(DVec2::splat(tol.max(f64::MIN_POSITIVE)));
         let n = segs.len().max(1) as f64;
-        let mut cell = (size.x * size.y / n).sqrt().max(size.max_element() / n);
-        cell = cell.max(4.0 * tol);
+        let mean = segs.iter().map(|(a, b)| a.distance(*b)).sum::<f64>() / n;
+        let mut cell = mean.max(4.0 * tol).max(size.max_element() / (4.0 * n));
+        let max_cells = 4.0 * n + 64.0;
+        loop {
+            let cells = (size.x / cell + 2.0) * (size.y / cell + 2.0);
+            if cells <= max_cells {
+                break;
+            }
+            cell *= (cells / max_cells).sqrt().max(1.01);
+        }
         let cols = (size.x + 2.0 * tol) / cell;
         let rows = (size.y + 2.0 * tol) / cell;
         let spec = CellSpec {
@@ -43,8 +58,15 @@ impl EdgeGrid {
         // Counting sort by cell: count, prefix sums, scatter (the cells are few and dense, so
         // this beats a comparison sort of (cell, edge) pairs).
         let mut runs = vec![0u32; (spec.cols * spec.rows) as usize + 1];
+        let mut entries = 0u64;
         for &(a, b) in segs {
-            spec.cover(a, b, |key| runs[key as usize + 1] += 1);
+            spec.cover(a, b, |key| {
+                runs[key as usize + 1] += 1;
+                entries += 1;
+            });
+        }
+        if entries > MAX_ENTRIES_PER_EDGE * segs.len() as u64 + 1_000_000 {
+            return None;
         }
         for i in 1..runs.len() {
             runs[i] += runs[i - 1];
@@ -58,7 +80,18 @@ impl EdgeGrid {
                 *slot += 1;
             });
         }
-        EdgeGrid { runs, edges }
+        Some(EdgeGrid { runs, edges })
+    }
+
+    /// Number of edge pairs that share a cell (the work of a crossing search).
+    pub fn pair_count(&self) -> u64 {
+        self.runs
+            .windows(2)
+            .map(|w| {
+                let k = u64::from(w[1] - w[0]);
+                k * k.saturating_sub(1) / 2
+            })
+            .sum()
     }
 
     /// The edge lists of the cells holding two or more edges.

@@ -106,34 +106,62 @@ impl SortedCells {
         tol: f64,
         out: &mut Vec<(u32, u32)>,
     ) {
+        if run.len() == 1 {
+            self.border_pairs(points, self.keys[run.start].1, tol, out);
+            return;
+        }
         let tol2 = tol * tol;
-        let cell = &self.keys[run.clone()];
-        for (k, &(_, i)) in cell.iter().enumerate() {
+        // Identical positions first (a pile of copies costs a sort, not a square), then the
+        // distinct positions pairwise; only pairs that join two groups are emitted.
+        let mut cell: Vec<u32> = self.keys[run].iter().map(|k| k.1).collect();
+        let bits = |i: &u32| {
+            let p = points[*i as usize];
+            (p.x.to_bits(), p.y.to_bits())
+        };
+        cell.sort_unstable_by_key(bits);
+        let mut distinct: Vec<u32> = Vec::with_capacity(cell.len());
+        for &i in &cell {
+            match distinct.last() {
+                Some(&d) if bits(&d) == bits(&i) => out.push((i, d)),
+                _ => distinct.push(i),
+            }
+        }
+        let mut local: Vec<u32> = (0..distinct.len() as u32).collect();
+        for (k, &i) in distinct.iter().enumerate() {
             let p = points[i as usize];
-            for &(_, j) in &cell[k + 1..] {
-                if points[j as usize].distance_squared(p) <= tol2 {
+            for (l, &j) in distinct.iter().enumerate().skip(k + 1) {
+                if points[j as usize].distance_squared(p) <= tol2
+                    && find(&mut local, k as u32) != find(&mut local, l as u32)
+                {
+                    union(&mut local, k as u32, l as u32);
                     out.push((i, j));
                 }
             }
-            let (c, lo, hi) = (self.key(p), self.key(p - tol), self.key(p + tol));
-            if lo == c && hi == c {
-                continue;
-            }
-            // Near a border: look in the neighbouring cells; each pair is taken from the side
-            // of the smaller cell key only, so it is found once.
-            for x in lo.0..=hi.0 {
-                for y in lo.1..=hi.1 {
-                    if (x, y) <= c {
-                        continue;
+            self.border_pairs(points, i, tol, out);
+        }
+    }
+
+    /// Pairs of point `i` with points in the neighbouring cells it is within `tol` of (if
+    /// any); each pair is taken from the side of the smaller cell key only, so it is found
+    /// once.
+    fn border_pairs(&self, points: &[DVec2], i: u32, tol: f64, out: &mut Vec<(u32, u32)>) {
+        let p = points[i as usize];
+        let (c, lo, hi) = (self.key(p), self.key(p - tol), self.key(p + tol));
+        if lo == c && hi == c {
+            return;
+        }
+        for x in lo.0..=hi.0 {
+            for y in lo.1..=hi.1 {
+                if (x, y) <= c {
+                    continue;
+                }
+                let start = self.keys.partition_point(|k| k.0 < (x, y));
+                for &(key, j) in &self.keys[start..] {
+                    if key != (x, y) {
+                        break;
                     }
-                    let start = self.keys.partition_point(|k| k.0 < (x, y));
-                    for &(key, j) in &self.keys[start..] {
-                        if key != (x, y) {
-                            break;
-                        }
-                        if points[j as usize].distance_squared(p) <= tol2 {
-                            out.push((i, j));
-                        }
+                    if points[j as usize].distance_squared(p) <= tol * tol {
+                        out.push((i, j));
                     }
                 }
             }

@@ -21,7 +21,8 @@ use glam::DVec2;
 use rayon::prelude::*;
 
 use super::faces::find_faces;
-use super::{CreasePattern, Edge, VertexId};
+use super::{Assignment, CreasePattern, Edge, VertexId};
+pub use split::MAX_PAIR_TESTS;
 use split::{Seg, find_splits, pieces};
 
 /// Most split-and-merge passes made; a pass after the first is needed only where snapping a
@@ -58,6 +59,8 @@ pub struct PlanarizeReport {
     pub zero_length_removed: usize,
     /// Duplicate edges removed (the stronger assignment kept).
     pub duplicates_removed: usize,
+    /// Duplicates where a mountain and a valley coincide (equally strong: the first kept).
+    pub assignment_conflicts: usize,
     /// Per-element FOLD arrays dropped because elements were renumbered.
     pub dropped_keys: Vec<String>,
 }
@@ -74,8 +77,29 @@ impl PlanarizeReport {
     }
 }
 
+/// Why a drawing could not be planarised.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum PlanarizeError {
+    /// The drawing has so many edges lying on top of or across each other that cleaning it
+    /// would take too long or too much memory (limits: [`MAX_PAIR_TESTS`] pair tests,
+    /// [`MAX_SPLITS_PER_EDGE`] splits per edge).
+    #[error(
+        "the drawing is too tangled to clean: {edges} edges with too many overlaps or crossings \
+         (more than the limits of {} edge-pair tests or {MAX_SPLITS_PER_EDGE} splits per edge)",
+        MAX_PAIR_TESTS
+    )]
+    TooComplex {
+        /// Edges at the time the limit was hit.
+        edges: usize,
+    },
+}
+
+/// Most splits per edge on average (plus a million) before planarisation gives up: a real
+/// crease pattern has a handful; only piles of overlapping lines have more.
+pub const MAX_SPLITS_PER_EDGE: usize = 16;
+
 /// Turns `cp` into a clean planar graph (see the module docs). `cp` must be valid
-/// ([`CreasePattern::validate`]).
+/// ([`CreasePattern::validate`]). On error `cp` is left partly cleaned but valid.
 ///
 /// ```
 /// use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
@@ -85,22 +109,29 @@ impl PlanarizeReport {
 /// let mut cp = CreasePattern::new();
 /// cp.add_segment(DVec2::new(0.0, 0.0), DVec2::new(10.0, 10.0), Assignment::Valley);
 /// cp.add_segment(DVec2::new(0.0, 10.0), DVec2::new(10.0, 0.0), Assignment::Mountain);
-/// let report = planarize(&mut cp, &PlanarizeOptions::default());
+/// let report = planarize(&mut cp, &PlanarizeOptions::default())?;
 /// assert_eq!(report.crossings, 1);
 /// assert_eq!((cp.vertices.len(), cp.edges.len()), (5, 4));
+/// # Ok::<(), foldcam::pattern::PlanarizeError>(())
 /// ```
-pub fn planarize(cp: &mut CreasePattern, opts: &PlanarizeOptions) -> PlanarizeReport {
+pub fn planarize(
+    cp: &mut CreasePattern,
+    opts: &PlanarizeOptions,
+) -> Result<PlanarizeReport, PlanarizeError> {
     let tol = opts.tolerance.unwrap_or_else(|| default_tolerance(cp));
     let mut report = PlanarizeReport {
         tolerance: tol,
         ..Default::default()
     };
     merge_vertices(cp, tol, &mut report);
+    // Exact duplicates first, so piles of identical lines cost nothing in the crossing search.
+    remove_duplicates(cp, &mut report);
     for _ in 0..MAX_PASSES {
-        if !split_pass(cp, tol, &mut report) {
+        if !split_pass(cp, tol, &mut report)? {
             break;
         }
         merge_vertices(cp, tol, &mut report);
+        remove_zero_length(cp, &mut report);
     }
     remove_zero_length(cp, &mut report);
     remove_duplicates(cp, &mut report);
@@ -113,7 +144,7 @@ pub fn planarize(cp: &mut CreasePattern, opts: &PlanarizeOptions) -> PlanarizeRe
     if opts.faces && (cp.faces.is_none() || !report.unchanged()) {
         cp.faces = Some(find_faces(cp).faces);
     }
-    report
+    Ok(report)
 }
 
 /// [`RELATIVE_TOLERANCE`] of the bounding-box diagonal (at least 1e-12).
@@ -140,7 +171,11 @@ fn merge_vertices(cp: &mut CreasePattern, tol: f64, report: &mut PlanarizeReport
 }
 
 /// One search for crossings and touches; returns whether any edge was split.
-fn split_pass(cp: &mut CreasePattern, tol: f64, report: &mut PlanarizeReport) -> bool {
+fn split_pass(
+    cp: &mut CreasePattern,
+    tol: f64,
+    report: &mut PlanarizeReport,
+) -> Result<bool, PlanarizeError> {
     let segs: Vec<Seg> = cp
         .edges
         .iter()
@@ -152,9 +187,13 @@ fn split_pass(cp: &mut CreasePattern, tol: f64, report: &mut PlanarizeReport) ->
             }
         })
         .collect();
-    let splits = find_splits(&segs, tol);
+    let too_complex = PlanarizeError::TooComplex {
+        edges: cp.edges.len(),
+    };
+    let max_splits = MAX_SPLITS_PER_EDGE * segs.len() + 1_000_000;
+    let splits = find_splits(&segs, tol, max_splits).ok_or(too_complex)?;
     if splits.touches.is_empty() && splits.crossings.is_empty() {
-        return false;
+        return Ok(false);
     }
     let mut cuts: Vec<(u32, u32, DVec2)> = splits
         .touches
@@ -189,7 +228,7 @@ fn split_pass(cp: &mut CreasePattern, tol: f64, report: &mut PlanarizeReport) ->
         }
     }
     cp.edges = edges;
-    true
+    Ok(true)
 }
 
 fn remove_zero_length(cp: &mut CreasePattern, report: &mut PlanarizeReport) {
@@ -215,6 +254,13 @@ fn remove_duplicates(cp: &mut CreasePattern, report: &mut PlanarizeReport) {
     order.par_sort_unstable();
     let mut keep = vec![false; cp.edges.len()];
     for run in order.chunk_by(|x, y| x.0 == y.0) {
+        let has = |k| {
+            run.iter()
+                .any(|&(_, i)| cp.edges[i as usize].assignment == k)
+        };
+        if run.len() > 1 && has(Assignment::Mountain) && has(Assignment::Valley) {
+            report.assignment_conflicts += 1;
+        }
         let best = run
             .iter()
             .map(|&(_, i)| i as usize)

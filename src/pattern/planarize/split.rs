@@ -8,6 +8,8 @@
 //!   vertex there.
 
 use glam::DVec2;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use rayon::prelude::*;
 
 use super::grid::EdgeGrid;
@@ -37,28 +39,48 @@ impl Splits {
     }
 }
 
-/// Finds every touch and crossing among `segs`.
-pub(super) fn find_splits(segs: &[Seg], tol: f64) -> Splits {
+/// Most edge pairs tested in one pass before the search gives up: beyond this the drawing
+/// has so many edges on top of each other that splitting them all would take minutes.
+pub const MAX_PAIR_TESTS: u64 = 400_000_000;
+
+/// Finds every touch and crossing among `segs`; `None` when the work would exceed the limits
+/// ([`MAX_PAIR_TESTS`], the grid's entry limit, or more than `max_splits` splits: the search
+/// stops early once that many are found).
+pub(super) fn find_splits(segs: &[Seg], tol: f64, max_splits: usize) -> Option<Splits> {
     let ends: Vec<(DVec2, DVec2)> = segs.iter().map(|s| (s.p[0], s.p[1])).collect();
-    let grid = EdgeGrid::new(&ends, tol);
+    let grid = EdgeGrid::new(&ends, tol)?;
+    if grid.pair_count() > MAX_PAIR_TESTS {
+        return None;
+    }
+    let found = AtomicUsize::new(0);
+    let over = || found.load(Ordering::Relaxed) > max_splits;
     let mut splits = grid
         .crowded_cells()
         .fold(Splits::default, |mut out, cell| {
             for (k, &i) in cell.iter().enumerate() {
+                let before = out.touches.len() + 2 * out.crossings.len();
+                if over() {
+                    break;
+                }
                 for &j in &cell[k + 1..] {
                     test_pair(segs, i, j, tol, &mut out);
                 }
+                let after = out.touches.len() + 2 * out.crossings.len();
+                found.fetch_add(after - before, Ordering::Relaxed);
             }
             out
         })
         .reduce(Splits::default, Splits::append);
+    if over() {
+        return None;
+    }
     splits.touches.par_sort_unstable();
     splits.touches.dedup();
     splits
         .crossings
         .par_sort_unstable_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)));
     splits.crossings.dedup_by(|a, b| (a.0, a.1) == (b.0, b.1));
-    splits
+    Some(splits)
 }
 
 fn test_pair(segs: &[Seg], i: u32, j: u32, tol: f64, out: &mut Splits) {
