@@ -174,10 +174,21 @@ pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<Str
             worst.map_or(String::new(), |w| format!(" (smallest {w:.1}°)"))
         ));
     }
-    let folds = report.of_kind(FindingKind::FoldAngle).count();
-    if let (true, Some(l)) = (folds > 0, opts.max_fold_angle_deg) {
+    let folds: Vec<_> = report.of_kind(FindingKind::FoldAngle).collect();
+    if let (false, Some(l)) = (folds.is_empty(), opts.max_fold_angle_deg) {
+        let unknown = folds
+            .iter()
+            .filter_map(|f| cp.edges.get(f.edge?.index()))
+            .filter(|e| e.fold_angle.is_none())
+            .count();
+        let note = if unknown > 0 {
+            format!(" ({unknown} of them have no stored fold angle and count as folded flat)")
+        } else {
+            String::new()
+        };
         out.push(format!(
-            "{folds} edges fold further than {l}°, the largest fold angle {} allows",
+            "{} edges fold further than {l}°, the largest fold angle {} allows{note}",
+            folds.len(),
             material.name
         ));
     }

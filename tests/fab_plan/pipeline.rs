@@ -66,11 +66,13 @@ fn miura_plans_on_every_bed_one_and_two_sided() {
                 }
                 let s = &plan.stats;
                 assert!(s.travel_mm < s.naive_travel_mm, "{s:?}");
-                assert!(
-                    s.time_s > 0.0 && plan.warnings.is_empty(),
-                    "{:?}",
-                    plan.warnings
-                );
+                assert!(s.time_s > 0.0);
+                // The Miura-ori stores no fold angles: every crease counts as folded flat,
+                // beyond the card's 175°. No other limit is exceeded.
+                let creases = cp.edges.iter().filter(|e| e.assignment.is_fold()).count();
+                let want = format!("{creases} edges fold further than 175°");
+                assert_eq!(plan.warnings.len(), 1, "{:?}", plan.warnings);
+                assert!(plan.warnings[0].starts_with(&want), "{:?}", plan.warnings);
             }
         }
     }

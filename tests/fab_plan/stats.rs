@@ -61,8 +61,9 @@ fn design_limits_are_warned_about() {
     let o = cp.add_vertex(DVec2::ZERO);
     let a = cp.add_vertex(DVec2::new(10.0, 0.0));
     let b = cp.add_vertex(DVec2::new(10.0, 0.5)); // about 2.9° from the first crease
-    cp.add_edge(o, a, Assignment::Mountain);
-    cp.add_edge(o, b, Assignment::Valley);
+    let m = cp.add_edge(o, a, Assignment::Mountain);
+    cp.edges[m.index()].fold_angle = Some(-90.0);
+    cp.add_edge(o, b, Assignment::Valley); // no stored angle: folded flat
     let c = cp.add_vertex(DVec2::new(0.0, 10.0));
     let e = cp.add_edge(o, c, Assignment::Valley);
     cp.edges[e.index()].fold_angle = Some(179.0);
@@ -73,9 +74,11 @@ fn design_limits_are_warned_about() {
         "{w:?}"
     );
     assert!(
-        w[1].starts_with("1 edges") && w[1].contains("175°"),
+        w[1].starts_with("2 edges") && w[1].contains("175°") && w[1].contains("1 of them"),
         "{w:?}"
     );
     let (clean, _) = sheet(100.0, DVec2::ZERO);
-    assert!(design_limit_warnings(&clean, &material()).is_empty());
+    let mut flat_folding = material();
+    flat_folding.limits.max_fold_angle_deg = 180.0;
+    assert!(design_limit_warnings(&clean, &flat_folding).is_empty());
 }
