@@ -139,3 +139,79 @@ fn try_move_run(tour: &mut [Visit], start: DVec2, i: usize, len: usize) -> bool 
     }
     true
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fab::order::visit::Orient;
+
+    fn visit(item: usize, a: DVec2, b: DVec2, turnable: bool) -> Visit {
+        Visit {
+            item,
+            orient: Orient::Forward,
+            entry: a,
+            exit: b,
+            turnable,
+        }
+    }
+
+    fn travel(tour: &[Visit], start: DVec2) -> f64 {
+        let mut at = start;
+        tour.iter()
+            .map(|v| {
+                let d = at.distance(v.entry);
+                at = v.exit;
+                d
+            })
+            .sum()
+    }
+
+    #[test]
+    fn untangles_a_crossing() {
+        // Points along a line visited as 0, 2, 1, 3: one reversal fixes it.
+        let p = |x: f64| DVec2::new(x, 0.0);
+        let mut tour = vec![
+            visit(0, p(0.0), p(0.0), true),
+            visit(2, p(2.0), p(2.0), true),
+            visit(1, p(1.0), p(1.0), true),
+            visit(3, p(3.0), p(3.0), true),
+        ];
+        improve(&mut tour, DVec2::ZERO);
+        assert_eq!(travel(&tour, DVec2::ZERO), 3.0);
+    }
+
+    #[test]
+    fn never_lengthens_and_keeps_every_visit() {
+        let mut seed = 99u64;
+        let mut next = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 100.0
+        };
+        for round in 0..20 {
+            let mut tour: Vec<Visit> = (0..200)
+                .map(|i| {
+                    let a = DVec2::new(next(), next());
+                    visit(
+                        i,
+                        a,
+                        a + DVec2::new(next(), next()) / 20.0,
+                        i % 7 != round % 7,
+                    )
+                })
+                .collect();
+            let fixed: Vec<Visit> = tour.iter().filter(|v| !v.turnable).copied().collect();
+            let before = travel(&tour, DVec2::ZERO);
+            improve(&mut tour, DVec2::ZERO);
+            assert!(travel(&tour, DVec2::ZERO) <= before + 1e-9);
+            let mut items: Vec<usize> = tour.iter().map(|v| v.item).collect();
+            items.sort_unstable();
+            assert!(items.iter().copied().eq(0..200));
+            // Toolpaths that may not turn keep their direction.
+            for v in tour.iter().filter(|v| !v.turnable) {
+                assert!(fixed.contains(v));
+            }
+        }
+    }
+}
