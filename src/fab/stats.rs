@@ -15,7 +15,7 @@
 
 use glam::DVec2;
 
-use super::order::travel_mm;
+use super::order::{SAME_POINT_MM, travel_mm};
 use super::{Job, Operation, PlanStats, Toolpath};
 use crate::machine::motion::{Move, job_time};
 use crate::machine::{MachineProfile, SettingsByOperation};
@@ -56,7 +56,8 @@ pub fn moves(paths: &[Toolpath], settings: &SettingsByOperation) -> Vec<Move> {
         let s = settings.get(p.op);
         for stroke in p.strokes.iter().filter(|s| !s.is_empty()) {
             out.push(rapid(stroke[0]));
-            let closed = stroke.len() > 2 && stroke[0] == stroke[stroke.len() - 1];
+            let closed =
+                stroke.len() > 2 && stroke[0].distance(stroke[stroke.len() - 1]) <= SAME_POINT_MM;
             for pass in 0..s.passes {
                 let burn = |&to| Move {
                     to,

@@ -158,3 +158,40 @@ fn physical_flip_maps_back_marks_onto_front_marks() {
     }
     assert_ne!(f, b, "marks must not be symmetric");
 }
+
+#[test]
+fn hole_containers_point_at_their_contour_in_every_job() {
+    let (cp, mut paths) = sheet(100.0, DVec2::ZERO);
+    let ring = [
+        (40.0, 40.0),
+        (60.0, 40.0),
+        (60.0, 60.0),
+        (40.0, 60.0),
+        (40.0, 40.0),
+    ];
+    paths.insert(
+        0,
+        Toolpath {
+            op: Operation::Cut,
+            strokes: vec![ring.iter().map(|&(x, y)| DVec2::new(x, y)).collect()],
+            role: ContourRole::Hole,
+            container: Some(3), // the outline, after this insertion
+            edges: Vec::new(),
+        },
+    );
+    for two_sided in [false, true] {
+        let mut opts = PlanOptions::from_material(&material());
+        opts.two_sided = two_sided;
+        let m = machine(bed(Corner::TopRight, true));
+        let plan = plan_toolpaths(&cp, paths.clone(), &m, &material(), &opts).unwrap();
+        let job = plan.jobs.last().unwrap();
+        let hole = job
+            .paths
+            .iter()
+            .position(|p| p.role == ContourRole::Hole)
+            .unwrap();
+        let c = job.paths[hole].container.unwrap();
+        assert_eq!(job.paths[c].role, ContourRole::Outer);
+        assert!(hole < c);
+    }
+}

@@ -16,6 +16,11 @@
 //! Containers are renumbered to the new positions. With `optimize` off, steps 2–4 are skipped:
 //! the groups keep the given order and direction (precedence is kept, it is a safety matter).
 //!
+//! # Limits
+//! Groups and layers never interleave: with several parts on a sheet, every hole of every part
+//! is cut before the first outer contour, which costs some travel but keeps each part held
+//! until its own contour is cut. The improvement is local (see `order/improve.rs`).
+//!
 //! # Cost
 //! O(n log n) for the sort and the nearest-neighbour tours (P entry points: 2 per open path,
 //! one per vertex of a closed contour), plus O(n · window · passes) for the improvement.
@@ -30,6 +35,7 @@ mod visit;
 use glam::DVec2;
 
 pub use precedence::ranks;
+pub use visit::SAME_POINT_MM;
 
 use crate::fab::Toolpath;
 use visit::Visit;

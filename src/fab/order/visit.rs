@@ -5,7 +5,7 @@ use glam::DVec2;
 use crate::fab::{ContourRole, Toolpath};
 
 /// Two points closer than this (mm) are the same point: closed loops, continuing paths.
-pub(crate) const SAME_POINT_MM: f64 = 1e-6;
+pub const SAME_POINT_MM: f64 = 1e-6;
 
 /// The direction and starting point a toolpath is run with.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
