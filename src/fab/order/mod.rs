@@ -49,10 +49,10 @@ pub fn order(paths: Vec<Toolpath>, start: DVec2, optimize: bool) -> Vec<Toolpath
     let mut slots: Vec<Option<Toolpath>> = paths.into_iter().map(Some).collect();
     let mut position = vec![0; slots.len()];
     let mut ordered = Vec::with_capacity(slots.len());
-    for (k, v) in tour.iter().enumerate() {
+    for v in &tour {
         if let Some(mut p) = slots[v.item].take() {
             visit::apply(&mut p, v.orient);
-            position[v.item] = k;
+            position[v.item] = ordered.len();
             ordered.push(p);
         }
     }
