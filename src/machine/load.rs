@@ -166,3 +166,35 @@ fn stem(source_name: &str) -> String {
         name.to_string()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_name_is_the_file_name_without_toml() {
+        assert_eq!(
+            stem("shipped:machines/materials/stainless-0.5.toml"),
+            "stainless-0.5"
+        );
+        assert_eq!(stem("stainless-0.5"), "stainless-0.5");
+        assert_eq!(stem("/tmp/my.laser.toml"), "my.laser");
+        assert_eq!(stem(".toml"), ".toml");
+    }
+
+    #[test]
+    fn syntax_errors_count_lines_and_columns_from_one() {
+        assert_eq!(line_column("a = 1\nb = = 2", 10), " at line 2, column 5");
+        assert_eq!(line_column("x", 0), " at line 1, column 1");
+        assert_eq!(line_column("é", 1), " at line 1, column 2");
+    }
+
+    #[test]
+    fn names_and_paths_are_told_apart() {
+        assert!(!is_path("grbl-diode"));
+        assert!(!is_path("stainless-0.5"));
+        assert!(is_path("my.toml"));
+        assert!(is_path("./grbl-diode"));
+        assert!(is_path(r"C:\profiles\x"));
+    }
+}

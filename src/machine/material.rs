@@ -9,6 +9,7 @@
 
 use serde::Serialize;
 
+use super::MachineProfile;
 use crate::check::CheckOptions;
 use crate::fab::Operation;
 use crate::pattern::Assignment;
@@ -142,6 +143,15 @@ impl Material {
         let mut opts = CheckOptions::default();
         self.limits.apply_to(&mut opts);
         opts
+    }
+
+    /// The operations the mapping uses that `machine` cannot carry out (a laser does not plot,
+    /// a plotter does not cut), for a warning or an error before planning.
+    pub fn unsupported_by(&self, machine: &MachineProfile) -> Vec<Operation> {
+        let used = self.used_operations();
+        used.into_iter()
+            .filter(|op| !machine.supports(*op))
+            .collect()
     }
 
     /// The operations the mapping uses, each once, in [`Operation::ALL`] order.
