@@ -72,8 +72,17 @@ impl<'a> Fields<'a> {
 
     /// The value of `key`, or a "missing" error saying what was `expected`.
     fn require(&mut self, key: &str, expected: &str) -> Result<&'a Value, ProfileError> {
-        self.get(key)
-            .ok_or_else(|| self.error(key, format!("missing; expected {expected}")))
+        self.get(key).ok_or_else(|| self.missing(key, expected))
+    }
+
+    /// A "missing" error, pointing at a present key that looks like a misspelling of `key`.
+    fn missing(&self, key: &str, expected: &str) -> ProfileError {
+        let lookalike = self
+            .table
+            .keys()
+            .find(|k| k.as_str() != key && looks_like(k, key));
+        let hint = lookalike.map_or(String::new(), |k| format!(" (is `{k}` a misspelling?)"));
+        self.error(key, format!("missing; expected {expected}{hint}"))
     }
 
     /// A wrong-type or out-of-range error quoting `value`.
@@ -239,6 +248,25 @@ impl<'a> Fields<'a> {
     }
 }
 
+/// True when `a` and `b` differ by at most two edits (insertions, deletions, substitutions).
+fn looks_like(a: &str, b: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    if a.len().abs_diff(b.len()) > 2 || a.len() > MAX_LINE || b.len() > MAX_LINE {
+        return false;
+    }
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let substitution = diagonal + usize::from(ca != cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
+        }
+    }
+    row[b.len()] <= 2
+}
+
 /// "one of `a`, `b`, `c`".
 fn one_of(choices: &[&str]) -> String {
     let quoted: Vec<String> = choices.iter().map(|c| format!("\"{c}\"")).collect();
@@ -256,4 +284,18 @@ fn quote(value: &Value) -> String {
     }
     let short: String = text.chars().take(MAX_QUOTED).collect();
     format!("{short}…")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::looks_like;
+
+    #[test]
+    fn misspellings_look_alike() {
+        assert!(looks_like("max_feed_mm_mim", "max_feed_mm_min"));
+        assert!(looks_like("widht_mm", "width_mm"));
+        assert!(looks_like("dialekt", "dialect"));
+        assert!(!looks_like("vertex_clearance", "vertex_clearance_mm"));
+        assert!(!looks_like("kind", "bed"));
+    }
 }

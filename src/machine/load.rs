@@ -9,6 +9,7 @@ use std::path::Path;
 
 use toml::Table;
 
+use super::locate::line_of;
 use super::read_machine::machine_from_table;
 use super::read_material::material_from_table;
 use super::{MachineProfile, Material, ProfileError, shipped};
@@ -58,11 +59,8 @@ pub fn shipped_materials() -> Vec<&'static str> {
 /// `file`, with line and column), a missing or unknown key, a wrong type, a number out of range
 /// or not finite, an unknown name among fixed choices, inconsistent settings.
 pub fn parse_machine(text: &str, source_name: &str) -> Result<MachineProfile, ProfileError> {
-    machine_from_table(
-        &stem(source_name),
-        source_name,
-        &parse_toml(text, source_name)?,
-    )
+    let table = parse_toml(text, source_name)?;
+    machine_from_table(&stem(source_name), source_name, &table).map_err(|e| with_line(e, text))
 }
 
 /// Parses and validates a material profile; see [`parse_machine`].
@@ -70,11 +68,16 @@ pub fn parse_machine(text: &str, source_name: &str) -> Result<MachineProfile, Pr
 /// # Errors
 /// As [`parse_machine`].
 pub fn parse_material(text: &str, source_name: &str) -> Result<Material, ProfileError> {
-    material_from_table(
-        &stem(source_name),
-        source_name,
-        &parse_toml(text, source_name)?,
-    )
+    let table = parse_toml(text, source_name)?;
+    material_from_table(&stem(source_name), source_name, &table).map_err(|e| with_line(e, text))
+}
+
+/// `e` with the line of its key in `text` appended, when the key is written there.
+fn with_line(mut e: ProfileError, text: &str) -> ProfileError {
+    if let Some(line) = line_of(text, &e.key) {
+        e.message = format!("{} (line {line})", e.message);
+    }
+    e
 }
 
 /// Text and source name of a shipped profile or a file.

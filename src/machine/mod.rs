@@ -12,11 +12,12 @@
 //! [`load_machine`] and [`load_material`] take a shipped name (the profiles in `machines/` are
 //! embedded in the binary) or a path to a `.toml` file. Every key is checked: unknown keys,
 //! wrong types, numbers that are not finite or out of range, and inconsistent settings are
-//! refused with a [`ProfileError`] naming the file, the dotted key and the value found. The
-//! accepted ranges are listed in `machines/README.md`.
+//! refused with a [`ProfileError`] naming the file, the dotted key, the value found and the
+//! line. The accepted ranges are listed in `machines/README.md`.
 
 mod fields;
 mod load;
+mod locate;
 mod material;
 pub mod motion;
 mod profile;
@@ -45,6 +46,7 @@ pub struct ProfileError {
     /// The TOML key (dotted, with `[i]` for array items), `file` for a file that cannot be
     /// read or is not TOML, or `name` for an unknown shipped name.
     pub key: String,
-    /// What is wrong, the value found and what was expected.
+    /// What is wrong, the value found and what was expected, ending in `(line N)` when the
+    /// key is written in the text.
     pub message: String,
 }

@@ -211,6 +211,23 @@ fn missing_keys_are_named() {
 }
 
 #[test]
+fn a_misspelt_required_key_is_pointed_out() {
+    let text = material_edit("vertex_clearance_mm = 1.5", "vertex_clearence_mm = 1.5");
+    let key = "perforation.vertex_clearance_mm";
+    assert_error(
+        parse_material(&text, SOURCE),
+        key,
+        &["missing", "`vertex_clearence_mm`"],
+    );
+    let text = machine_edit("dialect = ", "dialekt = ");
+    assert_error(
+        parse_machine(&text, SOURCE),
+        "dialect",
+        &["missing", "`dialekt`"],
+    );
+}
+
+#[test]
 fn unknown_choices_are_refused_with_the_choices() {
     let text = machine_edit("dialect = \"grbl\"", "dialect = \"grbl2\"");
     assert_error(
@@ -286,4 +303,30 @@ fn unknown_tables_and_arrays_of_tables_are_refused() {
         "bed.extra",
         &["unknown", "a table"],
     );
+}
+
+/// The 1-based line of `text` that starts with `start`.
+fn line_starting(text: &str, start: &str) -> usize {
+    let found = text.lines().position(|l| l.starts_with(start));
+    found.map_or(0, |i| i + 1)
+}
+
+#[test]
+fn errors_give_the_line_of_the_key() {
+    let text = machine_edit("max_feed_mm_min = 6000", "max_feed_mm_min = -1");
+    let line = line_starting(&text, "max_feed_mm_min = -1");
+    let message = format!("(line {line})");
+    assert_error(
+        parse_machine(&text, SOURCE),
+        "max_feed_mm_min",
+        &["-1", &message],
+    );
+    let text = material_edit(
+        "vertex_clearance_mm = 1.5",
+        "vertex_clearance_mm = 1.5\nvertex_clearence_mm = 2",
+    );
+    let line = line_starting(&text, "vertex_clearence_mm");
+    let message = format!("(line {line})");
+    let key = "perforation.vertex_clearence_mm";
+    assert_error(parse_material(&text, SOURCE), key, &["unknown", &message]);
 }
