@@ -157,12 +157,11 @@ impl<'a> Fields<'a> {
         }
     }
 
-    /// The string `key`.
-    pub(crate) fn string(&mut self, key: &str) -> Result<&'a str, ProfileError> {
-        let value = self.require(key, "a string")?;
-        value
-            .as_str()
-            .ok_or_else(|| self.bad(key, "a string", value))
+    /// The string `key`: one line of at most 256 characters without control characters
+    /// (safe to copy into a G-code comment or a file header).
+    pub(crate) fn text_line(&mut self, key: &str) -> Result<String, ProfileError> {
+        let value = self.require(key, "a single-line string")?;
+        self.line(key, value)
     }
 
     /// The string `key`, one of `choices` (its position in `choices`).

@@ -38,7 +38,7 @@ pub(crate) fn machine_from_table(
     table: &Table,
 ) -> Result<MachineProfile, ProfileError> {
     let mut f = Fields::root(source, table);
-    let description = f.string("description")?.to_string();
+    let description = f.text_line("description")?;
     let kind = MachineKind::ALL[f.choice("kind", &MachineKind::ALL.map(MachineKind::name))?];
     let dialect = Dialect::ALL[f.choice("dialect", &Dialect::ALL.map(Dialect::name))?];
     check_kind_dialect(&f, kind, dialect)?;

@@ -43,7 +43,7 @@ pub(crate) fn material_from_table(
     table: &Table,
 ) -> Result<Material, ProfileError> {
     let mut f = Fields::root(source, table);
-    let description = f.string("description")?.to_string();
+    let description = f.text_line("description")?;
     let thickness_mm = f.number("thickness_mm", 0.01, 50.0, "mm")?;
     let kerf_mm = f.number("kerf_mm", 0.0, 5.0, "mm")?;
     let settings = read_settings(f.table("settings")?)?;

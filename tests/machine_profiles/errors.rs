@@ -278,6 +278,12 @@ fn inconsistent_settings_are_refused() {
         "pen.down[0]",
         &["control"],
     );
+    let two_lines = material_edit("description = \"", "description = \"two\\nlines ");
+    assert_error(
+        parse_material(&two_lines, SOURCE),
+        "description",
+        &["control", "two"],
+    );
     let text = material_edit("valley = \"perforate\"", "valley = \"cut\"");
     assert_error(
         parse_material(&text, SOURCE),
