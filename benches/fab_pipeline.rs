@@ -35,7 +35,11 @@ fn bench(c: &mut Criterion) {
         p.stats.time_s
     );
     let gcode = foldcam::post::gcode(&p, &p.jobs[0], &machine).expect("G-code");
-    eprintln!("G-code: {} bytes, {} lines", gcode.len(), gcode.lines().count());
+    eprintln!(
+        "G-code: {} bytes, {} lines",
+        gcode.len(),
+        gcode.lines().count()
+    );
     let mut g = c.benchmark_group("fab_200k_creases");
     g.sample_size(10);
     g.bench_function("plan", |b| {
