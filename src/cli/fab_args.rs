@@ -7,14 +7,20 @@ use foldcam::machine::{MachineProfile, Material, load_machine, load_material};
 
 use super::args::positive;
 
+/// An operation, or `skip` (`None`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OpChoice(pub Option<Operation>);
+
 /// Parses an operation name or `skip`.
-fn operation(s: &str) -> Result<Option<Operation>, String> {
+fn operation(s: &str) -> Result<OpChoice, String> {
     if s == "skip" {
-        return Ok(None);
+        return Ok(OpChoice(None));
     }
-    Operation::from_name(s).map(Some).ok_or_else(|| {
-        format!("{s:?} is not an operation (mark, score, perforate, cut, plot, skip)")
-    })
+    Operation::from_name(s)
+        .map(|op| OpChoice(Some(op)))
+        .ok_or_else(|| {
+            format!("{s:?} is not an operation (mark, score, perforate, cut, plot, skip)")
+        })
 }
 
 /// Machine, material and every plan setting a user may override.
