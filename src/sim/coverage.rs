@@ -265,8 +265,8 @@ fn job_strokes(job: &Job) -> Vec<Seg> {
         .collect()
 }
 
-/// Twice the median distance from the vertices of offset cut contours to their pattern edges
-/// (the median ignores lead-ins and corners); 0 without offset contours.
+/// Twice the median distance from the midpoints of the pieces of offset cut contours to their
+/// pattern edges (the median ignores lead-ins and corner pieces); 0 without offset contours.
 fn estimate_kerf(pattern: &CreasePattern, job: &Job) -> f64 {
     let mut d: Vec<f64> = Vec::new();
     for tp in job
@@ -285,7 +285,11 @@ fn estimate_kerf(pattern: &CreasePattern, job: &Job) -> f64 {
                 )
             })
             .collect();
-        for &p in tp.strokes.iter().flatten() {
+        let mids = tp
+            .strokes
+            .iter()
+            .flat_map(|s| s.windows(2).map(|w| (w[0] + w[1]) / 2.0));
+        for p in mids {
             let near = segs
                 .iter()
                 .map(|&(a, b)| point_segment_distance(p, a, b))

@@ -280,35 +280,40 @@ impl<'a> Machine<'a> {
     fn record(&mut self, line: usize, to: DVec2, rapid: bool, feed: f64) {
         let from = self.pos;
         let burning = self.tool_on(rapid);
-        if rapid && burning {
-            let what = if self.pen_tool {
-                "pen down"
-            } else {
-                "laser on"
-            };
-            let msg = format!("rapid move with the {what}: it marks the sheet");
-            self.report.flag(line, ViolationKind::LitTravel, msg);
-        }
         if from == to {
             return;
         }
         if burning {
+            if rapid {
+                self.flag_lit_travel(line);
+            }
             if !self.lit {
                 self.report.pierces += 1;
             }
             let power = if self.pen_tool { 0.0 } else { self.power };
             let feed_mm_min = feed;
-            self.report.add_burn(Burn {
+            let burn = Burn {
                 line,
                 from,
                 to,
                 power,
                 feed_mm_min,
-            });
+            };
+            self.report.add_burn(burn);
         } else {
             self.report.add_travel(Travel { line, from, to });
         }
         self.lit = burning;
+    }
+
+    fn flag_lit_travel(&mut self, line: usize) {
+        let what = if self.pen_tool {
+            "pen down"
+        } else {
+            "laser on"
+        };
+        let msg = format!("rapid move with the {what}: it marks the sheet");
+        self.report.flag(line, ViolationKind::LitTravel, msg);
     }
 
     fn check_bed(&mut self, line: usize, p: DVec2) {
