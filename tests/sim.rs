@@ -12,6 +12,11 @@ use foldcam::sim::{self, SimError, SimReport, ViolationKind};
 use glam::{DAffine2, DVec2};
 use proptest::prelude::*;
 
+#[path = "sim/coverage.rs"]
+mod coverage;
+#[path = "sim/render.rs"]
+mod render;
+
 /// A 300 × 200 mm laser bed, S 0–1000, 6000 mm/min max, 1000 mm/s².
 fn laser(dialect: Dialect) -> MachineProfile {
     MachineProfile {
