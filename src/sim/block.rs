@@ -184,7 +184,7 @@ fn m_code(b: &mut Block, c: Code, dialect: Dialect) -> Result<(), BlockError> {
 
 /// A code in tenths as written (`611` → `61.1`).
 fn show(c: Code) -> String {
-    if c % 10 == 0 {
+    if c.is_multiple_of(10) {
         (c / 10).to_string()
     } else {
         format!("{}.{}", c / 10, c % 10)

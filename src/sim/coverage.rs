@@ -165,12 +165,12 @@ pub fn coverage_with(
         .collect();
     let cell = cell_size(&edges, &strokes, &burns, tol);
     let burn_grid = grid(&burns, cell);
+    let stroke_grid = grid(&strokes, cell);
     let results = edges
         .iter()
         .map(|(id, s)| {
-            let planned = covered(s, &strokes, None, tol, |_| true);
-            let near = burn_grid.near_segment(s.a, s.b);
-            let burned = covered(s, &burns, Some(&near), tol, |i| matcher.fits(i, s.op));
+            let planned = covered(s, &strokes, &stroke_grid, tol, |i| strokes[i].op == s.op);
+            let burned = covered(s, &burns, &burn_grid, tol, |i| matcher.fits(i, s.op));
             let length_mm = s.a.distance(s.b);
             let ok = judge(s.op, planned, burned, opts);
             EdgeCoverage {
@@ -334,12 +334,12 @@ fn grid(segs: &[Seg], cell: f64) -> SegmentGrid {
     g
 }
 
-/// Share of `edge` covered by the segments of `by` (only `candidates` when given) that `keep`
+/// Share of `edge` covered by the segments of `by` (those in `grid` near the edge) that `keep`
 /// accepts.
 fn covered(
     edge: &Seg,
     by: &[Seg],
-    candidates: Option<&[u32]>,
+    grid: &SegmentGrid,
     tol: f64,
     keep: impl Fn(usize) -> bool,
 ) -> f64 {
@@ -347,17 +347,8 @@ fn covered(
     if len <= 0.0 {
         return 1.0;
     }
-    let all: Vec<u32>;
-    let ids = match candidates {
-        Some(c) => c,
-        None => {
-            all = (0..by.len() as u32)
-                .filter(|&i| by[i as usize].op == edge.op)
-                .collect();
-            &all
-        }
-    };
-    let intervals = ids
+    let intervals = grid
+        .near_segment(edge.a, edge.b)
         .iter()
         .map(|&i| i as usize)
         .filter(|&i| keep(i))

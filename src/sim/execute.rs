@@ -82,7 +82,9 @@ impl<'a> Machine<'a> {
         if let Some(f) = b.f {
             self.set_feed(line, f);
         }
-        if let Some(s) = b.s.filter(|_| !b.fan && !(b.dwell && self.marlin())) {
+        // M106's S is a fan speed, Marlin's G4 S a dwell time.
+        let s_is_power = !(b.fan || (b.dwell && self.marlin()));
+        if let Some(s) = b.s.filter(|_| s_is_power) {
             self.set_power(line, s);
         }
         if let Some(m) = b.spindle {
@@ -125,6 +127,7 @@ impl<'a> Machine<'a> {
         }
         self.stop();
         self.report.end_position = self.pos;
+        self.report.total_by_power();
         self.report
     }
 

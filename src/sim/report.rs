@@ -197,27 +197,27 @@ impl SimReport {
 
     /// Records a burn.
     pub(crate) fn add_burn(&mut self, burn: Burn) {
-        let len = burn.length();
-        self.burn_length_mm += len;
-        match self
-            .burn_by_power
-            .iter_mut()
-            .find(|p| p.power == burn.power)
-        {
-            Some(p) => p.length_mm += len,
-            None => {
-                self.burn_by_power.push(PowerLength {
-                    power: burn.power,
-                    length_mm: len,
-                });
-                self.burn_by_power
-                    .sort_by(|a, b| a.power.total_cmp(&b.power));
-            }
-        }
+        self.burn_length_mm += burn.length();
         let bounds = self.burn_bounds.get_or_insert(Bounds::point(burn.from));
         bounds.include(burn.from);
         bounds.include(burn.to);
         self.burns.push(burn);
+    }
+
+    /// Sums the burn length per power level (once, at the end of a run).
+    pub(crate) fn total_by_power(&mut self) {
+        let mut pairs: Vec<(f64, f64)> = self.burns.iter().map(|b| (b.power, b.length())).collect();
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        self.burn_by_power.clear();
+        for (power, len) in pairs {
+            match self.burn_by_power.last_mut() {
+                Some(last) if last.power == power => last.length_mm += len,
+                _ => self.burn_by_power.push(PowerLength {
+                    power,
+                    length_mm: len,
+                }),
+            }
+        }
     }
 
     /// Records a tool-off move.
