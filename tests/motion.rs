@@ -5,6 +5,7 @@ use foldcam::machine::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
 };
 use glam::DVec2;
+use proptest::prelude::*;
 
 /// Acceleration 1000 mm/s², feeds up to 6000 mm/min (100 mm/s), travel 6000 mm/min.
 fn machine() -> MachineProfile {
@@ -160,4 +161,29 @@ fn without_acceleration_the_feed_is_constant() {
     m.acceleration_mm_s2 = 0.0;
     let t = job_time(DVec2::ZERO, &[feed(100.0, 0.0, 3000.0)], &m);
     assert!(close(t, 2.0));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// Any path takes at least its constant-feed time (acceleration only slows it) and no more
+    /// than stopping at every move would take.
+    #[test]
+    fn time_lies_between_constant_feed_and_full_stops(
+        points in prop::collection::vec((0.0..300.0f64, 0.0..300.0f64, 60.0..9000.0f64), 1..30)
+    ) {
+        let m = machine();
+        let moves: Vec<Move> = points.iter().map(|&(x, y, f)| feed(x, y, f)).collect();
+        let t = job_time(DVec2::ZERO, &moves, &m);
+        let mut at = DVec2::ZERO;
+        let (mut floor, mut ceiling) = (0.0, 0.0);
+        for mv in &moves {
+            floor += at.distance(mv.to) / (mv.feed_mm_min.min(6000.0) / 60.0);
+            ceiling += job_time(at, std::slice::from_ref(mv), &m);
+            at = mv.to;
+        }
+        prop_assert!(t.is_finite());
+        prop_assert!(t >= floor * (1.0 - 1e-12), "{} < {}", t, floor);
+        prop_assert!(t <= ceiling * (1.0 + 1e-12) + 1e-12, "{} > {}", t, ceiling);
+    }
 }

@@ -118,6 +118,35 @@ fn clean_grbl_job() {
 }
 
 #[test]
+fn sim_time_is_the_planner_time_plus_dwells() {
+    use foldcam::machine::motion::{Move, job_time};
+    let machine = laser(Dialect::Grbl);
+    let text = "M4 S500\nG0 X10 Y10\nG1 X40 Y10 F1800\nG1 X40 Y30\nG1 X10 Y10\nG0 X0 Y0\nM5\nM2";
+    let r = run(text, &machine);
+    let mv = |x: f64, y: f64, rapid| Move {
+        to: DVec2::new(x, y),
+        feed_mm_min: 1800.0,
+        rapid,
+    };
+    let moves = [
+        mv(10.0, 10.0, true),
+        mv(40.0, 10.0, false),
+        mv(40.0, 30.0, false),
+        mv(10.0, 10.0, false),
+        mv(0.0, 0.0, true),
+    ];
+    assert!(close(r.time_s, job_time(DVec2::ZERO, &moves, &machine)));
+    let with_dwell = run(&text.replace("G1 X40 Y30", "G1 X40 Y30\nG4 P2"), &machine);
+    let split = job_time(DVec2::ZERO, &moves[..3], &machine)
+        + job_time(DVec2::new(40.0, 30.0), &moves[3..], &machine);
+    assert!(close(with_dwell.time_s, split + 2.0));
+    assert!(
+        split > job_time(DVec2::ZERO, &moves, &machine),
+        "a dwell stops the machine"
+    );
+}
+
+#[test]
 fn each_violation_is_found_on_its_line() {
     let grbl = laser(Dialect::Grbl);
     let cases: [(&str, ViolationKind, usize); 9] = [

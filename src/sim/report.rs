@@ -3,7 +3,8 @@
 use glam::DVec2;
 use serde::Serialize;
 
-use crate::machine::{Dialect, PowerRange};
+use crate::fab::Operation;
+use crate::machine::{Dialect, PowerRange, SettingsByOperation};
 
 /// Most violations kept in a report; further ones are only counted.
 pub const MAX_VIOLATIONS: usize = 1000;
@@ -224,6 +225,49 @@ impl SimReport {
     pub(crate) fn add_travel(&mut self, travel: Travel) {
         self.travel_length_mm += travel.from.distance(travel.to);
         self.travels.push(travel);
+    }
+
+    /// Burn length per operation, mapping each burn's power back to the operation whose
+    /// setting it matches within `tolerance` (a fraction of the range; the closest wins), in
+    /// [`Operation::ALL`] order, as in a plan's statistics. Burns matching no operation are
+    /// summed under `None`. Pen strokes belong to [`Operation::Plot`].
+    pub fn burn_by_operation(
+        &self,
+        settings: &SettingsByOperation,
+        tolerance: f64,
+    ) -> Vec<(Option<Operation>, f64)> {
+        let mut totals: Vec<(Option<Operation>, f64)> = Operation::ALL
+            .iter()
+            .map(|&op| (Some(op), 0.0))
+            .chain([(None, 0.0)])
+            .collect();
+        for level in &self.burn_by_power {
+            let op = self.operation_of(level.power, settings, tolerance);
+            if let Some(t) = totals.iter_mut().find(|t| t.0 == op) {
+                t.1 += level.length_mm;
+            }
+        }
+        totals.retain(|t| t.1 > 0.0);
+        totals
+    }
+
+    fn operation_of(
+        &self,
+        power: f64,
+        settings: &SettingsByOperation,
+        tolerance: f64,
+    ) -> Option<Operation> {
+        if self.dialect == Dialect::Plotter {
+            return Some(Operation::Plot);
+        }
+        let f = self.power_fraction(power);
+        Operation::ALL
+            .into_iter()
+            .filter(|&op| op != Operation::Plot)
+            .map(|op| (op, (settings.get(op).power - f).abs()))
+            .filter(|&(_, d)| d <= tolerance)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(op, _)| op)
     }
 
     /// The power of `s` as a fraction of the profile's range, 0..=1.

@@ -190,3 +190,14 @@ fn a_crease_burned_at_cut_power_is_wrong() {
         "the dashes are not where any cut edge is"
     );
 }
+
+#[test]
+fn burns_map_back_to_operations() {
+    let report = run(&gcode(&job()), &laser(Dialect::Grbl));
+    let by_op = report.burn_by_operation(&plan(job()).settings, 0.02);
+    assert_eq!(by_op.len(), 2);
+    assert_eq!(by_op[0].0, Some(Operation::Perforate));
+    assert!((by_op[0].1 - 24.0).abs() < 1e-9);
+    assert_eq!(by_op[1].0, Some(Operation::Cut));
+    assert!((by_op[1].1 - 4.0 * (40.0 + KERF)).abs() < 1e-9);
+}
