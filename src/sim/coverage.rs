@@ -24,6 +24,8 @@
 //! checked: the order of burns, passes counted separately (overlapping passes are a union),
 //! burns across an edge at a steep angle (they cover only the band's width of it).
 
+use std::collections::HashSet;
+
 use glam::DVec2;
 use serde::Serialize;
 
@@ -154,6 +156,7 @@ pub fn coverage_with(
         plan,
         tol: opts.power_tolerance,
     };
+    // Burns as segments; their `op` is unused (power decides what they may realise).
     let burns: Vec<Seg> = report
         .burns
         .iter()
@@ -225,9 +228,10 @@ fn judge(op: Operation, planned: f64, burned: f64, opts: &CoverageOptions) -> bo
 /// The pattern edges of the job's toolpaths, with their operation, in machine coordinates.
 fn job_edges(pattern: &CreasePattern, job: &Job) -> Vec<(EdgeId, Seg)> {
     let mut out: Vec<(EdgeId, Seg)> = Vec::new();
+    let mut seen: HashSet<(EdgeId, Operation)> = HashSet::new();
     for tp in &job.paths {
         for &e in &tp.edges {
-            if out.iter().any(|(id, s)| *id == e && s.op == tp.op) {
+            if !seen.insert((e, tp.op)) {
                 continue;
             }
             if let Some((a, b)) = edge_segment(pattern, e) {

@@ -45,6 +45,7 @@ pub(crate) struct Machine<'a> {
     run_start: DVec2,
     /// `M2`/`M30` seen.
     pub ended: bool,
+    /// What was found so far.
     pub report: SimReport,
 }
 
@@ -117,12 +118,10 @@ impl<'a> Machine<'a> {
     /// Finishes the run: times the last moves and flags a tool left on.
     pub fn finish(mut self, last_line: usize) -> SimReport {
         if !self.ended && self.tool_on(false) {
-            let what = if self.pen_tool {
-                "pen down"
-            } else {
-                "laser on"
-            };
-            let msg = format!("the program ends with the {what} and no M2/M30");
+            let msg = format!(
+                "the program ends with the {} and no M2/M30",
+                self.tool_state()
+            );
             self.report.flag(last_line, ViolationKind::ToolLeftOn, msg);
         }
         self.stop();
@@ -131,7 +130,7 @@ impl<'a> Machine<'a> {
         self.report
     }
 
-    /// Treats a profile line or GRBL `$` command as a stop without other effect.
+    /// Brings the machine to rest: times the moves since the last stop.
     pub fn stop(&mut self) {
         let times = move_times(self.run_start, &self.run, &self.kin);
         self.report.time_s += times.iter().sum::<f64>();
@@ -265,7 +264,7 @@ impl<'a> Machine<'a> {
             (true, _) => self.profile.travel_feed_mm_min,
             (false, Some(f)) => f.min(self.profile.max_feed_mm_min),
             (false, None) => {
-                let msg = "feed move before any F: the machine rejects it; timed at maximum feed";
+                let msg = "feed move before any F (GRBL and LinuxCNC reject it): timed at the maximum feed";
                 self.report.flag(line, ViolationKind::MissingFeed, msg);
                 self.feed = Some(self.profile.max_feed_mm_min);
                 self.profile.max_feed_mm_min
@@ -310,13 +309,20 @@ impl<'a> Machine<'a> {
     }
 
     fn flag_lit_travel(&mut self, line: usize) {
-        let what = if self.pen_tool {
+        let msg = format!(
+            "rapid move with the {}: it marks the sheet",
+            self.tool_state()
+        );
+        self.report.flag(line, ViolationKind::LitTravel, msg);
+    }
+
+    /// "pen down" or "laser on", for messages.
+    fn tool_state(&self) -> &'static str {
+        if self.pen_tool {
             "pen down"
         } else {
             "laser on"
-        };
-        let msg = format!("rapid move with the {what}: it marks the sheet");
-        self.report.flag(line, ViolationKind::LitTravel, msg);
+        }
     }
 
     fn check_bed(&mut self, line: usize, p: DVec2) {

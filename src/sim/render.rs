@@ -1,5 +1,5 @@
 //! A PNG of a simulated run: the bed outline, travel as thin dashed grey lines, burns coloured
-//! by power (blue for the profile's lowest power through red for its highest; pen strokes in
+//! by power in 32 steps (blue for the profile's lowest power through red for its highest; pen strokes in
 //! black), seen from above with the bed's front at the bottom.
 //!
 //! Machine x runs to the right. Machine y runs up the image unless the bed is `y_flipped`
@@ -131,28 +131,38 @@ fn draw_travel(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
     stroke_path(pixmap, pb, [150, 150, 150, 200], &stroke);
 }
 
-/// Burns grouped by power level, one path each.
+/// Colour steps from the lowest to the highest power.
+const POWER_STEPS: usize = 32;
+
+/// Burns in one path per colour step (one pass over the burns).
 fn draw_burns(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
     let stroke = Stroke {
         width: lw * 1.5,
         line_cap: LineCap::Round,
         ..Stroke::default()
     };
-    for level in &report.burn_by_power {
-        let mut pb = PathBuilder::new();
-        for b in report.burns.iter().filter(|b| b.power == level.power) {
-            segment(&mut pb, view, b.from, b.to);
-        }
-        stroke_path(pixmap, pb, power_color(report, level.power), &stroke);
+    let mut paths: Vec<PathBuilder> = (0..POWER_STEPS).map(|_| PathBuilder::new()).collect();
+    for b in &report.burns {
+        let step = power_step(report, b.power);
+        segment(&mut paths[step], view, b.from, b.to);
+    }
+    for (step, pb) in paths.into_iter().enumerate() {
+        stroke_path(pixmap, pb, step_color(report, step), &stroke);
     }
 }
 
-/// Blue (low) to red (high) through purple; black for pen strokes (power 0 on a plotter).
-fn power_color(report: &SimReport, power: f64) -> [u8; 4] {
+/// The colour step of a power: its fraction of the profile's range, quantised.
+fn power_step(report: &SimReport, power: f64) -> usize {
+    let f = report.power_fraction(power);
+    ((f * (POWER_STEPS - 1) as f64).round() as usize).min(POWER_STEPS - 1)
+}
+
+/// Blue (low) to red (high) through purple; black for pen strokes on a plotter.
+fn step_color(report: &SimReport, step: usize) -> [u8; 4] {
     if report.dialect == crate::machine::Dialect::Plotter {
         return [0, 0, 0, 255];
     }
-    let f = report.power_fraction(power);
+    let f = step as f64 / (POWER_STEPS - 1) as f64;
     let r = (40.0 + 215.0 * f) as u8;
     let b = (255.0 - 215.0 * f) as u8;
     [r, 30, b, 255]
