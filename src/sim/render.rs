@@ -1,6 +1,6 @@
 //! A PNG of a simulated run: the bed outline, travel as thin dashed grey lines, burns coloured
-//! by power in 32 steps (blue for the profile's lowest power through red for its highest; pen strokes in
-//! black), seen from above with the bed's front at the bottom.
+//! by power in 32 steps (blue for the profile's lowest power through red for its highest; pen
+//! strokes in black), seen from above with the bed's front at the bottom.
 //!
 //! Machine x runs to the right. Machine y runs up the image unless the bed is `y_flipped`
 //! (origin at the back), when it runs down. Moves outside the bed are drawn where they go,
