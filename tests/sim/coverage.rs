@@ -201,3 +201,25 @@ fn burns_map_back_to_operations() {
     assert_eq!(by_op[1].0, Some(Operation::Cut));
     assert!((by_op[1].1 - 4.0 * (40.0 + KERF)).abs() < 1e-9);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Any burns: shares stay within 0..=1 and the stray length within the burn length.
+    #[test]
+    fn coverage_of_random_burns_is_bounded(
+        segs in prop::collection::vec((0.0..300.0f64, 0.0..200.0f64, 0.0..1000.0f64), 1..40)
+    ) {
+        let mut text = String::from("M4 S0\nG1 F1200\n");
+        for (x, y, s) in &segs {
+            text.push_str(&format!("G1 X{x:.3} Y{y:.3} S{s:.0}\n"));
+        }
+        text.push_str("M5\nM2\n");
+        let report = run(&text, &laser(Dialect::Grbl));
+        let c = sim::coverage(&report, &pattern(), &job(), &plan(job()));
+        for e in &c.edges {
+            prop_assert!((0.0..=1.0).contains(&e.burned) && (0.0..=1.0).contains(&e.planned));
+        }
+        prop_assert!(c.stray_length_mm <= report.burn_length_mm + 1e-9);
+    }
+}
