@@ -101,7 +101,20 @@ fn render(
     m: &MachineProfile,
 ) -> Result<Vec<u8>> {
     Ok(match kind {
-        Output::Gcode => post::gcode(p, job, m)?.into_bytes(),
+        Output::Gcode => {
+            let text = post::gcode(p, job, m)?;
+            let report = foldcam::sim::run(&text, m)?;
+            if let Some(v) = report.violations.first() {
+                bail!(
+                    "the simulated {} found {} problem(s) in the job, first at line {}: {}",
+                    m.name,
+                    report.violation_count,
+                    v.line,
+                    v.message
+                );
+            }
+            text.into_bytes()
+        }
         Output::Dxf => {
             let version = if args.r12 {
                 DxfVersion::R12

@@ -12,6 +12,7 @@ mod generate;
 mod input;
 mod plan;
 mod preview;
+mod simulate;
 
 use std::process::ExitCode;
 
@@ -57,6 +58,8 @@ enum Command {
     Cut(cut::Args),
     /// Print what cutting a pattern would do: lengths, pierces, travel, time.
     Plan(plan::Args),
+    /// Run a G-code job on a simulated machine (violations, time, coverage, toolpath PNG).
+    Simulate(simulate::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
 }
@@ -71,6 +74,7 @@ pub fn run() -> ExitCode {
         Command::Generate(a) => generate::run(a),
         Command::Cut(a) => cut::run(a),
         Command::Plan(a) => plan::run(a),
+        Command::Simulate(a) => simulate::run(a),
         Command::Demo(a) => demo::run(a),
     };
     match result {
