@@ -292,7 +292,7 @@ fn end_lines() -> impl Strategy<Value = Vec<(f64, f64, bool)>> {
 }
 
 proptest! {
-    #![proptest_config(Config { cases: 200, rng_seed: RngSeed::Fixed(0x5eed_fab), ..Config::default() })]
+    #![proptest_config(Config { cases: 200, rng_seed: RngSeed::Fixed(0x05ee_dfab), ..Config::default() })]
 
     #[test]
     fn random_creases_keep_their_invariants(

@@ -36,6 +36,9 @@ use crate::geom::polygon::{contains_point, signed_area};
 use crate::pattern::faces::find_faces;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
+/// A traced ring of positions with the pattern edges it runs along.
+type Ring = (Vec<DVec2>, Vec<EdgeId>);
+
 /// A closed cut contour before kerf offset.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Contour {
@@ -130,7 +133,7 @@ fn bridges(cp: &CreasePattern, keep: &[bool]) -> Vec<bool> {
 
 /// The outline cycle of every component of the edges with `keep` set, with their edges, and
 /// which edges lie on some outline.
-fn outlines(cp: &CreasePattern, keep: &[bool]) -> (Vec<(Vec<DVec2>, Vec<EdgeId>)>, Vec<bool>) {
+fn outlines(cp: &CreasePattern, keep: &[bool]) -> (Vec<Ring>, Vec<bool>) {
     let mut sub = CreasePattern::new();
     sub.vertices = cp.vertices.clone();
     let mut edge_of: HashMap<(VertexId, VertexId), EdgeId> = HashMap::new();
@@ -166,7 +169,7 @@ fn outlines(cp: &CreasePattern, keep: &[bool]) -> (Vec<(Vec<DVec2>, Vec<EdgeId>)
 }
 
 /// Depth, role and container of every ring (see the module docs).
-fn classify(rings: Vec<(Vec<DVec2>, Vec<EdgeId>)>) -> Vec<Contour> {
+fn classify(rings: Vec<Ring>) -> Vec<Contour> {
     let areas: Vec<f64> = rings
         .iter()
         .map(|(r, _)| signed_area(r.iter().copied()).abs())
@@ -181,7 +184,7 @@ fn classify(rings: Vec<(Vec<DVec2>, Vec<EdgeId>)>) -> Vec<Contour> {
             .iter()
             .copied()
             .min_by(|&a, &b| areas[a].total_cmp(&areas[b]));
-        let role = if around.len() % 2 == 0 {
+        let role = if around.len().is_multiple_of(2) {
             ContourRole::Outer
         } else {
             ContourRole::Hole

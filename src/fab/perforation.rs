@@ -125,7 +125,8 @@ pub fn layout(
         .min_dash_mm
         .max(f64::EPSILON * length_mm.abs())
         .max(1e-9);
-    if !(available >= min_dash) {
+    // Written so that a NaN length also counts as too short.
+    if available.is_nan() || available < min_dash {
         return Err(NoDashes::TooShort {
             available_mm: available,
             end_mm,
