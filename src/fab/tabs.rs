@@ -161,7 +161,8 @@ fn sub_path(ring: &[DVec2], cum: &[f64], from: f64, to: f64) -> Vec<DVec2> {
     let at = |s: f64| point_at(ring, cum, s.rem_euclid(perimeter));
     let mut out = vec![at(from)];
     let first_vertex = cum.partition_point(|&c| c <= from);
-    for k in first_vertex.. {
+    // `to − from` is at most one perimeter, so at most 2n + 1 vertices are passed.
+    for k in first_vertex..first_vertex + 2 * n + 1 {
         let s = cum[k % n] + perimeter * (k / n) as f64;
         if s >= to {
             break;
