@@ -500,3 +500,50 @@ mod random_patterns {
         }
     }
 }
+
+#[test]
+fn a_pocket_closed_by_the_kerf_gets_its_lead_in_inside() {
+    // A part with a keyhole: a 0.1 mm mouth (narrower than the kerf) into a 4 mm chamber.
+    let keyhole = [
+        (0.0, 0.0),
+        (20.0, 0.0),
+        (20.0, 20.0),
+        (10.05, 20.0),
+        (10.05, 14.0),
+        (12.0, 14.0),
+        (12.0, 10.0),
+        (8.0, 10.0),
+        (8.0, 14.0),
+        (9.95, 14.0),
+        (9.95, 20.0),
+        (0.0, 20.0),
+    ];
+    let mut cp = CreasePattern::new();
+    let pts: Vec<DVec2> = keyhole.iter().map(|&(x, y)| DVec2::new(x, y)).collect();
+    polygon(&mut cp, &pts, Assignment::Boundary);
+    let mut opts = options();
+    opts.kerf_mm = 0.3;
+    opts.kerf_offset = true;
+    opts.lead_in_mm = Some(1.0);
+    let paths = toolpaths(&cp, &opts).unwrap();
+    assert_eq!(paths.len(), 1);
+    assert_eq!(paths[0].strokes.len(), 2, "outline and chamber");
+    let chamber = [
+        DVec2::new(8.0, 10.0),
+        DVec2::new(12.0, 10.0),
+        DVec2::new(12.0, 14.0),
+        DVec2::new(8.0, 14.0),
+    ];
+    let inside: Vec<bool> = paths[0]
+        .strokes
+        .iter()
+        .map(|s| contains_point(&chamber, s[0]))
+        .collect();
+    assert_eq!(inside.iter().filter(|&&b| b).count(), 1, "{inside:?}");
+    let outline = paths[0]
+        .strokes
+        .iter()
+        .find(|s| !contains_point(&chamber, s[1]))
+        .unwrap();
+    assert!(!contains_point(&pts, outline[0]));
+}

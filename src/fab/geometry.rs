@@ -26,6 +26,7 @@ use super::lines::{LineContext, edge_names, line_toolpaths};
 use super::operations::edge_operations;
 use super::tabs::{add_lead_in, merge_straight_runs, split_at_tabs, start_on_longest_side};
 use super::{ContourRole, FabError, Operation, PlanOptions, Toolpath};
+use crate::geom::polygon::signed_area;
 use crate::pattern::CreasePattern;
 use crate::pattern::vertex_fan::VertexFans;
 
@@ -121,10 +122,8 @@ fn cut_toolpaths(
 
 /// One closed contour as a toolpath.
 fn contour_path(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<String>) -> Toolpath {
-    let rings = kerf_rings(c, opts, warnings);
-    let scrap_inside = c.role == ContourRole::Hole;
     let mut strokes = Vec::new();
-    for ring in rings {
+    for (ring, scrap_inside) in kerf_rings(c, opts, warnings) {
         let ring = merge_straight_runs(&ring);
         let mut ring_strokes =
             tabbed(c, &ring, opts, warnings).unwrap_or_else(|| vec![start_on_longest_side(&ring)]);
@@ -143,11 +142,18 @@ fn contour_path(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<String>) -> 
 }
 
 /// The contour offset toward the scrap, or as drawn when offsetting is off or would
-/// consume a hole (with a warning).
-fn kerf_rings(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<String>) -> Vec<Vec<DVec2>> {
+/// consume a hole (with a warning); each ring with whether the scrap is inside it. An offset
+/// ring that runs clockwise bounds a pocket of the offset region (an outer contour whose
+/// mouth closed up when grown): its scrap side is the other one.
+fn kerf_rings(
+    c: &Contour,
+    opts: &PlanOptions,
+    warnings: &mut Vec<String>,
+) -> Vec<(Vec<DVec2>, bool)> {
+    let hole = c.role == ContourRole::Hole;
     let half = opts.kerf_mm / 2.0;
     if !opts.kerf_offset || half == 0.0 {
-        return vec![c.ring.clone()];
+        return vec![(c.ring.clone(), hole)];
     }
     let distance = if c.role == ContourRole::Hole {
         -half
@@ -163,9 +169,15 @@ fn kerf_rings(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<String>) -> Ve
             opts.kerf_mm,
             opts.kerf_mm
         ));
-        return vec![c.ring.clone()];
+        return vec![(c.ring.clone(), hole)];
     }
     rings
+        .into_iter()
+        .map(|r| {
+            let pocket = signed_area(r.iter().copied()) < 0.0;
+            (r, hole != pocket)
+        })
+        .collect()
 }
 
 /// The ring split at holding tabs, for outer contours when tabs are asked for; `None` when
