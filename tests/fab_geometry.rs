@@ -4,7 +4,9 @@
 
 mod fab_common;
 
-use fab_common::{area, options, point_segment, polygon, square};
+use fab_common::{
+    area, assert_cut_edges_covered, bounds, is_closed, options, polygon, square, with_role,
+};
 use foldcam::design::classic::MiuraOri;
 use foldcam::fab::geometry::{toolpaths, toolpaths_with_warnings};
 use foldcam::fab::{ContourRole, FabError, Operation, PlanOptions, Tabs, Toolpath};
@@ -24,25 +26,6 @@ fn sheet_with_hole_and_slit() -> CreasePattern {
         Assignment::Cut,
     );
     cp
-}
-
-fn with_role(paths: &[Toolpath], role: ContourRole) -> Vec<(usize, &Toolpath)> {
-    paths
-        .iter()
-        .enumerate()
-        .filter(|(_, p)| p.role == role)
-        .collect()
-}
-
-fn bounds(points: impl IntoIterator<Item = DVec2>) -> (DVec2, DVec2) {
-    points.into_iter().fold(
-        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-        |(lo, hi), p| (lo.min(p), hi.max(p)),
-    )
-}
-
-fn is_closed(stroke: &[DVec2]) -> bool {
-    stroke.len() >= 4 && stroke.first() == stroke.last()
 }
 
 #[test]
@@ -282,33 +265,6 @@ fn polylines_join_drawn_segments_at_plain_corners() {
     assert_eq!(paths.len(), 1);
     assert_eq!(paths[0].strokes[0].len(), 4);
     assert_eq!(paths[0].edges.len(), 3);
-}
-
-/// Every cut edge's points at the parameters `ts` lie within `tolerance` of some cut stroke.
-fn assert_cut_edges_covered(cp: &CreasePattern, paths: &[Toolpath], ts: &[f64], tolerance: f64) {
-    let segments: Vec<(DVec2, DVec2)> = paths
-        .iter()
-        .filter(|p| p.op == Operation::Cut)
-        .flat_map(|p| p.strokes.iter())
-        .flat_map(|s| s.windows(2).map(|w| (w[0], w[1])))
-        .collect();
-    for e in cp.edge_ids() {
-        if !cp.edges[e.index()].assignment.is_boundary_like() {
-            continue;
-        }
-        let (a, b) = cp.segment(e);
-        for &t in ts {
-            let p = a.lerp(b, t);
-            let d = segments
-                .iter()
-                .map(|&(s, q)| point_segment(p, s, q))
-                .fold(f64::INFINITY, f64::min);
-            assert!(
-                d <= tolerance,
-                "cut edge {e} at {p} is {d} mm from every cut stroke"
-            );
-        }
-    }
 }
 
 #[test]

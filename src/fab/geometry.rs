@@ -12,8 +12,10 @@
 //!    become polylines.
 //!
 //! All coordinates are the pattern's millimetres (x right, y up); the plan places them on the
-//! bed and orders them. Cut toolpaths come first in the returned list, so that the
-//! `container` indices of holes index that list.
+//! bed and orders them. Closed contours come first in the returned list, in the order of
+//! [`cut_lines`], so that `container` indices index that list. Every nested contour carries
+//! its direct container: a hole its part, and an island (an outer contour inside a hole) its
+//! hole — in both cases the contained path must be cut before its container.
 //!
 //! Closed contour strokes are closed polylines (last point equals first). A lead-in adds one
 //! point in front: the stroke then runs lead-in start → ring start → … → ring start.

@@ -1,7 +1,7 @@
 //! Helpers shared by the fabrication-geometry tests: options, pattern builders, distances.
 #![allow(dead_code)]
 
-use foldcam::fab::{Operation, PlanOptions};
+use foldcam::fab::{ContourRole, Operation, PlanOptions, Toolpath};
 use foldcam::machine::{OperationMapping, Perforation};
 use foldcam::pattern::{Assignment, CreasePattern, VertexId};
 use glam::DVec2;
@@ -87,4 +87,58 @@ pub fn area(ring: &[DVec2]) -> f64 {
     0.5 * (0..n)
         .map(|i| ring[i].perp_dot(ring[(i + 1) % n]))
         .sum::<f64>()
+}
+
+/// The toolpaths of `role`, with their indices.
+pub fn with_role(paths: &[Toolpath], role: ContourRole) -> Vec<(usize, &Toolpath)> {
+    paths
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.role == role)
+        .collect()
+}
+
+/// Axis-aligned bounds of the points.
+pub fn bounds(points: impl IntoIterator<Item = DVec2>) -> (DVec2, DVec2) {
+    points.into_iter().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(p), hi.max(p)),
+    )
+}
+
+/// A closed polyline: at least a triangle, last point equal to the first.
+pub fn is_closed(stroke: &[DVec2]) -> bool {
+    stroke.len() >= 4 && stroke.first() == stroke.last()
+}
+
+/// Every cut edge's points at the parameters `ts` lie within `tolerance` of some cut stroke.
+pub fn assert_cut_edges_covered(
+    cp: &CreasePattern,
+    paths: &[Toolpath],
+    ts: &[f64],
+    tolerance: f64,
+) {
+    let segments: Vec<(DVec2, DVec2)> = paths
+        .iter()
+        .filter(|p| p.op == Operation::Cut)
+        .flat_map(|p| p.strokes.iter())
+        .flat_map(|s| s.windows(2).map(|w| (w[0], w[1])))
+        .collect();
+    for e in cp.edge_ids() {
+        if !cp.edges[e.index()].assignment.is_boundary_like() {
+            continue;
+        }
+        let (a, b) = cp.segment(e);
+        for &t in ts {
+            let p = a.lerp(b, t);
+            let d = segments
+                .iter()
+                .map(|&(s, q)| point_segment(p, s, q))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                d <= tolerance,
+                "cut edge {e} at {p} is {d} mm from every cut stroke"
+            );
+        }
+    }
 }
