@@ -119,7 +119,8 @@ fn assert_layout(cp: &CreasePattern, path: &Toolpath, opts: &PlanOptions) {
     assert!(n >= 1);
     let start_bridge = spans[0].0;
     let end_bridge = length - spans[n - 1].1;
-    assert!(start_bridge >= opts.perforation.vertex_clearance_mm - 1e-9);
+    let p = &opts.perforation;
+    assert!(start_bridge >= p.vertex_clearance_mm.max(p.bridge_mm) - 1e-9);
     assert!(
         (start_bridge - end_bridge).abs() < 1e-9,
         "not symmetric about the middle"
@@ -148,7 +149,6 @@ fn assert_layout(cp: &CreasePattern, path: &Toolpath, opts: &PlanOptions) {
             (total - available).abs() < 1e-9,
             "dashes do not fit exactly"
         );
-        let p = &opts.perforation;
         let nominal = p.cut_mm / (p.cut_mm + p.bridge_mm);
         assert!(
             (dash / (dash + bridge) - nominal).abs() < 1e-9,

@@ -3,11 +3,12 @@
 //!
 //! # Layout along one crease
 //! A crease of length `L` keeps an uncut end zone of length `e` at both ends, with
-//! `e = max(c₀, c₁)` the larger of its two end clearances (using the larger at both ends keeps
-//! the dash pattern symmetric about the crease middle, so the crease folds the same way from
-//! either end). On the remaining length `A = L − 2e` it places `n` dashes of length `d` and
-//! `n − 1` bridges of length `b`, so `n·d + (n − 1)·b = A` exactly; the end zones are the
-//! first and last bridges. With the nominal cut `d₀`, bridge `b₀`, period `p₀ = d₀ + b₀` and
+//! `e = max(c₀, c₁, b₀)`: the larger of its two end clearances (using the larger at both ends
+//! keeps the dash pattern symmetric about the crease middle, so the crease folds the same way
+//! from either end), and never less than a nominal bridge `b₀`, since tears start at the ends
+//! of a perforated line. On the remaining length `A = L − 2e` it places `n` dashes of length
+//! `d` and `n − 1` bridges of length `b`, so `n·d + (n − 1)·b = A` exactly; the end zones are
+//! the first and last bridges. With the nominal cut `d₀`, bridge `b₀`, period `p₀ = d₀ + b₀` and
 //! duty cycle `D = d₀ / p₀`, the period is stretched to `p = A / (n − 1 + D)` and split as
 //! `d = D·p`, `b = (1 − D)·p`: the duty cycle stays exactly nominal and
 //! `n = round((A + b₀) / p₀)` makes `p` the closest to `p₀`. `n` is then lowered until
@@ -112,14 +113,15 @@ fn fold_angle(angle: f64) -> f64 {
     }
 }
 
-/// Fits dashes to a crease of `length_mm` whose ends need `clearance_mm` (see the module
-/// docs for the formulas).
+/// Fits dashes to a crease of `length_mm` whose ends need `clearance_mm`; both end zones get
+/// the larger clearance, and at least a nominal bridge (see the module docs for the
+/// formulas).
 pub fn layout(
     length_mm: f64,
     clearance_mm: [f64; 2],
     perf: &Perforation,
 ) -> Result<DashLayout, NoDashes> {
-    let end_mm = clearance_mm[0].max(clearance_mm[1]).max(0.0);
+    let end_mm = clearance_mm[0].max(clearance_mm[1]).max(perf.bridge_mm);
     let available = length_mm - 2.0 * end_mm;
     let min_dash = perf
         .min_dash_mm
@@ -184,6 +186,13 @@ mod tests {
         assert!((total - 46.0).abs() < 1e-9);
         assert!((l.dash_mm / (l.dash_mm + l.bridge_mm) - 0.75).abs() < 1e-12);
         assert!((l.dashes.last().unwrap().1 - 48.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn end_zones_are_at_least_a_bridge() {
+        let l = layout(50.0, [0.0, 0.2], &perf()).unwrap();
+        assert_eq!(l.end_mm, 1.0);
+        assert_eq!(l.dashes[0].0, 1.0);
     }
 
     #[test]
