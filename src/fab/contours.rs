@@ -14,9 +14,10 @@
 //!    self-touching contour.
 //! 4. Cut edges on no outline (bridges, and cuts inside a component, such as a line dividing
 //!    a sheet or a loop joined to the outline by a cut) are chained into slits: the chain
-//!    goes on through a vertex where exactly two such edges meet, at any angle, and ends
-//!    where one, three or more meet. Slits are cut on their centre line, never offset; a
-//!    slit chain that closes is emitted as one closed stroke.
+//!    goes on through a vertex where exactly two such edges meet, at any angle; where three
+//!    or more meet, edges that continue each other in a straight line are paired (two
+//!    crossing cuts stay two strokes) and the others end there. Slits are cut on their centre
+//!    line, never offset; a slit chain that closes is emitted as one closed stroke.
 //! 5. Nesting by point in polygon: a contour's depth is the number of contours containing
 //!    the midpoint of its first edge (contours share no edge, so the midpoint is never on
 //!    another contour); its container is the smallest of them by area. Even depth is an
@@ -30,7 +31,7 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 
-use super::creases::{Chain, chain_edges};
+use super::creases::{Chain, chain_edges_paired, straight_pairs};
 use super::{ContourRole, Operation};
 use crate::geom::polygon::{contains_point, signed_area};
 use crate::pattern::faces::find_faces;
@@ -69,10 +70,10 @@ pub fn cut_lines(cp: &CreasePattern, ops: &[Option<Operation>]) -> CutLines {
         .map(|i| is_cut[i] && !bridge[i])
         .collect();
     let (rings, on_outline) = outlines(cp, &on_loop);
-    let slits = chain_edges(
+    let slits = chain_edges_paired(
         cp,
         |e| is_cut[e.index()] && !on_outline[e.index()],
-        |_, _, _| true,
+        |v, at| straight_pairs(cp, v, at),
     );
     CutLines {
         contours: classify(rings),

@@ -49,27 +49,53 @@ pub fn chain_edges(
     include: impl Fn(EdgeId) -> bool,
     joins: impl Fn(VertexId, EdgeId, EdgeId) -> bool,
 ) -> Vec<Chain> {
+    chain_edges_paired(cp, include, |v, at| match *at {
+        [a, b] if joins(v, a, b) => vec![(a, b)],
+        _ => Vec::new(),
+    })
+}
+
+/// Chains the edges for which `include` holds; `pairs(v, edges)` says which of the included
+/// edges at `v` continue each other (each edge in at most one pair).
+pub fn chain_edges_paired(
+    cp: &CreasePattern,
+    include: impl Fn(EdgeId) -> bool,
+    pairs: impl Fn(VertexId, &[EdgeId]) -> Vec<(EdgeId, EdgeId)>,
+) -> Vec<Chain> {
     let mut incident: Vec<Vec<EdgeId>> = vec![Vec::new(); cp.vertices.len()];
     for e in cp.edge_ids().filter(|&e| include(e)) {
         for v in cp.edges[e.index()].vertices {
             incident[v.index()].push(e);
         }
     }
-    let through: Vec<bool> = cp
+    let links: Vec<Vec<(EdgeId, EdgeId)>> = cp
         .vertex_ids()
-        .map(|v| match incident[v.index()][..] {
-            [a, b] => joins(v, a, b),
-            _ => false,
+        .map(|v| match incident[v.index()].len() {
+            0 | 1 => Vec::new(),
+            _ => pairs(v, &incident[v.index()]),
         })
         .collect();
     let mut used = vec![false; cp.edges.len()];
     let mut chains = Vec::new();
     for e in cp.edge_ids().filter(|&e| include(e)) {
         if !used[e.index()] {
-            chains.push(walk(cp, e, &incident, &through, &mut used));
+            chains.push(walk(cp, e, &links, &mut used));
         }
     }
     chains
+}
+
+/// The edge paired with `from` at a vertex, if any.
+fn partner(links: &[(EdgeId, EdgeId)], from: EdgeId) -> Option<EdgeId> {
+    links.iter().find_map(|&(a, b)| {
+        if a == from {
+            Some(b)
+        } else if b == from {
+            Some(a)
+        } else {
+            None
+        }
+    })
 }
 
 /// The chain through `start`: extends forwards from its second vertex, then, unless the walk
@@ -77,18 +103,21 @@ pub fn chain_edges(
 fn walk(
     cp: &CreasePattern,
     start: EdgeId,
-    incident: &[Vec<EdgeId>],
-    through: &[bool],
+    links: &[Vec<(EdgeId, EdgeId)>],
     used: &mut [bool],
 ) -> Chain {
     used[start.index()] = true;
     let [a, b] = cp.edges[start.index()].vertices;
-    let (fwd_v, fwd_e) = extend(cp, b, start, incident, through, used);
-    let closed = fwd_v.last() == Some(&a);
+    let (fwd_v, fwd_e) = extend(cp, b, start, links, used);
+    // Closed when the walk came back to `a` along the edge that continues into `start`.
+    let closed = fwd_v.last() == Some(&a)
+        && fwd_e
+            .last()
+            .is_some_and(|&x| partner(&links[a.index()], x) == Some(start));
     let (back_v, back_e) = if closed {
         (Vec::new(), Vec::new())
     } else {
-        extend(cp, a, start, incident, through, used)
+        extend(cp, a, start, links, used)
     };
     let mut vertices: Vec<VertexId> = back_v.into_iter().rev().collect();
     vertices.push(a);
@@ -104,19 +133,16 @@ fn walk(
     }
 }
 
-/// Walks on from `v`, having arrived along `from`, while `v` passes through to an unused edge.
+/// Walks on from `v`, having arrived along `from`, while `from` continues into an unused edge.
 fn extend(
     cp: &CreasePattern,
     mut v: VertexId,
     mut from: EdgeId,
-    incident: &[Vec<EdgeId>],
-    through: &[bool],
+    links: &[Vec<(EdgeId, EdgeId)>],
     used: &mut [bool],
 ) -> (Vec<VertexId>, Vec<EdgeId>) {
     let (mut vs, mut es) = (Vec::new(), Vec::new());
-    while through[v.index()] {
-        let pair = &incident[v.index()];
-        let next = if pair[0] == from { pair[1] } else { pair[0] };
+    while let Some(next) = partner(&links[v.index()], from) {
         if used[next.index()] {
             break;
         }
@@ -127,6 +153,27 @@ fn extend(
         from = next;
     }
     (vs, es)
+}
+
+/// Pairs of edges at `v` that continue each other: all of them when there are two, otherwise
+/// the pairs that go on straight (see [`straight_through`]), so that crossing or branching
+/// cuts stay as long strokes and the rest end at `v`.
+pub fn straight_pairs(cp: &CreasePattern, v: VertexId, at: &[EdgeId]) -> Vec<(EdgeId, EdgeId)> {
+    if let [a, b] = *at {
+        return vec![(a, b)];
+    }
+    let mut taken = vec![false; at.len()];
+    let mut out = Vec::new();
+    for i in 0..at.len() {
+        for j in i + 1..at.len() {
+            if !taken[i] && !taken[j] && straight_through(cp, v, at[i], at[j]) {
+                taken[i] = true;
+                taken[j] = true;
+                out.push((at[i], at[j]));
+            }
+        }
+    }
+    out
 }
 
 /// Whether edges `a` and `b`, both at `v`, continue each other in a straight line.
@@ -197,6 +244,20 @@ mod tests {
         lens.sort();
         assert_eq!(lens, vec![1, 2]);
         assert!(chains.iter().all(|c| !c.closed));
+    }
+
+    #[test]
+    fn crossing_cuts_pair_straight_through() {
+        let mut cp = CreasePattern::new();
+        let c = cp.add_vertex(DVec2::ZERO);
+        for (x, y) in [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0), (1.0, 1.0)] {
+            let v = cp.add_vertex(DVec2::new(x, y));
+            cp.add_edge(c, v, Assignment::Cut);
+        }
+        let chains = chain_edges_paired(&cp, |_| true, |v, at| straight_pairs(&cp, v, at));
+        let mut lens: Vec<usize> = chains.iter().map(|c| c.edges.len()).collect();
+        lens.sort();
+        assert_eq!(lens, vec![1, 2, 2]);
     }
 
     #[test]
