@@ -183,7 +183,7 @@ fn kerf_rings(
 }
 
 /// The ring split at holding tabs, for outer contours when tabs are asked for; `None` when
-/// it stays whole.
+/// it stays whole. Tabs keep a tab width (or the kerf, if wider) from every corner.
 fn tabbed(
     c: &Contour,
     ring: &[DVec2],
