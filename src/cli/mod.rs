@@ -5,10 +5,14 @@
 mod args;
 mod check;
 mod convert;
+mod cut;
 mod demo;
+mod fab_args;
 mod generate;
 mod input;
+mod plan;
 mod preview;
+mod simulate;
 
 use std::process::ExitCode;
 
@@ -50,6 +54,12 @@ enum Command {
     Preview(preview::Args),
     /// Generate a classic pattern: Miura-ori, square twist, waterbomb, Yoshimura, grid.
     Generate(generate::Args),
+    /// Plan a pattern for a machine and material and write G-code, DXF or SVG.
+    Cut(cut::Args),
+    /// Print what cutting a pattern would do: lengths, pierces, travel, time.
+    Plan(plan::Args),
+    /// Run a G-code job on a simulated machine (violations, time, coverage, toolpath PNG).
+    Simulate(simulate::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
 }
@@ -62,6 +72,9 @@ pub fn run() -> ExitCode {
         Command::Check(a) => check::run(a),
         Command::Preview(a) => preview::run(a),
         Command::Generate(a) => generate::run(a),
+        Command::Cut(a) => cut::run(a),
+        Command::Plan(a) => plan::run(a),
+        Command::Simulate(a) => simulate::run(a),
         Command::Demo(a) => demo::run(a),
     };
     match result {

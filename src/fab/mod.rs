@@ -3,12 +3,19 @@
 //! Data flows `CreasePattern` → [`plan`] → [`FabPlan`] (jobs of ordered toolpaths in machine
 //! coordinates) → `post` writers and the `sim` machine.
 
+pub mod contours;
+pub mod creases;
 pub mod geometry;
+pub mod kerf;
+pub mod lines;
+pub mod operations;
 pub mod order;
+pub mod perforation;
 pub mod placement;
 pub mod plan;
 pub mod sides;
 pub mod stats;
+pub mod tabs;
 
 pub use plan::plan;
 

@@ -1,7 +1,7 @@
 //! The fabrication plan: toolpaths placed on the bed, split into sides, ordered, totalled.
 //!
 //! [`plan`] runs the whole pipeline: millimetres required, toolpaths from
-//! [`super::geometry::toolpaths`], then [`plan_toolpaths`]:
+//! [`super::geometry::toolpaths_with_warnings`], then [`plan_toolpaths`]:
 //! 1. **Sides** ([`super::sides`]): one job `front`, or with `two_sided` a `front` job
 //!    (mountains and everything else) and a `back` job (valleys, then all cuts), mirrored
 //!    about the sheet's vertical centre line, both with registration marks.
@@ -25,7 +25,8 @@ use crate::check::{CheckOptions, FindingKind, check};
 use crate::machine::{Bed, MachineProfile, Material};
 use crate::pattern::CreasePattern;
 
-/// Plans `cp` (millimetres) for `machine` and `material`.
+/// Plans `cp` (millimetres) for `machine` and `material`. The warnings list the design
+/// limits the pattern exceeds, then the geometry's remarks (creases too short for a dash, …).
 ///
 /// Errors: [`FabError::Unitless`] for a pattern without a physical size,
 /// [`FabError::NothingToDo`] when no edge maps to an operation, [`FabError::DoesNotFit`]
@@ -37,8 +38,10 @@ pub fn plan(
     opts: &PlanOptions,
 ) -> Result<FabPlan, FabError> {
     cp.require_millimetres()?;
-    let paths = geometry::toolpaths(cp, opts)?;
-    plan_toolpaths(cp, paths, machine, material, opts)
+    let (paths, remarks) = geometry::toolpaths_with_warnings(cp, opts)?;
+    let mut plan = plan_toolpaths(cp, paths, machine, material, opts)?;
+    plan.warnings.extend(remarks);
+    Ok(plan)
 }
 
 /// Plans given toolpaths of `cp` (pattern coordinates, mm, as [`geometry::toolpaths`] makes
@@ -151,14 +154,11 @@ fn content_extent(cp: &CreasePattern, paths: &[Toolpath]) -> Result<(DVec2, DVec
 
 /// One warning per design limit of `material` that `cp` exceeds, with counts.
 pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<String> {
-    let limit = |v: f64| (v.is_finite() && v > 0.0).then_some(v);
-    let opts = CheckOptions {
+    let mut opts = CheckOptions {
         flat_foldability: false,
-        min_vertex_angle_deg: limit(material.limits.min_vertex_angle_deg),
-        max_fold_angle_deg: limit(material.limits.max_fold_angle_deg),
-        min_edge_length: None,
         ..CheckOptions::default()
     };
+    material.limits.apply_to(&mut opts);
     let report = check(cp, &opts);
     let mut out = Vec::new();
     let angles = report.of_kind(FindingKind::VertexAngle).count();

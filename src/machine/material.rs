@@ -1,8 +1,18 @@
-//! Material profiles.
+//! Material profiles: how a sheet is cut, perforated, scored, marked or plotted, and the
+//! design limits it imposes on patterns.
+//!
+//! Lengths are millimetres, speeds mm/min, power a fraction 0..=1 of the machine's range
+//! (the machine profile turns it into an `S` value), angles degrees. Values are validated where
+//! they are read (`machines/materials/*.toml`, see the `machine` module); the types here trust
+//! them. The numbers shipped are starting points for a test cut, not guarantees: laser power,
+//! optics and sheet batches differ.
 
 use serde::Serialize;
 
+use super::MachineProfile;
+use crate::check::CheckOptions;
 use crate::fab::Operation;
+use crate::pattern::Assignment;
 
 /// Speed, power and passes for one operation.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -101,4 +111,56 @@ pub struct Material {
     pub mapping: OperationMapping,
     /// Design limits.
     pub limits: DesignLimits,
+}
+
+impl OperationMapping {
+    /// The operation for an edge assignment (cut edges follow the boundary; joins are never
+    /// machined), or `None` when the assignment is skipped.
+    pub fn get(&self, assignment: Assignment) -> Option<Operation> {
+        match assignment {
+            Assignment::Mountain => self.mountain,
+            Assignment::Valley => self.valley,
+            Assignment::Unassigned => self.unassigned,
+            Assignment::Flat => self.flat,
+            Assignment::Boundary | Assignment::Cut => self.boundary,
+            Assignment::Join => None,
+        }
+    }
+}
+
+impl DesignLimits {
+    /// Sets the vertex-angle and fold-angle limits of `opts` to these.
+    pub fn apply_to(&self, opts: &mut CheckOptions) {
+        opts.min_vertex_angle_deg = Some(self.min_vertex_angle_deg);
+        opts.max_fold_angle_deg = Some(self.max_fold_angle_deg);
+    }
+}
+
+impl Material {
+    /// Pattern-check options with this material's design limits (minimum vertex angle,
+    /// maximum fold angle) and the other checks at their defaults.
+    pub fn check_options(&self) -> CheckOptions {
+        let mut opts = CheckOptions::default();
+        self.limits.apply_to(&mut opts);
+        opts
+    }
+
+    /// The operations the mapping uses that `machine` cannot carry out (a laser does not plot,
+    /// a plotter does not cut), for a warning or an error before planning.
+    pub fn unsupported_by(&self, machine: &MachineProfile) -> Vec<Operation> {
+        let used = self.used_operations();
+        used.into_iter()
+            .filter(|op| !machine.supports(*op))
+            .collect()
+    }
+
+    /// The operations the mapping uses, each once, in [`Operation::ALL`] order.
+    pub fn used_operations(&self) -> Vec<Operation> {
+        let m = &self.mapping;
+        let used = [m.mountain, m.valley, m.unassigned, m.flat, m.boundary];
+        Operation::ALL
+            .into_iter()
+            .filter(|op| used.contains(&Some(*op)))
+            .collect()
+    }
 }

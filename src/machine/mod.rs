@@ -1,9 +1,33 @@
-//! PLACEHOLDER (machine work): machine and material profiles, loaded from TOML and validated.
+//! Machine and material profiles, loaded from TOML and validated once, where they enter.
+//!
+//! A [`MachineProfile`] (`machines/NAME.toml`) says what a machine is and how it wants its
+//! G-code: kind, dialect, bed and origin, feeds (mm/min), acceleration (mm/s²), junction
+//! deviation (mm), the `S` range of its laser, `M3`/`M4`, the unit of `G4 P`, coordinate
+//! resolution, pen commands, preamble and postamble. A [`Material`]
+//! (`machines/materials/NAME.toml`) says how a sheet is worked: thickness and kerf (mm), speed,
+//! power fraction and passes per operation, the perforation layout, the default operation per
+//! crease assignment, and the design limits it imposes (minimum vertex angle, maximum fold
+//! angle).
+//!
+//! [`load_machine`] and [`load_material`] take a shipped name (the profiles in `machines/` are
+//! embedded in the binary) or a path to a `.toml` file. Every key is checked: unknown keys,
+//! wrong types, numbers that are not finite or out of range, and inconsistent settings are
+//! refused with a [`ProfileError`] naming the file, the dotted key, the value found and the
+//! line. The accepted ranges are listed in `machines/README.md`.
 
+mod fields;
+mod load;
+mod locate;
 mod material;
 pub mod motion;
 mod profile;
+mod read_machine;
+mod read_material;
+mod shipped;
 
+pub use load::{
+    load_machine, load_material, parse_machine, parse_material, shipped_machines, shipped_materials,
+};
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
@@ -12,14 +36,17 @@ pub use profile::{
 };
 
 /// An error loading a profile: always names the file (or shipped profile), the key and the
-/// problem.
-#[derive(Debug, thiserror::Error)]
+/// problem, including the value found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{source_name}: {key}: {message}")]
 pub struct ProfileError {
-    /// The file path, or `shipped:NAME` for a built-in profile.
+    /// The file path as given, or `shipped:machines/NAME.toml`
+    /// (`shipped:machines/materials/NAME.toml`) for a built-in profile, or the unknown name.
     pub source_name: String,
-    /// The TOML key (dotted), or `file`.
+    /// The TOML key (dotted, with `[i]` for array items), `file` for a file that cannot be
+    /// read or is not TOML, or `name` for an unknown shipped name.
     pub key: String,
-    /// What is wrong and what was expected.
+    /// What is wrong, the value found and what was expected, ending in `(line N)` when the
+    /// key is written in the text.
     pub message: String,
 }

@@ -1,7 +1,31 @@
-//! Motion time: how long a machine takes to run a sequence of moves.
+//! Motion time: how long a machine takes to run a sequence of straight moves.
 //!
-//! Baseline model (constant feed, no acceleration); the simulated-machine work replaces it with
-//! trapezoidal moves and GRBL's junction-deviation cornering.
+//! The model is the one GRBL's planner (`grbl/planner.c`, Sungeun Jeon's junction-deviation
+//! planner, also used by Marlin) uses, reduced to one acceleration for all directions:
+//!
+//! - **Trapezoidal moves.** Each move accelerates at `a` from its entry speed, cruises at its
+//!   nominal speed (the programmed feed capped at the machine's maximum; rapids run at the
+//!   travel feed) and decelerates at `a` to its exit speed. A move too short to reach the
+//!   nominal speed has a triangular profile peaking at `v_p² = (2aL + v₀² + v₁²) / 2`.
+//! - **Junction speed.** Between two moves the speed is limited by the junction-deviation
+//!   rule. Let θ be the angle at the corner between the incoming move reversed and the outgoing
+//!   move (θ = 180° for a straight continuation, θ = 0° for a full reversal). Fit a circle of
+//!   radius R tangent to both moves; its centre lies on the corner's bisector at distance
+//!   `R / sin(θ/2)` from the corner, so the circle passes within `δ = R (1/sin(θ/2) − 1)` of
+//!   the corner. Taking δ as the machine's junction deviation and requiring the centripetal
+//!   acceleration `v² / R` to stay within `a` gives
+//!   `v_junction² = a · δ · sin(θ/2) / (1 − sin(θ/2))`,
+//!   with `sin(θ/2) = √((1 − cos θ) / 2)`. A straight continuation has no limit, a reversal
+//!   must stop. The junction speed is further capped by both moves' nominal speeds.
+//! - **Look-ahead.** A backward pass lowers each entry speed so the move can still slow down to
+//!   the next entry (the job ends at rest); a forward pass lowers it so it is reachable from the
+//!   previous entry. GRBL plans over a finite buffer; we plan over the whole list, which is what
+//!   the buffer converges to when the stream keeps it full.
+//!
+//! Not modelled: per-axis acceleration and speed limits (one `a` for every direction), jerk,
+//! step timing, GRBL's minimum junction speed (0 by default), and the stops a controller makes
+//! when its buffer starves. Zero-length moves are skipped; they do not break a junction.
+//! When the acceleration is not a positive finite number, moves run at constant speed.
 
 use glam::DVec2;
 
@@ -18,20 +42,181 @@ pub struct Move {
     pub rapid: bool,
 }
 
-/// Seconds to run `moves` from `start`.
-pub fn job_time(start: DVec2, moves: &[Move], machine: &MachineProfile) -> f64 {
-    let mut at = start;
-    let mut t = 0.0;
-    for m in moves {
-        let feed = if m.rapid {
-            machine.travel_feed_mm_min
-        } else {
-            m.feed_mm_min.min(machine.max_feed_mm_min)
-        };
-        if feed > 0.0 {
-            t += at.distance(m.to) / feed * 60.0;
+/// The speed limits and acceleration of one run of moves, in mm and seconds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kinematics {
+    /// Acceleration, mm/s².
+    pub accel_mm_s2: f64,
+    /// Junction deviation δ, mm.
+    pub junction_deviation_mm: f64,
+    /// Fastest feed, mm/min.
+    pub max_feed_mm_min: f64,
+    /// Rapid feed, mm/min.
+    pub travel_feed_mm_min: f64,
+}
+
+impl Kinematics {
+    /// The kinematics of a machine profile.
+    pub fn of(machine: &MachineProfile) -> Self {
+        Kinematics {
+            accel_mm_s2: machine.acceleration_mm_s2,
+            junction_deviation_mm: machine.junction_deviation_mm,
+            max_feed_mm_min: machine.max_feed_mm_min,
+            travel_feed_mm_min: machine.travel_feed_mm_min,
         }
+    }
+
+    /// The cruise speed of a move, mm/s (0 when the feed is not a positive number).
+    pub fn nominal_speed(&self, m: &Move) -> f64 {
+        let feed = if m.rapid {
+            self.travel_feed_mm_min
+        } else {
+            m.feed_mm_min.min(self.max_feed_mm_min)
+        };
+        if feed.is_finite() && feed > 0.0 {
+            feed / 60.0
+        } else {
+            0.0
+        }
+    }
+
+    fn has_acceleration(&self) -> bool {
+        self.accel_mm_s2.is_finite() && self.accel_mm_s2 > 0.0
+    }
+}
+
+/// Highest speed, mm/s, at which a machine may pass from a move along unit direction `d_in` to
+/// one along unit direction `d_out` (junction deviation, see the module docs): 0 for a
+/// reversal, infinite for a straight continuation.
+pub fn junction_speed(d_in: DVec2, d_out: DVec2, accel_mm_s2: f64, deviation_mm: f64) -> f64 {
+    // cos θ with θ between the reversed incoming and the outgoing direction.
+    let cos_theta = (-d_in.dot(d_out)).clamp(-1.0, 1.0);
+    let sin_half = ((1.0 - cos_theta) / 2.0).max(0.0).sqrt();
+    if sin_half >= 1.0 - 1e-12 {
+        return f64::INFINITY;
+    }
+    let v2 = accel_mm_s2 * deviation_mm * sin_half / (1.0 - sin_half);
+    if v2.is_finite() && v2 > 0.0 {
+        v2.sqrt()
+    } else {
+        0.0
+    }
+}
+
+/// Seconds to run `length` mm entering at `v_entry`, leaving at `v_exit` and cruising at most at
+/// `v_nominal` (mm/s), with acceleration `accel` (mm/s²). The caller guarantees the end speeds
+/// are reachable (as the look-ahead passes do); they are clamped to `v_nominal`.
+pub fn trapezoid_time(length: f64, v_entry: f64, v_exit: f64, v_nominal: f64, accel: f64) -> f64 {
+    if length <= 0.0 || v_nominal <= 0.0 {
+        return 0.0;
+    }
+    if !(accel.is_finite() && accel > 0.0) {
+        return length / v_nominal;
+    }
+    let (v0, v1) = (v_entry.min(v_nominal), v_exit.min(v_nominal));
+    let d_accel = (v_nominal * v_nominal - v0 * v0) / (2.0 * accel);
+    let d_decel = (v_nominal * v_nominal - v1 * v1) / (2.0 * accel);
+    if d_accel + d_decel <= length {
+        (v_nominal - v0) / accel
+            + (v_nominal - v1) / accel
+            + (length - d_accel - d_decel) / v_nominal
+    } else {
+        let peak = ((2.0 * accel * length + v0 * v0 + v1 * v1) / 2.0)
+            .sqrt()
+            .max(v0.max(v1));
+        (peak - v0) / accel + (peak - v1) / accel
+    }
+}
+
+/// A move reduced to what the planner needs.
+#[derive(Clone, Copy, Debug)]
+struct Block {
+    length: f64,
+    dir: DVec2,
+    nominal: f64,
+    /// Highest entry speed the junction allows.
+    max_entry: f64,
+    /// Planned entry speed.
+    entry: f64,
+}
+
+/// Seconds each move of `moves` takes from `start`, at rest before the first move and after
+/// the last, with GRBL-style look-ahead (see the module docs). Zero-length moves and moves
+/// without a positive feed take 0 s.
+pub fn move_times(start: DVec2, moves: &[Move], kin: &Kinematics) -> Vec<f64> {
+    let (blocks, index) = blocks(start, moves, kin);
+    let entries = plan_entries(&blocks, kin.accel_mm_s2);
+    let mut times = vec![0.0; moves.len()];
+    for (i, b) in blocks.iter().enumerate() {
+        let exit = entries.get(i + 1).copied().unwrap_or(0.0);
+        times[index[i]] = if kin.has_acceleration() {
+            trapezoid_time(b.length, entries[i], exit, b.nominal, kin.accel_mm_s2)
+        } else {
+            b.length / b.nominal
+        };
+    }
+    times
+}
+
+/// Seconds to run `moves` from `start`, at rest at both ends.
+pub fn job_time(start: DVec2, moves: &[Move], machine: &MachineProfile) -> f64 {
+    move_times(start, moves, &Kinematics::of(machine))
+        .iter()
+        .sum()
+}
+
+/// The moving blocks and, for each, the index of its move.
+fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<usize>) {
+    let mut at = start;
+    let mut out: Vec<Block> = Vec::with_capacity(moves.len());
+    let mut index = Vec::with_capacity(moves.len());
+    for (i, m) in moves.iter().enumerate() {
+        let delta = m.to - at;
+        let length = delta.length();
+        let nominal = kin.nominal_speed(m);
+        if !(length.is_finite() && length > 0.0 && nominal > 0.0) {
+            at = if m.to.is_finite() { m.to } else { at };
+            continue;
+        }
+        let dir = delta / length;
+        let max_entry = match out.last() {
+            None => 0.0,
+            Some(prev) => junction_speed(prev.dir, dir, kin.accel_mm_s2, kin.junction_deviation_mm)
+                .min(prev.nominal)
+                .min(nominal),
+        };
+        out.push(Block {
+            length,
+            dir,
+            nominal,
+            max_entry,
+            entry: 0.0,
+        });
+        index.push(i);
         at = m.to;
     }
-    t
+    (out, index)
+}
+
+/// Entry speeds after the backward (can stop in time) and forward (can get there) passes.
+fn plan_entries(blocks: &[Block], accel: f64) -> Vec<f64> {
+    let mut b: Vec<Block> = blocks.to_vec();
+    if !(accel.is_finite() && accel > 0.0) {
+        return b.iter().map(|x| x.max_entry).collect();
+    }
+    let mut next_entry = 0.0_f64;
+    for blk in b.iter_mut().rev() {
+        blk.entry = blk
+            .max_entry
+            .min((next_entry * next_entry + 2.0 * accel * blk.length).sqrt());
+        next_entry = blk.entry;
+    }
+    let mut prev: Option<(f64, f64)> = None; // (entry, length) of the previous block
+    for blk in b.iter_mut() {
+        if let Some((e, l)) = prev {
+            blk.entry = blk.entry.min((e * e + 2.0 * accel * l).sqrt());
+        }
+        prev = Some((blk.entry, blk.length));
+    }
+    b.iter().map(|x| x.entry).collect()
 }

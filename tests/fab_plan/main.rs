@@ -2,6 +2,7 @@
 //!
 //! Shared builders live here; each module tests one part.
 
+mod end_to_end;
 mod pipeline;
 mod placement;
 mod sides;

@@ -29,9 +29,10 @@ fn stats_sum_lengths_pierces_and_time_exactly() {
     assert!(s.travel_mm <= s.naive_travel_mm + 1e-9);
     let t = job_time(DVec2::ZERO, &moves(&job.paths, &mat.settings), &m);
     assert!((s.time_s - t).abs() < 1e-9 && t > 0.0);
-    // Burn time alone: every length at its speed, passes included.
+    // Every length at its speed, passes included, plus travel at the travel feed, is a lower
+    // bound whatever the motion model adds (acceleration, cornering, pierce delays).
     let burn: f64 = 100.0 / 3000.0 * 60.0 + diag / 1200.0 * 60.0 + 800.0 / 600.0 * 60.0;
-    assert!(t > burn && t < burn + travel / 6000.0 * 60.0 + 1e-9);
+    assert!(t >= burn + travel / 6000.0 * 60.0 - 1e-9, "{t} < {burn}");
 }
 
 #[test]

@@ -1,0 +1,147 @@
+//! `foldcam cut PATTERN --machine M --material X -o job.gcode`.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+use foldcam::fab::{FabPlan, Job, plan};
+use foldcam::formats::write_atomic;
+use foldcam::machine::MachineProfile;
+use foldcam::post::{self, DxfVersion};
+
+use super::Outcome;
+use super::args::ScaleArgs;
+use super::fab_args::{FabArgs, load_pattern};
+use super::input::FrameArg;
+
+/// Output kinds by extension.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Output {
+    Gcode,
+    Dxf,
+    Svg,
+}
+
+fn output_kind(path: &Path) -> Result<Output> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .unwrap_or_default();
+    Ok(match ext.as_str() {
+        "gcode" | "nc" | "ngc" | "gc" => Output::Gcode,
+        "dxf" => Output::Dxf,
+        "svg" => Output::Svg,
+        _ => bail!(
+            "{}: unknown job type (expected .gcode, .nc, .ngc, .dxf or .svg)",
+            path.display()
+        ),
+    })
+}
+
+/// Plan a pattern for a machine and material and write the job.
+#[derive(clap::Args)]
+#[command(
+    long_about = "Plans the pattern (perforations per crease with vertex clearances, scores, \
+                  cuts with kerf offset, travel-optimised order) for a machine and material and \
+                  writes G-code, DXF or SVG. Two-sided jobs write NAME.front.EXT and \
+                  NAME.back.EXT. G-code is read back by the simulated machine before it is \
+                  written; a violation stops the run.",
+    after_help = "Examples:\n  foldcam cut miura.fold -m grbl-diode -x card-300gsm -o miura.gcode\n  \
+                  foldcam cut tess.svg -m linuxcnc-fiber -x stainless-0.5 -o tess.ngc --two-sided\n  \
+                  foldcam cut bird.cp --size 150 -m lightburn -x card-300gsm -o bird.dxf"
+)]
+pub struct Args {
+    /// Pattern file (.fold, .svg or .cp).
+    pub input: PathBuf,
+    /// Job file: .gcode/.nc/.ngc (G-code), .dxf or .svg; written atomically.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub frame: FrameArg,
+    #[command(flatten)]
+    pub fab: FabArgs,
+    #[command(flatten)]
+    pub scale: ScaleArgs,
+    /// Write DXF R12 (LINE/POLYLINE) instead of R2000.
+    #[arg(long)]
+    pub r12: bool,
+    /// In SVG output, draw perforations as dashed strokes (for plotting) instead of dashes.
+    #[arg(long)]
+    pub dasharray: bool,
+}
+
+/// Plans and writes the job files.
+pub fn run(args: Args) -> Result<Outcome> {
+    let kind = output_kind(&args.output)?;
+    let (machine, material, options) = args.fab.resolve()?;
+    let cp = load_pattern(&args.input, &args.frame, &args.scale)?;
+    let p = plan(&cp, &machine, &material, &options)
+        .with_context(|| args.input.display().to_string())?;
+    let paths = job_paths(&args.output, &p);
+    let mut files = Vec::new();
+    for (job, path) in p.jobs.iter().zip(&paths) {
+        let bytes =
+            render(&args, kind, &p, job, &machine).with_context(|| path.display().to_string())?;
+        files.push((path, bytes));
+    }
+    // Everything rendered and checked before the first file is written.
+    for (path, bytes) in &files {
+        write_atomic(path, bytes).with_context(|| path.display().to_string())?;
+        eprintln!("foldcam: wrote {}", path.display());
+    }
+    print!("{}", super::plan::summary(&p));
+    Ok(Outcome::Done)
+}
+
+fn render(
+    args: &Args,
+    kind: Output,
+    p: &FabPlan,
+    job: &Job,
+    m: &MachineProfile,
+) -> Result<Vec<u8>> {
+    Ok(match kind {
+        Output::Gcode => {
+            let text = post::gcode(p, job, m)?;
+            let report = foldcam::sim::run(&text, m)?;
+            if let Some(v) = report.violations.first() {
+                bail!(
+                    "the simulated {} found {} problem(s) in the job, first at line {}: {}",
+                    m.name,
+                    report.violation_count,
+                    v.line,
+                    v.message
+                );
+            }
+            text.into_bytes()
+        }
+        Output::Dxf => {
+            let version = if args.r12 {
+                DxfVersion::R12
+            } else {
+                DxfVersion::R2000
+            };
+            post::dxf(p, job, version)
+        }
+        Output::Svg => post::svg(p, job, args.dasharray).into_bytes(),
+    })
+}
+
+/// One path per job: the output itself, or NAME.JOB.EXT for several jobs.
+fn job_paths(output: &Path, p: &FabPlan) -> Vec<PathBuf> {
+    if p.jobs.len() <= 1 {
+        return vec![output.to_path_buf()];
+    }
+    let stem = output
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let ext = output
+        .extension()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    p.jobs
+        .iter()
+        .map(|j| output.with_file_name(format!("{stem}.{}.{ext}", j.name)))
+        .collect()
+}

@@ -1,0 +1,179 @@
+//! Arguments shared by `cut` and `plan`: machine, material and plan overrides.
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use foldcam::fab::{Operation, PlanOptions, Tabs};
+use foldcam::machine::{
+    MachineKind, MachineProfile, Material, OperationMapping, load_machine, load_material,
+};
+
+use super::args::positive;
+
+/// An operation, or `skip` (`None`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OpChoice(pub Option<Operation>);
+
+/// Parses an operation name or `skip`.
+fn operation(s: &str) -> Result<OpChoice, String> {
+    if s == "skip" {
+        return Ok(OpChoice(None));
+    }
+    Operation::from_name(s)
+        .map(|op| OpChoice(Some(op)))
+        .ok_or_else(|| {
+            format!("{s:?} is not an operation (mark, score, perforate, cut, plot, skip)")
+        })
+}
+
+/// Machine, material and every plan setting a user may override.
+#[derive(Args, Clone, Debug)]
+pub struct FabArgs {
+    /// Machine profile: a shipped name (grbl-diode, marlin-laser, linuxcnc-fiber,
+    /// grbl-pen-plotter, lightburn) or a path to a TOML file.
+    #[arg(long, short = 'm')]
+    pub machine: String,
+    /// Material profile: a shipped name (stainless-0.5, stainless-0.3, card-300gsm,
+    /// paper-160gsm, polypropylene-0.5) or a path to a TOML file.
+    #[arg(long, short = 'x')]
+    pub material: String,
+    /// Operation for mountain creases (mark, score, perforate, cut, plot, skip).
+    #[arg(long, value_name = "OP", value_parser = operation)]
+    pub mountain: Option<OpChoice>,
+    /// Operation for valley creases.
+    #[arg(long, value_name = "OP", value_parser = operation)]
+    pub valley: Option<OpChoice>,
+    /// Operation for unassigned creases.
+    #[arg(long, value_name = "OP", value_parser = operation)]
+    pub unassigned: Option<OpChoice>,
+    /// Operation for flat (facet) lines.
+    #[arg(long, value_name = "OP", value_parser = operation)]
+    pub flat: Option<OpChoice>,
+    /// Operation for boundary and cut lines.
+    #[arg(long, value_name = "OP", value_parser = operation)]
+    pub boundary: Option<OpChoice>,
+    /// Perforation dash length, mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub dash: Option<f64>,
+    /// Perforation bridge (uncut) length, mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub bridge: Option<f64>,
+    /// Uncut clearance kept around every vertex at least, mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub clearance: Option<f64>,
+    /// Kerf width, mm (default from the material).
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub kerf: Option<f64>,
+    /// Do not offset contours by half the kerf.
+    #[arg(long)]
+    pub no_kerf_offset: bool,
+    /// Mountains from the front, valleys from the back: two jobs, the second mirrored, with
+    /// registration marks.
+    #[arg(long)]
+    pub two_sided: bool,
+    /// Leave holding tabs of this width in closed contours, mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub tabs: Option<f64>,
+    /// Spacing between holding tabs, mm.
+    #[arg(long, value_name = "MM", value_parser = positive, default_value_t = 50.0, requires = "tabs")]
+    pub tab_spacing: f64,
+    /// Lead-in length on the scrap side of closed contours, mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub lead_in: Option<f64>,
+    /// Distance from the bed origin to the pattern, mm.
+    #[arg(long, value_name = "MM", default_value_t = 5.0)]
+    pub margin: f64,
+    /// Keep the pattern's order (no travel optimisation).
+    #[arg(long)]
+    pub no_optimize: bool,
+}
+
+impl FabArgs {
+    /// Loads the profiles and resolves the plan options.
+    pub fn resolve(&self) -> Result<(MachineProfile, Material, PlanOptions)> {
+        let machine = load_machine(&self.machine)?;
+        let material = load_material(&self.material)?;
+        let mut o = PlanOptions::from_material(&material);
+        let m = &mut o.mapping;
+        for (slot, arg) in [
+            (&mut m.mountain, self.mountain),
+            (&mut m.valley, self.valley),
+            (&mut m.unassigned, self.unassigned),
+            (&mut m.flat, self.flat),
+            (&mut m.boundary, self.boundary),
+        ] {
+            if let Some(OpChoice(op)) = arg {
+                *slot = op;
+            }
+        }
+        adapt_to_machine(&machine, &mut o.mapping)?;
+        let p = &mut o.perforation;
+        p.cut_mm = self.dash.unwrap_or(p.cut_mm);
+        p.bridge_mm = self.bridge.unwrap_or(p.bridge_mm);
+        p.vertex_clearance_mm = self.clearance.unwrap_or(p.vertex_clearance_mm);
+        o.kerf_mm = self.kerf.unwrap_or(o.kerf_mm);
+        o.kerf_offset = !self.no_kerf_offset;
+        o.two_sided = self.two_sided;
+        o.tabs = self.tabs.map(|width_mm| Tabs {
+            width_mm,
+            spacing_mm: self.tab_spacing,
+        });
+        o.lead_in_mm = self.lead_in;
+        if !(self.margin.is_finite() && self.margin >= 0.0) {
+            bail!(
+                "--margin {}: must be a finite number of mm, at least 0",
+                self.margin
+            );
+        }
+        o.margin_mm = self.margin;
+        o.optimize = !self.no_optimize;
+        Ok((machine, material, o))
+    }
+}
+
+/// A pen plotter draws every line the material would burn (the material's perforate and
+/// score settings mean nothing to a pen); any other machine must support every operation the
+/// mapping asks for.
+fn adapt_to_machine(machine: &MachineProfile, mapping: &mut OperationMapping) -> Result<()> {
+    let slots = [
+        &mut mapping.mountain,
+        &mut mapping.valley,
+        &mut mapping.unassigned,
+        &mut mapping.flat,
+        &mut mapping.boundary,
+    ];
+    let plotter = machine.kind == MachineKind::Plotter;
+    let mut unsupported = Vec::new();
+    for op in slots.into_iter().flatten() {
+        if plotter && *op != Operation::Mark {
+            *op = Operation::Plot;
+        } else if !machine.supports(*op) {
+            unsupported.push(op.name());
+        }
+    }
+    if !unsupported.is_empty() {
+        unsupported.dedup();
+        bail!(
+            "machine {} cannot {}: choose other operations (--mountain, --valley, --flat, \
+             --boundary) or another machine",
+            machine.name,
+            unsupported.join(" or ")
+        );
+    }
+    Ok(())
+}
+
+/// Loads, cleans and sizes the input pattern.
+pub fn load_pattern(
+    path: &std::path::Path,
+    frame: &super::input::FrameArg,
+    scale: &super::args::ScaleArgs,
+) -> Result<foldcam::pattern::CreasePattern> {
+    let mut imported = super::input::load(path, frame)?;
+    super::input::clean(path, &mut imported, None, false)?;
+    scale.apply(&mut imported.pattern, imported.folded.as_mut())?;
+    imported
+        .pattern
+        .require_millimetres()
+        .with_context(|| path.display().to_string())?;
+    Ok(imported.pattern)
+}

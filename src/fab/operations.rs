@@ -1,0 +1,69 @@
+//! Which operation each edge of a crease pattern gets.
+//!
+//! The mapping comes from the material (overridden on the command line):
+//! boundary and cut edges → `mapping.boundary` (usually [`Operation::Cut`]); mountain, valley
+//! and unassigned creases → their own entries (perforate, score or plot); flat facet lines →
+//! `mapping.flat` (skip or mark); join edges (two faces glued) are never machined.
+
+use super::Operation;
+use crate::machine::OperationMapping;
+use crate::pattern::{Assignment, CreasePattern, EdgeId};
+
+/// The operation for an edge of `assignment` under `mapping`; `None` skips the edge.
+pub fn operation_for(assignment: Assignment, mapping: &OperationMapping) -> Option<Operation> {
+    match assignment {
+        Assignment::Boundary | Assignment::Cut => mapping.boundary,
+        Assignment::Mountain => mapping.mountain,
+        Assignment::Valley => mapping.valley,
+        Assignment::Unassigned => mapping.unassigned,
+        Assignment::Flat => mapping.flat,
+        Assignment::Join => None,
+    }
+}
+
+/// The operation of every edge of `cp`, indexed by [`EdgeId::index`].
+pub fn edge_operations(cp: &CreasePattern, mapping: &OperationMapping) -> Vec<Option<Operation>> {
+    cp.edges
+        .iter()
+        .map(|e| operation_for(e.assignment, mapping))
+        .collect()
+}
+
+/// Whether the edge leaves material weakened or removed along its whole length from its end
+/// vertices: a through-cut, a score, or the sheet's outline (present whatever the mapping).
+/// Such lines need the full clearance of [`super::perforation::continuous_clearance`] from
+/// perforation dashes; marks and pen lines do not weaken the sheet.
+pub fn is_continuous_weakening(cp: &CreasePattern, ops: &[Option<Operation>], e: EdgeId) -> bool {
+    cp.edges[e.index()].assignment.is_boundary_like()
+        || matches!(ops[e.index()], Some(Operation::Cut | Operation::Score))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn join_is_never_machined_and_cut_follows_boundary() {
+        let mapping = OperationMapping {
+            mountain: Some(Operation::Perforate),
+            valley: Some(Operation::Score),
+            unassigned: None,
+            flat: Some(Operation::Mark),
+            boundary: Some(Operation::Cut),
+        };
+        assert_eq!(operation_for(Assignment::Join, &mapping), None);
+        assert_eq!(
+            operation_for(Assignment::Cut, &mapping),
+            Some(Operation::Cut)
+        );
+        assert_eq!(
+            operation_for(Assignment::Boundary, &mapping),
+            Some(Operation::Cut)
+        );
+        assert_eq!(
+            operation_for(Assignment::Valley, &mapping),
+            Some(Operation::Score)
+        );
+        assert_eq!(operation_for(Assignment::Unassigned, &mapping), None);
+    }
+}

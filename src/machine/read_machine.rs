@@ -1,0 +1,184 @@
+//! `machines/NAME.toml` → [`MachineProfile`], every key checked.
+//!
+//! Layout (all keys are listed in `machines/README.md`): top-level `description`, `kind`,
+//! `dialect`, feeds, acceleration, junction deviation, resolution, `laser_mode`, `dwell_unit`,
+//! `preamble`, `postamble`; tables `[bed]`, `[power]` and `[pen]`. Ranges accepted:
+//!
+//! | key | range |
+//! | --- | --- |
+//! | `bed.width_mm`, `bed.height_mm` | 1 – 10 000 mm |
+//! | `max_feed_mm_min` | 1 – 1 000 000 mm/min; `travel_feed_mm_min` at most that |
+//! | `acceleration_mm_s2` | 1 – 100 000 mm/s² |
+//! | `junction_deviation_mm` | 0 – 1 mm |
+//! | `resolution_mm` | 0.00001 – 0.1 mm |
+//! | `power.min` < `power.max` | 0 – 1 000 000 (`S` units) |
+//! | `pen.delay_s` | 0 – 10 s |
+//!
+//! `[power]` and `laser_mode` are required for a laser that takes G-code, `[pen]` for a
+//! plotter or drag knife that does; elsewhere they may be left out (power defaults to GRBL's
+//! `S0–1000`, the mode to `constant`). `dwell_unit` may be left out; when given it must match
+//! the dialect (`G4 P` is seconds on GRBL and LinuxCNC, milliseconds on Marlin), since a
+//! mismatch makes every dwell 1000 times too long or too short.
+
+use toml::Table;
+
+use super::ProfileError;
+use super::fields::Fields;
+use super::profile::{
+    Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
+};
+
+/// GRBL's default `$30` (`S` at full power), used when a non-laser profile has no `[power]`.
+const DEFAULT_S_MAX: f64 = 1000.0;
+
+/// Reads and validates a machine from the parsed TOML `table` of `source` named `name`.
+pub(crate) fn machine_from_table(
+    name: &str,
+    source: &str,
+    table: &Table,
+) -> Result<MachineProfile, ProfileError> {
+    let mut f = Fields::root(source, table);
+    let description = f.text_line("description")?;
+    let kind = MachineKind::ALL[f.choice("kind", &MachineKind::ALL.map(MachineKind::name))?];
+    let dialect = Dialect::ALL[f.choice("dialect", &Dialect::ALL.map(Dialect::name))?];
+    check_kind_dialect(&f, kind, dialect)?;
+    let needs_laser = kind == MachineKind::Laser && dialect != Dialect::FileOnly;
+    let needs_pen = kind != MachineKind::Laser && dialect != Dialect::FileOnly;
+    let bed = read_bed(f.table("bed")?)?;
+    let max_feed_mm_min = f.number("max_feed_mm_min", 1.0, 1e6, "mm/min")?;
+    let travel_feed_mm_min = f.number(
+        "travel_feed_mm_min",
+        1.0,
+        max_feed_mm_min,
+        "mm/min (at most max_feed_mm_min)",
+    )?;
+    let acceleration_mm_s2 = f.number("acceleration_mm_s2", 1.0, 1e5, "mm/s²")?;
+    let junction_deviation_mm = f.number("junction_deviation_mm", 0.0, 1.0, "mm")?;
+    let resolution_mm = f.number("resolution_mm", 1e-5, 0.1, "mm")?;
+    let power = read_power(&mut f, needs_laser)?;
+    let laser_mode = read_laser_mode(&mut f, needs_laser)?;
+    let dwell_unit = read_dwell_unit(&mut f, dialect)?;
+    let (pen_up, pen_down, pen_delay_s) = read_pen(&mut f, needs_pen)?;
+    let preamble = f.lines("preamble")?;
+    let postamble = f.lines("postamble")?;
+    f.finish()?;
+    Ok(MachineProfile {
+        name: name.to_string(),
+        description,
+        kind,
+        dialect,
+        bed,
+        max_feed_mm_min,
+        travel_feed_mm_min,
+        acceleration_mm_s2,
+        junction_deviation_mm,
+        power,
+        laser_mode,
+        dwell_unit,
+        resolution_mm,
+        pen_up,
+        pen_down,
+        pen_delay_s,
+        preamble,
+        postamble,
+    })
+}
+
+/// A plotter dialect drives no laser.
+fn check_kind_dialect(f: &Fields, kind: MachineKind, dialect: Dialect) -> Result<(), ProfileError> {
+    if kind == MachineKind::Laser && dialect == Dialect::Plotter {
+        let message = "got \"plotter\", which has no laser power; a laser takes \"grbl\", \
+                       \"marlin\", \"linuxcnc\" or \"file-only\"";
+        return Err(f.error("dialect", message));
+    }
+    Ok(())
+}
+
+fn read_bed(mut t: Fields) -> Result<Bed, ProfileError> {
+    let width_mm = t.number("width_mm", 1.0, 1e4, "mm")?;
+    let height_mm = t.number("height_mm", 1.0, 1e4, "mm")?;
+    let origin = Corner::ALL[t.choice("origin", &Corner::ALL.map(Corner::name))?];
+    let y_flipped = t.bool_or("y_flipped", false)?;
+    t.finish()?;
+    Ok(Bed {
+        width_mm,
+        height_mm,
+        origin,
+        y_flipped,
+    })
+}
+
+fn read_power(f: &mut Fields, required: bool) -> Result<PowerRange, ProfileError> {
+    let table = if required {
+        Some(f.table("power")?)
+    } else {
+        f.opt_table("power")?
+    };
+    let Some(mut t) = table else {
+        return Ok(PowerRange {
+            min: 0.0,
+            max: DEFAULT_S_MAX,
+        });
+    };
+    let min = t.number("min", 0.0, 1e6, "(S units)")?;
+    let max = t.number("max", 0.0, 1e6, "(S units)")?;
+    if max <= min {
+        return Err(t.error(
+            "max",
+            format!("got {max}, which is not above power.min = {min}"),
+        ));
+    }
+    t.finish()?;
+    Ok(PowerRange { min, max })
+}
+
+fn read_laser_mode(f: &mut Fields, required: bool) -> Result<LaserMode, ProfileError> {
+    let names = LaserMode::ALL.map(LaserMode::name);
+    let index = if required {
+        Some(f.choice("laser_mode", &names)?)
+    } else {
+        f.opt_choice("laser_mode", &names)?
+    };
+    Ok(index.map_or(LaserMode::Constant, |i| LaserMode::ALL[i]))
+}
+
+fn read_dwell_unit(f: &mut Fields, dialect: Dialect) -> Result<DwellUnit, ProfileError> {
+    let expected = dialect.dwell_unit();
+    let Some(i) = f.opt_choice("dwell_unit", &DwellUnit::ALL.map(DwellUnit::name))? else {
+        return Ok(expected);
+    };
+    let unit = DwellUnit::ALL[i];
+    if unit != expected {
+        let message = format!(
+            "got \"{}\", but {} reads G4 P in {}",
+            unit.name(),
+            dialect.name(),
+            expected.name()
+        );
+        return Err(f.error("dwell_unit", message));
+    }
+    Ok(unit)
+}
+
+type Pen = (Vec<String>, Vec<String>, f64);
+
+fn read_pen(f: &mut Fields, required: bool) -> Result<Pen, ProfileError> {
+    let table = if required {
+        Some(f.table("pen")?)
+    } else {
+        f.opt_table("pen")?
+    };
+    let Some(mut t) = table else {
+        return Ok((Vec::new(), Vec::new(), 0.0));
+    };
+    let up = t.lines("up")?;
+    let down = t.lines("down")?;
+    for (key, lines) in [("up", &up), ("down", &down)] {
+        if lines.is_empty() {
+            return Err(t.error(key, "missing or empty; expected at least one command line"));
+        }
+    }
+    let delay = t.number("delay_s", 0.0, 10.0, "s")?;
+    t.finish()?;
+    Ok((up, down, delay))
+}

@@ -1,0 +1,169 @@
+//! A PNG of a simulated run: the bed outline, travel as thin dashed grey lines, burns coloured
+//! by power in 32 steps (blue for the profile's lowest power through red for its highest; pen
+//! strokes in black), seen from above with the bed's front at the bottom.
+//!
+//! Machine x runs to the right. Machine y runs up the image unless the bed is `y_flipped`
+//! (origin at the back), when it runs down. Moves outside the bed are drawn where they go,
+//! clipped by the image.
+
+use glam::DVec2;
+use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
+
+use super::report::SimReport;
+use crate::machine::MachineProfile;
+use crate::render::{MAX_SIZE, MIN_SIZE, RenderError};
+
+/// Margin around the bed, as a share of the width.
+const MARGIN_SHARE: f64 = 0.04;
+
+/// Maps bed millimetres to pixels.
+struct View {
+    scale: f64,
+    margin: f64,
+    bed_height: f64,
+    y_flipped: bool,
+}
+
+impl View {
+    fn px(&self, p: DVec2) -> (f32, f32) {
+        let y = if self.y_flipped {
+            p.y
+        } else {
+            self.bed_height - p.y
+        };
+        (
+            (self.margin + p.x * self.scale) as f32,
+            (self.margin + y * self.scale) as f32,
+        )
+    }
+}
+
+/// Draws `report` on the bed of `machine` as PNG bytes, `width` pixels wide (16 to 16384; the
+/// height follows the bed's aspect ratio, at most 16384 pixels).
+pub fn render_png(
+    report: &SimReport,
+    machine: &MachineProfile,
+    width: u32,
+) -> Result<Vec<u8>, RenderError> {
+    if !(MIN_SIZE..=MAX_SIZE).contains(&width) {
+        return Err(RenderError::Width(width));
+    }
+    let (view, height) = layout(machine, width)?;
+    let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::Allocation { width, height })?;
+    pixmap.fill(Color::WHITE);
+    let lw = (width as f32 / 800.0).max(1.0);
+    draw_bed(&mut pixmap, &view, machine, lw);
+    draw_travel(&mut pixmap, &view, report, lw);
+    draw_burns(&mut pixmap, &view, report, lw);
+    pixmap
+        .encode_png()
+        .map_err(|e| RenderError::Encode(e.to_string()))
+}
+
+fn layout(machine: &MachineProfile, width: u32) -> Result<(View, u32), RenderError> {
+    let bed = machine.bed;
+    let valid = |v: f64| v.is_finite() && v > 0.0;
+    if !(valid(bed.width_mm) && valid(bed.height_mm)) {
+        return Err(RenderError::Option {
+            name: "bed",
+            value: format!("{} × {}", bed.width_mm, bed.height_mm),
+            expected: "a bed with positive, finite width and height",
+        });
+    }
+    let margin = (f64::from(width) * MARGIN_SHARE).round();
+    let mut scale = (f64::from(width) - 2.0 * margin) / bed.width_mm;
+    let max_h = f64::from(MAX_SIZE) - 2.0 * margin;
+    scale = scale.min(max_h / bed.height_mm);
+    let height = (bed.height_mm * scale + 2.0 * margin).ceil().max(1.0) as u32;
+    let view = View {
+        scale,
+        margin,
+        bed_height: bed.height_mm,
+        y_flipped: bed.y_flipped,
+    };
+    Ok((view, height.min(MAX_SIZE)))
+}
+
+fn paint(rgba: [u8; 4]) -> Paint<'static> {
+    let mut p = Paint::default();
+    p.set_color_rgba8(rgba[0], rgba[1], rgba[2], rgba[3]);
+    p.anti_alias = true;
+    p
+}
+
+fn segment(pb: &mut PathBuilder, view: &View, a: DVec2, b: DVec2) {
+    let (ax, ay) = view.px(a);
+    let (bx, by) = view.px(b);
+    pb.move_to(ax, ay);
+    pb.line_to(bx, by);
+}
+
+fn stroke_path(pixmap: &mut Pixmap, pb: PathBuilder, color: [u8; 4], stroke: &Stroke) {
+    if let Some(path) = pb.finish() {
+        pixmap.stroke_path(&path, &paint(color), stroke, Transform::identity(), None);
+    }
+}
+
+fn draw_bed(pixmap: &mut Pixmap, view: &View, machine: &MachineProfile, lw: f32) {
+    let (w, h) = (machine.bed.width_mm, machine.bed.height_mm);
+    let corners = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].map(|(x, y)| DVec2::new(x, y));
+    let mut pb = PathBuilder::new();
+    for i in 0..4 {
+        segment(&mut pb, view, corners[i], corners[(i + 1) % 4]);
+    }
+    let stroke = Stroke {
+        width: lw,
+        ..Stroke::default()
+    };
+    stroke_path(pixmap, pb, [60, 60, 60, 255], &stroke);
+}
+
+fn draw_travel(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
+    let mut pb = PathBuilder::new();
+    for t in &report.travels {
+        segment(&mut pb, view, t.from, t.to);
+    }
+    let stroke = Stroke {
+        width: lw * 0.5,
+        dash: StrokeDash::new(vec![3.0 * lw, 3.0 * lw], 0.0),
+        ..Stroke::default()
+    };
+    stroke_path(pixmap, pb, [150, 150, 150, 200], &stroke);
+}
+
+/// Colour steps from the lowest to the highest power.
+const POWER_STEPS: usize = 32;
+
+/// Burns in one path per colour step (one pass over the burns).
+fn draw_burns(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
+    let stroke = Stroke {
+        width: lw * 1.5,
+        line_cap: LineCap::Round,
+        ..Stroke::default()
+    };
+    let mut paths: Vec<PathBuilder> = (0..POWER_STEPS).map(|_| PathBuilder::new()).collect();
+    for b in &report.burns {
+        let step = power_step(report, b.power);
+        segment(&mut paths[step], view, b.from, b.to);
+    }
+    for (step, pb) in paths.into_iter().enumerate() {
+        stroke_path(pixmap, pb, step_color(report, step), &stroke);
+    }
+}
+
+/// The colour step of a power: its fraction of the profile's range, quantised.
+fn power_step(report: &SimReport, power: f64) -> usize {
+    let f = report.power_fraction(power);
+    ((f * (POWER_STEPS - 1) as f64).round() as usize).min(POWER_STEPS - 1)
+}
+
+/// Blue (low) to red (high) through purple; black for pen strokes on a plotter.
+fn step_color(report: &SimReport, step: usize) -> [u8; 4] {
+    if report.dialect == crate::machine::Dialect::Plotter {
+        return [0, 0, 0, 255];
+    }
+    let f = step as f64 / (POWER_STEPS - 1) as f64;
+    let r = (40.0 + 215.0 * f) as u8;
+    let b = (255.0 - 215.0 * f) as u8;
+    [r, 30, b, 255]
+}

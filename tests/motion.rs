@@ -1,0 +1,189 @@
+//! The motion-time model against closed forms: trapezoids, triangles, junction speeds.
+
+use foldcam::machine::motion::{Kinematics, Move, job_time, junction_speed, move_times};
+use foldcam::machine::{
+    Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
+};
+use glam::DVec2;
+use proptest::prelude::*;
+
+/// Acceleration 1000 mm/s², feeds up to 6000 mm/min (100 mm/s), travel 6000 mm/min.
+fn machine() -> MachineProfile {
+    MachineProfile {
+        name: "test".into(),
+        description: String::new(),
+        kind: MachineKind::Laser,
+        dialect: Dialect::Grbl,
+        bed: Bed {
+            width_mm: 400.0,
+            height_mm: 400.0,
+            origin: Corner::BottomLeft,
+            y_flipped: false,
+        },
+        max_feed_mm_min: 6000.0,
+        travel_feed_mm_min: 6000.0,
+        acceleration_mm_s2: 1000.0,
+        junction_deviation_mm: 0.01,
+        power: PowerRange {
+            min: 0.0,
+            max: 1000.0,
+        },
+        laser_mode: LaserMode::Dynamic,
+        dwell_unit: DwellUnit::Seconds,
+        resolution_mm: 0.001,
+        pen_up: Vec::new(),
+        pen_down: Vec::new(),
+        pen_delay_s: 0.0,
+        preamble: Vec::new(),
+        postamble: Vec::new(),
+    }
+}
+
+fn feed(x: f64, y: f64, f: f64) -> Move {
+    Move {
+        to: DVec2::new(x, y),
+        feed_mm_min: f,
+        rapid: false,
+    }
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * b.abs().max(1.0)
+}
+
+#[test]
+fn long_move_is_a_trapezoid() {
+    // v = 50 mm/s, a = 1000 mm/s²: t = L/v + v/a.
+    let t = job_time(DVec2::ZERO, &[feed(200.0, 0.0, 3000.0)], &machine());
+    assert!(close(t, 200.0 / 50.0 + 50.0 / 1000.0), "{t}");
+}
+
+#[test]
+fn short_move_is_a_triangle() {
+    // Reaching 50 mm/s needs 1.25 mm each way; 1 mm never gets there: t = 2√(L/a).
+    let t = job_time(DVec2::ZERO, &[feed(0.0, 1.0, 3000.0)], &machine());
+    assert!(close(t, 2.0 * (1.0f64 / 1000.0).sqrt()), "{t}");
+}
+
+#[test]
+fn straight_continuation_does_not_slow_down() {
+    let split: Vec<Move> = (1..=10)
+        .map(|i| feed(20.0 * i as f64, 0.0, 3000.0))
+        .collect();
+    let t = job_time(DVec2::ZERO, &split, &machine());
+    assert!(close(t, 200.0 / 50.0 + 50.0 / 1000.0), "{t}");
+}
+
+#[test]
+fn reversal_stops_fully() {
+    let m = machine();
+    let there_and_back = [feed(100.0, 0.0, 3000.0), feed(0.0, 0.0, 3000.0)];
+    let t = job_time(DVec2::ZERO, &there_and_back, &m);
+    let one = job_time(DVec2::ZERO, &[feed(100.0, 0.0, 3000.0)], &m);
+    assert!(close(t, 2.0 * one), "{t} vs 2 × {one}");
+}
+
+#[test]
+fn feed_is_capped_at_the_machine_maximum() {
+    let m = machine();
+    let fast = job_time(DVec2::ZERO, &[feed(300.0, 0.0, 60_000.0)], &m);
+    let max = job_time(DVec2::ZERO, &[feed(300.0, 0.0, 6000.0)], &m);
+    assert!(close(fast, max));
+}
+
+#[test]
+fn rapids_use_the_travel_feed() {
+    let mut m = machine();
+    m.travel_feed_mm_min = 1200.0; // 20 mm/s
+    let rapid = Move {
+        to: DVec2::new(100.0, 0.0),
+        feed_mm_min: 1.0,
+        rapid: true,
+    };
+    let t = job_time(DVec2::ZERO, &[rapid], &m);
+    assert!(close(t, 100.0 / 20.0 + 20.0 / 1000.0), "{t}");
+}
+
+#[test]
+fn corner_costs_more_than_straight_and_less_than_a_stop() {
+    let m = machine();
+    let corner = [feed(100.0, 0.0, 3000.0), feed(100.0, 100.0, 3000.0)];
+    let t = job_time(DVec2::ZERO, &corner, &m);
+    let straight = job_time(DVec2::ZERO, &[feed(200.0, 0.0, 3000.0)], &m);
+    let stop = 2.0 * job_time(DVec2::ZERO, &[feed(100.0, 0.0, 3000.0)], &m);
+    assert!(straight < t && t < stop, "{straight} < {t} < {stop}");
+}
+
+#[test]
+fn time_grows_with_path_length() {
+    let m = machine();
+    let mut last = 0.0;
+    for i in 1..200 {
+        let len = 0.05 * f64::from(i) * f64::from(i);
+        let t = job_time(DVec2::ZERO, &[feed(len, 0.0, 3000.0)], &m);
+        assert!(t > last, "length {len}: {t} after {last}");
+        last = t;
+    }
+}
+
+#[test]
+fn junction_speed_limits() {
+    let x = DVec2::X;
+    assert_eq!(junction_speed(x, -x, 1000.0, 0.01), 0.0);
+    assert_eq!(junction_speed(x, x, 1000.0, 0.01), f64::INFINITY);
+    // 90°: sin(θ/2) = √½, v² = a δ √½ / (1 − √½).
+    let s = 0.5f64.sqrt();
+    let expected = (1000.0 * 0.01 * s / (1.0 - s)).sqrt();
+    assert!(close(junction_speed(x, DVec2::Y, 1000.0, 0.01), expected));
+    // Sharper turns are slower.
+    let shallow = junction_speed(x, DVec2::new(1.0, 0.2).normalize(), 1000.0, 0.01);
+    let sharp = junction_speed(x, DVec2::new(-1.0, 0.2).normalize(), 1000.0, 0.01);
+    assert!(shallow > expected && expected > sharp && sharp > 0.0);
+}
+
+#[test]
+fn per_move_times_sum_to_the_job_time_and_skip_empty_moves() {
+    let m = machine();
+    let moves = [
+        feed(10.0, 0.0, 3000.0),
+        feed(10.0, 0.0, 3000.0),
+        feed(10.0, 10.0, 600.0),
+    ];
+    let times = move_times(DVec2::ZERO, &moves, &Kinematics::of(&m));
+    assert_eq!(times[1], 0.0);
+    let total: f64 = times.iter().sum();
+    assert!(close(total, job_time(DVec2::ZERO, &moves, &m)));
+}
+
+#[test]
+fn without_acceleration_the_feed_is_constant() {
+    let mut m = machine();
+    m.acceleration_mm_s2 = 0.0;
+    let t = job_time(DVec2::ZERO, &[feed(100.0, 0.0, 3000.0)], &m);
+    assert!(close(t, 2.0));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// Any path takes at least its constant-feed time (acceleration only slows it) and no more
+    /// than stopping at every move would take.
+    #[test]
+    fn time_lies_between_constant_feed_and_full_stops(
+        points in prop::collection::vec((0.0..300.0f64, 0.0..300.0f64, 60.0..9000.0f64), 1..30)
+    ) {
+        let m = machine();
+        let moves: Vec<Move> = points.iter().map(|&(x, y, f)| feed(x, y, f)).collect();
+        let t = job_time(DVec2::ZERO, &moves, &m);
+        let mut at = DVec2::ZERO;
+        let (mut floor, mut ceiling) = (0.0, 0.0);
+        for mv in &moves {
+            floor += at.distance(mv.to) / (mv.feed_mm_min.min(6000.0) / 60.0);
+            ceiling += job_time(at, std::slice::from_ref(mv), &m);
+            at = mv.to;
+        }
+        prop_assert!(t.is_finite());
+        prop_assert!(t >= floor * (1.0 - 1e-12), "{} < {}", t, floor);
+        prop_assert!(t <= ceiling * (1.0 + 1e-12) + 1e-12, "{} > {}", t, ceiling);
+    }
+}
