@@ -294,7 +294,7 @@ fn no_cut_geometry_is_lost() {
         DVec2::new(20.0, 30.0),
         Assignment::Cut,
     );
-    foldcam::pattern::planarize(&mut cp, &Default::default());
+    foldcam::pattern::planarize(&mut cp, &Default::default()).expect("planarises");
     let mut opts = options();
     let paths = toolpaths(&cp, &opts).unwrap();
     assert_cut_edges_covered(&cp, &paths, &[0.0, 0.25, 0.5, 0.75, 1.0], 1e-9);
@@ -386,7 +386,7 @@ fn touching_and_collinear_contours() {
         Assignment::Boundary,
     );
     polygon(&mut cp, &square(10.0, 20.0), Assignment::Boundary);
-    foldcam::pattern::planarize(&mut cp, &Default::default());
+    foldcam::pattern::planarize(&mut cp, &Default::default()).expect("planarises");
     let mut opts = options();
     opts.kerf_offset = true;
     opts.lead_in_mm = Some(1.0);
@@ -435,7 +435,7 @@ mod random_patterns {
                     cp.add_segment(DVec2::new(ax, ay), DVec2::new(bx, by), kind);
                 }
             }
-            foldcam::pattern::planarize(&mut cp, &Default::default());
+            foldcam::pattern::planarize(&mut cp, &Default::default()).expect("planarises");
             let mut opts = options();
             opts.mapping.flat = Some(Operation::Mark);
             opts.mapping.valley = Some(Operation::Score);

@@ -250,7 +250,7 @@ fn drawn_segments_of_one_crease_share_one_layout() {
     }
     // Put the ends on the outline.
     let mut cp2 = cp.clone();
-    foldcam::pattern::planarize(&mut cp2, &Default::default());
+    foldcam::pattern::planarize(&mut cp2, &Default::default()).expect("planarises");
     let (paths, warnings) = toolpaths_with_warnings(&cp2, &options()).unwrap();
     assert!(warnings.is_empty());
     let perf = perforations(&paths);

@@ -1,7 +1,12 @@
-//! PLACEHOLDER: the fabrication plan — what the machine does to each line of a crease pattern.
+//! The fabrication plan: what the machine does to each line of a crease pattern.
 //!
-//! Data flows `CreasePattern` → [`plan`] → [`FabPlan`] (jobs of ordered toolpaths in machine
-//! coordinates) → `post` writers and the `sim` machine.
+//! Data flows `CreasePattern` → [`plan()`] → [`FabPlan`] (jobs of ordered toolpaths in
+//! machine coordinates) → `post` writers and the `sim` machine. The stages, one module each:
+//! [`operations`] (assignment → operation), [`creases`] and [`lines`] (chaining edges),
+//! [`perforation`] (dashes per crease with vertex clearances), [`contours`], [`kerf`] and
+//! [`tabs`] (cut contours, offsets, tabs, lead-ins), [`geometry`] (all of those together),
+//! [`placement`] and [`sides`] (bed placement, two-sided jobs, registration marks), [`order`]
+//! (precedence and travel), [`stats`], and [`plan`](mod@plan) (the whole pipeline).
 
 pub mod contours;
 pub mod creases;
@@ -92,7 +97,8 @@ pub struct Toolpath {
     pub strokes: Vec<Vec<DVec2>>,
     /// Cut contour role.
     pub role: ContourRole,
-    /// For holes: index (in the job's `paths`) of the contour that contains it, if any.
+    /// Index (in the job's `paths`) of the contour directly around this one (for holes, and
+    /// for islands inside holes), if any: it must be cut after this one.
     pub container: Option<usize>,
     /// The pattern edges this toolpath realises (for coverage checks).
     pub edges: Vec<EdgeId>,
