@@ -1,4 +1,4 @@
-//! Marlin with `LASER_FEATURE`: inline power (`M3 S0 I`), `S0` on every travel, no `M2`.
+//! Marlin with `LASER_FEATURE`: inline power (`M3 S0 I1`), `S0` on every travel, no `M2`.
 
 use super::Flavour;
 use super::grbl::laser_on_word;
@@ -22,7 +22,7 @@ impl Flavour for MarlinLaser {
         true
     }
     fn start(&self) -> Vec<String> {
-        vec![format!("{} S0 I", laser_on_word(self.mode))]
+        vec![format!("{} S0 I1", laser_on_word(self.mode))]
     }
     fn travel_words(&self) -> &str {
         " S0"

@@ -1,7 +1,7 @@
 //! G-code writers: GRBL, Marlin, LinuxCNC and pen plotters.
 //!
-//! Every program is millimetres (`G21`) and absolute (`G90`); the machine's preamble follows,
-//! then the dialect's arming line, then one comment per group of toolpaths of one operation
+//! Every program is millimetres (`G21`) and absolute (`G90`); the dialect's arming line (laser
+//! at zero power, or pen up) follows, then the machine's preamble, then one comment per group of toolpaths of one operation
 //! (`; cut`, or `(cut)` on LinuxCNC), the toolpaths, the tool made safe, the postamble and the
 //! dialect's program end. Travel is `G0`, burns are `G1`.
 //!
@@ -23,7 +23,9 @@
 //!   `G0 … S0`. GRBL already blanks the laser on `G0` in laser mode; the explicit `S0` keeps
 //!   the laser off even on a controller left in spindle mode. `M5` before the postamble, `M2`.
 //! - Marlin with `LASER_FEATURE` ([`marlin`]): `M3`/`M4` and `M5` wait for all moves to finish,
-//!   so power is set inline instead: `M3 S0 I` (or `M4 S0 I`) once enables inline mode, then
+//!   so power is set inline instead: `M3 S0 I1` (or `M4 S0 I1`; Marlin reads a bool word as true
+//!   when it is bare or non-zero, and `I1` keeps every word letter+number) once enables inline
+//!   mode, then
 //!   `G1 … S<power>` burns. Marlin's `G0` turns the laser off only when built with
 //!   `LASER_MOVE_G0_OFF`, so every travel carries `S0` (needs `LASER_POWER_INLINE` and
 //!   `LASER_MOVE_POWER`, Marlin 2.0.8 or later). `M5` at the end; Marlin has no `M2`.

@@ -74,13 +74,13 @@ fn burn(plan: &FabPlan, op: Operation, machine: &MachineProfile) -> Burn {
 }
 
 impl Program<'_> {
-    /// Title comment, units, absolute mode, preamble, arming.
+    /// Title comment, units, absolute mode, arming (laser at zero or pen up), preamble.
     fn header(&mut self, job: &Job, machine: &MachineProfile) {
         let title = format!("foldcam: job {} for machine {}", job.name, machine.name);
         self.lines.push(self.flavour.comment(&title));
         self.lines.extend(["G21".to_string(), "G90".to_string()]);
-        self.lines.extend(machine.preamble.iter().cloned());
         self.lines.extend(self.flavour.start());
+        self.lines.extend(machine.preamble.iter().cloned());
     }
 
     /// Tool safe, postamble, program end.
