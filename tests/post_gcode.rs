@@ -58,7 +58,10 @@ fn parse_line(text: &str) -> Line {
         let letter = token.chars().next().unwrap().to_ascii_uppercase();
         assert!(letter.is_ascii_alphabetic(), "word {token:?} in {text:?}");
         let value = token[1..].to_string();
-        assert!(!value.is_empty(), "word {token:?} without a number in {text:?}");
+        assert!(
+            !value.is_empty(),
+            "word {token:?} without a number in {text:?}"
+        );
         words.push((letter, value));
     }
     Line {
@@ -104,9 +107,19 @@ fn run(lines: &[Line]) -> Vec<Move> {
             rapid = false;
         }
         if line.word('X').is_some() || line.word('Y').is_some() {
-            let to = dvec2(line.word('X').unwrap_or(at.x), line.word('Y').unwrap_or(at.y));
+            let to = dvec2(
+                line.word('X').unwrap_or(at.x),
+                line.word('Y').unwrap_or(at.y),
+            );
             let power = if on { s } else { 0.0 };
-            moves.push(Move { rapid, from: at, to, power, feed: f, op });
+            moves.push(Move {
+                rapid,
+                from: at,
+                to,
+                power,
+                feed: f,
+                op,
+            });
             at = to;
         }
     }
@@ -148,10 +161,16 @@ fn grbl_travel_is_dark_and_burns_carry_their_power() {
         }
         let op = mv.op.expect("burn inside an operation group");
         let s = plan.settings.get(op);
-        assert_eq!(mv.power, m.power.min + s.power * (m.power.max - m.power.min));
+        assert_eq!(
+            mv.power,
+            m.power.min + s.power * (m.power.max - m.power.min)
+        );
         assert_eq!(mv.feed, s.speed_mm_min.min(m.max_feed_mm_min));
     }
-    assert!(lines.iter().any(|l| l.text == "M4 S0"), "dynamic mode armed once");
+    assert!(
+        lines.iter().any(|l| l.text == "M4 S0"),
+        "dynamic mode armed once"
+    );
     assert_eq!(lines.iter().filter(|l| l.has('M', 4.0)).count(), 1);
 }
 
@@ -168,8 +187,14 @@ fn burns_read_back_equal_the_plan_within_the_resolution() {
         let tolerance = m.resolution_mm / 2.0 + 1e-9;
         for (mv, (op, a, b)) in burns.iter().zip(&expected) {
             assert_eq!(mv.op, Some(*op));
-            assert!(mv.from.distance(*a) <= tolerance * 2f64.sqrt(), "{mv:?} vs {a}");
-            assert!(mv.to.distance(*b) <= tolerance * 2f64.sqrt(), "{mv:?} vs {b}");
+            assert!(
+                mv.from.distance(*a) <= tolerance * 2f64.sqrt(),
+                "{mv:?} vs {a}"
+            );
+            assert!(
+                mv.to.distance(*b) <= tolerance * 2f64.sqrt(),
+                "{mv:?} vs {b}"
+            );
             assert!(mv.power > 0.0, "{dialect:?}: burn without power {mv:?}");
         }
     }
@@ -201,7 +226,10 @@ fn coordinates_sit_on_the_resolution_without_float_noise() {
             for (letter, value) in line.words.iter().filter(|(l, _)| matches!(l, 'X' | 'Y')) {
                 let v: f64 = value.parse().unwrap();
                 let steps = v / res;
-                assert!((steps - steps.round()).abs() < 1e-6, "{letter}{value} at {res}");
+                assert!(
+                    (steps - steps.round()).abs() < 1e-6,
+                    "{letter}{value} at {res}"
+                );
                 assert!(!value.contains(['e', 'E']), "exponent in {value}");
                 assert_ne!(value, "-0");
                 let decimals = value.split('.').nth(1).map_or(0, str::len);
@@ -238,14 +266,22 @@ fn preamble_postamble_and_program_end_frame_the_moves() {
 #[test]
 fn one_comment_per_operation_group() {
     let mut j = job();
-    let extra = toolpath(Operation::Cut, vec![vec![dvec2(80.0, 80.0), dvec2(90.0, 80.0)]]);
+    let extra = toolpath(
+        Operation::Cut,
+        vec![vec![dvec2(80.0, 80.0), dvec2(90.0, 80.0)]],
+    );
     j.paths.push(extra);
     let text = program(&plan(j), &machine(Dialect::Grbl));
     let groups: Vec<_> = parse(&text)
         .into_iter()
         .filter_map(|l| l.comment.as_deref().and_then(Operation::from_name))
         .collect();
-    let want = [Operation::Mark, Operation::Score, Operation::Perforate, Operation::Cut];
+    let want = [
+        Operation::Mark,
+        Operation::Score,
+        Operation::Perforate,
+        Operation::Cut,
+    ];
     assert_eq!(groups, want);
 }
 
@@ -256,10 +292,19 @@ fn marlin_sets_power_inline_and_blanks_travel() {
     let text = program(&plan(job()), &m);
     let lines = parse(&text);
     assert!(lines.iter().any(|l| l.text == "M3 S0 I1"), "{text}");
-    assert_eq!(lines.iter().filter(|l| l.has('M', 3.0)).count(), 1, "armed once");
+    assert_eq!(
+        lines.iter().filter(|l| l.has('M', 3.0)).count(),
+        1,
+        "armed once"
+    );
     let ours = |l: &&Line| !m.preamble.contains(&l.text) && !m.postamble.contains(&l.text);
     for line in lines.iter().filter(ours).filter(|l| l.has('G', 0.0)) {
-        assert_eq!(line.word('S'), Some(0.0), "travel without S0: {}", line.text);
+        assert_eq!(
+            line.word('S'),
+            Some(0.0),
+            "travel without S0: {}",
+            line.text
+        );
     }
     assert!(!lines.iter().any(|l| l.has('M', 2.0)), "Marlin has no M2");
     assert_eq!(lines.last().unwrap().text, m.postamble[0]);
@@ -287,7 +332,11 @@ fn linuxcnc_frames_each_stroke_and_uses_parentheses() {
 
 #[test]
 fn linuxcnc_interpreter_accepts_the_program() {
-    let Ok(out) = std::process::Command::new("rs274").arg("-g").arg("/dev/null").output() else {
+    let Ok(out) = std::process::Command::new("rs274")
+        .arg("-g")
+        .arg("/dev/null")
+        .output()
+    else {
         eprintln!("SKIPPED: rs274 (Debian linuxcnc-uspace) is not installed");
         return;
     };
@@ -297,7 +346,11 @@ fn linuxcnc_interpreter_accepts_the_program() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("job.ngc");
     std::fs::write(&file, &text).unwrap();
-    let out = std::process::Command::new("rs274").arg("-g").arg(&file).output().unwrap();
+    let out = std::process::Command::new("rs274")
+        .arg("-g")
+        .arg(&file)
+        .output()
+        .unwrap();
     let canon = String::from_utf8_lossy(&out.stdout);
     let errors = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "rs274 refused:\n{errors}\n{canon}");
@@ -316,7 +369,10 @@ fn plotter_lifts_the_pen_before_every_travel_and_dwells_in_seconds() {
     let m = plotter(Dialect::Plotter);
     let text = program(&plan(job()), &m);
     pen_discipline(&text, &m);
-    assert!(text.contains("G4 P0.15"), "GRBL-style dwell in seconds:\n{text}");
+    assert!(
+        text.contains("G4 P0.15"),
+        "GRBL-style dwell in seconds:\n{text}"
+    );
 }
 
 #[test]
@@ -340,7 +396,11 @@ fn pen_discipline(text: &str, m: &MachineProfile) {
             down = Some(true);
             continue;
         }
-        assert!(line.word('S').is_none(), "S word on a plotter: {}", line.text);
+        assert!(
+            line.word('S').is_none(),
+            "S word on a plotter: {}",
+            line.text
+        );
         if line.has('G', 0.0) {
             assert_eq!(down, Some(false), "travel with the pen down: {}", line.text);
         }
@@ -364,12 +424,25 @@ fn nan_never_reaches_the_output() {
     let mut bad = plan(job());
     bad.jobs[0].paths[1].strokes[0][1].x = f64::NAN;
     let err = gcode(&bad, &bad.jobs[0], &m).unwrap_err();
-    assert!(matches!(err, PostError::BadCoordinate { path: 1, stroke: 0, .. }), "{err}");
+    assert!(
+        matches!(
+            err,
+            PostError::BadCoordinate {
+                path: 1,
+                stroke: 0,
+                ..
+            }
+        ),
+        "{err}"
+    );
 
     let mut bad = plan(job());
     bad.settings.cut.power = f64::NAN;
     let err = gcode(&bad, &bad.jobs[0], &m).unwrap_err();
-    assert!(matches!(err, PostError::BadSetting { key: "power", .. }), "{err}");
+    assert!(
+        matches!(err, PostError::BadSetting { key: "power", .. }),
+        "{err}"
+    );
 
     let mut bad = plan(job());
     bad.settings.score.speed_mm_min = f64::INFINITY;
@@ -379,7 +452,16 @@ fn nan_never_reaches_the_output() {
     bad_machine.resolution_mm = 0.0;
     let plan = plan(job());
     let err = gcode(&plan, &plan.jobs[0], &bad_machine).unwrap_err();
-    assert!(matches!(err, PostError::BadMachine { key: "resolution_mm", .. }), "{err}");
+    assert!(
+        matches!(
+            err,
+            PostError::BadMachine {
+                key: "resolution_mm",
+                ..
+            }
+        ),
+        "{err}"
+    );
 }
 
 #[test]
@@ -402,8 +484,10 @@ fn empty_jobs_are_an_error_not_a_panic() {
     assert!(matches!(err, PostError::EmptyJob { .. }));
     let mut dots = plan(job());
     let dot = vec![dvec2(1.0, 1.0), dvec2(1.0001, 1.0)];
-    dots.jobs[0].paths = vec![toolpath(Operation::Cut, vec![dot, Vec::new(), vec![DVec2::ONE]])];
+    dots.jobs[0].paths = vec![toolpath(
+        Operation::Cut,
+        vec![dot, Vec::new(), vec![DVec2::ONE]],
+    )];
     let err = gcode(&dots, &dots.jobs[0], &m).unwrap_err();
     assert!(matches!(err, PostError::EmptyJob { .. }));
 }
-

@@ -44,10 +44,17 @@ pub fn job() -> Job {
         side: Side::Front,
         to_machine: DAffine2::IDENTITY,
         paths: vec![
-            toolpath(Operation::Mark, vec![vec![dvec2(1.0, 1.0), dvec2(3.0, 1.0)]]),
+            toolpath(
+                Operation::Mark,
+                vec![vec![dvec2(1.0, 1.0), dvec2(3.0, 1.0)]],
+            ),
             toolpath(
                 Operation::Score,
-                vec![vec![dvec2(10.0, 10.0), dvec2(20.0, 15.0), dvec2(30.0, 10.0)]],
+                vec![vec![
+                    dvec2(10.0, 10.0),
+                    dvec2(20.0, 15.0),
+                    dvec2(30.0, 10.0),
+                ]],
             ),
             toolpath(Operation::Perforate, dashes()),
             toolpath(
