@@ -196,6 +196,8 @@ fn burns_read_back_equal_the_plan_within_the_resolution() {
                 "{mv:?} vs {b}"
             );
             assert!(mv.power > 0.0, "{dialect:?}: burn without power {mv:?}");
+            let feed = plan.settings.get(*op).speed_mm_min.min(m.max_feed_mm_min);
+            assert_eq!(mv.feed, feed, "{dialect:?}: {mv:?}");
         }
     }
 }

@@ -3,7 +3,7 @@
 //! Every writer checks the job's coordinates; the G-code writer also checks the machine and
 //! the settings it uses. Limits: coordinates within ±[`MAX_COORD_MM`], resolutions from
 //! [`MIN_RESOLUTION_MM`] to [`MAX_RESOLUTION_MM`], feeds positive, power fractions in 0..=1,
-//! at least one pass, command lines without line breaks.
+//! at least one pass, pen delays up to a minute, command lines without line breaks.
 
 use super::PostError;
 use super::number::Grid;
@@ -12,6 +12,8 @@ use crate::machine::{MachineProfile, OperationSettings};
 
 /// Largest coordinate magnitude written, mm.
 pub const MAX_COORD_MM: f64 = 1e9;
+/// Longest pen delay accepted, seconds.
+pub const MAX_PEN_DELAY_S: f64 = 60.0;
 /// Finest machine resolution accepted, mm.
 pub const MIN_RESOLUTION_MM: f64 = 1e-6;
 /// Coarsest machine resolution accepted, mm.
@@ -63,8 +65,13 @@ pub fn settings(op: Operation, s: &OperationSettings, uses_power: bool) -> Resul
     Ok(())
 }
 
-/// The machine numbers the G-code writer uses are sane; returns the coordinate grid.
-pub fn machine(m: &MachineProfile, uses_power: bool) -> Result<Grid, PostError> {
+/// The machine numbers the G-code writer uses are sane (power only when `uses_power`, the
+/// travel feed only when `uses_travel_feed`); returns the coordinate grid.
+pub fn machine(
+    m: &MachineProfile,
+    uses_power: bool,
+    uses_travel_feed: bool,
+) -> Result<Grid, PostError> {
     let bad = |key, message: String| PostError::BadMachine {
         machine: m.name.clone(),
         key,
@@ -79,13 +86,20 @@ pub fn machine(m: &MachineProfile, uses_power: bool) -> Result<Grid, PostError> 
         let msg = format!("{}: expected a positive feed", m.max_feed_mm_min);
         return Err(bad("max_feed_mm_min", msg));
     }
+    let travel = m.travel_feed_mm_min;
+    if uses_travel_feed && !(travel.is_finite() && travel > 0.0) {
+        return Err(bad(
+            "travel_feed_mm_min",
+            format!("{travel}: expected a positive feed"),
+        ));
+    }
     let power_ok = m.power.min.is_finite() && m.power.max.is_finite() && m.power.min <= m.power.max;
     if uses_power && !(power_ok && m.power.min >= 0.0) {
         let msg = format!("{}..{}: expected 0 <= min <= max", m.power.min, m.power.max);
         return Err(bad("power", msg));
     }
-    if !(m.pen_delay_s.is_finite() && m.pen_delay_s >= 0.0) {
-        let msg = format!("{}: expected 0 or more seconds", m.pen_delay_s);
+    if !(0.0..=MAX_PEN_DELAY_S).contains(&m.pen_delay_s) {
+        let msg = format!("{}: expected 0 to {MAX_PEN_DELAY_S} seconds", m.pen_delay_s);
         return Err(bad("pen_delay_s", msg));
     }
     command_lines(m, &bad)?;

@@ -26,6 +26,17 @@ impl Grid {
         })
     }
 
+    /// The grid of `10^-decimals`, for constant steps (`decimals` ≤ [`MAX_DECIMALS`]).
+    pub const fn decimal(decimals: usize) -> Grid {
+        let mut step = 1.0;
+        let mut i = 0;
+        while i < decimals && i < MAX_DECIMALS {
+            step /= 10.0;
+            i += 1;
+        }
+        Grid { step, decimals: i }
+    }
+
     /// The step.
     pub fn step(&self) -> f64 {
         self.step
@@ -92,6 +103,13 @@ mod tests {
         assert_eq!(g.round(1.04), "1.05");
         assert_eq!(Grid::new(1.0).unwrap().round(2.6), "3");
         assert_eq!(Grid::new(0.0005).unwrap().round(0.00074), "0.0005");
+    }
+
+    #[test]
+    fn decimal_grids() {
+        assert_eq!(Grid::decimal(3), Grid::new(0.001).unwrap());
+        assert_eq!(Grid::decimal(6).round(1.0000004), "1");
+        assert_eq!(Grid::decimal(0).round(2.4), "2");
     }
 
     #[test]

@@ -23,8 +23,8 @@ use super::{PostError, layer_style};
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
 use crate::machine::Bed;
 
-/// Grid of printed SVG coordinates, mm.
-const SVG_STEP_MM: f64 = 0.001;
+/// Decimals of printed SVG coordinates (a 0.001 mm grid).
+const SVG_DECIMALS: usize = 3;
 /// Stroke width, mm: a hairline for laser software.
 const HAIRLINE_MM: &str = "0.025";
 
@@ -45,7 +45,7 @@ pub fn write(plan: &FabPlan, job: &Job, bed: &Bed, dasharray: bool) -> Result<St
         });
     }
     let page = Page {
-        grid: Grid::new(SVG_STEP_MM).expect("a positive constant step"),
+        grid: Grid::decimal(SVG_DECIMALS),
         height_mm: bed.height_mm,
         flip: !bed.y_flipped,
     };
@@ -88,11 +88,11 @@ fn document(page: &Page, bed: &Bed, name: &str, body: &str) -> String {
 fn layer(out: &mut String, plan: &FabPlan, op: Operation, elements: &[String]) {
     let style = layer_style(op);
     let name = op.name();
-    let _ = write!(
+    let _ = writeln!(
         out,
         "  <g id=\"layer-{name}\" inkscape:groupmode=\"layer\" inkscape:label=\"{name}\" \
          fill=\"none\" stroke=\"{}\" stroke-width=\"{HAIRLINE_MM}\" \
-         stroke-linejoin=\"round\">\n",
+         stroke-linejoin=\"round\">",
         style.hex
     );
     let s = plan.settings.get(op);

@@ -24,8 +24,8 @@ use super::number::Grid;
 use super::{DxfVersion, PostError};
 use crate::fab::{Job, Operation};
 
-/// Grid of printed DXF coordinates, mm.
-const DXF_STEP_MM: f64 = 1e-6;
+/// Decimals of printed DXF coordinates (a 1e-6 mm grid).
+const DXF_DECIMALS: usize = 6;
 
 /// One stroke ready to draw: grid counts, repeated points removed, closing point dropped.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,7 +40,7 @@ struct Shape {
 
 /// The job's drawing in `version`.
 pub fn write(job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
-    let grid = Grid::new(DXF_STEP_MM).expect("a positive constant step");
+    let grid = Grid::decimal(DXF_DECIMALS);
     let shapes = shapes(job, &grid);
     if shapes.is_empty() {
         return Err(PostError::EmptyJob {

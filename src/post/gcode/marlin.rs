@@ -27,6 +27,9 @@ impl Flavour for MarlinLaser {
     fn travel_words(&self) -> &str {
         " S0"
     }
+    fn travel_sets_feed(&self) -> bool {
+        true
+    }
     fn tool_on(&self, _s: &str) -> Vec<String> {
         Vec::new()
     }

@@ -28,7 +28,9 @@
 //!   mode, then
 //!   `G1 … S<power>` burns. Marlin's `G0` turns the laser off only when built with
 //!   `LASER_MOVE_G0_OFF`, so every travel carries `S0` (needs `LASER_POWER_INLINE` and
-//!   `LASER_MOVE_POWER`, Marlin 2.0.8 or later). `M5` at the end; Marlin has no `M2`.
+//!   `LASER_MOVE_POWER`, Marlin 2.0.8 or later). Marlin's `G0` shares the modal feed with
+//!   `G1` unless built with `VARIABLE_G0_FEEDRATE`, so travel writes `F<travel feed>` and the
+//!   next burn its own `F` again. `M5` at the end; Marlin has no `M2`.
 //! - LinuxCNC ([`linuxcnc`]): no laser mode, and the spindle output stays on through `G0`, so
 //!   each stroke is framed `M3 S<power>` … `M5`. Motion stops there anyway (the tool must be
 //!   off for the travel that follows). Comments use parentheses; `M2` ends the program; no `%`
@@ -37,7 +39,8 @@
 //!   laser: the profile's `pen_up` lines before every travel (and at the start and end), its
 //!   `pen_down` lines before every stroke, each followed by `G4 P<pen delay>` in the profile's
 //!   dwell unit (seconds on GRBL and LinuxCNC, milliseconds on Marlin); no `S` words except
-//!   those the profile's own pen commands hold. Comments and program end follow the dialect.
+//!   those the profile's own pen commands hold. Comments, travel feed and program end follow
+//!   the dialect.
 //! - `FileOnly` machines take no G-code: [`PostError::NoGcode`].
 
 pub mod grbl;
@@ -64,6 +67,11 @@ pub trait Flavour {
     fn travel_words(&self) -> &str {
         ""
     }
+    /// Whether travel moves carry the travel feed (`G0 … F…`) because the firmware's `G0`
+    /// shares the modal feed with `G1`; the next burn then writes its feed again.
+    fn travel_sets_feed(&self) -> bool {
+        false
+    }
     /// Lines before a stroke burned at power `s` (the printed `S` value).
     fn tool_on(&self, s: &str) -> Vec<String>;
     /// A word for the first burn move of a stroke at power `s`, e.g. `S350`.
@@ -79,7 +87,7 @@ pub trait Flavour {
 /// The G-code of `job` on `machine` (see the module docs).
 pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
     let flavour = flavour(machine)?;
-    let grid = check::machine(machine, flavour.uses_power())?;
+    let grid = check::machine(machine, flavour.uses_power(), flavour.travel_sets_feed())?;
     check::job(job)?;
     for path in &job.paths {
         check::settings(path.op, &plan.settings.get(path.op), flavour.uses_power())?;

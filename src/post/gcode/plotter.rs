@@ -11,12 +11,13 @@ pub struct Pen {
     up: Vec<String>,
     down: Vec<String>,
     parenthesised: bool,
+    travel_feed: bool,
     end: Option<&'static str>,
 }
 
 impl Pen {
     /// The pen of `machine`: its commands, its delay as `G4 P` in its dwell unit, and its
-    /// dialect's comments and program end.
+    /// dialect's comments, travel feed and program end.
     pub fn new(machine: &MachineProfile) -> Self {
         let dwell = dwell(machine.pen_delay_s, machine.dwell_unit);
         let with_dwell = |lines: &[String]| lines.iter().cloned().chain(dwell.clone()).collect();
@@ -24,6 +25,7 @@ impl Pen {
             up: with_dwell(&machine.pen_up),
             down: with_dwell(&machine.pen_down),
             parenthesised: machine.dialect == Dialect::LinuxCnc,
+            travel_feed: machine.dialect == Dialect::Marlin,
             end: (machine.dialect != Dialect::Marlin).then_some("M2"),
         }
     }
@@ -48,6 +50,9 @@ impl Flavour for Pen {
     }
     fn uses_power(&self) -> bool {
         false
+    }
+    fn travel_sets_feed(&self) -> bool {
+        self.travel_feed
     }
     fn start(&self) -> Vec<String> {
         self.up.clone()

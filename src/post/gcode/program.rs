@@ -22,6 +22,16 @@ struct Program<'a> {
     feed: Option<String>,
     /// Strokes burned so far.
     burned: usize,
+    /// ` F…` for travel moves, when the dialect needs it.
+    travel_feed: String,
+}
+
+/// Feed written on travel moves when the dialect shares `G0`'s feed with `G1`.
+fn travel_feed(machine: &MachineProfile) -> String {
+    fixed(
+        machine.travel_feed_mm_min.min(machine.max_feed_mm_min),
+        WORD_DECIMALS,
+    )
 }
 
 /// How one toolpath is burned: the printed feed and power, and the passes.
@@ -46,6 +56,10 @@ pub fn write(
         at: None,
         feed: None,
         burned: 0,
+        travel_feed: match flavour.travel_sets_feed() {
+            true => format!(" F{}", travel_feed(machine)),
+            false => String::new(),
+        },
     };
     p.header(job, machine);
     let mut group = None;
@@ -122,8 +136,7 @@ impl Program<'_> {
     /// Travel to the stroke's start if needed, switch the tool on, burn, switch it off.
     fn stroke(&mut self, points: &[(i64, i64)], burn: &Burn) {
         if self.at != Some(points[0]) {
-            let travel = format!("G0 {}{}", self.xy(points[0]), self.flavour.travel_words());
-            self.lines.push(travel);
+            self.travel(points[0]);
         }
         self.lines.extend(self.flavour.tool_on(&burn.power));
         for (i, &p) in points[1..].iter().enumerate() {
@@ -142,6 +155,16 @@ impl Program<'_> {
         self.at = points.last().copied();
         self.lines.extend(self.flavour.tool_off());
         self.burned += 1;
+    }
+
+    /// A tool-off move to `to`.
+    fn travel(&mut self, to: (i64, i64)) {
+        let words = self.flavour.travel_words();
+        let line = format!("G0 {}{words}{}", self.xy(to), self.travel_feed);
+        self.lines.push(line);
+        if !self.travel_feed.is_empty() {
+            self.feed = None;
+        }
     }
 
     /// `X… Y…` of a grid point.
