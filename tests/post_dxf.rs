@@ -197,3 +197,21 @@ fn ezdxf_audit_is_clean_and_counts_match() {
         assert_eq!(counts, expected(), "{version:?}");
     }
 }
+
+#[test]
+fn the_dxf_crate_reads_back_every_entity_and_layer() {
+    for version in [DxfVersion::R2000, DxfVersion::R12] {
+        let t = text(version);
+        let drawing = ::dxf::Drawing::load(&mut t.as_bytes()).expect("readable DXF");
+        let mut counts = BTreeMap::new();
+        for e in drawing.entities() {
+            *counts.entry(e.common.layer.clone()).or_default() += 1;
+        }
+        assert_eq!(counts, expected(), "{version:?}");
+        let cut = drawing
+            .layers()
+            .find(|l| l.name == "CUT")
+            .expect("CUT layer");
+        assert_eq!(cut.color.index(), Some(1), "{version:?}");
+    }
+}
