@@ -63,6 +63,10 @@ fn parses_with_one_layer_per_operation_in_colour() {
         let width: f64 = g.attribute("stroke-width").unwrap().parse().unwrap();
         assert!(width > 0.0 && width <= 0.1, "hairline");
     }
+    assert!(
+        text.contains("<desc>cut: 300 mm/min, power 80 %, 2 passes</desc>"),
+        "{text}"
+    );
 }
 
 #[test]

@@ -98,8 +98,11 @@ fn layer(out: &mut String, plan: &FabPlan, op: Operation, elements: &[String]) {
     let s = plan.settings.get(op);
     if s.speed_mm_min.is_finite() && s.power.is_finite() {
         let (speed, power) = (fixed(s.speed_mm_min, 3), fixed(s.power * 100.0, 3));
-        let passes = s.passes;
-        let desc = format!("{name}: {speed} mm/min, power {power} %, {passes} pass(es)");
+        let passes = match s.passes {
+            1 => "1 pass".to_string(),
+            n => format!("{n} passes"),
+        };
+        let desc = format!("{name}: {speed} mm/min, power {power} %, {passes}");
         let _ = writeln!(out, "    <desc>{desc}</desc>");
     }
     for element in elements {

@@ -56,9 +56,10 @@ pub fn write(
         at: None,
         feed: None,
         burned: 0,
-        travel_feed: match flavour.travel_sets_feed() {
-            true => format!(" F{}", travel_feed(machine)),
-            false => String::new(),
+        travel_feed: if flavour.travel_sets_feed() {
+            format!(" F{}", travel_feed(machine))
+        } else {
+            String::new()
         },
     };
     p.header(job, machine);
