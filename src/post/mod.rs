@@ -1,7 +1,30 @@
-//! PLACEHOLDER (post work): writers from a plan to machine files.
+//! Post-processors: from a [`FabPlan`]'s job to the files a machine or its software reads.
+//!
+//! - [`gcode()`]: G-code for GRBL 1.1 (laser mode), Marlin (laser, inline power), LinuxCNC and
+//!   pen plotters; millimetres, absolute coordinates rounded to the machine's resolution. The
+//!   dialect choices (how the laser is kept off on travel, how power is set without stopping)
+//!   are documented in [`gcode`](mod@gcode).
+//! - [`dxf()`]: DXF R2000 (`LWPOLYLINE`, `$INSUNITS` = 4, mm) by default or R12 (`LINE` and
+//!   `POLYLINE` only), one named, coloured layer per operation.
+//! - [`svg()`]: SVG in millimetres with one Inkscape layer per operation, hairline strokes in
+//!   LightBurn layer colours (see [`LayerStyle`]).
+//!
+//! Every writer draws each stroke of each toolpath as one element (perforation dashes stay
+//! separate dashes, except in the SVG's `dasharray` mode), validates its input first (no NaN
+//! or infinity reaches a file; see [`PostError`]) and refuses a job with nothing to draw.
+
+mod check;
+mod dxf;
+pub mod gcode;
+mod number;
+mod style;
+mod svg;
+
+pub use check::{MAX_COORD_MM, MAX_RESOLUTION_MM, MIN_RESOLUTION_MM};
+pub use style::{LayerStyle, layer_style};
 
 use crate::fab::{FabPlan, Job};
-use crate::machine::MachineProfile;
+use crate::machine::{Bed, MachineProfile};
 
 /// Why a file could not be written.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -11,6 +34,55 @@ pub enum PostError {
     NoGcode {
         /// The profile name.
         machine: String,
+    },
+    /// The job has no stroke of any length (after rounding to the resolution, for G-code).
+    #[error("job {job} has nothing to draw: every toolpath is empty or of zero length")]
+    EmptyJob {
+        /// The job name.
+        job: String,
+    },
+    /// A coordinate is NaN, infinite or beyond ±1e9 mm.
+    #[error(
+        "job {job}, toolpath {path}, stroke {stroke}: a coordinate is not a finite number \
+         within ±1e9 mm"
+    )]
+    BadCoordinate {
+        /// The job name.
+        job: String,
+        /// Index of the toolpath in the job.
+        path: usize,
+        /// Index of the stroke in the toolpath.
+        stroke: usize,
+    },
+    /// An operation setting cannot be written.
+    #[error("settings for {op}: {key} = {value}: expected {expected}")]
+    BadSetting {
+        /// The operation name.
+        op: &'static str,
+        /// The setting, e.g. `power`.
+        key: &'static str,
+        /// Its value.
+        value: f64,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// The bed has no usable size (SVG page).
+    #[error("bed {width_mm} × {height_mm} mm: expected a finite, positive size")]
+    BadBed {
+        /// Bed width, mm.
+        width_mm: f64,
+        /// Bed depth, mm.
+        height_mm: f64,
+    },
+    /// A machine profile value cannot be written.
+    #[error("machine {machine}: {key} = {message}")]
+    BadMachine {
+        /// The profile name.
+        machine: String,
+        /// The profile key.
+        key: &'static str,
+        /// The value and what was expected.
+        message: String,
     },
 }
 
@@ -24,18 +96,37 @@ pub enum DxfVersion {
     R12,
 }
 
-/// G-code for one job on `machine`.
-pub fn gcode(_plan: &FabPlan, _job: &Job, _machine: &MachineProfile) -> Result<String, PostError> {
-    todo!()
+/// G-code for one job on `machine`, in the machine's dialect.
+///
+/// # Errors
+/// [`PostError::NoGcode`] for a file-only machine; [`PostError::BadMachine`],
+/// [`PostError::BadSetting`] or [`PostError::BadCoordinate`] for numbers that cannot be
+/// written; [`PostError::EmptyJob`] when nothing is left to burn after rounding.
+pub fn gcode(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
+    gcode::write(plan, job, machine)
 }
 
-/// DXF of one job, one layer per operation.
-pub fn dxf(_plan: &FabPlan, _job: &Job, _version: DxfVersion) -> Vec<u8> {
-    todo!()
+/// DXF of one job, one layer per operation, in machine coordinates (mm).
+///
+/// The plan is not read yet: speeds and powers stay with the laser software's layers.
+///
+/// # Errors
+/// [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
+pub fn dxf(_plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
+    check::job(job)?;
+    dxf::write(job, version)
 }
 
-/// SVG of one job, one Inkscape layer per operation; `dasharray` draws perforations as dashed
-/// strokes (for plotting) instead of separate dashes.
-pub fn svg(_plan: &FabPlan, _job: &Job, _dasharray: bool) -> String {
-    todo!()
+/// SVG of one job on `bed`, one Inkscape layer per operation; `dasharray` draws perforations
+/// as dashed strokes (for plotting) instead of separate dashes.
+///
+/// The page is the bed, 1 user unit = 1 mm, seen from above: machine y is flipped back to
+/// SVG's downward y unless the bed's y already points that way (`bed.y_flipped`). Each layer
+/// names its operation's speed, power and passes from `plan` in its `<desc>`.
+///
+/// # Errors
+/// [`PostError::BadBed`], [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
+pub fn svg(plan: &FabPlan, job: &Job, bed: &Bed, dasharray: bool) -> Result<String, PostError> {
+    check::job(job)?;
+    svg::write(plan, job, bed, dasharray)
 }

@@ -1,0 +1,52 @@
+//! GRBL 1.1 in laser mode (`$32=1`): arm once, power inline, `S0` on every travel.
+
+use super::Flavour;
+use crate::machine::LaserMode;
+
+/// The spindle word for a laser mode: `M4` dynamic (power follows speed), `M3` constant.
+pub fn laser_on_word(mode: LaserMode) -> &'static str {
+    match mode {
+        LaserMode::Dynamic => "M4",
+        LaserMode::Constant => "M3",
+    }
+}
+
+/// A GRBL laser.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GrblLaser {
+    mode: LaserMode,
+}
+
+impl GrblLaser {
+    /// A GRBL laser in `mode`.
+    pub fn new(mode: LaserMode) -> Self {
+        GrblLaser { mode }
+    }
+}
+
+impl Flavour for GrblLaser {
+    fn uses_power(&self) -> bool {
+        true
+    }
+    fn start(&self) -> Vec<String> {
+        vec![format!("{} S0", laser_on_word(self.mode))]
+    }
+    fn travel_words(&self) -> &str {
+        " S0"
+    }
+    fn tool_on(&self, _s: &str) -> Vec<String> {
+        Vec::new()
+    }
+    fn burn_word(&self, s: &str) -> Option<String> {
+        Some(format!("S{s}"))
+    }
+    fn tool_off(&self) -> Vec<String> {
+        Vec::new()
+    }
+    fn finish(&self) -> Vec<String> {
+        vec!["M5".into()]
+    }
+    fn program_end(&self) -> Option<&str> {
+        Some("M2")
+    }
+}

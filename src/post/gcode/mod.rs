@@ -1,0 +1,119 @@
+//! G-code writers: GRBL, Marlin, LinuxCNC and pen plotters.
+//!
+//! Every program is millimetres (`G21`) and absolute (`G90`); the dialect's arming line (laser
+//! at zero power, or pen up) follows, then the machine's preamble, then one comment per group of toolpaths of one operation
+//! (`; cut`, or `(cut)` on LinuxCNC), the toolpaths, the tool made safe, the postamble and the
+//! dialect's program end. Travel is `G0`, burns are `G1`.
+//!
+//! **Numbers.** Coordinates are rounded to the machine's `resolution_mm` and printed exactly
+//! (see `number`): no float noise, no `-0`, no exponents. Moves that round to zero length are
+//! skipped, and so are strokes left without length. Feed `F` is the operation's speed clamped
+//! to `max_feed_mm_min`, written on the first burn move and again only when it changes. Power
+//! `S` = `power.min` + fraction × (`power.max` − `power.min`).
+//!
+//! **Passes.** A toolpath with `passes` = n is burned n times in a row, all its strokes each
+//! time (pass after pass over the whole toolpath, not stroke by stroke), so a perforation line
+//! cools between passes and a closed contour repeats without travel.
+//!
+//! **Dialects** (facts from the firmware documentation):
+//!
+//! - GRBL 1.1 with laser mode `$32=1` ([`grbl`]): `M4 S0` (dynamic power) or `M3 S0`
+//!   (constant) once after the preamble; changing M3/M4/M5 makes GRBL stop, changing `S`
+//!   inline does not, so every burn's first `G1` carries its `S`, and every travel is
+//!   `G0 … S0`. GRBL already blanks the laser on `G0` in laser mode; the explicit `S0` keeps
+//!   the laser off even on a controller left in spindle mode. `M5` before the postamble, `M2`.
+//! - Marlin with `LASER_FEATURE` ([`marlin`]): `M3`/`M4` and `M5` wait for all moves to finish,
+//!   so power is set inline instead: `M3 S0 I1` (or `M4 S0 I1`; Marlin reads a bool word as true
+//!   when it is bare or non-zero, and `I1` keeps every word letter+number) once enables inline
+//!   mode, then
+//!   `G1 … S<power>` burns. Marlin's `G0` turns the laser off only when built with
+//!   `LASER_MOVE_G0_OFF`, so every travel carries `S0` (needs `LASER_POWER_INLINE` and
+//!   `LASER_MOVE_POWER`, Marlin 2.0.8 or later). Marlin's `G0` shares the modal feed with
+//!   `G1` unless built with `VARIABLE_G0_FEEDRATE`, so travel writes `F<travel feed>` and the
+//!   next burn its own `F` again. `M5` at the end; Marlin has no `M2`.
+//! - LinuxCNC ([`linuxcnc`]): no laser mode, and the spindle output stays on through `G0`, so
+//!   each stroke is framed `M3 S<power>` … `M5`. Motion stops there anyway (the tool must be
+//!   off for the travel that follows). Comments use parentheses; `M2` ends the program; no `%`
+//!   framing. `M3` is used for both laser modes (`M4` is reverse rotation on LinuxCNC).
+//! - Pen plotters ([`plotter`]), chosen by the `Plotter` dialect or by a machine that is not a
+//!   laser: the profile's `pen_up` lines before every travel (and at the start and end), its
+//!   `pen_down` lines before every stroke, each followed by `G4 P<pen delay>` in the profile's
+//!   dwell unit (seconds on GRBL and LinuxCNC, milliseconds on Marlin); no `S` words except
+//!   those the profile's own pen commands hold. Comments, travel feed and program end follow
+//!   the dialect.
+//! - `FileOnly` machines take no G-code: [`PostError::NoGcode`].
+
+pub mod grbl;
+pub mod linuxcnc;
+pub mod marlin;
+pub mod plotter;
+mod program;
+
+use super::{PostError, check};
+use crate::fab::{FabPlan, Job};
+use crate::machine::{Dialect, MachineKind, MachineProfile};
+
+/// What differs between dialects: arming, switching the tool, comments, the program end.
+pub trait Flavour {
+    /// A comment line holding `text`.
+    fn comment(&self, text: &str) -> String {
+        format!("; {}", one_line(text))
+    }
+    /// Whether burns use the `S` (power) word.
+    fn uses_power(&self) -> bool;
+    /// Lines after the preamble, before the first move.
+    fn start(&self) -> Vec<String>;
+    /// Words appended to every travel move (with a leading space), e.g. ` S0`.
+    fn travel_words(&self) -> &str {
+        ""
+    }
+    /// Whether travel moves carry the travel feed (`G0 … F…`) because the firmware's `G0`
+    /// shares the modal feed with `G1`; the next burn then writes its feed again.
+    fn travel_sets_feed(&self) -> bool {
+        false
+    }
+    /// Lines before a stroke burned at power `s` (the printed `S` value).
+    fn tool_on(&self, s: &str) -> Vec<String>;
+    /// A word for the first burn move of a stroke at power `s`, e.g. `S350`.
+    fn burn_word(&self, s: &str) -> Option<String>;
+    /// Lines after a stroke.
+    fn tool_off(&self) -> Vec<String>;
+    /// Lines after the last stroke, before the postamble.
+    fn finish(&self) -> Vec<String>;
+    /// The program end line after the postamble, if the dialect has one.
+    fn program_end(&self) -> Option<&str>;
+}
+
+/// The G-code of `job` on `machine` (see the module docs).
+pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
+    let flavour = flavour(machine)?;
+    let grid = check::machine(machine, flavour.uses_power(), flavour.travel_sets_feed())?;
+    check::job(job)?;
+    for path in &job.paths {
+        check::settings(path.op, &plan.settings.get(path.op), flavour.uses_power())?;
+    }
+    program::write(plan, job, machine, flavour.as_ref(), grid)
+}
+
+/// The writer for the machine's dialect and kind.
+pub fn flavour(machine: &MachineProfile) -> Result<Box<dyn Flavour>, PostError> {
+    let pen = machine.kind != MachineKind::Laser;
+    Ok(match (machine.dialect, pen) {
+        (Dialect::FileOnly, _) => {
+            return Err(PostError::NoGcode {
+                machine: machine.name.clone(),
+            });
+        }
+        (Dialect::Plotter, _) | (_, true) => Box::new(plotter::Pen::new(machine)),
+        (Dialect::Grbl, false) => Box::new(grbl::GrblLaser::new(machine.laser_mode)),
+        (Dialect::Marlin, false) => Box::new(marlin::MarlinLaser::new(machine.laser_mode)),
+        (Dialect::LinuxCnc, false) => Box::new(linuxcnc::LinuxCncLaser),
+    })
+}
+
+/// `text` on one line: control characters become spaces.
+pub fn one_line(text: &str) -> String {
+    text.chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
+}

@@ -1,0 +1,175 @@
+//! The shared G-code writer: header, toolpath groups, passes, strokes, trailer.
+
+use glam::DVec2;
+
+use super::super::PostError;
+use super::super::number::{Grid, fixed};
+use super::Flavour;
+use crate::fab::{FabPlan, Job, Operation, Toolpath};
+use crate::machine::MachineProfile;
+
+/// Decimals of printed feeds and powers.
+const WORD_DECIMALS: usize = 3;
+
+/// A program under construction.
+struct Program<'a> {
+    lines: Vec<String>,
+    flavour: &'a dyn Flavour,
+    grid: Grid,
+    /// Where the tool is, in grid counts, once known.
+    at: Option<(i64, i64)>,
+    /// The modal feed last written.
+    feed: Option<String>,
+    /// Strokes burned so far.
+    burned: usize,
+    /// ` F…` for travel moves, when the dialect needs it.
+    travel_feed: String,
+}
+
+/// Feed written on travel moves when the dialect shares `G0`'s feed with `G1`.
+fn travel_feed(machine: &MachineProfile) -> String {
+    fixed(
+        machine.travel_feed_mm_min.min(machine.max_feed_mm_min),
+        WORD_DECIMALS,
+    )
+}
+
+/// How one toolpath is burned: the printed feed and power, and the passes.
+struct Burn {
+    feed: String,
+    power: String,
+    passes: u32,
+}
+
+/// The whole program for `job`; inputs already validated.
+pub fn write(
+    plan: &FabPlan,
+    job: &Job,
+    machine: &MachineProfile,
+    flavour: &dyn Flavour,
+    grid: Grid,
+) -> Result<String, PostError> {
+    let mut p = Program {
+        lines: Vec::new(),
+        flavour,
+        grid,
+        at: None,
+        feed: None,
+        burned: 0,
+        travel_feed: if flavour.travel_sets_feed() {
+            format!(" F{}", travel_feed(machine))
+        } else {
+            String::new()
+        },
+    };
+    p.header(job, machine);
+    let mut group = None;
+    for path in &job.paths {
+        p.toolpath(path, &burn(plan, path.op, machine), &mut group);
+    }
+    if p.burned == 0 {
+        return Err(PostError::EmptyJob {
+            job: job.name.clone(),
+        });
+    }
+    p.trailer(machine);
+    Ok(p.lines.join("\n") + "\n")
+}
+
+/// Feed and power of `op` on `machine`.
+fn burn(plan: &FabPlan, op: Operation, machine: &MachineProfile) -> Burn {
+    let s = plan.settings.get(op);
+    let feed = s.speed_mm_min.min(machine.max_feed_mm_min);
+    let power = machine.power.min + s.power * (machine.power.max - machine.power.min);
+    Burn {
+        feed: fixed(feed, WORD_DECIMALS),
+        power: fixed(power, WORD_DECIMALS),
+        passes: s.passes,
+    }
+}
+
+impl Program<'_> {
+    /// Title comment, units, absolute mode, arming (laser at zero or pen up), preamble.
+    fn header(&mut self, job: &Job, machine: &MachineProfile) {
+        let title = format!("foldcam: job {} for machine {}", job.name, machine.name);
+        self.lines.push(self.flavour.comment(&title));
+        self.lines.extend(["G21".to_string(), "G90".to_string()]);
+        self.lines.extend(self.flavour.start());
+        self.lines.extend(machine.preamble.iter().cloned());
+    }
+
+    /// Tool safe, postamble, program end.
+    fn trailer(&mut self, machine: &MachineProfile) {
+        self.lines.extend(self.flavour.finish());
+        self.lines.extend(machine.postamble.iter().cloned());
+        if let Some(end) = self.flavour.program_end() {
+            self.lines.push(end.to_string());
+        }
+    }
+
+    /// All passes of one toolpath, after its group comment when the operation changes.
+    fn toolpath(&mut self, path: &Toolpath, burn: &Burn, group: &mut Option<Operation>) {
+        let strokes: Vec<_> = path.strokes.iter().filter_map(|s| self.snap(s)).collect();
+        if strokes.is_empty() {
+            return;
+        }
+        if *group != Some(path.op) {
+            self.lines.push(self.flavour.comment(path.op.name()));
+            *group = Some(path.op);
+        }
+        for _ in 0..burn.passes {
+            for stroke in &strokes {
+                self.stroke(stroke, burn);
+            }
+        }
+    }
+
+    /// `stroke` in grid counts without repeated points, or `None` if it has no length.
+    fn snap(&self, stroke: &[DVec2]) -> Option<Vec<(i64, i64)>> {
+        let mut points: Vec<_> = stroke
+            .iter()
+            .map(|p| (self.grid.snap(p.x), self.grid.snap(p.y)))
+            .collect();
+        points.dedup();
+        (points.len() >= 2).then_some(points)
+    }
+
+    /// Travel to the stroke's start if needed, switch the tool on, burn, switch it off.
+    fn stroke(&mut self, points: &[(i64, i64)], burn: &Burn) {
+        if self.at != Some(points[0]) {
+            self.travel(points[0]);
+        }
+        self.lines.extend(self.flavour.tool_on(&burn.power));
+        for (i, &p) in points[1..].iter().enumerate() {
+            let mut line = format!("G1 {}", self.xy(p));
+            if i == 0
+                && let Some(word) = self.flavour.burn_word(&burn.power)
+            {
+                line = format!("{line} {word}");
+            }
+            if self.feed.as_deref() != Some(burn.feed.as_str()) {
+                line = format!("{line} F{}", burn.feed);
+                self.feed = Some(burn.feed.clone());
+            }
+            self.lines.push(line);
+        }
+        self.at = points.last().copied();
+        self.lines.extend(self.flavour.tool_off());
+        self.burned += 1;
+    }
+
+    /// A tool-off move to `to`.
+    fn travel(&mut self, to: (i64, i64)) {
+        let words = self.flavour.travel_words();
+        let line = format!("G0 {}{words}{}", self.xy(to), self.travel_feed);
+        self.lines.push(line);
+        if !self.travel_feed.is_empty() {
+            self.feed = None;
+        }
+    }
+
+    /// `X… Y…` of a grid point.
+    fn xy(&self, (x, y): (i64, i64)) -> String {
+        format!("X{} Y{}", self.grid.print(x), self.grid.print(y))
+    }
+}
