@@ -10,7 +10,7 @@ use foldcam::post::{self, DxfVersion};
 
 use super::Outcome;
 use super::args::ScaleArgs;
-use super::fab_args::{FabArgs, load_pattern};
+use super::fab_args::{FabArgs, ProfileArgs, load_pattern};
 use super::input::FrameArg;
 
 /// Output kinds by extension.
@@ -59,6 +59,8 @@ pub struct Args {
     #[command(flatten)]
     pub frame: FrameArg,
     #[command(flatten)]
+    pub profiles: ProfileArgs,
+    #[command(flatten)]
     pub fab: FabArgs,
     #[command(flatten)]
     pub scale: ScaleArgs,
@@ -73,7 +75,7 @@ pub struct Args {
 /// Plans and writes the job files.
 pub fn run(args: Args) -> Result<Outcome> {
     let kind = output_kind(&args.output)?;
-    let (machine, material, options) = args.fab.resolve()?;
+    let (machine, material, options) = args.profiles.resolve(&args.fab)?;
     let cp = load_pattern(&args.input, &args.frame, &args.scale)?;
     let p = plan(&cp, &machine, &material, &options)
         .with_context(|| args.input.display().to_string())?;
@@ -121,9 +123,9 @@ fn render(
             } else {
                 DxfVersion::R2000
             };
-            post::dxf(p, job, version)
+            post::dxf(p, job, version)?
         }
-        Output::Svg => post::svg(p, job, args.dasharray).into_bytes(),
+        Output::Svg => post::svg(p, job, &m.bed, args.dasharray)?.into_bytes(),
     })
 }
 

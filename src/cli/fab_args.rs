@@ -25,9 +25,9 @@ fn operation(s: &str) -> Result<OpChoice, String> {
         })
 }
 
-/// Machine, material and every plan setting a user may override.
+/// The machine and material profiles.
 #[derive(Args, Clone, Debug)]
-pub struct FabArgs {
+pub struct ProfileArgs {
     /// Machine profile: a shipped name (grbl-diode, marlin-laser, linuxcnc-fiber,
     /// grbl-pen-plotter, lightburn) or a path to a TOML file.
     #[arg(long, short = 'm')]
@@ -36,6 +36,18 @@ pub struct FabArgs {
     /// paper-160gsm, polypropylene-0.5) or a path to a TOML file.
     #[arg(long, short = 'x')]
     pub material: String,
+}
+
+impl ProfileArgs {
+    /// Loads both profiles and resolves the plan options.
+    pub fn resolve(&self, fab: &FabArgs) -> Result<(MachineProfile, Material, PlanOptions)> {
+        fab.resolve(&self.machine, &self.material)
+    }
+}
+
+/// Every plan setting a user may override.
+#[derive(Args, Clone, Debug)]
+pub struct FabArgs {
     /// Operation for mountain creases (mark, score, perforate, cut, plot, skip).
     #[arg(long, value_name = "OP", value_parser = operation)]
     pub mountain: Option<OpChoice>,
@@ -89,9 +101,13 @@ pub struct FabArgs {
 
 impl FabArgs {
     /// Loads the profiles and resolves the plan options.
-    pub fn resolve(&self) -> Result<(MachineProfile, Material, PlanOptions)> {
-        let machine = load_machine(&self.machine)?;
-        let material = load_material(&self.material)?;
+    pub fn resolve(
+        &self,
+        machine: &str,
+        material: &str,
+    ) -> Result<(MachineProfile, Material, PlanOptions)> {
+        let machine = load_machine(machine)?;
+        let material = load_material(material)?;
         let mut o = PlanOptions::from_material(&material);
         let m = &mut o.mapping;
         for (slot, arg) in [

@@ -7,7 +7,7 @@ use foldcam::fab::{FabPlan, plan};
 
 use super::Outcome;
 use super::args::ScaleArgs;
-use super::fab_args::{FabArgs, load_pattern};
+use super::fab_args::{FabArgs, ProfileArgs, load_pattern};
 use super::input::FrameArg;
 
 /// Print what cutting a pattern would do: lengths per operation, pierces, travel, time.
@@ -22,6 +22,8 @@ pub struct Args {
     #[command(flatten)]
     pub frame: FrameArg,
     #[command(flatten)]
+    pub profiles: ProfileArgs,
+    #[command(flatten)]
     pub fab: FabArgs,
     #[command(flatten)]
     pub scale: ScaleArgs,
@@ -32,7 +34,7 @@ pub struct Args {
 
 /// Plans and prints the statistics.
 pub fn run(args: Args) -> Result<Outcome> {
-    let (machine, material, options) = args.fab.resolve()?;
+    let (machine, material, options) = args.profiles.resolve(&args.fab)?;
     let cp = load_pattern(&args.input, &args.frame, &args.scale)?;
     let p = plan(&cp, &machine, &material, &options)
         .with_context(|| args.input.display().to_string())?;

@@ -4,14 +4,14 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
-use foldcam::fab::{PlanOptions, plan};
+use foldcam::fab::plan;
 use foldcam::formats::{read_text, write_atomic};
-use foldcam::machine::{load_machine, load_material};
+use foldcam::machine::load_machine;
 use foldcam::sim::{self, CoverageReport, SimReport};
 
 use super::Outcome;
 use super::args::ScaleArgs;
-use super::fab_args::load_pattern;
+use super::fab_args::{FabArgs, load_pattern};
 use super::input::FrameArg;
 
 /// Run a G-code job on a simulated machine: violations, lengths, time, coverage.
@@ -21,8 +21,8 @@ use super::input::FrameArg;
                   the bed, the laser on during travel, power out of range and unknown words are \
                   reported with their line; burn length per power, travel, pierces and a time \
                   estimate with acceleration are printed. With --pattern and --material the job \
-                  is also checked against the pattern (re-planned with the material's default \
-                  operations): every crease covered at its duty cycle, every cut edge cut, \
+                  is also checked against the pattern (re-planned with the same options as given \
+                  to `foldcam cut`): every crease covered at its duty cycle, every cut edge cut, \
                   nothing cut that should not be.\n\nExit status: 0 clean, 1 violations or \
                   coverage faults, 2 bad input.",
     after_help = "Examples:\n  foldcam simulate miura.gcode --machine grbl-diode --png path.png\n  \
@@ -49,9 +49,9 @@ pub struct Args {
     /// Material the job was planned for (with --pattern).
     #[arg(long, short = 'x')]
     pub material: Option<String>,
-    /// The job was planned two-sided; check the job named by --side.
-    #[arg(long)]
-    pub two_sided: bool,
+    /// The plan settings the job was made with (as given to `foldcam cut`).
+    #[command(flatten)]
+    pub fab: FabArgs,
     /// Which job of the plan this file is (front or back).
     #[arg(long, default_value = "front")]
     pub side: String,
@@ -96,11 +96,8 @@ fn check_coverage(
     pattern: &std::path::Path,
     material: &str,
 ) -> Result<CoverageReport> {
-    let machine = load_machine(&args.machine)?;
-    let material = load_material(material)?;
+    let (machine, material, options) = args.fab.resolve(&args.machine, material)?;
     let cp = load_pattern(pattern, &args.frame, &args.scale)?;
-    let mut options = PlanOptions::from_material(&material);
-    options.two_sided = args.two_sided;
     let p =
         plan(&cp, &machine, &material, &options).with_context(|| pattern.display().to_string())?;
     let Some(job) = p.jobs.iter().find(|j| j.name == args.side) else {

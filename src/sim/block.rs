@@ -86,6 +86,9 @@ pub(crate) fn decode(words: &[Word], dialect: Dialect) -> Result<Block, BlockErr
             'F' => set(&mut b.f, w)?,
             'S' => set(&mut b.s, w)?,
             'P' => set(&mut b.p, w)?,
+            // Marlin's `M3/M4 … I1` turns on inline laser power (power follows each move's
+            // `S`), which is how this simulator models every laser already.
+            'I' if dialect == Dialect::Marlin => {}
             other => {
                 return Err(error(
                     ViolationKind::UnknownWord,

@@ -78,8 +78,10 @@ impl Frame {
         } else {
             1.0
         };
-        // A line-shaped pattern still needs a non-zero viewBox side.
-        let size = (max - min).max(DVec2::splat(extent * 1e-3));
+        // A line-shaped pattern still needs a non-zero viewBox side, and not a sliver: usvg
+        // resolves coordinates in f32, and a viewBox a thousand times wider than tall costs
+        // about 1e-5 of the extent in precision (seen as drift on repeated round trips).
+        let size = (max - min).max(DVec2::splat(extent * 0.1));
         let center = (min + max) / 2.0;
         let min = DVec2::new(
             if max.x > min.x {
