@@ -3,9 +3,7 @@
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use foldcam::fab::{Operation, PlanOptions, Tabs};
-use foldcam::machine::{
-    MachineKind, MachineProfile, Material, OperationMapping, load_machine, load_material,
-};
+use foldcam::machine::{MachineProfile, Material, load_machine, load_material};
 
 use super::args::positive;
 
@@ -121,7 +119,7 @@ impl FabArgs {
                 *slot = op;
             }
         }
-        adapt_to_machine(&machine, &mut o.mapping)?;
+        o.adapt_to_machine(&machine)?;
         let p = &mut o.perforation;
         p.cut_mm = self.dash.unwrap_or(p.cut_mm);
         p.bridge_mm = self.bridge.unwrap_or(p.bridge_mm);
@@ -144,38 +142,6 @@ impl FabArgs {
         o.optimize = !self.no_optimize;
         Ok((machine, material, o))
     }
-}
-
-/// A pen plotter draws every line the material would burn (the material's perforate and
-/// score settings mean nothing to a pen); any other machine must support every operation the
-/// mapping asks for.
-fn adapt_to_machine(machine: &MachineProfile, mapping: &mut OperationMapping) -> Result<()> {
-    let slots = [
-        &mut mapping.mountain,
-        &mut mapping.valley,
-        &mut mapping.unassigned,
-        &mut mapping.flat,
-        &mut mapping.boundary,
-    ];
-    let plotter = machine.kind == MachineKind::Plotter;
-    let mut unsupported = Vec::new();
-    for op in slots.into_iter().flatten() {
-        if plotter && *op != Operation::Mark {
-            *op = Operation::Plot;
-        } else if !machine.supports(*op) {
-            unsupported.push(op.name());
-        }
-    }
-    if !unsupported.is_empty() {
-        unsupported.dedup();
-        bail!(
-            "machine {} cannot {}: choose other operations (--mountain, --valley, --flat, \
-             --boundary) or another machine",
-            machine.name,
-            unsupported.join(" or ")
-        );
-    }
-    Ok(())
 }
 
 /// Loads, cleans and sizes the input pattern.

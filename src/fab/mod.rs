@@ -208,6 +208,42 @@ impl PlanOptions {
     }
 }
 
+impl PlanOptions {
+    /// Fits the operation mapping to `machine`: a pen plotter draws every line a laser would
+    /// burn (perforate and score mean nothing to a pen; marks stay marks), and any other
+    /// machine must support every operation the mapping uses.
+    pub fn adapt_to_machine(
+        &mut self,
+        machine: &crate::machine::MachineProfile,
+    ) -> Result<(), FabError> {
+        let m = &mut self.mapping;
+        let slots = [
+            &mut m.mountain,
+            &mut m.valley,
+            &mut m.unassigned,
+            &mut m.flat,
+            &mut m.boundary,
+        ];
+        let plotter = machine.kind == crate::machine::MachineKind::Plotter;
+        let mut unsupported: Vec<&'static str> = Vec::new();
+        for op in slots.into_iter().flatten() {
+            if plotter && *op != Operation::Mark {
+                *op = Operation::Plot;
+            } else if !machine.supports(*op) && !unsupported.contains(&op.name()) {
+                unsupported.push(op.name());
+            }
+        }
+        if unsupported.is_empty() {
+            Ok(())
+        } else {
+            Err(FabError::Unsupported {
+                machine: machine.name.clone(),
+                operations: unsupported.join(" or "),
+            })
+        }
+    }
+}
+
 /// Why a plan could not be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FabError {
@@ -228,6 +264,17 @@ pub enum FabError {
         bed_width: f64,
         /// Bed height, mm.
         bed_height: f64,
+    },
+    /// The machine cannot do an operation the mapping asks for.
+    #[error(
+        "machine {machine} cannot {operations}: choose other operations (--mountain, --valley, \
+         --flat, --boundary) or another machine"
+    )]
+    Unsupported {
+        /// The machine profile's name.
+        machine: String,
+        /// The operations it lacks, joined with "or".
+        operations: String,
     },
     /// No edge maps to an operation.
     #[error("nothing to do: no edge of the pattern maps to an operation")]

@@ -207,7 +207,8 @@ struct PowerMatch<'a> {
 
 impl PowerMatch<'_> {
     fn fits(&self, burn: usize, op: Operation) -> bool {
-        if op == Operation::Plot {
+        // A pen has no power: on a plotter every stroke may realise any operation.
+        if op == Operation::Plot || self.report.dialect == crate::machine::Dialect::Plotter {
             return true;
         }
         let Some(b) = self.report.burns.get(burn) else {
