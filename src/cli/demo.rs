@@ -2,7 +2,9 @@
 //!
 //! Generates the classic patterns, adds the sample files bundled in the binary (from
 //! `examples/patterns/`), and for each: writes FOLD, SVG and `.cp`, reads every file back and
-//! compares it with the original, checks it, and draws a preview with faults ringed.
+//! compares it with the original, checks it, and draws a preview with faults ringed; then
+//! plans three of them for a laser, a fiber laser and a pen plotter, writes the G-code, reads
+//! it back on the simulated machine, checks coverage and draws the toolpath.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -10,9 +12,12 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use foldcam::check::{CheckOptions, check};
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
+use foldcam::fab::{PlanOptions, plan};
 use foldcam::formats::{self, Format, write_atomic};
+use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, Units, planarize};
 use foldcam::render::{PreviewOptions, preview_png};
+use foldcam::{post, sim};
 
 use super::Outcome;
 
@@ -106,6 +111,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     if !failures.is_empty() {
         bail!("round trip lost data for: {}", failures.join(", "));
     }
+    machine_jobs(&args.out, &cases)?;
     Ok(Outcome::Done)
 }
 
@@ -175,4 +181,58 @@ fn compare(a: &CreasePattern, b: &CreasePattern, cp_vocabulary: bool) -> String 
     } else {
         "lengths differ".into()
     }
+}
+
+/// Machine jobs for the first two classics: planned, written, read back by the simulated
+/// machine and checked against the pattern; the toolpath drawn.
+fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
+    let jobs = [
+        ("miura-ori", "grbl-diode", "card-300gsm", "gcode"),
+        ("square-twist", "linuxcnc-fiber", "stainless-0.5", "ngc"),
+        ("yoshimura", "grbl-pen-plotter", "paper-160gsm", "gcode"),
+    ];
+    println!(
+        "\n{:<14} {:<17} {:<15} {:>9} {:>8} {:>9}  sim / coverage",
+        "pattern", "machine", "material", "burn mm", "pierces", "time"
+    );
+    for (name, machine_name, material_name, ext) in jobs {
+        let Some((_, cp)) = cases.iter().find(|(n, _)| n == name) else {
+            continue;
+        };
+        let machine = load_machine(machine_name)?;
+        let material = load_material(material_name)?;
+        let mut options = PlanOptions::from_material(&material);
+        options.adapt_to_machine(&machine)?;
+        let p = plan(cp, &machine, &material, &options)?;
+        let job = &p.jobs[0];
+        let gcode = post::gcode(&p, job, &machine)?;
+        let run = sim::run(&gcode, &machine)?;
+        let cov = sim::coverage(&run, cp, job, &p);
+        let path = dir.join(format!("{name}.{machine_name}.{ext}"));
+        write_atomic(&path, gcode.as_bytes()).with_context(|| path.display().to_string())?;
+        let png = dir.join(format!("{name}.{machine_name}.toolpath.png"));
+        let image = sim::render_png(&run, &machine, 900).map_err(|e| anyhow::anyhow!("{e}"))?;
+        write_atomic(&png, &image).with_context(|| png.display().to_string())?;
+        let verdict = if run.is_clean() && cov.passed() {
+            "clean / all edges as planned".to_string()
+        } else {
+            format!(
+                "{} violations / {} edges off",
+                run.violation_count,
+                cov.failed_edges().count()
+            )
+        };
+        println!(
+            "{:<14} {:<17} {:<15} {:>9.0} {:>8} {:>8.0}s  {}",
+            name, machine_name, material_name, run.burn_length_mm, run.pierces, run.time_s, verdict
+        );
+        if !(run.is_clean() && cov.passed()) {
+            bail!("{name} on {machine_name}: the simulated machine found problems");
+        }
+    }
+    println!(
+        "machine jobs and toolpath previews are in {}/",
+        dir.display()
+    );
+    Ok(())
 }

@@ -16,30 +16,56 @@ use crate::render::{MAX_SIZE, MIN_SIZE, RenderError};
 /// Margin around the bed, as a share of the width.
 const MARGIN_SHARE: f64 = 0.04;
 
-/// Maps bed millimetres to pixels.
+/// Maps machine millimetres in the visible region to pixels.
 struct View {
     scale: f64,
     margin: f64,
-    bed_height: f64,
+    /// Lower corner of the visible region, machine mm.
+    lo: DVec2,
+    /// Height of the visible region, mm.
+    height: f64,
     y_flipped: bool,
 }
 
 impl View {
     fn px(&self, p: DVec2) -> (f32, f32) {
         let y = if self.y_flipped {
-            p.y
+            p.y - self.lo.y
         } else {
-            self.bed_height - p.y
+            self.lo.y + self.height - p.y
         };
         (
-            (self.margin + p.x * self.scale) as f32,
+            (self.margin + (p.x - self.lo.x) * self.scale) as f32,
             (self.margin + y * self.scale) as f32,
         )
     }
 }
 
+/// The region drawn: the whole bed, or, when the job (with the origin it starts from) covers
+/// less than half of the bed both ways, the job's bounds with a 5 % border, so a small job on
+/// a large bed is not a speck.
+fn region(report: &SimReport, bed: &crate::machine::Bed) -> (DVec2, DVec2) {
+    let whole = (DVec2::ZERO, DVec2::new(bed.width_mm, bed.height_mm));
+    let points = report
+        .burns
+        .iter()
+        .flat_map(|b| [b.from, b.to])
+        .chain(report.travels.iter().flat_map(|t| [t.from, t.to]))
+        .filter(|p| p.is_finite());
+    let (lo, hi) = points.fold((DVec2::ZERO, DVec2::ZERO), |(lo, hi), p| {
+        (lo.min(p), hi.max(p))
+    });
+    let size = hi - lo;
+    if size.x > 0.5 * bed.width_mm || size.y > 0.5 * bed.height_mm || size.max_element() <= 0.0 {
+        return whole;
+    }
+    let border = DVec2::splat(0.05 * size.max_element());
+    (lo - border, size + 2.0 * border)
+}
+
 /// Draws `report` on the bed of `machine` as PNG bytes, `width` pixels wide (16 to 16384; the
-/// height follows the bed's aspect ratio, at most 16384 pixels).
+/// height follows the drawn region's aspect ratio, at most 16384 pixels). The region is the bed,
+/// or the job's neighbourhood when the job is small on a large bed.
 pub fn render_png(
     report: &SimReport,
     machine: &MachineProfile,
@@ -48,7 +74,7 @@ pub fn render_png(
     if !(MIN_SIZE..=MAX_SIZE).contains(&width) {
         return Err(RenderError::Width(width));
     }
-    let (view, height) = layout(machine, width)?;
+    let (view, height) = layout(machine, region(report, &machine.bed), width)?;
     let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::Allocation { width, height })?;
     pixmap.fill(Color::WHITE);
     let lw = (width as f32 / 800.0).max(1.0);
@@ -60,7 +86,11 @@ pub fn render_png(
         .map_err(|e| RenderError::Encode(e.to_string()))
 }
 
-fn layout(machine: &MachineProfile, width: u32) -> Result<(View, u32), RenderError> {
+fn layout(
+    machine: &MachineProfile,
+    (lo, size): (DVec2, DVec2),
+    width: u32,
+) -> Result<(View, u32), RenderError> {
     let bed = machine.bed;
     let valid = |v: f64| v.is_finite() && v > 0.0;
     if !(valid(bed.width_mm) && valid(bed.height_mm)) {
@@ -71,14 +101,15 @@ fn layout(machine: &MachineProfile, width: u32) -> Result<(View, u32), RenderErr
         });
     }
     let margin = (f64::from(width) * MARGIN_SHARE).round();
-    let mut scale = (f64::from(width) - 2.0 * margin) / bed.width_mm;
+    let mut scale = (f64::from(width) - 2.0 * margin) / size.x;
     let max_h = f64::from(MAX_SIZE) - 2.0 * margin;
-    scale = scale.min(max_h / bed.height_mm);
-    let height = (bed.height_mm * scale + 2.0 * margin).ceil().max(1.0) as u32;
+    scale = scale.min(max_h / size.y);
+    let height = (size.y * scale + 2.0 * margin).ceil().max(1.0) as u32;
     let view = View {
         scale,
         margin,
-        bed_height: bed.height_mm,
+        lo,
+        height: size.y,
         y_flipped: bed.y_flipped,
     };
     Ok((view, height.min(MAX_SIZE)))
