@@ -345,3 +345,199 @@ fn piles_of_identical_lines_clean_quickly_to_one_edge() {
         .pattern;
     assert_eq!(cp.edges.len(), 1);
 }
+
+#[test]
+fn cut_writes_jobs_the_simulated_machine_accepts() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let src = example("flat-vertex.fold");
+    let o = foldcam(
+        &[
+            "cut",
+            &src,
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "-o",
+            "job.gcode",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(text(&o.stdout).contains("pierces"), "plan summary printed");
+    let o = foldcam(
+        &[
+            "simulate",
+            "job.gcode",
+            "-m",
+            "grbl-diode",
+            "--png",
+            "path.png",
+            "--pattern",
+            &src,
+            "-x",
+            "card-300gsm",
+        ],
+        dir.path(),
+    );
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+    assert!(text(&o.stdout).contains("PASS"));
+    assert!(image::open(dir.path().join("path.png")).is_ok());
+    // Two-sided: one file per job.
+    let o = foldcam(
+        &[
+            "cut",
+            &src,
+            "-m",
+            "linuxcnc-fiber",
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "two.ngc",
+            "--two-sided",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let files = listing(dir.path());
+    assert!(
+        files.contains(&"two.front.ngc".to_string()) && files.contains(&"two.back.ngc".to_string()),
+        "{files:?}"
+    );
+    // DXF and SVG for a file-only machine.
+    for out in ["job.dxf", "job.svg"] {
+        let o = foldcam(
+            &[
+                "cut",
+                &src,
+                "-m",
+                "lightburn",
+                "-x",
+                "stainless-0.5",
+                "-o",
+                out,
+            ],
+            dir.path(),
+        );
+        assert!(o.status.success(), "{out}: {}", text(&o.stderr));
+    }
+    // G-code for a file-only machine is refused.
+    let o = foldcam(
+        &[
+            "cut",
+            &src,
+            "-m",
+            "lightburn",
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "no.gcode",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!listing(dir.path()).contains(&"no.gcode".to_string()));
+}
+
+#[test]
+fn cut_refuses_what_cannot_be_made_without_writing() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let cases: Vec<(Vec<String>, &str)> = vec![
+        // ORIPA files have no size.
+        (
+            vec![
+                example("preliminary-base.cp"),
+                "-m".into(),
+                "grbl-diode".into(),
+                "-x".into(),
+                "card-300gsm".into(),
+            ],
+            "--size",
+        ),
+        // 2 m does not fit a 400 mm bed.
+        (
+            vec![
+                example("flat-vertex.fold"),
+                "--size".into(),
+                "2000".into(),
+                "-m".into(),
+                "grbl-diode".into(),
+                "-x".into(),
+                "card-300gsm".into(),
+            ],
+            "does not fit",
+        ),
+        // Unknown profiles list the shipped ones.
+        (
+            vec![
+                example("flat-vertex.fold"),
+                "-m".into(),
+                "nope".into(),
+                "-x".into(),
+                "card-300gsm".into(),
+            ],
+            "grbl-diode",
+        ),
+        // A laser cannot plot.
+        (
+            vec![
+                example("flat-vertex.fold"),
+                "-m".into(),
+                "grbl-diode".into(),
+                "-x".into(),
+                "card-300gsm".into(),
+                "--mountain".into(),
+                "plot".into(),
+            ],
+            "cannot plot",
+        ),
+    ];
+    for (mut args, expect) in cases {
+        args.insert(0, "cut".into());
+        args.extend(["-o".into(), "out.gcode".into()]);
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = foldcam(&refs, dir.path());
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", text(&o.stderr));
+        assert!(
+            text(&o.stderr).contains(expect),
+            "{args:?}: {}",
+            text(&o.stderr)
+        );
+        assert!(listing(dir.path()).is_empty(), "{args:?} left output");
+    }
+}
+
+#[test]
+fn simulate_reports_violations_with_exit_1() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let job = "G21\nG90\nM4 S0\nG0 X10 Y10\nG1 X900 Y10 S500 F1000\nM5\nM2\n";
+    std::fs::write(dir.path().join("bad.gcode"), job).expect("write");
+    let o = foldcam(&["simulate", "bad.gcode", "-m", "grbl-diode"], dir.path());
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stdout));
+    assert!(
+        text(&o.stdout).contains("line      5"),
+        "{}",
+        text(&o.stdout)
+    );
+    let o = foldcam(
+        &[
+            "plan",
+            &example("flat-vertex.fold"),
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "--json",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let stats: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert!(stats["pierces"].as_u64().unwrap_or(0) > 0);
+}
