@@ -78,7 +78,11 @@ fn document(page: &Page, bed: &Bed, name: &str, body: &str) -> String {
         out,
         "version=\"1.1\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">"
     );
-    let _ = writeln!(out, "  <title>foldcam job {}</title>", escape(name));
+    let _ = writeln!(
+        out,
+        "  <title>foldcam job {}</title>",
+        crate::formats::svg::write::escape(name)
+    );
     out.push_str(body);
     out.push_str("</svg>\n");
     out
@@ -186,20 +190,4 @@ impl Page {
         };
         points.windows(2).map(segment).sum()
     }
-}
-
-/// `text` with XML's special characters escaped.
-fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            c if c.is_control() => out.push(' '),
-            c => out.push(c),
-        }
-    }
-    out
 }

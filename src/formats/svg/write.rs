@@ -156,8 +156,8 @@ fn write_kind(out: &mut String, pattern: &CreasePattern, frame: &Frame, assignme
     }
 }
 
-/// Escapes text for XML content and attribute values.
-fn escape(text: &str) -> String {
+/// Escapes text for XML content and attribute values (also used by the job SVG writer).
+pub(crate) fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
