@@ -33,11 +33,15 @@ pub enum Outcome {
     about = "Crease patterns to machine files: import, convert, check and preview fold designs",
     long_about = "foldcam reads crease patterns (FOLD 1.2, Origami Simulator SVG, ORIPA .cp), \
                   cleans them into planar graphs, checks local flat-foldability and fabrication \
-                  limits, draws previews and writes them back in any of those formats.\n\n\
+                  limits, draws previews and writes them back in any of those formats; it plans \
+                  them for laser cutters and pen plotters (perforations, scores, cuts with kerf) \
+                  and writes G-code, DXF or SVG, checked on a simulated machine.\n\n\
                   Exit status: 0 success, 1 a check failed, 2 bad usage or bad input.",
     after_help = "Examples:\n  foldcam demo\n  foldcam generate miura -o miura.fold\n  \
                   foldcam convert pattern.cp pattern.fold\n  foldcam check pattern.fold --min-vertex-angle 30\n  \
-                  foldcam preview pattern.svg -o pattern.png --check"
+                  foldcam preview pattern.svg -o pattern.png --check\n  \
+                  foldcam cut pattern.fold -m grbl-diode -x card-300gsm -o job.gcode\n  \
+                  foldcam simulate job.gcode -m grbl-diode --png toolpath.png"
 )]
 struct Cli {
     #[command(subcommand)]
@@ -52,7 +56,7 @@ enum Command {
     Check(check::Args),
     /// Draw a crease pattern as a PNG.
     Preview(preview::Args),
-    /// Generate a classic pattern: Miura-ori, square twist, waterbomb, Yoshimura, grid.
+    /// Generate a classic pattern: Miura-ori (or a square grid), square twist, waterbomb, Yoshimura.
     Generate(generate::Args),
     /// Plan a pattern for a machine and material and write G-code, DXF or SVG.
     Cut(cut::Args),
