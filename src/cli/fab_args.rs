@@ -23,6 +23,18 @@ fn operation(s: &str) -> Result<OpChoice, String> {
         })
 }
 
+/// Parses a duty cycle strictly between 0 and 1.
+fn duty_cycle(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
+    if v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        Err(format!(
+            "{s} must be between 0 and 1 (the cut share of each period)"
+        ))
+    }
+}
+
 /// The machine and material profiles.
 #[derive(Args, Clone, Debug)]
 pub struct ProfileArgs {
@@ -65,8 +77,18 @@ pub struct FabArgs {
     #[arg(long, value_name = "MM", value_parser = positive)]
     pub dash: Option<f64>,
     /// Perforation bridge (uncut) length, mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = positive, conflicts_with = "duty")]
     pub bridge: Option<f64>,
+    /// Perforation duty cycle instead of a bridge length: the cut share of each dash period,
+    /// between 0 and 1 (exclusive); the bridge becomes dash × (1 − duty) / duty.
+    #[arg(long, value_name = "SHARE", value_parser = duty_cycle)]
+    pub duty: Option<f64>,
+    /// Shortest perforation dash worth cutting, mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub min_dash: Option<f64>,
+    /// Least uncut material between two cuts (the web), mm.
+    #[arg(long, value_name = "MM", value_parser = positive)]
+    pub min_web: Option<f64>,
     /// Uncut clearance kept around every vertex at least, mm.
     #[arg(long, value_name = "MM", value_parser = positive)]
     pub clearance: Option<f64>,
@@ -123,6 +145,11 @@ impl FabArgs {
         let p = &mut o.perforation;
         p.cut_mm = self.dash.unwrap_or(p.cut_mm);
         p.bridge_mm = self.bridge.unwrap_or(p.bridge_mm);
+        if let Some(duty) = self.duty {
+            p.bridge_mm = p.cut_mm * (1.0 - duty) / duty;
+        }
+        p.min_dash_mm = self.min_dash.unwrap_or(p.min_dash_mm);
+        p.min_web_mm = self.min_web.unwrap_or(p.min_web_mm);
         p.vertex_clearance_mm = self.clearance.unwrap_or(p.vertex_clearance_mm);
         o.kerf_mm = self.kerf.unwrap_or(o.kerf_mm);
         o.kerf_offset = !self.no_kerf_offset;
