@@ -12,17 +12,23 @@
 //! handed to tiny-skia as f32 pixel coordinates. Cost: one path per assignment, with the edges
 //! of each straight crease line chained into one polyline so dashes run on across vertices.
 
+pub mod animation;
 mod chain;
 pub mod font;
 pub mod layout;
 mod preview;
+pub mod shade;
 pub mod style;
+pub mod view3d;
 
 use crate::check::Finding;
 use crate::pattern::CreasePattern;
 
+pub use animation::render_gif;
 pub use layout::{MAX_SIZE, MIN_SIZE};
 pub use preview::render_pixmap;
+pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
+pub use view3d::View3d;
 
 /// Options of [`preview_png`].
 #[derive(Clone, Debug, PartialEq)]
@@ -91,6 +97,29 @@ pub enum RenderError {
     /// PNG encoding failed.
     #[error("PNG encoding failed: {0}")]
     Encode(String),
+    /// A folded state has no faces with three or more corners.
+    #[error("the folded state has no faces to draw")]
+    NoFaces,
+    /// A position is NaN, infinite or beyond the coordinate limit.
+    #[error("vertex {vertex} has a non-finite or out-of-range position")]
+    Position {
+        /// The vertex.
+        vertex: crate::pattern::VertexId,
+    },
+    /// A face names a vertex that has no position.
+    #[error("face {face} names vertex {vertex}, which has no position")]
+    MissingVertex {
+        /// The face.
+        face: crate::pattern::FaceId,
+        /// The missing vertex.
+        vertex: crate::pattern::VertexId,
+    },
+    /// An animation was asked for without any folded state.
+    #[error("an animation needs at least one folded state")]
+    NoFrames,
+    /// GIF encoding failed.
+    #[error("GIF encoding failed: {0}")]
+    GifEncode(String),
 }
 
 /// Draws a pattern as PNG bytes, highlighting `faults`.

@@ -1,0 +1,397 @@
+//! The 3D preview of folded states: shading, painter's order, outlines, holes, GIF frames
+//! and input errors.
+
+use foldcam::pattern::{Assignment, Edge, Face, FaceId, FoldedState, VertexId};
+use foldcam::render::{RenderError, View3d, render_folded_png, render_folded_rgba, render_gif};
+use glam::{DVec2, DVec3};
+use image::codecs::gif::GifDecoder;
+use image::{AnimationDecoder, Rgba, RgbaImage};
+
+use Assignment::{Boundary as B, Mountain as M, Valley as V};
+
+fn ids(v: &[u32]) -> Vec<VertexId> {
+    v.iter().map(|&i| VertexId(i)).collect()
+}
+
+fn edge(a: u32, b: u32, kind: Assignment) -> Edge {
+    Edge::new(VertexId(a), VertexId(b), kind)
+}
+
+/// A 100 × 100 sheet with a crease of kind `crease` at y = 50, its far half lifted by
+/// `angle_deg` about the crease (90° stands it upright: an "L").
+fn l_fold(angle_deg: f64, crease: Assignment) -> FoldedState {
+    let (s, c) = angle_deg.to_radians().sin_cos();
+    let lifted = |x: f64| DVec3::new(x, 50.0 + 50.0 * c, 50.0 * s);
+    FoldedState {
+        positions: vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(100.0, 0.0, 0.0),
+            DVec3::new(100.0, 50.0, 0.0),
+            DVec3::new(0.0, 50.0, 0.0),
+            lifted(100.0),
+            lifted(0.0),
+        ],
+        edges: vec![
+            edge(0, 1, B),
+            edge(1, 2, B),
+            edge(2, 3, crease),
+            edge(3, 0, B),
+            edge(2, 4, B),
+            edge(4, 5, B),
+            edge(5, 3, B),
+        ],
+        faces: Some(vec![
+            Face::simple(ids(&[0, 1, 2, 3])),
+            Face::simple(ids(&[3, 2, 4, 5])),
+        ]),
+        face_orders: Vec::new(),
+    }
+}
+
+/// A strip of `panels` 100 × 40 panels folded like an accordion, alternating mountain and
+/// valley, each panel tilted by ±`angle_deg` / 2 from the horizontal.
+fn accordion(panels: u32, angle_deg: f64) -> FoldedState {
+    let half = (0.5 * angle_deg).to_radians();
+    let mut yz = vec![DVec2::ZERO];
+    for i in 0..panels {
+        let tilt = if i % 2 == 0 { half } else { -half };
+        let last = yz[yz.len() - 1];
+        yz.push(last + 40.0 * DVec2::new(tilt.cos(), tilt.sin()));
+    }
+    let mut state = FoldedState::default();
+    for p in &yz {
+        state.positions.push(DVec3::new(0.0, p.x, p.y));
+        state.positions.push(DVec3::new(100.0, p.x, p.y));
+    }
+    let mut faces = Vec::new();
+    for i in 0..panels {
+        let (l0, r0, l1, r1) = (2 * i, 2 * i + 1, 2 * i + 2, 2 * i + 3);
+        faces.push(Face::simple(ids(&[l0, r0, r1, l1])));
+        state.edges.push(edge(l0, l1, B));
+        state.edges.push(edge(r0, r1, B));
+    }
+    state.edges.push(edge(0, 1, B));
+    state.edges.push(edge(2 * panels, 2 * panels + 1, B));
+    for i in 1..panels {
+        let kind = if i % 2 == 1 { M } else { V };
+        state.edges.push(edge(2 * i, 2 * i + 1, kind));
+    }
+    state.faces = Some(faces);
+    state
+}
+
+/// The documented projection and framing: orthographic camera, union bounding box of the
+/// given points, uniform scale into the image inside the margin, centred.
+fn to_px(view: &View3d, img: &RgbaImage, all: &[DVec3], p: DVec3) -> (u32, u32) {
+    let (sa, ca) = view.azimuth_deg.to_radians().sin_cos();
+    let (se, ce) = view.elevation_deg.to_radians().sin_cos();
+    let right = DVec3::new(ca, sa, 0.0);
+    let eye = DVec3::new(ce * sa, -ce * ca, se);
+    let up = eye.cross(right);
+    let screen = |q: DVec3| DVec2::new(q.dot(right), q.dot(up));
+    let (mut lo, mut hi) = (screen(all[0]), screen(all[0]));
+    for &q in all {
+        lo = lo.min(screen(q));
+        hi = hi.max(screen(q));
+    }
+    let (w, h) = (f64::from(img.width()), f64::from(img.height()));
+    let m = f64::from(view.margin);
+    let scale = ((w - 2.0 * m) / (hi.x - lo.x)).min((h - 2.0 * m) / (hi.y - lo.y));
+    let c = 0.5 * (lo + hi);
+    let s = screen(p);
+    let x = 0.5 * w + (s.x - c.x) * scale;
+    let y = 0.5 * h - (s.y - c.y) * scale;
+    (x as u32, y as u32)
+}
+
+fn centroid(state: &FoldedState, face: usize) -> DVec3 {
+    let outer = &state.faces.as_ref().expect("faces")[face].outer;
+    outer
+        .iter()
+        .map(|v| state.positions[v.index()])
+        .sum::<DVec3>()
+        / outer.len() as f64
+}
+
+fn near(img: &RgbaImage, (x, y): (u32, u32), r: u32, pred: impl Fn(Rgba<u8>) -> bool) -> bool {
+    (y.saturating_sub(r)..=y + r)
+        .flat_map(|j| (x.saturating_sub(r)..=x + r).map(move |i| (i, j)))
+        .any(|(i, j)| i < img.width() && j < img.height() && pred(*img.get_pixel(i, j)))
+}
+
+const WHITE: Rgba<u8> = Rgba([255, 255, 255, 255]);
+
+fn is_blue(p: Rgba<u8>) -> bool {
+    i32::from(p[2]) > i32::from(p[0]) + 100
+}
+
+fn is_red(p: Rgba<u8>) -> bool {
+    i32::from(p[0]) > i32::from(p[1]) + 100 && i32::from(p[0]) > i32::from(p[2]) + 100
+}
+
+fn save(name: &str, png: &[u8]) {
+    // Kept for looking at by hand; failures to write do not matter to the test.
+    let _ = std::fs::write(std::env::temp_dir().join(name), png);
+}
+
+#[test]
+fn l_fold_png_has_the_size_and_two_differently_shaded_faces() {
+    let state = l_fold(90.0, V);
+    let view = View3d {
+        height: Some(300),
+        ..View3d::with_width(400)
+    };
+    let png = render_folded_png(&state, &view).expect("png");
+    save("render3d_l_fold.png", &png);
+    let img = image::load_from_memory(&png).expect("decodes").to_rgba8();
+    assert_eq!(img.dimensions(), (400, 300));
+    let floor = *img.get_pixel_at(to_px(&view, &img, &state.positions, centroid(&state, 0)));
+    let wall = *img.get_pixel_at(to_px(&view, &img, &state.positions, centroid(&state, 1)));
+    assert_ne!(floor, WHITE);
+    assert_ne!(wall, WHITE);
+    assert_ne!(floor, wall, "the two faces are lit differently");
+    let corner = *img.get_pixel(2, 2);
+    assert_eq!(corner, WHITE, "the margin shows the background");
+}
+
+trait PixelAt {
+    fn get_pixel_at(&self, at: (u32, u32)) -> &Rgba<u8>;
+}
+
+impl PixelAt for RgbaImage {
+    fn get_pixel_at(&self, (x, y): (u32, u32)) -> &Rgba<u8> {
+        self.get_pixel(x, y)
+    }
+}
+
+#[test]
+fn the_crease_is_drawn_in_its_assignments_colour() {
+    let view = View3d::with_width(300);
+    let mid = DVec3::new(50.0, 50.0, 0.0);
+    for (kind, colour_of_kind, other) in [
+        (
+            V,
+            is_blue as fn(Rgba<u8>) -> bool,
+            is_red as fn(Rgba<u8>) -> bool,
+        ),
+        (M, is_red, is_blue),
+    ] {
+        let state = l_fold(90.0, kind);
+        let img = render_folded_rgba(&state, &view).expect("rgba");
+        let at = to_px(&view, &img, &state.positions, mid);
+        assert!(near(&img, at, 2, colour_of_kind), "{kind:?} crease colour");
+        assert!(
+            !near(&img, at, 2, other),
+            "{kind:?} crease has no other colour"
+        );
+        let plain = View3d {
+            outline: false,
+            ..view.clone()
+        };
+        let img = render_folded_rgba(&state, &plain).expect("rgba");
+        assert!(!near(&img, at, 2, colour_of_kind), "no outline, no crease");
+    }
+}
+
+/// Two parallel 20 × 20 squares facing the eye (the x-z plane seen from −y), the near one at
+/// y = 0 showing its front, the far one at y = 50 shifted by 10 and showing its back.
+fn two_squares(near_first: bool) -> FoldedState {
+    let sq = |x: f64, y: f64, z: f64| {
+        [
+            DVec3::new(x, y, z),
+            DVec3::new(x + 20.0, y, z),
+            DVec3::new(x + 20.0, y, z + 20.0),
+            DVec3::new(x, y, z + 20.0),
+        ]
+    };
+    let mut positions = sq(0.0, 0.0, 0.0).to_vec();
+    positions.extend(sq(10.0, 50.0, 10.0));
+    // Front side towards −y: the outer cycle runs counter-clockwise seen from −y.
+    let near_face = Face::simple(ids(&[0, 1, 2, 3]));
+    let far_face = Face::simple(ids(&[7, 6, 5, 4]));
+    let faces = if near_first {
+        vec![near_face, far_face]
+    } else {
+        vec![far_face, near_face]
+    };
+    FoldedState {
+        positions,
+        edges: Vec::new(),
+        faces: Some(faces),
+        face_orders: Vec::new(),
+    }
+}
+
+#[test]
+fn painters_order_lets_the_near_face_hide_the_far_one() {
+    let view = View3d {
+        azimuth_deg: 0.0,
+        elevation_deg: 0.0,
+        outline: false,
+        height: Some(200),
+        ..View3d::with_width(200)
+    };
+    for near_first in [true, false] {
+        let state = two_squares(near_first);
+        let img = render_folded_rgba(&state, &view).expect("rgba");
+        let px = |p: DVec3| *img.get_pixel_at(to_px(&view, &img, &state.positions, p));
+        let near_only = px(DVec3::new(5.0, 0.0, 5.0));
+        let far_only = px(DVec3::new(25.0, 50.0, 25.0));
+        let overlap = px(DVec3::new(15.0, 0.0, 15.0));
+        assert_ne!(near_only, far_only, "front and back sides differ");
+        assert_ne!(far_only, WHITE);
+        assert_eq!(
+            overlap, near_only,
+            "near face wins (near_first = {near_first})"
+        );
+    }
+}
+
+#[test]
+fn holes_show_the_background() {
+    let mut state = FoldedState::default();
+    for (x, y) in [(0.0, 0.0), (90.0, 0.0), (90.0, 90.0), (0.0, 90.0)] {
+        state.positions.push(DVec3::new(x, y, 0.0));
+    }
+    for (x, y) in [(30.0, 30.0), (30.0, 60.0), (60.0, 60.0), (60.0, 30.0)] {
+        state.positions.push(DVec3::new(x, y, 0.0));
+    }
+    state.faces = Some(vec![Face {
+        outer: ids(&[0, 1, 2, 3]),
+        holes: vec![ids(&[4, 5, 6, 7])],
+    }]);
+    let view = View3d::with_width(200);
+    let img = render_folded_rgba(&state, &view).expect("rgba");
+    let px = |p: DVec3| *img.get_pixel_at(to_px(&view, &img, &state.positions, p));
+    assert_eq!(px(DVec3::new(45.0, 45.0, 0.0)), WHITE);
+    assert_ne!(px(DVec3::new(15.0, 45.0, 0.0)), WHITE);
+}
+
+#[test]
+fn accordion_renders_every_panel() {
+    let state = accordion(3, 90.0);
+    let png = render_folded_png(&state, &View3d::with_width(400)).expect("png");
+    save("render3d_accordion.png", &png);
+    // From higher up the falling panel shows its front too.
+    let view = View3d {
+        elevation_deg: 60.0,
+        ..View3d::with_width(400)
+    };
+    let png = render_folded_png(&state, &view).expect("png");
+    save("render3d_accordion_above.png", &png);
+    let img = image::load_from_memory(&png).expect("decodes").to_rgba8();
+    let colours: Vec<Rgba<u8>> = (0..3)
+        .map(|f| *img.get_pixel_at(to_px(&view, &img, &state.positions, centroid(&state, f))))
+        .collect();
+    assert!(colours.iter().all(|&c| c != WHITE));
+    assert_ne!(
+        colours[0], colours[1],
+        "rising and falling panels are lit differently"
+    );
+    assert_eq!(colours[0], colours[2], "parallel panels share a shade");
+}
+
+fn decode_gif(bytes: &[u8]) -> Vec<RgbaImage> {
+    let decoder = GifDecoder::new(std::io::Cursor::new(bytes)).expect("gif header");
+    let frames = decoder.into_frames().collect_frames().expect("gif frames");
+    frames.into_iter().map(|f| f.into_buffer()).collect()
+}
+
+#[test]
+fn gif_has_one_frame_per_state_with_one_framing() {
+    let states: Vec<FoldedState> = (0..5).map(|i| l_fold(f64::from(i) * 30.0, V)).collect();
+    let view = View3d::with_width(240);
+    let gif = render_gif(&states, &view, 80).expect("gif");
+    save("render3d_opening.gif", &gif);
+    let frames = decode_gif(&gif);
+    assert_eq!(frames.len(), 5);
+    let size = frames[0].dimensions();
+    assert!(frames.iter().all(|f| f.dimensions() == size));
+    assert_ne!(frames[0], frames[4], "different states, different frames");
+    assert_ne!(frames[1], frames[2]);
+    // The base does not move: its front edge lies at the same pixels in every frame.
+    let all: Vec<DVec3> = states.iter().flat_map(|s| s.positions.clone()).collect();
+    let front = to_px(&view, &frames[0], &all, DVec3::new(50.0, 0.0, 0.0));
+    let dark = |p: Rgba<u8>| p[0] < 90 && p[1] < 90 && p[2] < 90;
+    for f in &frames {
+        assert!(near(f, front, 1, dark), "front edge at the shared framing");
+    }
+}
+
+#[test]
+fn bad_states_are_errors_not_panics() {
+    let view = View3d::with_width(100);
+    let render = |s: &FoldedState| render_folded_png(s, &view);
+    assert!(matches!(
+        render(&FoldedState::default()),
+        Err(RenderError::NoFaces)
+    ));
+    let mut no_faces = l_fold(90.0, V);
+    no_faces.faces = None;
+    assert!(matches!(render(&no_faces), Err(RenderError::NoFaces)));
+    no_faces.faces = Some(vec![Face::simple(ids(&[0, 1]))]);
+    assert!(matches!(render(&no_faces), Err(RenderError::NoFaces)));
+    let mut nan = l_fold(90.0, V);
+    nan.positions[2].y = f64::NAN;
+    assert!(matches!(
+        render(&nan),
+        Err(RenderError::Position {
+            vertex: VertexId(2)
+        })
+    ));
+    let mut far = l_fold(90.0, V);
+    far.positions[4].z = f64::INFINITY;
+    assert!(matches!(render(&far), Err(RenderError::Position { .. })));
+    let mut missing = l_fold(90.0, V);
+    missing.positions.truncate(5);
+    assert!(matches!(
+        render(&missing),
+        Err(RenderError::MissingVertex {
+            face: FaceId(1),
+            vertex: VertexId(5)
+        })
+    ));
+    assert!(matches!(
+        render_gif(&[], &view, 50),
+        Err(RenderError::NoFrames)
+    ));
+    let mixed = [l_fold(0.0, V), nan];
+    assert!(matches!(
+        render_gif(&mixed, &view, 50),
+        Err(RenderError::Position { .. })
+    ));
+    assert!(render_gif(&[l_fold(0.0, V)], &view, 0).is_err());
+}
+
+#[test]
+fn bad_views_are_errors() {
+    let state = l_fold(90.0, V);
+    for view in [
+        View3d::with_width(0),
+        View3d::with_width(100_000),
+        View3d {
+            height: Some(3),
+            ..View3d::default()
+        },
+        View3d {
+            elevation_deg: f64::NAN,
+            ..View3d::default()
+        },
+        View3d {
+            line_width_px: -1.0,
+            ..View3d::default()
+        },
+    ] {
+        assert!(render_folded_png(&state, &view).is_err(), "{view:?}");
+    }
+}
+
+#[test]
+fn a_flat_sheet_seen_edge_on_does_not_panic() {
+    let view = View3d {
+        elevation_deg: 0.0,
+        ..View3d::with_width(64)
+    };
+    let img = render_folded_rgba(&l_fold(0.0, V), &view).expect("rgba");
+    assert_eq!(img.width(), 64);
+}
