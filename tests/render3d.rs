@@ -305,6 +305,10 @@ fn gif_has_one_frame_per_state_with_one_framing() {
     save("render3d_opening.gif", &gif);
     let frames = decode_gif(&gif);
     assert_eq!(frames.len(), 5);
+    for (i, f) in frames.iter().enumerate() {
+        // Kept for looking at by hand, like `save`.
+        let _ = f.save(std::env::temp_dir().join(format!("render3d_opening_{i}.png")));
+    }
     let size = frames[0].dimensions();
     assert!(frames.iter().all(|f| f.dimensions() == size));
     assert_ne!(frames[0], frames[4], "different states, different frames");
@@ -394,4 +398,26 @@ fn a_flat_sheet_seen_edge_on_does_not_panic() {
     };
     let img = render_folded_rgba(&l_fold(0.0, V), &view).expect("rgba");
     assert_eq!(img.width(), 64);
+}
+
+#[test]
+fn without_outlines_adjacent_faces_leave_no_background_seam() {
+    let state = l_fold(90.0, V);
+    let view = View3d {
+        outline: false,
+        ..View3d::with_width(300)
+    };
+    let png = render_folded_png(&state, &view).expect("png");
+    save("render3d_l_fold_plain.png", &png);
+    let img = image::load_from_memory(&png).expect("decodes").to_rgba8();
+    for t in [0.2, 0.5, 0.8] {
+        let at = to_px(
+            &view,
+            &img,
+            &state.positions,
+            DVec3::new(100.0 * t, 50.0, 0.0),
+        );
+        let light = |p: Rgba<u8>| p[0] > 240 && p[1] > 240 && p[2] > 240;
+        assert!(!near(&img, at, 1, light), "seam at t = {t}");
+    }
 }
