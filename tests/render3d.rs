@@ -421,3 +421,37 @@ fn without_outlines_adjacent_faces_leave_no_background_seam() {
         assert!(!near(&img, at, 1, light), "seam at t = {t}");
     }
 }
+
+/// A 100 × 100 base with a low 20 × 6 piece standing on it near the back, facing the front:
+/// the base's centroid is nearer the eye than the piece's, and the piece projects inside the
+/// base, yet the piece must stay visible.
+#[test]
+fn a_piece_standing_on_a_large_base_is_not_painted_over() {
+    let mut positions = vec![
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(100.0, 0.0, 0.0),
+        DVec3::new(100.0, 100.0, 0.0),
+        DVec3::new(0.0, 100.0, 0.0),
+    ];
+    for (x, z) in [(40.0, 0.0), (60.0, 0.0), (60.0, 6.0), (40.0, 6.0)] {
+        positions.push(DVec3::new(x, 80.0, z));
+    }
+    let state = FoldedState {
+        positions,
+        edges: Vec::new(),
+        faces: Some(vec![
+            Face::simple(ids(&[4, 5, 6, 7])),
+            Face::simple(ids(&[0, 1, 2, 3])),
+        ]),
+        face_orders: Vec::new(),
+    };
+    let view = View3d::with_width(300);
+    let png = render_folded_png(&state, &view).expect("png");
+    save("render3d_piece_on_base.png", &png);
+    let img = image::load_from_memory(&png).expect("decodes").to_rgba8();
+    let px = |p: DVec3| *img.get_pixel_at(to_px(&view, &img, &state.positions, p));
+    let piece = px(DVec3::new(50.0, 80.0, 3.0));
+    let base = px(DVec3::new(20.0, 20.0, 0.0));
+    assert_ne!(piece, WHITE);
+    assert_ne!(piece, base, "the piece shows its own shade");
+}

@@ -14,6 +14,7 @@
 
 pub mod animation;
 mod chain;
+pub mod depth_order;
 pub mod font;
 pub mod layout;
 mod preview;

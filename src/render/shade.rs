@@ -9,12 +9,12 @@
 //! with the camera, so an animation lights the sheet consistently and horizontal and vertical
 //! faces differ clearly in the default view.
 //!
-//! **Visibility.** Painter's algorithm: faces are sorted by the depth of their vertex centroid
-//! and drawn far to near, each immediately followed by its outline, so near faces hide far
-//! faces and their lines. Limits: faces that intersect each other, that overlap cyclically
-//! (A over B over C over A) or where a large face's centroid is nearer than a small face lying
-//! in front of part of it can be drawn in the wrong order; coplanar stacked faces (a flat fold)
-//! ignore `face_orders`. Fine for pop-up cards and partly folded sheets, not a z-buffer.
+//! **Visibility.** Painter's algorithm: faces are drawn far to near in the order of
+//! [`super::depth_order`] (centroid depth refined by plane tests), each immediately followed by
+//! its outline, so near faces hide far faces and their lines. Limits: faces that intersect
+//! each other or overlap cyclically (A over B over C over A) may be drawn wrong; coplanar
+//! stacked faces (a flat fold) ignore `face_orders`. Fine for pop-up cards and partly folded
+//! sheets; not a z-buffer.
 //!
 //! **Outlines.** Each side of a face is drawn in the style of the edge joining its two
 //! vertices: boundary and cut edges dark and 1.5 × the line width, mountain red, valley blue,
@@ -30,6 +30,7 @@ use tiny_skia::{
 };
 
 use super::RenderError;
+use super::depth_order::{FaceGeometry, paint_order};
 use super::style::line_style;
 use super::view3d::{Camera, Framing, View3d, drawable_faces};
 use crate::pattern::{Assignment, Face, FoldedState, VertexId};
@@ -85,16 +86,15 @@ pub(crate) fn draw_state(
     pixmap.fill(Color::from_rgba8(r, g, b, a));
     let edges = edge_lookup(state);
     let pos = |v: VertexId| state.positions[v.index()];
-    let mut order: Vec<(f64, &Face)> = faces
-        .into_iter()
-        .map(|f| {
-            let sum: DVec3 = f.outer.iter().map(|&v| pos(v)).sum();
-            (camera.depth(sum / f.outer.len() as f64), f)
-        })
+    let normals: Vec<DVec3> = faces.iter().map(|f| newell_normal(f, &pos)).collect();
+    let geometry: Vec<FaceGeometry> = faces
+        .iter()
+        .zip(&normals)
+        .map(|(f, &n)| FaceGeometry::new(f.outer.iter().map(|&v| pos(v)).collect(), n, camera))
         .collect();
-    order.sort_by(|a, b| a.0.total_cmp(&b.0));
-    for (_, face) in order {
-        let color = shade(newell_normal(face, &pos), camera, view);
+    for i in paint_order(&geometry, camera) {
+        let face = faces[i];
+        let color = shade(normals[i], camera, view);
         fill_face(&mut pixmap, face, &pos, camera, framing, color);
         if view.outline {
             outline_face(&mut pixmap, face, &pos, &edges, camera, framing, view);
