@@ -1,138 +1,16 @@
 //! The 3D preview of folded states: shading, painter's order, outlines, holes, GIF frames
 //! and input errors.
 
-use foldcam::pattern::{Assignment, Edge, Face, FaceId, FoldedState, VertexId};
+mod render3d_common;
+
+use foldcam::pattern::{Face, FaceId, FoldedState, VertexId};
 use foldcam::render::{RenderError, View3d, render_folded_png, render_folded_rgba, render_gif};
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 use image::codecs::gif::GifDecoder;
 use image::{AnimationDecoder, Rgba, RgbaImage};
+use render3d_common::*;
 
-use Assignment::{Boundary as B, Mountain as M, Valley as V};
-
-fn ids(v: &[u32]) -> Vec<VertexId> {
-    v.iter().map(|&i| VertexId(i)).collect()
-}
-
-fn edge(a: u32, b: u32, kind: Assignment) -> Edge {
-    Edge::new(VertexId(a), VertexId(b), kind)
-}
-
-/// A 100 × 100 sheet with a crease of kind `crease` at y = 50, its far half lifted by
-/// `angle_deg` about the crease (90° stands it upright: an "L").
-fn l_fold(angle_deg: f64, crease: Assignment) -> FoldedState {
-    let (s, c) = angle_deg.to_radians().sin_cos();
-    let lifted = |x: f64| DVec3::new(x, 50.0 + 50.0 * c, 50.0 * s);
-    FoldedState {
-        positions: vec![
-            DVec3::new(0.0, 0.0, 0.0),
-            DVec3::new(100.0, 0.0, 0.0),
-            DVec3::new(100.0, 50.0, 0.0),
-            DVec3::new(0.0, 50.0, 0.0),
-            lifted(100.0),
-            lifted(0.0),
-        ],
-        edges: vec![
-            edge(0, 1, B),
-            edge(1, 2, B),
-            edge(2, 3, crease),
-            edge(3, 0, B),
-            edge(2, 4, B),
-            edge(4, 5, B),
-            edge(5, 3, B),
-        ],
-        faces: Some(vec![
-            Face::simple(ids(&[0, 1, 2, 3])),
-            Face::simple(ids(&[3, 2, 4, 5])),
-        ]),
-        face_orders: Vec::new(),
-    }
-}
-
-/// A strip of `panels` 100 × 40 panels folded like an accordion, alternating mountain and
-/// valley, each panel tilted by ±`angle_deg` / 2 from the horizontal.
-fn accordion(panels: u32, angle_deg: f64) -> FoldedState {
-    let half = (0.5 * angle_deg).to_radians();
-    let mut yz = vec![DVec2::ZERO];
-    for i in 0..panels {
-        let tilt = if i % 2 == 0 { half } else { -half };
-        let last = yz[yz.len() - 1];
-        yz.push(last + 40.0 * DVec2::new(tilt.cos(), tilt.sin()));
-    }
-    let mut state = FoldedState::default();
-    for p in &yz {
-        state.positions.push(DVec3::new(0.0, p.x, p.y));
-        state.positions.push(DVec3::new(100.0, p.x, p.y));
-    }
-    let mut faces = Vec::new();
-    for i in 0..panels {
-        let (l0, r0, l1, r1) = (2 * i, 2 * i + 1, 2 * i + 2, 2 * i + 3);
-        faces.push(Face::simple(ids(&[l0, r0, r1, l1])));
-        state.edges.push(edge(l0, l1, B));
-        state.edges.push(edge(r0, r1, B));
-    }
-    state.edges.push(edge(0, 1, B));
-    state.edges.push(edge(2 * panels, 2 * panels + 1, B));
-    for i in 1..panels {
-        let kind = if i % 2 == 1 { M } else { V };
-        state.edges.push(edge(2 * i, 2 * i + 1, kind));
-    }
-    state.faces = Some(faces);
-    state
-}
-
-/// The documented projection and framing: orthographic camera, union bounding box of the
-/// given points, uniform scale into the image inside the margin, centred.
-fn to_px(view: &View3d, img: &RgbaImage, all: &[DVec3], p: DVec3) -> (u32, u32) {
-    let (sa, ca) = view.azimuth_deg.to_radians().sin_cos();
-    let (se, ce) = view.elevation_deg.to_radians().sin_cos();
-    let right = DVec3::new(ca, sa, 0.0);
-    let eye = DVec3::new(ce * sa, -ce * ca, se);
-    let up = eye.cross(right);
-    let screen = |q: DVec3| DVec2::new(q.dot(right), q.dot(up));
-    let (mut lo, mut hi) = (screen(all[0]), screen(all[0]));
-    for &q in all {
-        lo = lo.min(screen(q));
-        hi = hi.max(screen(q));
-    }
-    let (w, h) = (f64::from(img.width()), f64::from(img.height()));
-    let m = f64::from(view.margin);
-    let scale = ((w - 2.0 * m) / (hi.x - lo.x)).min((h - 2.0 * m) / (hi.y - lo.y));
-    let c = 0.5 * (lo + hi);
-    let s = screen(p);
-    let x = 0.5 * w + (s.x - c.x) * scale;
-    let y = 0.5 * h - (s.y - c.y) * scale;
-    (x as u32, y as u32)
-}
-
-fn centroid(state: &FoldedState, face: usize) -> DVec3 {
-    let outer = &state.faces.as_ref().expect("faces")[face].outer;
-    outer
-        .iter()
-        .map(|v| state.positions[v.index()])
-        .sum::<DVec3>()
-        / outer.len() as f64
-}
-
-fn near(img: &RgbaImage, (x, y): (u32, u32), r: u32, pred: impl Fn(Rgba<u8>) -> bool) -> bool {
-    (y.saturating_sub(r)..=y + r)
-        .flat_map(|j| (x.saturating_sub(r)..=x + r).map(move |i| (i, j)))
-        .any(|(i, j)| i < img.width() && j < img.height() && pred(*img.get_pixel(i, j)))
-}
-
-const WHITE: Rgba<u8> = Rgba([255, 255, 255, 255]);
-
-fn is_blue(p: Rgba<u8>) -> bool {
-    i32::from(p[2]) > i32::from(p[0]) + 100
-}
-
-fn is_red(p: Rgba<u8>) -> bool {
-    i32::from(p[0]) > i32::from(p[1]) + 100 && i32::from(p[0]) > i32::from(p[2]) + 100
-}
-
-fn save(name: &str, png: &[u8]) {
-    // Kept for looking at by hand; failures to write do not matter to the test.
-    let _ = std::fs::write(std::env::temp_dir().join(name), png);
-}
+use foldcam::pattern::Assignment::{Mountain as M, Valley as V};
 
 #[test]
 fn l_fold_png_has_the_size_and_two_differently_shaded_faces() {
@@ -152,16 +30,6 @@ fn l_fold_png_has_the_size_and_two_differently_shaded_faces() {
     assert_ne!(floor, wall, "the two faces are lit differently");
     let corner = *img.get_pixel(2, 2);
     assert_eq!(corner, WHITE, "the margin shows the background");
-}
-
-trait PixelAt {
-    fn get_pixel_at(&self, at: (u32, u32)) -> &Rgba<u8>;
-}
-
-impl PixelAt for RgbaImage {
-    fn get_pixel_at(&self, (x, y): (u32, u32)) -> &Rgba<u8> {
-        self.get_pixel(x, y)
-    }
 }
 
 #[test]
@@ -190,35 +58,6 @@ fn the_crease_is_drawn_in_its_assignments_colour() {
         };
         let img = render_folded_rgba(&state, &plain).expect("rgba");
         assert!(!near(&img, at, 2, colour_of_kind), "no outline, no crease");
-    }
-}
-
-/// Two parallel 20 × 20 squares facing the eye (the x-z plane seen from −y), the near one at
-/// y = 0 showing its front, the far one at y = 50 shifted by 10 and showing its back.
-fn two_squares(near_first: bool) -> FoldedState {
-    let sq = |x: f64, y: f64, z: f64| {
-        [
-            DVec3::new(x, y, z),
-            DVec3::new(x + 20.0, y, z),
-            DVec3::new(x + 20.0, y, z + 20.0),
-            DVec3::new(x, y, z + 20.0),
-        ]
-    };
-    let mut positions = sq(0.0, 0.0, 0.0).to_vec();
-    positions.extend(sq(10.0, 50.0, 10.0));
-    // Front side towards −y: the outer cycle runs counter-clockwise seen from −y.
-    let near_face = Face::simple(ids(&[0, 1, 2, 3]));
-    let far_face = Face::simple(ids(&[7, 6, 5, 4]));
-    let faces = if near_first {
-        vec![near_face, far_face]
-    } else {
-        vec![far_face, near_face]
-    };
-    FoldedState {
-        positions,
-        edges: Vec::new(),
-        faces: Some(faces),
-        face_orders: Vec::new(),
     }
 }
 
@@ -454,4 +293,28 @@ fn a_piece_standing_on_a_large_base_is_not_painted_over() {
     let base = px(DVec3::new(20.0, 20.0, 0.0));
     assert_ne!(piece, WHITE);
     assert_ne!(piece, base, "the piece shows its own shade");
+}
+
+#[test]
+fn box_popup_card_shows_the_box_and_opens_without_jumping() {
+    let card = popup_box(90.0);
+    let view = View3d::with_width(400);
+    let png = render_folded_png(&card, &view).expect("png");
+    save("render3d_popup_box.png", &png);
+    let img = image::load_from_memory(&png).expect("decodes").to_rgba8();
+    let px = |p: DVec3| *img.get_pixel_at(to_px(&view, &img, &card.positions, p));
+    let base = px(DVec3::new(20.0, 30.0, 0.0));
+    let back = px(DVec3::new(20.0, 60.0, 40.0));
+    let box_front = px(DVec3::new(50.0, 40.0, 10.0));
+    let box_top = px(DVec3::new(50.0, 50.0, 20.0));
+    assert_eq!(
+        box_front, back,
+        "the box front is parallel to the back page"
+    );
+    assert_eq!(box_top, base, "the box top is parallel to the base");
+    assert_ne!(base, back);
+    let states: Vec<FoldedState> = [180.0, 150.0, 120.0, 90.0].map(popup_box).to_vec();
+    let gif = render_gif(&states, &view, 100).expect("gif");
+    save("render3d_popup_box.gif", &gif);
+    assert_eq!(decode_gif(&gif).len(), 4);
 }
