@@ -11,6 +11,10 @@
 //! capped at 4 × the width and 16384 pixels ([`layout`]). Geometry stays f64 until it is
 //! handed to tiny-skia as f32 pixel coordinates. Cost: one path per assignment, with the edges
 //! of each straight crease line chained into one polyline so dashes run on across vertices.
+//!
+//! 3D views of a [`FoldedState`](crate::pattern::FoldedState) ([`render_folded_png`],
+//! [`render_gif`]): orthographic camera and framing in [`view3d`], flat two-sided shading in
+//! [`shade`], the painter's order in [`depth_order`], animations in [`animation`].
 
 pub mod animation;
 mod chain;
