@@ -318,3 +318,47 @@ fn box_popup_card_shows_the_box_and_opens_without_jumping() {
     save("render3d_popup_box.gif", &gif);
     assert_eq!(decode_gif(&gif).len(), 4);
 }
+
+/// Two overlapping squares in the plane z = 0 seen from above, face 0 showing its front and
+/// face 1 (reversed) its back: only `face_orders` can tell which lies on top.
+#[test]
+fn coplanar_faces_follow_face_orders() {
+    let mut state = two_squares(true);
+    for p in &mut state.positions {
+        *p = DVec3::new(p.x, p.z, 0.0);
+    }
+    // Face 0 = [0, 1, 2, 3] now runs counter-clockwise seen from +z (its normal points up,
+    // towards the eye), face 1 clockwise (normal down).
+    let view = View3d {
+        elevation_deg: 90.0,
+        outline: false,
+        ..View3d::with_width(200)
+    };
+    let colour_on_top = |orders: Vec<(FaceId, FaceId, i8)>| {
+        let state = FoldedState {
+            face_orders: orders,
+            ..state.clone()
+        };
+        let img = render_folded_rgba(&state, &view).expect("rgba");
+        let px = |p: DVec3| *img.get_pixel_at(to_px(&view, &img, &state.positions, p));
+        let (only0, only1) = (
+            px(DVec3::new(5.0, 5.0, 0.0)),
+            px(DVec3::new(25.0, 25.0, 0.0)),
+        );
+        assert_ne!(only0, only1);
+        let overlap = px(DVec3::new(15.0, 15.0, 0.0));
+        if overlap == only0 {
+            0
+        } else if overlap == only1 {
+            1
+        } else {
+            2
+        }
+    };
+    // Face 1's normal points down: +1 puts face 0 below face 1.
+    assert_eq!(colour_on_top(vec![(FaceId(0), FaceId(1), 1)]), 1);
+    assert_eq!(colour_on_top(vec![(FaceId(0), FaceId(1), -1)]), 0);
+    // Face 0's normal points up: +1 puts face 1 above face 0.
+    assert_eq!(colour_on_top(vec![(FaceId(1), FaceId(0), 1)]), 1);
+    assert_eq!(colour_on_top(vec![(FaceId(1), FaceId(0), -1)]), 0);
+}

@@ -9,21 +9,24 @@
 //! 1. if every corner of `b` lies on the far side of `a`'s plane (or on it), `b` is drawn
 //!    before `a`; if every corner lies on the near side, after it;
 //! 2. otherwise (`b` straddles `a`'s plane) the same test with the roles swapped;
-//! 3. otherwise the faces intersect and no constraint is added.
+//! 3. otherwise (the faces intersect, or lie in one plane) the state's `face_orders` decides
+//!    if it names the pair (FOLD: `[f, g, +1]` puts `f` on the side of `g` that `g`'s normal
+//!    points to, −1 on the other side); else no constraint is added.
 //!
 //! The constraints are resolved by a topological sort that always draws the farthest ready
 //! face (by centroid) next; a cycle (faces overlapping cyclically, A over B over C over A) is
 //! broken at its farthest face, which is then drawn in centroid order. Limits: intersecting
 //! faces and cycles can still be drawn wrong (a z-buffer would be needed); coplanar faces
-//! (flat-folded layers) keep the centroid order and ignore `face_orders`; the pair tests cost
+//! that `face_orders` does not name keep the centroid order; the pair tests cost
 //! O(n²) and are skipped above [`MAX_REFINED_FACES`] faces, which then use the centroid order.
 
 use std::cmp::Reverse;
-use std::collections::BinaryHeap;
+use std::collections::{BinaryHeap, HashMap};
 
 use glam::{DVec2, DVec3};
 
 use super::view3d::Camera;
+use crate::pattern::FaceId;
 
 /// Largest face count for which pairwise plane tests refine the centroid order.
 pub const MAX_REFINED_FACES: usize = 3000;
@@ -33,6 +36,7 @@ const PLANE_TOLERANCE: f64 = 1e-7;
 
 /// One face as the sorter sees it: its corners in 3D.
 pub(crate) struct FaceGeometry {
+    id: FaceId,
     corners: Vec<DVec3>,
     centroid_depth: f64,
     lo: DVec2,
@@ -42,7 +46,12 @@ pub(crate) struct FaceGeometry {
 
 impl FaceGeometry {
     /// The geometry of a face with the given outer corners (at least one) and normal.
-    pub(crate) fn new(corners: Vec<DVec3>, normal: DVec3, camera: &Camera) -> FaceGeometry {
+    pub(crate) fn new(
+        id: FaceId,
+        corners: Vec<DVec3>,
+        normal: DVec3,
+        camera: &Camera,
+    ) -> FaceGeometry {
         let centroid = corners.iter().sum::<DVec3>() / corners.len().max(1) as f64;
         let first = corners.first().map_or(DVec2::ZERO, |&p| camera.screen(p));
         let (lo, hi) = corners.iter().fold((first, first), |(lo, hi), &p| {
@@ -50,6 +59,7 @@ impl FaceGeometry {
             (lo.min(s), hi.max(s))
         });
         FaceGeometry {
+            id,
             centroid_depth: camera.depth(centroid),
             corners,
             lo,
@@ -59,8 +69,17 @@ impl FaceGeometry {
     }
 }
 
-/// The order to draw `faces` in (indices into `faces`), far first.
-pub(crate) fn paint_order(faces: &[FaceGeometry], camera: &Camera) -> Vec<usize> {
+/// Stacking of face pairs, from FOLD's `faceOrders`: `(f, g)` → +1 when `f` lies on the side
+/// of `g` that `g`'s normal points to, −1 on the other side.
+type Stacking = HashMap<(FaceId, FaceId), i8>;
+
+/// The order to draw `faces` in (indices into `faces`), far first; `orders` is the state's
+/// `face_orders`.
+pub(crate) fn paint_order(
+    faces: &[FaceGeometry],
+    camera: &Camera,
+    orders: &[(FaceId, FaceId, i8)],
+) -> Vec<usize> {
     let n = faces.len();
     let mut by_depth: Vec<usize> = (0..n).collect();
     by_depth.sort_by(|&a, &b| faces[a].centroid_depth.total_cmp(&faces[b].centroid_depth));
@@ -71,11 +90,16 @@ pub(crate) fn paint_order(faces: &[FaceGeometry], camera: &Camera) -> Vec<usize>
     for (r, &f) in by_depth.iter().enumerate() {
         rank[f] = r;
     }
+    let stacking: Stacking = orders
+        .iter()
+        .filter(|o| o.2 != 0)
+        .map(|&(f, g, s)| ((f, g), s))
+        .collect();
     let mut after: Vec<Vec<usize>> = vec![Vec::new(); n];
     let mut pending = vec![0usize; n];
     for a in 0..n {
         for b in a + 1..n {
-            if let Some((first, then)) = pair_order(&faces[a], &faces[b], camera)
+            if let Some((first, then)) = pair_order(&faces[a], &faces[b], camera, &stacking)
                 .map(|a_first| if a_first { (a, b) } else { (b, a) })
             {
                 after[first].push(then);
@@ -127,8 +151,13 @@ fn topological(
 }
 
 /// `Some(true)` if `a` must be drawn before `b`, `Some(false)` if after, `None` if the faces
-/// do not overlap on screen or cannot be ordered by their planes.
-fn pair_order(a: &FaceGeometry, b: &FaceGeometry, camera: &Camera) -> Option<bool> {
+/// do not overlap on screen or cannot be ordered by their planes or the stacking.
+fn pair_order(
+    a: &FaceGeometry,
+    b: &FaceGeometry,
+    camera: &Camera,
+    stacking: &Stacking,
+) -> Option<bool> {
     let overlap = a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y;
     if !overlap {
         return None;
@@ -141,9 +170,27 @@ fn pair_order(a: &FaceGeometry, b: &FaceGeometry, camera: &Camera) -> Option<boo
         None => match side_of(b, a, camera, tol) {
             Some(Side::Far) => Some(true),
             Some(Side::Near) => Some(false),
-            None => None,
+            None => stacked(a, b, camera, stacking),
         },
     }
+}
+
+/// The order of `a` and `b` from the stacking, if it names them: the face on the eye's side
+/// of the other is drawn last.
+fn stacked(
+    a: &FaceGeometry,
+    b: &FaceGeometry,
+    camera: &Camera,
+    stacking: &Stacking,
+) -> Option<bool> {
+    let eye_side = |f: &FaceGeometry| f.normal.dot(camera.toward_eye).signum();
+    if let Some(&s) = stacking.get(&(a.id, b.id)) {
+        // `a` lies on the side of `b` that `b`'s normal points to (s > 0) or the other side;
+        // it is drawn first when that side faces away from the eye.
+        return Some(f64::from(s) * eye_side(b) < 0.0);
+    }
+    let &s = stacking.get(&(b.id, a.id))?;
+    Some(f64::from(s) * eye_side(a) > 0.0)
 }
 
 enum Side {
@@ -180,7 +227,7 @@ mod tests {
     fn quad(corners: [[f64; 3]; 4], camera: &Camera) -> FaceGeometry {
         let c: Vec<DVec3> = corners.iter().map(|&p| DVec3::from_array(p)).collect();
         let normal = (c[1] - c[0]).cross(c[3] - c[0]);
-        FaceGeometry::new(c, normal, camera)
+        FaceGeometry::new(FaceId(0), c, normal, camera)
     }
 
     #[test]
@@ -208,13 +255,13 @@ mod tests {
             piece.centroid_depth < base.centroid_depth,
             "centroids alone fail"
         );
-        assert_eq!(paint_order(&[piece, base], &camera), vec![1, 0]);
+        assert_eq!(paint_order(&[piece, base], &camera, &[]), vec![1, 0]);
     }
 
     #[test]
     fn cycles_and_empty_input_terminate() {
         let camera = Camera::new(0.0, 90.0);
-        assert!(paint_order(&[], &camera).is_empty());
+        assert!(paint_order(&[], &camera, &[]).is_empty());
         // Three slanted strips, each over the next: a cycle of constraints.
         let strip = |angle: f64| {
             let (s, c) = angle.to_radians().sin_cos();
@@ -232,7 +279,7 @@ mod tests {
             )
         };
         let faces = [strip(0.0), strip(120.0), strip(240.0)];
-        let mut order = paint_order(&faces, &camera);
+        let mut order = paint_order(&faces, &camera, &[]);
         order.sort_unstable();
         assert_eq!(order, vec![0, 1, 2]);
     }

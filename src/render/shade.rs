@@ -13,8 +13,8 @@
 //! [`super::depth_order`] (centroid depth refined by plane tests), each immediately followed by
 //! its outline, so near faces hide far faces and their lines. Limits: faces that intersect
 //! each other or overlap cyclically (A over B over C over A) may be drawn wrong; coplanar
-//! stacked faces (a flat fold) ignore `face_orders`. Fine for pop-up cards and partly folded
-//! sheets; not a z-buffer.
+//! stacked faces (a flat fold) are ordered by the state's `face_orders` where it names them.
+//! Fine for pop-up cards and partly folded sheets; not a z-buffer.
 //!
 //! **Outlines.** Each side of a face is drawn in the style of the edge joining its two
 //! vertices: boundary and cut edges dark and 1.5 × the line width, mountain red, valley blue,
@@ -86,14 +86,16 @@ pub(crate) fn draw_state(
     pixmap.fill(Color::from_rgba8(r, g, b, a));
     let edges = edge_lookup(state);
     let pos = |v: VertexId| state.positions[v.index()];
-    let normals: Vec<DVec3> = faces.iter().map(|f| newell_normal(f, &pos)).collect();
+    let normals: Vec<DVec3> = faces.iter().map(|(_, f)| newell_normal(f, &pos)).collect();
     let geometry: Vec<FaceGeometry> = faces
         .iter()
         .zip(&normals)
-        .map(|(f, &n)| FaceGeometry::new(f.outer.iter().map(|&v| pos(v)).collect(), n, camera))
+        .map(|(&(id, f), &n)| {
+            FaceGeometry::new(id, f.outer.iter().map(|&v| pos(v)).collect(), n, camera)
+        })
         .collect();
-    for i in paint_order(&geometry, camera) {
-        let face = faces[i];
+    for i in paint_order(&geometry, camera, &state.face_orders) {
+        let face = faces[i].1;
         let color = shade(normals[i], camera, view);
         fill_face(&mut pixmap, face, &pos, camera, framing, color);
         if view.outline {

@@ -184,7 +184,7 @@ impl Framing {
         let camera = Camera::new(view.azimuth_deg, view.elevation_deg);
         let mut bounds: Option<(DVec2, DVec2)> = None;
         for state in states {
-            for face in drawable_faces(state)? {
+            for (_, face) in drawable_faces(state)? {
                 for v in &face.outer {
                     let s = camera.screen(state.positions[v.index()]);
                     bounds = Some(bounds.map_or((s, s), |(lo, hi)| (lo.min(s), hi.max(s))));
@@ -246,9 +246,9 @@ fn auto_height(ext: DVec2, view: &View3d) -> u32 {
     }
 }
 
-/// The faces of a state with at least three corners, after checking the state: positions
-/// finite and in range, every named vertex present.
-pub(crate) fn drawable_faces(state: &FoldedState) -> Result<Vec<&Face>, RenderError> {
+/// The faces of a state with at least three corners and their ids, after checking the
+/// state: positions finite and in range, every named vertex present.
+pub(crate) fn drawable_faces(state: &FoldedState) -> Result<Vec<(FaceId, &Face)>, RenderError> {
     let faces = state.faces.as_deref().unwrap_or_default();
     if faces.is_empty() {
         return Err(RenderError::NoFaces);
@@ -274,7 +274,11 @@ pub(crate) fn drawable_faces(state: &FoldedState) -> Result<Vec<&Face>, RenderEr
             });
         }
     }
-    let drawable: Vec<&Face> = faces.iter().filter(|f| f.outer.len() >= 3).collect();
+    let drawable: Vec<(FaceId, &Face)> = (0u32..)
+        .map(FaceId)
+        .zip(faces)
+        .filter(|(_, f)| f.outer.len() >= 3)
+        .collect();
     if drawable.is_empty() {
         return Err(RenderError::NoFaces);
     }
