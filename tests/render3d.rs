@@ -362,3 +362,26 @@ fn coplanar_faces_follow_face_orders() {
     assert_eq!(colour_on_top(vec![(FaceId(1), FaceId(0), 1)]), 1);
     assert_eq!(colour_on_top(vec![(FaceId(1), FaceId(0), -1)]), 0);
 }
+
+#[test]
+fn degenerate_geometry_draws_without_panicking() {
+    let mut point = l_fold(90.0, V);
+    point.positions.fill(DVec3::splat(7.0));
+    let img = render_folded_rgba(&point, &View3d::with_width(32)).expect("rgba");
+    assert_eq!(img.width(), 32);
+    let mut tiny = l_fold(90.0, V);
+    for p in &mut tiny.positions {
+        *p *= 1e-300;
+    }
+    let img = render_folded_rgba(&tiny, &View3d::with_width(64)).expect("rgba");
+    assert!(
+        img.pixels().any(|&p| p != WHITE),
+        "a tiny sheet is scaled up to fit"
+    );
+    let mut far_hole = l_fold(0.0, V);
+    far_hole.positions.push(DVec3::new(1e9, -1e9, 0.0));
+    if let Some(faces) = far_hole.faces.as_mut() {
+        faces[0].holes.push(ids(&[6, 6, 6]));
+    }
+    render_folded_rgba(&far_hole, &View3d::with_width(64)).expect("rgba");
+}

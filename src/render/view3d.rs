@@ -185,7 +185,7 @@ impl Framing {
         let mut bounds: Option<(DVec2, DVec2)> = None;
         for state in states {
             for (_, face) in drawable_faces(state)? {
-                for v in &face.outer {
+                for v in face.outer.iter().chain(face.holes.iter().flatten()) {
                     let s = camera.screen(state.positions[v.index()]);
                     bounds = Some(bounds.map_or((s, s), |(lo, hi)| (lo.min(s), hi.max(s))));
                 }
