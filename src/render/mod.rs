@@ -11,18 +11,29 @@
 //! capped at 4 × the width and 16384 pixels ([`layout`]). Geometry stays f64 until it is
 //! handed to tiny-skia as f32 pixel coordinates. Cost: one path per assignment, with the edges
 //! of each straight crease line chained into one polyline so dashes run on across vertices.
+//!
+//! 3D views of a [`FoldedState`](crate::pattern::FoldedState) ([`render_folded_png`],
+//! [`render_gif`]): orthographic camera and framing in [`view3d`], flat two-sided shading in
+//! [`shade`], the painter's order in [`depth_order`], animations in [`animation`].
 
+pub mod animation;
 mod chain;
+pub mod depth_order;
 pub mod font;
 pub mod layout;
 mod preview;
+pub mod shade;
 pub mod style;
+pub mod view3d;
 
 use crate::check::Finding;
 use crate::pattern::CreasePattern;
 
+pub use animation::render_gif;
 pub use layout::{MAX_SIZE, MIN_SIZE};
 pub use preview::render_pixmap;
+pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
+pub use view3d::View3d;
 
 /// Options of [`preview_png`].
 #[derive(Clone, Debug, PartialEq)]
@@ -91,6 +102,29 @@ pub enum RenderError {
     /// PNG encoding failed.
     #[error("PNG encoding failed: {0}")]
     Encode(String),
+    /// A folded state has no faces with three or more corners.
+    #[error("the folded state has no faces to draw")]
+    NoFaces,
+    /// A position is NaN, infinite or beyond the coordinate limit.
+    #[error("vertex {vertex} has a non-finite or out-of-range position")]
+    Position {
+        /// The vertex.
+        vertex: crate::pattern::VertexId,
+    },
+    /// A face names a vertex that has no position.
+    #[error("face {face} names vertex {vertex}, which has no position")]
+    MissingVertex {
+        /// The face.
+        face: crate::pattern::FaceId,
+        /// The missing vertex.
+        vertex: crate::pattern::VertexId,
+    },
+    /// An animation was asked for without any folded state.
+    #[error("an animation needs at least one folded state")]
+    NoFrames,
+    /// GIF encoding failed.
+    #[error("GIF encoding failed: {0}")]
+    GifEncode(String),
 }
 
 /// Draws a pattern as PNG bytes, highlighting `faults`.
