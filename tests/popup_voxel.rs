@@ -1,0 +1,343 @@
+//! Voxel pop-up cards (seed 001): pattern conditions (eq. 1, 2), Table 1 lines, the pop-up
+//! check (§2.6), the editing operations (§2.7, eq. 4) and the open/close transform (eq. 6).
+
+use foldcam::design::popup::voxel::{
+    PopupProblem, VoxelCard, VoxelFormatError, check_popup, crease_pattern, fold_card,
+    parse_voxel_card,
+};
+use foldcam::geom::polygon::signed_area;
+use foldcam::pattern::{Assignment, CreasePattern, Face};
+use glam::DVec3;
+use proptest::prelude::*;
+
+fn sample(name: &str) -> VoxelCard {
+    let path = format!("{}/examples/popup/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("sample exists");
+    parse_voxel_card(&text).expect("sample parses")
+}
+
+/// A card with one column of rows `depths` (z = 0 first) at x = 1, windows on `windows`.
+fn column_card(depths: &[usize], windows: &[usize]) -> VoxelCard {
+    let mut card = VoxelCard::new(3, 4, 8, 5.0).unwrap();
+    for (z, &d) in depths.iter().enumerate() {
+        card.set_depth(1, z, d).unwrap();
+    }
+    for &z in windows {
+        card.set_hole(1, z, true).unwrap();
+    }
+    card
+}
+
+fn face_area(cp: &CreasePattern, f: &Face) -> f64 {
+    let ring = |c: &Vec<_>| signed_area(c.iter().map(|&v| cp.position(v)));
+    ring(&f.outer) + f.holes.iter().map(ring).sum::<f64>()
+}
+
+fn assert_tiles_sheet(card: &VoxelCard, cp: &CreasePattern) {
+    cp.validate().unwrap();
+    let (w, h) = card.sheet_mm();
+    let total: f64 = cp
+        .faces
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|f| face_area(cp, f))
+        .sum();
+    assert!(
+        (total - w * h).abs() < 1e-6 * w * h,
+        "faces cover {total}, sheet {}",
+        w * h
+    );
+    for e in &cp.edges {
+        let want = match e.assignment {
+            Assignment::Valley => Some(90.0),
+            Assignment::Mountain => Some(-90.0),
+            _ => None,
+        };
+        assert_eq!(e.fold_angle, want, "{:?}", e.assignment);
+    }
+}
+
+fn is_grid(t: f64, s: f64) -> bool {
+    ((t / s) - (t / s).round()).abs() < 1e-9
+}
+
+/// At 90° every folded face is axis-aligned (constant y or constant z) on a cell plane.
+fn assert_faces_on_voxel_planes(card: &VoxelCard, cp: &CreasePattern) {
+    let folded = fold_card(card, cp, 90.0).state;
+    let s = card.cell_mm();
+    for face in folded.faces.as_ref().unwrap() {
+        let pts: Vec<DVec3> = face
+            .outer
+            .iter()
+            .map(|v| folded.positions[v.index()])
+            .collect();
+        let same = |f: fn(DVec3) -> f64| pts.iter().all(|&p| (f(p) - f(pts[0])).abs() < 1e-9);
+        let on_plane =
+            (same(|p| p.y) && is_grid(pts[0].y, s)) || (same(|p| p.z) && is_grid(pts[0].z, s));
+        assert!(on_plane, "face off the voxel planes: {pts:?}");
+    }
+}
+
+/// Without windows, a face on plane y = y0 > 0 is the front of filled cells, and one on
+/// z = z0 > 0 the top of filled cells, checked at one point inside the face.
+fn assert_faces_on_solid(card: &VoxelCard, cp: &CreasePattern) {
+    let folded = fold_card(card, cp, 90.0).state;
+    let s = card.cell_mm();
+    for face in folded.faces.as_ref().unwrap() {
+        let p: Vec<DVec3> = face
+            .outer
+            .iter()
+            .map(|v| folded.positions[v.index()] / s)
+            .collect();
+        let inner = (p[0] + p[1] + p[2]) / 3.0; // faces are rectilinear; a corner triangle's centre
+        let (x, y, z) = (inner.x.floor() as usize, inner.y, inner.z);
+        if (p[0].y - p[1].y).abs() < 1e-9 && (p[1].y - p[2].y).abs() < 1e-9 && p[0].y > 0.5 {
+            let (y0, zi) = (p[0].y.round() as usize, z.floor() as usize);
+            assert!(
+                card.cell(x, y0 - 1, zi) && !card.cell(x, y0, zi),
+                "front at {p:?}"
+            );
+        } else if p[0].z > 0.5 && (p[0].z - p[1].z).abs() < 1e-9 {
+            let (z0, yi) = (p[0].z.round() as usize, y.floor() as usize);
+            assert!(
+                card.cell(x, yi, z0 - 1) && !card.cell(x, yi, z0),
+                "top at {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn samples_parse_pop_up_and_tile_the_sheet() {
+    for name in ["house.voxel.txt", "tower.voxel.txt"] {
+        let card = sample(name);
+        assert!(card.is_staircase());
+        let report = check_popup(&card);
+        assert!(report.passed(), "{name}: {:?}", report.problems);
+        let cp = crease_pattern(&card).unwrap();
+        assert_tiles_sheet(&card, &cp);
+        assert_faces_on_voxel_planes(&card, &cp);
+    }
+}
+
+#[test]
+fn window_free_card_lands_on_the_voxel_surface() {
+    let mut card = VoxelCard::new(7, 6, 6, 3.0).unwrap();
+    card.add(1, 3, 2).unwrap();
+    card.add(2, 1, 4).unwrap();
+    card.add(4, 4, 0).unwrap();
+    card.add(5, 2, 3).unwrap();
+    let cp = crease_pattern(&card).unwrap();
+    assert_tiles_sheet(&card, &cp);
+    assert_faces_on_voxel_planes(&card, &cp);
+    assert_faces_on_solid(&card, &cp);
+}
+
+#[test]
+fn one_block_has_table_1_lines() {
+    // A 2-deep, 2-high block on columns 1..3 of 4.
+    let mut card = VoxelCard::new(4, 3, 3, 10.0).unwrap();
+    card.add(1, 1, 1).unwrap();
+    card.add(2, 1, 1).unwrap();
+    let cp = crease_pattern(&card).unwrap();
+    let count = |a| cp.edges.iter().filter(|e| e.assignment == a).count();
+    // Valleys: back/top (v = 2) over the block, base/front (v = −2) under it, and the central
+    // fold on columns 0 and 3; one mountain at the front edge (v = 0); two cuts (block sides),
+    // each split in two where the central fold of the neighbouring column ends on it.
+    assert_eq!(count(Assignment::Mountain), 1);
+    assert_eq!(count(Assignment::Valley), 4);
+    let cut_len: Vec<f64> = cp
+        .edge_ids()
+        .filter(|&e| cp.edges[e.index()].assignment == Assignment::Cut)
+        .map(|e| cp.edge_length(e))
+        .collect();
+    assert_eq!(cut_len, vec![20.0; 4]);
+}
+
+#[test]
+fn a_long_crease_is_one_edge() {
+    let mut card = VoxelCard::new(1000, 4, 4, 1.0).unwrap();
+    for x in 0..1000 {
+        card.add(x, 2, 2).unwrap();
+    }
+    let cp = crease_pattern(&card).unwrap();
+    let folds: Vec<f64> = cp
+        .edge_ids()
+        .filter(|&e| cp.edges[e.index()].assignment.is_fold())
+        .map(|e| cp.edge_length(e))
+        .collect();
+    assert_eq!(folds, vec![1000.0; 3]);
+    assert_eq!(
+        cp.edges.len(),
+        3 + 4 + 6,
+        "3 folds, 4 outline sides split by 3 folds each end"
+    );
+}
+
+#[test]
+fn block_held_from_the_back_only_is_rejected() {
+    // Fig. 8 (b): the two lowest rows are windows, so the front hangs from the top only.
+    let card = column_card(&[2, 2, 2, 2], &[0, 1]);
+    let report = check_popup(&card);
+    let named: Vec<_> = report
+        .problems
+        .iter()
+        .map(|p| (p.x, p.depth, p.z, p.problem))
+        .collect();
+    let held = PopupProblem::HeldFromBackOnly;
+    assert_eq!(named, vec![(1, 2, 2, held), (1, 2, 3, held)]);
+}
+
+#[test]
+fn floating_block_is_rejected() {
+    // Fig. 8 (a): windows on the top and bottom rows cut the middle of the front loose.
+    let card = column_card(&[2, 2, 2, 2], &[0, 3]);
+    let report = check_popup(&card);
+    let named: Vec<_> = report
+        .problems
+        .iter()
+        .map(|p| (p.x, p.z, p.problem))
+        .collect();
+    let f = PopupProblem::Floating;
+    assert_eq!(named, vec![(1, 1, f), (1, 2, f)]);
+}
+
+#[test]
+fn same_block_without_windows_passes() {
+    assert!(check_popup(&column_card(&[2, 2, 2, 2], &[])).passed());
+    // One column with a window is split in two, but a window between neighbours is held.
+    assert!(!check_popup(&column_card(&[2, 2, 2, 2], &[1])).passed());
+    let mut wide = VoxelCard::new(5, 4, 8, 5.0).unwrap();
+    for x in 1..4 {
+        wide.add(x, 1, 3).unwrap();
+    }
+    wide.set_hole(2, 1, true).unwrap();
+    assert!(check_popup(&wide).passed());
+}
+
+#[test]
+fn transform_at_standing_flat_and_closed() {
+    let card = sample("house.voxel.txt");
+    let cp = crease_pattern(&card).unwrap();
+    let s = card.cell_mm();
+    let standing = fold_card(&card, &cp, 90.0);
+    let flat = fold_card(&card, &cp, 180.0);
+    let closed = fold_card(&card, &cp, 0.0);
+    for (i, v) in flat.source.iter().enumerate() {
+        let p = cp.position(*v);
+        let f = flat.state.positions[i];
+        assert!(
+            (f - DVec3::new(p.x, -p.y, 0.0)).length() < 1e-9,
+            "flat {f} vs {p}"
+        );
+        let q = standing.state.positions[i];
+        assert!(q.y >= -1e-9 && q.z >= -1e-9 && (q.z - q.y - p.y).abs() < 1e-9);
+        let c = closed.state.positions[i];
+        assert!(c.z.abs() < 1e-9 && (c.y - q.y - q.z).abs() < 1e-9);
+        assert!(q.y <= card.ny() as f64 * s + 1e-9 && q.z <= card.nz() as f64 * s + 1e-9);
+    }
+}
+
+#[test]
+fn every_angle_keeps_edge_lengths() {
+    let card = sample("tower.voxel.txt");
+    let cp = crease_pattern(&card).unwrap();
+    for angle in [0.0, 15.0, 60.0, 90.0, 133.0, 180.0] {
+        let folded = fold_card(&card, &cp, angle);
+        assert!(!folded.state.edges.is_empty());
+        for e in &folded.state.edges {
+            let [a, b] = e.vertices.map(|v| v.index());
+            let len3 = folded.state.positions[a].distance(folded.state.positions[b]);
+            let len2 = cp
+                .position(folded.source[a])
+                .distance(cp.position(folded.source[b]));
+            assert!(
+                (len3 - len2).abs() < 1e-9,
+                "angle {angle}: {len3} vs {len2}"
+            );
+        }
+    }
+}
+
+#[test]
+fn parse_errors_name_the_line() {
+    let bad_token = "cell_mm 5\ndepth 4\nheight 4\nrows\n0 1 0\n0 x 0\n";
+    let err = parse_voxel_card(bad_token).unwrap_err();
+    assert!(
+        matches!(err, VoxelFormatError::Syntax { line: 6, .. }),
+        "{err}"
+    );
+    let not_staircase = "cell_mm 5\ndepth 4\nheight 4\nrows\n0 3 0\n0 1 0\n";
+    let err = parse_voxel_card(not_staircase).unwrap_err();
+    assert!(
+        matches!(err, VoxelFormatError::Card { line: 5, .. }),
+        "{err}"
+    );
+    let too_deep = "cell_mm 5\ndepth 2\nheight 4\nrows\n0 3 0\n";
+    assert!(matches!(
+        parse_voxel_card(too_deep),
+        Err(VoxelFormatError::Card { line: 5, .. })
+    ));
+    let ragged = "cell_mm 5\ndepth 4\nheight 4\nrows\n0 1\n0 1 0\n"; // line 6 is off
+    assert!(matches!(
+        parse_voxel_card(ragged),
+        Err(VoxelFormatError::Syntax { line: 6, .. })
+    ));
+    let no_cell = "depth 4\nheight 4\nrows\n0\n";
+    assert_eq!(
+        parse_voxel_card(no_cell),
+        Err(VoxelFormatError::MissingKey("cell_mm"))
+    );
+    let bad_key = "cell_mm 5\nwidth 3\n";
+    assert!(matches!(
+        parse_voxel_card(bad_key),
+        Err(VoxelFormatError::Syntax { line: 2, .. })
+    ));
+    assert!(parse_voxel_card("cell_mm -1\ndepth 4\nheight 4\nrows\n0\n").is_err());
+}
+
+#[test]
+fn big_card_fits() {
+    // 2000 × 1000 × 1000 cells: the model holds one depth and one flag per (x, z) row.
+    let mut card = VoxelCard::new(2000, 1000, 1000, 0.5).unwrap();
+    card.add(1999, 999, 999).unwrap();
+    assert!(card.cell(1999, 0, 0) && card.cell(1999, 999, 999) && !card.cell(1998, 0, 0));
+}
+
+proptest! {
+    #[test]
+    fn edits_keep_the_staircase(ops in prop::collection::vec((any::<bool>(), 0..4usize, 0..6usize, 0..5usize), 1..40)) {
+        let mut card = VoxelCard::new(4, 6, 5, 1.0).unwrap();
+        for (add, x, y, z) in ops {
+            if add {
+                card.add(x, y, z).unwrap();
+                prop_assert!(card.cell(x, y, z));
+            } else {
+                card.delete(x, y, z).unwrap();
+                prop_assert!(!card.cell(x, y, z));
+            }
+            prop_assert!(card.is_staircase());
+            // Eq. 4 cell by cell.
+            for (cx, cy, cz) in itertools_cells(&card) {
+                if card.cell(cx, cy, cz) {
+                    prop_assert!(cy == 0 || card.cell(cx, cy - 1, cz));
+                    prop_assert!(cz == 0 || card.cell(cx, cy, cz - 1));
+                }
+            }
+        }
+        prop_assert!(card.add(4, 0, 0).is_err() && card.delete(0, 6, 0).is_err());
+    }
+}
+
+fn itertools_cells(card: &VoxelCard) -> Vec<(usize, usize, usize)> {
+    let mut out = Vec::new();
+    for x in 0..card.nx() {
+        for y in 0..card.ny() {
+            for z in 0..card.nz() {
+                out.push((x, y, z));
+            }
+        }
+    }
+    out
+}
