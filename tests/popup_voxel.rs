@@ -2,12 +2,12 @@
 //! check (§2.6), the editing operations (§2.7, eq. 4) and the open/close transform (eq. 6).
 
 use foldcam::design::popup::voxel::{
-    PopupProblem, VoxelCard, VoxelFormatError, check_popup, crease_pattern, fold_card,
-    parse_voxel_card,
+    DepthMap, PopupProblem, VoxelCard, VoxelError, VoxelFormatError, card_from_depth_map,
+    check_popup, crease_pattern, fold_card, parse_voxel_card,
 };
 use foldcam::geom::polygon::signed_area;
 use foldcam::pattern::{Assignment, CreasePattern, Face};
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
 fn sample(name: &str) -> VoxelCard {
@@ -79,33 +79,54 @@ fn assert_faces_on_voxel_planes(card: &VoxelCard, cp: &CreasePattern) {
     }
 }
 
-/// Without windows, a face on plane y = y0 > 0 is the front of filled cells, and one on
-/// z = z0 > 0 the top of filled cells, checked at one point inside the face.
+/// A point a quarter cell inside the first edge of pattern face `f`, and its 3D image at 90°
+/// through the affine map fixed by three corners of the folded face.
+fn inner_point(cp: &CreasePattern, f: &Face, folded: &[DVec3], g: &Face, s: f64) -> DVec3 {
+    let p2 = |i: usize| cp.position(f.outer[i]);
+    let p3 = |i: usize| folded[g.outer[i].index()];
+    let (a, b) = (p2(0), p2(1));
+    let d = (b - a).normalize();
+    let inner = (a + b) * 0.5 + DVec2::new(-d.y, d.x) * (0.25 * s);
+    let c = (2..f.outer.len())
+        .find(|&i| (b - a).perp_dot(p2(i) - a).abs() > 1e-9)
+        .unwrap();
+    let (e1, e2, w) = (b - a, p2(c) - a, inner - a);
+    let det = e1.perp_dot(e2);
+    let (t1, t2) = (w.perp_dot(e2) / det, e1.perp_dot(w) / det);
+    p3(0) + (p3(1) - p3(0)) * t1 + (p3(c) - p3(0)) * t2
+}
+
+/// Without windows, every face on a plane y = y0 > 0 is the front of filled cells and every
+/// face on z = z0 > 0 the top of filled cells (checked one point inside each face).
 fn assert_faces_on_solid(card: &VoxelCard, cp: &CreasePattern) {
     let folded = fold_card(card, cp, 90.0).state;
     let s = card.cell_mm();
-    for face in folded.faces.as_ref().unwrap() {
-        let p: Vec<DVec3> = face
-            .outer
-            .iter()
-            .map(|v| folded.positions[v.index()] / s)
-            .collect();
-        let inner = (p[0] + p[1] + p[2]) / 3.0; // faces are rectilinear; a corner triangle's centre
-        let (x, y, z) = (inner.x.floor() as usize, inner.y, inner.z);
-        if (p[0].y - p[1].y).abs() < 1e-9 && (p[1].y - p[2].y).abs() < 1e-9 && p[0].y > 0.5 {
-            let (y0, zi) = (p[0].y.round() as usize, z.floor() as usize);
+    let (mut fronts, mut tops) = (0, 0);
+    let faces = cp.faces.as_ref().unwrap().iter();
+    for (f, g) in faces.zip(folded.faces.as_ref().unwrap()) {
+        let q = inner_point(cp, f, &folded.positions, g, s) / s;
+        let (x, y, z) = (
+            q.x.floor() as usize,
+            q.y.floor() as usize,
+            q.z.floor() as usize,
+        );
+        if is_grid(q.y, 1.0) && q.y > 0.5 {
+            let y0 = q.y.round() as usize;
             assert!(
-                card.cell(x, y0 - 1, zi) && !card.cell(x, y0, zi),
-                "front at {p:?}"
+                card.cell(x, y0 - 1, z) && !card.cell(x, y0, z),
+                "front at {q}"
             );
-        } else if p[0].z > 0.5 && (p[0].z - p[1].z).abs() < 1e-9 {
-            let (z0, yi) = (p[0].z.round() as usize, y.floor() as usize);
+            fronts += 1;
+        } else if is_grid(q.z, 1.0) && q.z > 0.5 {
+            let z0 = q.z.round() as usize;
             assert!(
-                card.cell(x, yi, z0 - 1) && !card.cell(x, yi, z0),
-                "top at {p:?}"
+                card.cell(x, y, z0 - 1) && !card.cell(x, y, z0),
+                "top at {q}"
             );
+            tops += 1;
         }
     }
+    assert!(fronts > 0 && tops > 0, "{fronts} fronts, {tops} tops");
 }
 
 #[test]
@@ -340,4 +361,40 @@ fn itertools_cells(card: &VoxelCard) -> Vec<(usize, usize, usize)> {
         }
     }
     out
+}
+
+#[test]
+fn depth_map_becomes_a_staircase_by_eq_7() {
+    // 3 × 3 pixels, top row first: a bump high in column 1 fills the rows below it (eq. 7).
+    let max = u16::MAX;
+    let levels = [0, max, 0, 0, 0, max / 2, 0, 0, 0];
+    let map = DepthMap {
+        width: 3,
+        height: 3,
+        levels: &levels,
+    };
+    let card = card_from_depth_map(map, 4, 2.0).unwrap();
+    assert!(card.is_staircase());
+    assert_eq!(
+        (0..3).map(|z| card.depth(1, z)).collect::<Vec<_>>(),
+        vec![4, 4, 4]
+    );
+    assert_eq!(
+        (0..3).map(|z| card.depth(2, z)).collect::<Vec<_>>(),
+        vec![2, 2, 0]
+    );
+    assert_eq!(card.depth(0, 0), 0);
+    let short = DepthMap {
+        width: 3,
+        height: 3,
+        levels: &levels[..8],
+    };
+    let err = card_from_depth_map(short, 4, 2.0).unwrap_err();
+    assert_eq!(
+        err,
+        VoxelError::MapSize {
+            expected: 9,
+            got: 8
+        }
+    );
 }

@@ -11,11 +11,13 @@
 //! - [`check_popup`] (`check.rs`): the two floods of §2.6.
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 6 as a [`FoldedState`].
 //! - [`parse_voxel_card`] (`format.rs`): the text format; samples in `examples/popup/`.
+//! - [`card_from_depth_map`] (`depth_map.rs`): grey-level depth maps made staircase by eq. 7.
 //!
 //! Every card is one sheet that folds flat (eq. 1, 2): each slice is a monotone staircase
 //! whose rectangles have equal opposite sides.
 //!
-//! Limits: no margins besides empty cells; no mesh or height-map input (§3) yet.
+//! Limits: no margins besides empty cells; no mesh input, bump removal or automatic windows
+//! (§3) yet.
 //!
 //! ```
 //! use foldcam::design::popup::voxel::{VoxelCard, check_popup, crease_pattern};
@@ -34,6 +36,7 @@
 
 mod check;
 mod crease;
+mod depth_map;
 mod fold;
 mod format;
 mod model;
@@ -41,6 +44,7 @@ pub mod surface;
 
 pub use check::{FrontCellProblem, PopupProblem, PopupReport, check_popup};
 pub use crease::crease_pattern;
+pub use depth_map::{DepthMap, card_from_depth_map};
 pub use fold::{FoldedCard, fold_card, open_transform};
 pub use format::{VoxelFormatError, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};

@@ -49,6 +49,14 @@ pub enum VoxelError {
         /// z index.
         z: usize,
     },
+    /// A depth map's sample count is not width × height.
+    #[error("depth map has {got} samples, expected {expected} (width × height)")]
+    MapSize {
+        /// width × height.
+        expected: usize,
+        /// Samples given.
+        got: usize,
+    },
     /// Setting a row depth would break the staircase constraint (eq. 4).
     #[error("row (x {x}, z {z}): depth {depth} breaks the staircase (allowed {min}..={max})")]
     NotStaircase {
@@ -189,6 +197,13 @@ impl VoxelCard {
         }
         self.depth[i] = depth as u16;
         Ok(())
+    }
+
+    /// Sets the depth of an in-range row filled top-down (callers keep eq. 4 themselves by
+    /// never going below the row above; the rows below are set next).
+    pub(super) fn set_depth_unchecked_order(&mut self, x: usize, z: usize, depth: usize) {
+        let i = x * self.nz + z;
+        self.depth[i] = depth.min(self.ny) as u16;
     }
 
     /// Turns the window of row (x, z) on or off (eq. 5).
