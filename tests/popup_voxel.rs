@@ -259,7 +259,8 @@ fn transform_at_standing_flat_and_closed() {
         assert!(q.y >= -1e-9 && q.z >= -1e-9 && (q.z - q.y - p.y).abs() < 1e-9);
         let c = closed.state.positions[i];
         assert!(c.z.abs() < 1e-9 && (c.y - q.y - q.z).abs() < 1e-9);
-        assert!(q.y <= card.ny() as f64 * s + 1e-9 && q.z <= card.nz() as f64 * s + 1e-9);
+        let m = card.margin_mm() + 1e-9;
+        assert!(q.y <= card.ny() as f64 * s + m && q.z <= card.nz() as f64 * s + m);
     }
 }
 
@@ -403,8 +404,13 @@ fn depth_map_becomes_a_staircase_by_eq_7() {
 }
 
 /// A random small card: edits per §2.7 and random windows.
-fn random_card(ops: &[(bool, usize, usize, usize)], windows: &[(usize, usize)]) -> VoxelCard {
+fn random_card(
+    ops: &[(bool, usize, usize, usize)],
+    windows: &[(usize, usize)],
+    margin: f64,
+) -> VoxelCard {
     let mut card = VoxelCard::new(5, 5, 5, 2.5).unwrap();
+    card.set_margin_mm(margin).unwrap();
     for &(add, x, y, z) in ops {
         let edit = if add {
             VoxelCard::add
@@ -425,8 +431,9 @@ proptest! {
     fn random_cards_give_one_sheet_that_folds_isometrically(
         ops in prop::collection::vec((any::<bool>(), 0..5usize, 0..5usize, 0..5usize), 1..12),
         windows in prop::collection::vec((0..5usize, 0..5usize), 0..4),
+        margin in prop::sample::select(vec![0.0, 1.0, 7.5]),
     ) {
-        let card = random_card(&ops, &windows);
+        let card = random_card(&ops, &windows, margin);
         let cp = crease_pattern(&card).unwrap();
         assert_tiles_sheet(&card, &cp);
         assert_faces_on_voxel_planes(&card, &cp);
@@ -450,4 +457,42 @@ fn assert_faces_on_solid_unless_flat(card: &VoxelCard, cp: &CreasePattern) {
     if any_block {
         assert_faces_on_solid(card, cp);
     }
+}
+
+#[test]
+fn margins_continue_the_back_and_base_sheets() {
+    let mut card = VoxelCard::new(4, 3, 3, 10.0).unwrap();
+    card.set_margin_mm(5.0).unwrap();
+    card.add(1, 1, 2).unwrap(); // reaches the top edge of the cells
+    card.add(2, 1, 1).unwrap();
+    let cp = crease_pattern(&card).unwrap();
+    assert_tiles_sheet(&card, &cp);
+    assert_eq!(card.sheet_mm(), (50.0, 70.0));
+    let valleys = |y: f64| {
+        let mut spans: Vec<(f64, f64)> = cp
+            .edge_ids()
+            .filter(|&e| cp.edges[e.index()].assignment == Assignment::Valley)
+            .map(|e| cp.segment(e))
+            .filter(|(a, b)| a.y == y && b.y == y)
+            .map(|(a, b)| (a.x.min(b.x), a.x.max(b.x)))
+            .collect();
+        spans.sort_by(|p, q| p.0.total_cmp(&q.0));
+        spans
+    };
+    // The central fold runs through the side margins; the block on column 1 meets the top
+    // margin (the back sheet) in a valley at the cells' top edge v = 30.
+    assert_eq!(valleys(0.0), vec![(-5.0, 10.0), (30.0, 45.0)]);
+    assert_eq!(valleys(30.0), vec![(10.0, 20.0)]);
+    let f = fold_card(&card, &cp, 90.0);
+    let top = f.state.positions.iter().map(|p| p.z).fold(0.0, f64::max);
+    assert!(
+        (top - 35.0).abs() < 1e-9,
+        "top margin stands up to 35 mm, got {top}"
+    );
+    let text = "cell_mm 5\ndepth 4\nheight 4\nmargin_mm -2\nrows\n0\n";
+    let err = parse_voxel_card(text).unwrap_err();
+    assert!(
+        matches!(err, VoxelFormatError::Card { line: 4, .. }),
+        "{err}"
+    );
 }

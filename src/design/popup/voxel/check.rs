@@ -58,7 +58,7 @@ pub fn check_popup(card: &VoxelCard) -> PopupReport {
     let mut problems = Vec::new();
     for x in 0..surface.nx {
         for r in 0..surface.rows {
-            let Plane::Vertical(depth) = surface.plane(x, r) else {
+            let Plane::Vertical(depth) = surface.plane(x as i64, r as i64) else {
                 continue;
             };
             let i = x * surface.rows + r;
@@ -100,18 +100,16 @@ fn flood(s: &Surface, start: (usize, usize), dr: i64) -> Vec<bool> {
 /// The neighbours of (x, r) reachable without crossing a cut.
 fn steps(s: &Surface, x: usize, r: usize, dr: i64) -> impl Iterator<Item = (usize, usize)> {
     let mut out = [None; 3];
-    if x > 0 && s.line_left(x, r) != Line::Cut {
+    let (xi, ri) = (x as i64, r as i64);
+    if x > 0 && s.line_left(xi, ri) != Line::Cut {
         out[0] = Some((x - 1, r));
     }
-    if x + 1 < s.nx && s.line_left(x + 1, r) != Line::Cut {
+    if x + 1 < s.nx && s.line_left(xi + 1, ri) != Line::Cut {
         out[1] = Some((x + 1, r));
     }
-    let nr = r as i64 + dr;
-    if (0..s.rows as i64).contains(&nr) {
-        let upper = r.max(nr as usize);
-        if s.line_below(x, upper) != Line::Cut {
-            out[2] = Some((x, nr as usize));
-        }
+    let nr = ri + dr;
+    if (0..s.rows as i64).contains(&nr) && s.line_below(xi, ri.max(nr)) != Line::Cut {
+        out[2] = Some((x, nr as usize));
     }
     out.into_iter().flatten()
 }

@@ -83,12 +83,13 @@ fn face_plane(card: &VoxelCard, surface: &Surface, cp: &CreasePattern, face: &Fa
     let (a, b) = (cp.position(face.outer[0]), cp.position(face.outer[1]));
     let d = (b - a).normalize_or_zero();
     let inside = (a + b) * 0.5 + DVec2::new(-d.y, d.x) * (0.25 * card.cell_mm());
+    // Out-of-grid cells are margins; clamping keeps the casts in range.
     let x = (inside.x / card.cell_mm())
         .floor()
-        .clamp(0.0, (surface.nx - 1) as f64);
+        .clamp(-1.0, surface.nx as f64);
     let r = (inside.y / card.cell_mm() + card.ny() as f64).floor();
-    let r = r.clamp(0.0, (surface.rows - 1) as f64);
-    surface.plane(x as usize, r as usize)
+    let r = r.clamp(-1.0, surface.rows as f64);
+    surface.plane(x as i64, r as i64)
 }
 
 /// One folded edge per distinct pair of folded vertices along the faces' cycles, with the

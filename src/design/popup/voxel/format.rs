@@ -5,6 +5,7 @@
 //! cell_mm 5        # edge of one cell in millimetres
 //! depth 12         # ny: cells of base sheet in front of the fold
 //! height 16        # nz: cells of back sheet above the fold
+//! margin_mm 10     # optional: flat paper around the cells (default 0)
 //! rows             # the front elevation follows, top row first
 //! 0 0 2  2w 2 0 0
 //! 0 3 3  3  3 3 0
@@ -49,6 +50,7 @@ struct Header {
     cell_mm: Option<f64>,
     depth: Option<usize>,
     height: Option<usize>,
+    margin_mm: Option<(usize, f64)>,
 }
 
 /// Parses the text format of the module docs.
@@ -91,6 +93,7 @@ fn header_line(h: &mut Header, n: usize, line: &str) -> Result<(), VoxelFormatEr
         "cell_mm" => h.cell_mm = Some(value.parse().map_err(|_| bad("a number"))?),
         "depth" => h.depth = Some(value.parse().map_err(|_| bad("a cell count"))?),
         "height" => h.height = Some(value.parse().map_err(|_| bad("a cell count"))?),
+        "margin_mm" => h.margin_mm = Some((n, value.parse().map_err(|_| bad("a number"))?)),
         _ => return Err(syntax(n, format!("unknown key `{key}`"))),
     }
     Ok(())
@@ -122,6 +125,10 @@ fn build(
             line: rows_line,
             source,
         })?;
+    if let Some((line, margin)) = h.margin_mm {
+        let err = |source| VoxelFormatError::Card { line, source };
+        card.set_margin_mm(margin).map_err(err)?;
+    }
     if rows.len() > nz {
         return Err(syntax(
             rows_line,

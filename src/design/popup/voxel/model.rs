@@ -36,6 +36,9 @@ pub enum VoxelError {
         /// Cells of height (back sheet).
         nz: usize,
     },
+    /// The margin is not a finite number of millimetres in 0..=1000.
+    #[error("margin {0} mm must be finite, at least 0 and at most 1000 mm")]
+    BadMargin(f64),
     /// The cell size is not a finite positive number of millimetres.
     #[error("cell size {0} mm must be finite and positive (at most 1000 mm)")]
     BadCellSize(f64),
@@ -81,6 +84,7 @@ pub struct VoxelCard {
     ny: usize,
     nz: usize,
     cell_mm: f64,
+    margin_mm: f64,
     /// `depth[x * nz + z]`: filled cells of row (x, z) are y < depth.
     depth: Vec<u16>,
     /// `hole[x * nz + z]`: the front face of row (x, z) is a window (eq. 5, `isHole[x][z]`).
@@ -103,6 +107,7 @@ impl VoxelCard {
             ny,
             nz,
             cell_mm,
+            margin_mm: 0.0,
             depth: vec![0; nx * nz],
             hole: vec![false; nx * nz],
         })
@@ -128,10 +133,25 @@ impl VoxelCard {
         self.cell_mm
     }
 
-    /// Sheet size in millimetres: `(nx, ny + nz) × cell_mm`.
+    /// Flat paper added around the cells on all four sides, in millimetres: the upper half
+    /// belongs to the back sheet, the lower half to the base.
+    pub fn margin_mm(&self) -> f64 {
+        self.margin_mm
+    }
+
+    /// Sets the margin (0..=1000 mm).
+    pub fn set_margin_mm(&mut self, margin: f64) -> Result<(), VoxelError> {
+        if !(margin.is_finite() && (0.0..=1000.0).contains(&margin)) {
+            return Err(VoxelError::BadMargin(margin));
+        }
+        self.margin_mm = margin;
+        Ok(())
+    }
+
+    /// Sheet size in millimetres: `(nx, ny + nz) × cell_mm`, plus a margin on each side.
     pub fn sheet_mm(&self) -> (f64, f64) {
-        let s = self.cell_mm;
-        (self.nx as f64 * s, (self.ny + self.nz) as f64 * s)
+        let (s, m) = (self.cell_mm, 2.0 * self.margin_mm);
+        (self.nx as f64 * s + m, (self.ny + self.nz) as f64 * s + m)
     }
 
     /// Filled cells of row (x, z) are `y < depth(x, z)`; 0 outside the card.

@@ -89,14 +89,22 @@ impl Surface {
         }
     }
 
-    /// The plane of cell (x, r).
-    pub fn plane(&self, x: usize, r: usize) -> Plane {
-        self.planes[x * self.rows + r]
+    /// The plane of cell (x, r). Cells outside the grid are the margins: flat paper of the
+    /// back sheet above the fold (r ≥ ny) and of the base below it.
+    pub fn plane(&self, x: i64, r: i64) -> Plane {
+        let inside = (0..self.nx as i64).contains(&x) && (0..self.rows as i64).contains(&r);
+        if inside {
+            self.planes[x as usize * self.rows + r as usize]
+        } else if r >= self.ny as i64 {
+            Plane::Vertical(0)
+        } else {
+            Plane::Horizontal(0)
+        }
     }
 
-    /// The line between row `r − 1` and row `r` of column x (`1 ≤ r < rows`).
-    pub fn line_below(&self, x: usize, r: usize) -> Line {
-        let v = r as i64 - self.ny as i64;
+    /// The line between row `r − 1` and row `r` of column x (margins included).
+    pub fn line_below(&self, x: i64, r: i64) -> Line {
+        let v = r - self.ny as i64;
         match (self.plane(x, r), self.plane(x, r - 1)) {
             (a, b) if a == b => Line::Flat,
             (Plane::Vertical(y0), Plane::Horizontal(z0)) if z0 as i64 == v + y0 as i64 => {
@@ -109,8 +117,8 @@ impl Surface {
         }
     }
 
-    /// The line between column `x − 1` and column `x` at row r (`1 ≤ x < nx`).
-    pub fn line_left(&self, x: usize, r: usize) -> Line {
+    /// The line between column `x − 1` and column `x` at row r (margins included).
+    pub fn line_left(&self, x: i64, r: i64) -> Line {
         if self.plane(x, r) == self.plane(x - 1, r) {
             Line::Flat
         } else {
