@@ -225,6 +225,11 @@ fn floating_block_is_rejected() {
         .collect();
     let f = PopupProblem::Floating;
     assert_eq!(named, vec![(1, 1, f), (1, 2, f)]);
+    let text = report.problems[0].to_string();
+    assert_eq!(
+        text,
+        "front face of cell (1, 1, 1) floats: cut off from both sheets"
+    );
 }
 
 #[test]

@@ -35,6 +35,18 @@ pub struct FrontCellProblem {
     pub problem: PopupProblem,
 }
 
+impl std::fmt::Display for FrontCellProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let why = match self.problem {
+            PopupProblem::Floating => "floats: cut off from both sheets",
+            PopupProblem::HeldFromBackOnly => "is held from the back sheet only",
+            PopupProblem::HeldFromBaseOnly => "is held from the base sheet only",
+        };
+        let (x, y, z) = (self.x, self.depth - 1, self.z);
+        write!(f, "front face of cell ({x}, {y}, {z}) {why}")
+    }
+}
+
 /// The result of [`check_popup`]: empty when the card pops up.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct PopupReport {
