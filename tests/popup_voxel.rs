@@ -501,3 +501,57 @@ fn margins_continue_the_back_and_base_sheets() {
         "{err}"
     );
 }
+
+/// Unit normal of a folded face (Newell's method on its outer ring).
+fn normal(positions: &[DVec3], f: &Face) -> DVec3 {
+    let ring: Vec<DVec3> = f.outer.iter().map(|v| positions[v.index()]).collect();
+    let n = (0..ring.len()).fold(DVec3::ZERO, |n, i| {
+        n + ring[i].cross(ring[(i + 1) % ring.len()])
+    });
+    n.normalize()
+}
+
+#[test]
+fn fold_angles_match_the_folded_faces() {
+    let card = sample("tower.voxel.txt");
+    let cp = crease_pattern(&card).unwrap();
+    for opening in [10.0, 90.0, 150.0] {
+        let folded = fold_card(&card, &cp, opening);
+        let faces = folded.state.faces.as_ref().unwrap();
+        let mut by_edge = std::collections::HashMap::<_, Vec<usize>>::new();
+        for (i, f) in faces.iter().enumerate() {
+            for ring in std::iter::once(&f.outer).chain(&f.holes) {
+                for k in 0..ring.len() {
+                    let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
+                    by_edge.entry((a.min(b), a.max(b))).or_default().push(i);
+                }
+            }
+        }
+        let mut checked = 0;
+        for e in folded.state.edges.iter().filter(|e| e.assignment.is_fold()) {
+            let [a, b] = e.vertices;
+            let pair = &by_edge[&(a.min(b), a.max(b))];
+            assert_eq!(pair.len(), 2, "a fold joins two faces: {e:?}");
+            let (n1, n2) = (
+                normal(&folded.state.positions, &faces[pair[0]]),
+                normal(&folded.state.positions, &faces[pair[1]]),
+            );
+            let turn = n1.dot(n2).clamp(-1.0, 1.0).acos().to_degrees();
+            let want = e.fold_angle.unwrap();
+            assert!(
+                (turn - want.abs()).abs() < 1e-6,
+                "opening {opening}: {turn} vs {want}"
+            );
+            assert_eq!(
+                want.signum(),
+                if e.assignment == Assignment::Valley {
+                    1.0
+                } else {
+                    -1.0
+                }
+            );
+            checked += 1;
+        }
+        assert!(checked > 10);
+    }
+}

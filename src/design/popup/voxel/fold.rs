@@ -33,17 +33,22 @@ pub struct FoldedCard {
 
 /// Eq. 6 at the opening angle `opening_deg` (clamped to 0..=180; NaN counts as 90).
 pub fn open_transform(p: DVec3, opening_deg: f64) -> DVec3 {
-    let opening = if opening_deg.is_nan() {
-        90.0
-    } else {
-        opening_deg.clamp(0.0, 180.0)
-    };
-    let theta = (180.0 - opening).to_radians();
+    let theta = (180.0 - clamp_opening(opening_deg)).to_radians();
     DVec3::new(p.x, p.y - p.z * theta.cos(), p.z * theta.sin())
 }
 
+/// The opening angle clamped to 0..=180°, NaN read as 90°.
+fn clamp_opening(opening_deg: f64) -> f64 {
+    if opening_deg.is_nan() {
+        90.0
+    } else {
+        opening_deg.clamp(0.0, 180.0)
+    }
+}
+
 /// Folds `cp` (the pattern of `card`, with faces, as [`super::crease_pattern`] makes it) to
-/// the opening angle `opening_deg`. Faces the pattern does not list are left out.
+/// the opening angle `opening_deg`. Faces the pattern does not list are left out. Fold edges
+/// carry the angle they are folded by at this opening (±(180° − opening)).
 pub fn fold_card(card: &VoxelCard, cp: &CreasePattern, opening_deg: f64) -> FoldedCard {
     let surface = Surface::new(card);
     let s = card.cell_mm();
@@ -73,7 +78,8 @@ pub fn fold_card(card: &VoxelCard, cp: &CreasePattern, opening_deg: f64) -> Fold
             .collect();
         faces.push((face.clone(), Face { outer, holes }));
     }
-    out.state.edges = folded_edges(cp, &faces);
+    let theta = 180.0 - clamp_opening(opening_deg);
+    out.state.edges = folded_edges(cp, &faces, theta);
     out.state.faces = Some(faces.into_iter().map(|(_, f)| f).collect());
     out
 }
@@ -93,8 +99,9 @@ fn face_plane(card: &VoxelCard, surface: &Surface, cp: &CreasePattern, face: &Fa
 }
 
 /// One folded edge per distinct pair of folded vertices along the faces' cycles, with the
-/// pattern edge's assignment and angle.
-fn folded_edges(cp: &CreasePattern, faces: &[(Face, Face)]) -> Vec<Edge> {
+/// pattern edge's assignment; folds carry the current fold angle `theta_deg` (eq. 6's θ:
+/// every crease of the card turns by the same angle, valleys +θ, mountains −θ).
+fn folded_edges(cp: &CreasePattern, faces: &[(Face, Face)], theta_deg: f64) -> Vec<Edge> {
     let mut pattern_edge = HashMap::new();
     for e in &cp.edges {
         let [a, b] = e.vertices;
@@ -114,7 +121,7 @@ fn folded_edges(cp: &CreasePattern, faces: &[(Face, Face)]) -> Vec<Edge> {
                 };
                 if seen.insert(key) {
                     let mut edge = Edge::new(dc[i], dc[j], e.assignment);
-                    edge.fold_angle = e.fold_angle;
+                    edge.fold_angle = e.fold_angle.map(|a| a.signum() * theta_deg);
                     edges.push(edge);
                 }
             }
