@@ -555,3 +555,13 @@ fn fold_angles_match_the_folded_faces() {
         assert!(checked > 10);
     }
 }
+
+/// Regression (proptest): a 2 × 2 block whose face centre lies on a grid line once fooled
+/// the face-on-solid check's sample point.
+#[test]
+fn regression_block_with_face_centre_on_grid_line() {
+    let card = random_card(&[(false, 0, 0, 0), (true, 1, 1, 1)], &[], 0.0);
+    let cp = crease_pattern(&card).unwrap();
+    assert_tiles_sheet(&card, &cp);
+    assert_faces_on_solid(&card, &cp);
+}
