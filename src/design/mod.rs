@@ -1,3 +1,4 @@
 //! Design sources: programs that produce crease patterns.
 
 pub mod classic;
+pub mod popup;

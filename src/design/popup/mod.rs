@@ -1,0 +1,10 @@
+//! Pop-up cards (origamic architecture): one sheet, cut and folded, that stands up in 3D when
+//! opened to 90° and folds flat when closed.
+//!
+//! - [`voxel`]: the voxel model of seed paper 001 (Mitani, Suzuki, Uno): staircase voxels with
+//!   windows, the crease pattern (Table 1), the pop-up check (§2.6) and the open/close
+//!   transform (eq. 6).
+//!
+//! The polygon model of seed 000 shares the open/close transform and will live next to it.
+
+pub mod voxel;

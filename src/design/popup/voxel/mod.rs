@@ -1,0 +1,50 @@
+//! Voxel pop-up cards: seed paper 001 (Mitani, Suzuki, Uno, "Computer aided design for
+//! origamic architecture models with voxel data structure").
+//!
+//! - [`VoxelCard`] (`model.rs`): `cell[x][y][z]` (eq. 3) stored as one depth per (x, z) row,
+//!   staircase by construction (eq. 4), window flags `isHole[x][z]` (eq. 5), the editing
+//!   operations of §2.7.
+//! - [`surface`]: which voxel face each pattern cell lands on, windows (§2.3), the line between
+//!   neighbouring cells (Table 1).
+//! - [`crease_pattern`] (`crease.rs`): the planarised [`CreasePattern`] with merged lines,
+//!   ±90° fold angles and the outline (§2.5).
+//! - [`check_popup`] (`check.rs`): the two floods of §2.6.
+//! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 6 as a [`FoldedState`].
+//! - [`parse_voxel_card`] (`format.rs`): the text format; samples in `examples/popup/`.
+//! - [`card_from_depth_map`] (`depth_map.rs`): grey-level depth maps made staircase by eq. 7.
+//!
+//! Every card is one sheet that folds flat (eq. 1, 2): each slice is a monotone staircase
+//! whose rectangles have equal opposite sides.
+//!
+//! Limits: no margins besides empty cells; no mesh input, bump removal or automatic windows
+//! (§3) yet.
+//!
+//! ```
+//! use foldcam::design::popup::voxel::{VoxelCard, check_popup, crease_pattern};
+//!
+//! let mut card = VoxelCard::new(6, 4, 4, 10.0)?;
+//! card.add(2, 1, 1)?; // a 2 × 2 step, one cell wide
+//! assert!(card.cell(2, 0, 0) && !card.cell(2, 2, 0));
+//! assert!(check_popup(&card).passed());
+//! let cp = crease_pattern(&card).unwrap();
+//! assert!(cp.faces.is_some());
+//! # Ok::<(), foldcam::design::popup::voxel::VoxelError>(())
+//! ```
+//!
+//! [`CreasePattern`]: crate::pattern::CreasePattern
+//! [`FoldedState`]: crate::pattern::FoldedState
+
+mod check;
+mod crease;
+mod depth_map;
+mod fold;
+mod format;
+mod model;
+pub mod surface;
+
+pub use check::{FrontCellProblem, PopupProblem, PopupReport, check_popup};
+pub use crease::crease_pattern;
+pub use depth_map::{DepthMap, card_from_depth_map};
+pub use fold::{FoldedCard, fold_card, open_transform};
+pub use format::{VoxelFormatError, parse_voxel_card};
+pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};
