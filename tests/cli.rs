@@ -541,3 +541,54 @@ fn simulate_reports_violations_with_exit_1() {
     let stats: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
     assert!(stats["pierces"].as_u64().unwrap_or(0) > 0);
 }
+
+#[test]
+fn popup_voxel_card_is_written_previewed_and_cuts_clean() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let house = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/popup/house.voxel.txt");
+    let house = house.to_string_lossy().into_owned();
+    let o = foldcam(
+        &[
+            "popup",
+            "voxel",
+            &house,
+            "-o",
+            "house.fold",
+            "--png",
+            "house.png",
+            "--width",
+            "200",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert_eq!(
+        image::open(dir.path().join("house.png"))
+            .expect("PNG")
+            .width(),
+        200
+    );
+    let o = foldcam(
+        &[
+            "cut",
+            "house.fold",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "-o",
+            "house.gcode",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    // A floating block (a row standing out further than the row below, with a gap) is refused.
+    let floating = "cell_mm 5\ndepth 4\nheight 4\nrows\n0 0 0 0\n0 2 2 0\n0 0 0 0\n0 0 0 0\n";
+    std::fs::write(dir.path().join("bad.voxel.txt"), floating).expect("write");
+    let o = foldcam(
+        &["popup", "voxel", "bad.voxel.txt", "-o", "bad.fold"],
+        dir.path(),
+    );
+    assert_ne!(o.status.code(), Some(0), "{}", text(&o.stdout));
+    assert!(!listing(dir.path()).contains(&"bad.fold".to_string()));
+}

@@ -11,6 +11,7 @@ mod fab_args;
 mod generate;
 mod input;
 mod plan;
+mod popup;
 mod preview;
 mod simulate;
 
@@ -64,6 +65,9 @@ enum Command {
     Plan(plan::Args),
     /// Run a G-code job on a simulated machine (violations, time, coverage, toolpath PNG).
     Simulate(simulate::Args),
+    /// Design pop-up cards (origamic architecture).
+    #[command(subcommand)]
+    Popup(popup::Command),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
 }
@@ -79,6 +83,7 @@ pub fn run() -> ExitCode {
         Command::Cut(a) => cut::run(a),
         Command::Plan(a) => plan::run(a),
         Command::Simulate(a) => simulate::run(a),
+        Command::Popup(c) => popup::run(c),
         Command::Demo(a) => demo::run(a),
     };
     match result {
