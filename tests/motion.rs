@@ -1,9 +1,7 @@
 //! The motion-time model against closed forms: trapezoids, triangles, junction speeds.
 
 use foldcam::machine::motion::{Kinematics, Move, job_time, junction_speed, move_times};
-use foldcam::machine::{
-    Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
-};
+use foldcam::machine::{Bed, Corner, Dialect, MachineProfile};
 use glam::DVec2;
 use proptest::prelude::*;
 
@@ -11,31 +9,15 @@ use proptest::prelude::*;
 fn machine() -> MachineProfile {
     MachineProfile {
         name: "test".into(),
-        description: String::new(),
-        kind: MachineKind::Laser,
-        dialect: Dialect::Grbl,
-        bed: Bed {
-            width_mm: 400.0,
-            height_mm: 400.0,
-            origin: Corner::BottomLeft,
-            y_flipped: false,
-        },
-        max_feed_mm_min: 6000.0,
-        travel_feed_mm_min: 6000.0,
-        acceleration_mm_s2: 1000.0,
-        junction_deviation_mm: 0.01,
-        power: PowerRange {
-            min: 0.0,
-            max: 1000.0,
-        },
-        laser_mode: LaserMode::Dynamic,
-        dwell_unit: DwellUnit::Seconds,
-        resolution_mm: 0.001,
-        pen_up: Vec::new(),
-        pen_down: Vec::new(),
-        pen_delay_s: 0.0,
-        preamble: Vec::new(),
-        postamble: Vec::new(),
+        ..MachineProfile::generic_laser(
+            Dialect::Grbl,
+            Bed {
+                width_mm: 400.0,
+                height_mm: 400.0,
+                origin: Corner::BottomLeft,
+                y_flipped: false,
+            },
+        )
     }
 }
 

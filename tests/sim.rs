@@ -4,8 +4,7 @@
 
 use foldcam::fab::{ContourRole, FabPlan, Job, Operation, PlanStats, Side, Toolpath};
 use foldcam::machine::{
-    Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, OperationSettings,
-    PowerRange, SettingsByOperation,
+    Bed, Corner, Dialect, MachineKind, MachineProfile, OperationSettings, SettingsByOperation,
 };
 use foldcam::pattern::{Assignment, CreasePattern, EdgeId};
 use foldcam::sim::{self, SimError, SimReport, ViolationKind};
@@ -21,34 +20,15 @@ mod render;
 fn laser(dialect: Dialect) -> MachineProfile {
     MachineProfile {
         name: format!("{dialect:?}").to_lowercase(),
-        description: "test laser".into(),
-        kind: MachineKind::Laser,
-        dialect,
-        bed: Bed {
-            width_mm: 300.0,
-            height_mm: 200.0,
-            origin: Corner::BottomLeft,
-            y_flipped: false,
-        },
-        max_feed_mm_min: 6000.0,
-        travel_feed_mm_min: 6000.0,
-        acceleration_mm_s2: 1000.0,
-        junction_deviation_mm: 0.01,
-        power: PowerRange {
-            min: 0.0,
-            max: 1000.0,
-        },
-        laser_mode: LaserMode::Dynamic,
-        dwell_unit: match dialect {
-            Dialect::Marlin => DwellUnit::Milliseconds,
-            _ => DwellUnit::Seconds,
-        },
-        resolution_mm: 0.001,
-        pen_up: Vec::new(),
-        pen_down: Vec::new(),
-        pen_delay_s: 0.0,
-        preamble: Vec::new(),
-        postamble: Vec::new(),
+        ..MachineProfile::generic_laser(
+            dialect,
+            Bed {
+                width_mm: 300.0,
+                height_mm: 200.0,
+                origin: Corner::BottomLeft,
+                y_flipped: false,
+            },
+        )
     }
 }
 

@@ -300,6 +300,36 @@ impl PowerRange {
 }
 
 impl MachineProfile {
+    /// A laser profile built in code rather than read from TOML, with GRBL's factory
+    /// defaults: 6000 mm/min, 1000 mm/s², 0.01 mm junction deviation, `S` 0–1000, `M4`
+    /// dynamic power, the dialect's dwell unit, 0.001 mm resolution, no preamble or postamble.
+    /// Change fields with struct-update syntax.
+    pub fn generic_laser(dialect: Dialect, bed: Bed) -> MachineProfile {
+        MachineProfile {
+            name: format!("generic-{}", dialect.name()),
+            description: "generic laser".into(),
+            kind: MachineKind::Laser,
+            dialect,
+            bed,
+            max_feed_mm_min: 6000.0,
+            travel_feed_mm_min: 6000.0,
+            acceleration_mm_s2: 1000.0,
+            junction_deviation_mm: 0.01,
+            power: PowerRange {
+                min: 0.0,
+                max: 1000.0,
+            },
+            laser_mode: LaserMode::Dynamic,
+            dwell_unit: dialect.dwell_unit(),
+            resolution_mm: 0.001,
+            pen_up: Vec::new(),
+            pen_down: Vec::new(),
+            pen_delay_s: 0.0,
+            preamble: Vec::new(),
+            postamble: Vec::new(),
+        }
+    }
+
     /// The `S` value for `fraction` (0..=1) of full power; see [`PowerRange::to_s`].
     pub fn power_to_s(&self, fraction: f64) -> f64 {
         self.power.to_s(fraction)

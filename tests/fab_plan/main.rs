@@ -15,8 +15,8 @@ use foldcam::fab::stats::{moves, stroke_length};
 use foldcam::fab::{ContourRole, FabError, Operation, PlanOptions, Side, Toolpath};
 use foldcam::machine::motion::job_time;
 use foldcam::machine::{
-    Bed, Corner, DesignLimits, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile,
-    Material, OperationMapping, OperationSettings, Perforation, PowerRange, SettingsByOperation,
+    Bed, Corner, DesignLimits, Dialect, MachineProfile, Material, OperationMapping,
+    OperationSettings, Perforation, SettingsByOperation,
 };
 use foldcam::pattern::{Assignment, CreasePattern, EdgeId, Units};
 use glam::DVec2;
@@ -53,25 +53,7 @@ pub fn machine(bed: Bed) -> MachineProfile {
     MachineProfile {
         name: "test".into(),
         description: "test laser".into(),
-        kind: MachineKind::Laser,
-        dialect: Dialect::Grbl,
-        bed,
-        max_feed_mm_min: 6000.0,
-        travel_feed_mm_min: 6000.0,
-        acceleration_mm_s2: 1000.0,
-        junction_deviation_mm: 0.01,
-        power: PowerRange {
-            min: 0.0,
-            max: 1000.0,
-        },
-        laser_mode: LaserMode::Dynamic,
-        dwell_unit: DwellUnit::Seconds,
-        resolution_mm: 0.001,
-        pen_up: Vec::new(),
-        pen_down: Vec::new(),
-        pen_delay_s: 0.0,
-        preamble: Vec::new(),
-        postamble: Vec::new(),
+        ..MachineProfile::generic_laser(Dialect::Grbl, bed)
     }
 }
 

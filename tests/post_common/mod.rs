@@ -3,8 +3,7 @@
 
 use foldcam::fab::{ContourRole, FabPlan, Job, Operation, PlanStats, Side, Toolpath};
 use foldcam::machine::{
-    Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, OperationSettings,
-    PowerRange, SettingsByOperation,
+    Bed, Corner, Dialect, MachineKind, MachineProfile, OperationSettings, SettingsByOperation,
 };
 use glam::{DAffine2, DVec2, dvec2};
 
@@ -95,34 +94,17 @@ pub fn plan(job: Job) -> FabPlan {
 pub fn machine(dialect: Dialect) -> MachineProfile {
     MachineProfile {
         name: format!("test-{dialect:?}").to_lowercase(),
-        description: "test machine".into(),
-        kind: MachineKind::Laser,
-        dialect,
-        bed: Bed {
-            width_mm: 300.0,
-            height_mm: 200.0,
-            origin: Corner::BottomLeft,
-            y_flipped: false,
-        },
-        max_feed_mm_min: 6000.0,
-        travel_feed_mm_min: 6000.0,
-        acceleration_mm_s2: 1000.0,
-        junction_deviation_mm: 0.01,
-        power: PowerRange {
-            min: 0.0,
-            max: 1000.0,
-        },
-        laser_mode: LaserMode::Dynamic,
-        dwell_unit: match dialect {
-            Dialect::Marlin => DwellUnit::Milliseconds,
-            _ => DwellUnit::Seconds,
-        },
-        resolution_mm: 0.001,
-        pen_up: Vec::new(),
-        pen_down: Vec::new(),
-        pen_delay_s: 0.0,
         preamble: vec!["G0 X0 Y0 ; preamble".into()],
         postamble: vec!["G0 X0 Y0 ; postamble".into()],
+        ..MachineProfile::generic_laser(
+            dialect,
+            Bed {
+                width_mm: 300.0,
+                height_mm: 200.0,
+                origin: Corner::BottomLeft,
+                y_flipped: false,
+            },
+        )
     }
 }
 
