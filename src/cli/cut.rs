@@ -3,15 +3,13 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use foldcam::fab::{FabPlan, Job, plan};
+use foldcam::fab::{FabPlan, Job};
 use foldcam::formats::write_atomic;
 use foldcam::machine::MachineProfile;
 use foldcam::post::{self, DxfVersion};
 
 use super::Outcome;
-use super::args::ScaleArgs;
-use super::fab_args::{FabArgs, ProfileArgs, load_pattern};
-use super::input::FrameArg;
+use super::fab_args::PlanRequest;
 
 /// Output kinds by extension.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,19 +49,11 @@ fn output_kind(path: &Path) -> Result<Output> {
                   foldcam cut bird.cp --size 150 -m lightburn -x card-300gsm -o bird.dxf"
 )]
 pub struct Args {
-    /// Pattern file (.fold, .svg or .cp).
-    pub input: PathBuf,
+    #[command(flatten)]
+    pub request: PlanRequest,
     /// Job file: .gcode/.nc/.ngc (G-code), .dxf or .svg; written atomically.
     #[arg(short, long)]
     pub output: PathBuf,
-    #[command(flatten)]
-    pub frame: FrameArg,
-    #[command(flatten)]
-    pub profiles: ProfileArgs,
-    #[command(flatten)]
-    pub fab: FabArgs,
-    #[command(flatten)]
-    pub scale: ScaleArgs,
     /// Write DXF R12 (LINE/POLYLINE) instead of R2000.
     #[arg(long)]
     pub r12: bool,
@@ -75,10 +65,7 @@ pub struct Args {
 /// Plans and writes the job files.
 pub fn run(args: Args) -> Result<Outcome> {
     let kind = output_kind(&args.output)?;
-    let (machine, material, options) = args.profiles.resolve(&args.fab)?;
-    let cp = load_pattern(&args.input, &args.frame, &args.scale)?;
-    let p = plan(&cp, &machine, &material, &options)
-        .with_context(|| args.input.display().to_string())?;
+    let (machine, p) = args.request.plan()?;
     let paths = job_paths(&args.output, &p);
     let mut files = Vec::new();
     for (job, path) in p.jobs.iter().zip(&paths) {

@@ -61,7 +61,13 @@ pub fn run(args: Args) -> Result<Outcome> {
             formats::parse(format, text).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
         planarize(&mut imported.pattern, &PlanarizeOptions::default())
             .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-        give_size(&mut imported.pattern, UNITLESS_SIZE_MM);
+        if imported.pattern.units == Units::Unitless {
+            let size = super::args::ScaleArgs {
+                scale: None,
+                size: Some(UNITLESS_SIZE_MM),
+            };
+            size.apply(&mut imported.pattern, None)?;
+        }
         let stem = name.rsplit_once('.').map_or(*name, |(s, _)| s);
         cases.push((stem.to_string(), imported.pattern));
     }
@@ -118,15 +124,6 @@ pub fn run(args: Args) -> Result<Outcome> {
 
 /// Size given to unitless samples (ORIPA files), as `--size` would: SVG and G-code need one.
 const UNITLESS_SIZE_MM: f64 = 150.0;
-
-fn give_size(cp: &mut CreasePattern, size: f64) {
-    if cp.units == Units::Unitless {
-        let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
-        if extent > 0.0 {
-            cp.scale_to_mm(size / extent);
-        }
-    }
-}
 
 fn classics() -> Result<Vec<(String, CreasePattern)>> {
     Ok(vec![

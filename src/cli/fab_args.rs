@@ -186,3 +186,29 @@ pub fn load_pattern(
         .with_context(|| path.display().to_string())?;
     Ok(imported.pattern)
 }
+
+/// A pattern file and everything needed to plan it: what `cut` and `plan` share.
+#[derive(Args, Clone, Debug)]
+pub struct PlanRequest {
+    /// Pattern file (.fold, .svg or .cp).
+    pub input: std::path::PathBuf,
+    #[command(flatten)]
+    pub frame: super::input::FrameArg,
+    #[command(flatten)]
+    pub profiles: ProfileArgs,
+    #[command(flatten)]
+    pub fab: FabArgs,
+    #[command(flatten)]
+    pub scale: super::args::ScaleArgs,
+}
+
+impl PlanRequest {
+    /// Loads the profiles and the pattern and plans it.
+    pub fn plan(&self) -> Result<(MachineProfile, foldcam::fab::FabPlan)> {
+        let (machine, material, options) = self.profiles.resolve(&self.fab)?;
+        let cp = load_pattern(&self.input, &self.frame, &self.scale)?;
+        let p = foldcam::fab::plan(&cp, &machine, &material, &options)
+            .with_context(|| self.input.display().to_string())?;
+        Ok((machine, p))
+    }
+}

@@ -1,14 +1,10 @@
 //! `foldcam plan PATTERN --machine M --material X`: the plan's statistics.
 
-use std::path::PathBuf;
-
-use anyhow::{Context, Result};
-use foldcam::fab::{FabPlan, plan};
+use anyhow::Result;
+use foldcam::fab::FabPlan;
 
 use super::Outcome;
-use super::args::ScaleArgs;
-use super::fab_args::{FabArgs, ProfileArgs, load_pattern};
-use super::input::FrameArg;
+use super::fab_args::PlanRequest;
 
 /// Print what cutting a pattern would do: lengths per operation, pierces, travel, time.
 #[derive(clap::Args)]
@@ -17,16 +13,8 @@ use super::input::FrameArg;
     foldcam plan tess.svg -m linuxcnc-fiber -x stainless-0.5 --two-sided --json"
 )]
 pub struct Args {
-    /// Pattern file (.fold, .svg or .cp).
-    pub input: PathBuf,
     #[command(flatten)]
-    pub frame: FrameArg,
-    #[command(flatten)]
-    pub profiles: ProfileArgs,
-    #[command(flatten)]
-    pub fab: FabArgs,
-    #[command(flatten)]
-    pub scale: ScaleArgs,
+    pub request: PlanRequest,
     /// Print the statistics as JSON.
     #[arg(long)]
     pub json: bool,
@@ -34,10 +22,7 @@ pub struct Args {
 
 /// Plans and prints the statistics.
 pub fn run(args: Args) -> Result<Outcome> {
-    let (machine, material, options) = args.profiles.resolve(&args.fab)?;
-    let cp = load_pattern(&args.input, &args.frame, &args.scale)?;
-    let p = plan(&cp, &machine, &material, &options)
-        .with_context(|| args.input.display().to_string())?;
+    let (_, p) = args.request.plan()?;
     if args.json {
         println!("{}", serde_json::to_string_pretty(&p.stats)?);
     } else {

@@ -3,14 +3,6 @@
 use super::Flavour;
 use crate::machine::LaserMode;
 
-/// The spindle word for a laser mode: `M4` dynamic (power follows speed), `M3` constant.
-pub fn laser_on_word(mode: LaserMode) -> &'static str {
-    match mode {
-        LaserMode::Dynamic => "M4",
-        LaserMode::Constant => "M3",
-    }
-}
-
 /// A GRBL laser.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct GrblLaser {
@@ -29,7 +21,7 @@ impl Flavour for GrblLaser {
         true
     }
     fn start(&self) -> Vec<String> {
-        vec![format!("{} S0", laser_on_word(self.mode))]
+        vec![format!("{} S0", self.mode.command())]
     }
     fn travel_words(&self) -> &str {
         " S0"
