@@ -30,6 +30,7 @@ pub mod fab;
 pub mod formats;
 pub mod geom;
 pub mod machine;
+pub mod mesh;
 pub mod pattern;
 pub mod post;
 pub mod render;

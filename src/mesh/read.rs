@@ -1,0 +1,89 @@
+//! OBJ (tobj) and STL (stl_io, ASCII or binary) readers.
+
+use std::io::Cursor;
+use std::path::Path;
+
+use glam::DVec3;
+
+use super::{MeshError, PolyMesh};
+
+/// Reads a mesh, choosing the reader from the extension (`.obj` or `.stl`, any case).
+pub fn read_mesh(path: &Path) -> Result<PolyMesh, MeshError> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let parse = match ext.as_deref() {
+        Some("obj") => parse_obj,
+        Some("stl") => parse_stl,
+        _ => return Err(MeshError::UnknownFormat),
+    };
+    let bytes = std::fs::read(path).map_err(|e| MeshError::Io(e.to_string()))?;
+    parse(&bytes)
+}
+
+/// Parses Wavefront OBJ: every object and group becomes part of one mesh; faces keep their
+/// polygons (no triangulation); points, lines, normals, texture coordinates and materials
+/// are ignored.
+pub fn parse_obj(bytes: &[u8]) -> Result<PolyMesh, MeshError> {
+    let options = tobj::LoadOptions {
+        triangulate: false,
+        single_index: false,
+        ignore_points: true,
+        ignore_lines: true,
+    };
+    let (models, _) = tobj::load_obj_buf(&mut Cursor::new(bytes), &options, |_| {
+        Err(tobj::LoadError::OpenFileFailed)
+    })
+    .map_err(|e| MeshError::Syntax {
+        format: "OBJ",
+        message: e.to_string(),
+    })?;
+    let mut positions = Vec::new();
+    let mut faces = Vec::new();
+    for model in models {
+        let mesh = model.mesh;
+        let base = positions.len() as u32;
+        positions.extend(
+            mesh.positions
+                .chunks_exact(3)
+                .map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())),
+        );
+        let mut start = 0usize;
+        let arities: Box<dyn Iterator<Item = usize>> = if mesh.face_arities.is_empty() {
+            Box::new(std::iter::repeat_n(3, mesh.indices.len() / 3))
+        } else {
+            Box::new(mesh.face_arities.iter().map(|&a| a as usize))
+        };
+        for arity in arities {
+            let Some(corners) = mesh.indices.get(start..start + arity) else {
+                return Err(MeshError::Syntax {
+                    format: "OBJ",
+                    message: "face list is truncated".into(),
+                });
+            };
+            faces.push(corners.iter().map(|&i| base + i).collect());
+            start += arity;
+        }
+    }
+    PolyMesh::new(positions, faces)
+}
+
+/// Parses STL, ASCII or binary; identical corner positions are merged into one vertex.
+pub fn parse_stl(bytes: &[u8]) -> Result<PolyMesh, MeshError> {
+    let mesh = stl_io::read_stl(&mut Cursor::new(bytes)).map_err(|e| MeshError::Syntax {
+        format: "STL",
+        message: e.to_string(),
+    })?;
+    let positions = mesh
+        .vertices
+        .iter()
+        .map(|v| DVec3::new(v[0].into(), v[1].into(), v[2].into()))
+        .collect();
+    let faces = mesh
+        .faces
+        .iter()
+        .map(|t| t.vertices.iter().map(|&i| i as u32).collect())
+        .collect();
+    PolyMesh::new(positions, faces)
+}
