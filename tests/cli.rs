@@ -592,3 +592,55 @@ fn popup_voxel_card_is_written_previewed_and_cuts_clean() {
     assert_ne!(o.status.code(), Some(0), "{}", text(&o.stdout));
     assert!(!listing(dir.path()).contains(&"bad.fold".to_string()));
 }
+
+#[test]
+fn popup_voxel_from_a_mesh_cuts_directly_and_saves_its_voxels() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mesh = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/popup/building.obj");
+    let mesh = mesh.to_string_lossy().into_owned();
+    // Straight to G-code: `cut` refuses to write a job the simulated machine faults on.
+    let o = foldcam(
+        &[
+            "popup",
+            "voxel",
+            &mesh,
+            "--resolution",
+            "60",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "-o",
+            "building.gcode",
+            "--save-voxels",
+            "building.voxel.txt",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let gcode = std::fs::read_to_string(dir.path().join("building.gcode")).expect("G-code");
+    let machine = foldcam::machine::load_machine("grbl-diode").expect("profile");
+    let report = foldcam::sim::run(&gcode, &machine).expect("simulated");
+    assert_eq!(report.violation_count, 0);
+    assert!(
+        text(&o.stderr).contains("pop-up checks"),
+        "progress is reported"
+    );
+    // The saved model reads back and makes the same card.
+    let o = foldcam(
+        &["popup", "voxel", "building.voxel.txt", "-o", "again.fold"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(text(&o.stdout).contains("60 ×"), "{}", text(&o.stdout));
+    // A broken mesh is refused, naming the file, and nothing is written.
+    std::fs::write(
+        dir.path().join("bad.obj"),
+        "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n",
+    )
+    .expect("write");
+    let o = foldcam(&["popup", "voxel", "bad.obj", "-o", "bad.fold"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("bad.obj"), "{}", text(&o.stderr));
+    assert!(!listing(dir.path()).contains(&"bad.fold".to_string()));
+}

@@ -294,6 +294,7 @@ fn depth_map_becomes_a_staircase_by_eq_7() {
 fn random_card(
     ops: &[(bool, usize, usize, usize)],
     windows: &[(usize, usize)],
+    tops: &[(usize, usize)],
     margin: f64,
 ) -> VoxelCard {
     let mut card = VoxelCard::new(5, 5, 5, 2.5).unwrap();
@@ -309,6 +310,9 @@ fn random_card(
     for &(x, z) in windows {
         card.set_hole(x, z, true).unwrap();
     }
+    for &(x, z) in tops {
+        card.set_top_omitted(x, z, true).unwrap();
+    }
     card
 }
 
@@ -318,13 +322,14 @@ proptest! {
     fn random_cards_give_one_sheet_that_folds_isometrically(
         ops in prop::collection::vec((any::<bool>(), 0..5usize, 0..5usize, 0..5usize), 1..12),
         windows in prop::collection::vec((0..5usize, 0..5usize), 0..4),
+        tops in prop::collection::vec((0..5usize, 0..5usize), 0..3),
         margin in prop::sample::select(vec![0.0, 1.0, 7.5]),
     ) {
-        let card = random_card(&ops, &windows, margin);
+        let card = random_card(&ops, &windows, &tops, margin);
         let cp = crease_pattern(&card).unwrap();
         assert_tiles_sheet(&card, &cp);
         assert_faces_on_voxel_planes(&card, &cp);
-        if windows.is_empty() {
+        if windows.is_empty() && tops.is_empty() {
             assert_faces_on_solid_unless_flat(&card, &cp);
         }
         for angle in [0.0, 45.0, 120.0] {
@@ -336,6 +341,20 @@ proptest! {
                 prop_assert!((len3 - len2).abs() < 1e-9);
             }
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+    /// The run-based check equals the cell-by-cell floods of §2.6, cell for cell.
+    #[test]
+    fn pop_up_check_matches_the_cell_floods(
+        ops in prop::collection::vec((any::<bool>(), 0..5usize, 0..5usize, 0..5usize), 1..14),
+        windows in prop::collection::vec((0..5usize, 0..5usize), 0..6),
+        tops in prop::collection::vec((0..5usize, 0..5usize), 0..4),
+    ) {
+        let card = random_card(&ops, &windows, &tops, 0.0);
+        prop_assert_eq!(check_popup(&card).problems, cell_flood_problems(&card));
     }
 }
 
@@ -442,7 +461,7 @@ fn fold_angles_match_the_folded_faces() {
 /// the face-on-solid check's sample point.
 #[test]
 fn regression_block_with_face_centre_on_grid_line() {
-    let card = random_card(&[(false, 0, 0, 0), (true, 1, 1, 1)], &[], 0.0);
+    let card = random_card(&[(false, 0, 0, 0), (true, 1, 1, 1)], &[], &[], 0.0);
     let cp = crease_pattern(&card).unwrap();
     assert_tiles_sheet(&card, &cp);
     assert_faces_on_solid(&card, &cp);

@@ -64,30 +64,44 @@ pub struct Args {
 
 /// Plans and writes the job files.
 pub fn run(args: Args) -> Result<Outcome> {
-    let kind = output_kind(&args.output)?;
     let (machine, p) = args.request.plan()?;
-    let paths = job_paths(&args.output, &p);
+    write_jobs(&args.output, &p, &machine, args.r12, args.dasharray)?;
+    Ok(Outcome::Done)
+}
+
+/// Writes the plan's jobs as the output's extension says (G-code read back by the simulated
+/// machine first, DXF R2000 or `r12`, SVG with `dasharray` perforations), then its summary.
+/// Nothing is written unless every job renders and checks.
+pub fn write_jobs(
+    output: &Path,
+    p: &FabPlan,
+    machine: &MachineProfile,
+    r12: bool,
+    dasharray: bool,
+) -> Result<()> {
+    let kind = output_kind(output)?;
+    let paths = job_paths(output, p);
     let mut files = Vec::new();
     for (job, path) in p.jobs.iter().zip(&paths) {
-        let bytes =
-            render(&args, kind, &p, job, &machine).with_context(|| path.display().to_string())?;
+        let bytes = render(kind, p, job, machine, r12, dasharray)
+            .with_context(|| path.display().to_string())?;
         files.push((path, bytes));
     }
-    // Everything rendered and checked before the first file is written.
     for (path, bytes) in &files {
         write_atomic(path, bytes).with_context(|| path.display().to_string())?;
         eprintln!("foldcam: wrote {}", path.display());
     }
-    print!("{}", super::plan::summary(&p));
-    Ok(Outcome::Done)
+    print!("{}", super::plan::summary(p));
+    Ok(())
 }
 
 fn render(
-    args: &Args,
     kind: Output,
     p: &FabPlan,
     job: &Job,
     m: &MachineProfile,
+    r12: bool,
+    dasharray: bool,
 ) -> Result<Vec<u8>> {
     Ok(match kind {
         Output::Gcode => {
@@ -105,14 +119,14 @@ fn render(
             text.into_bytes()
         }
         Output::Dxf => {
-            let version = if args.r12 {
+            let version = if r12 {
                 DxfVersion::R12
             } else {
                 DxfVersion::R2000
             };
             post::dxf(p, job, version)?
         }
-        Output::Svg => post::svg(p, job, &m.bed, args.dasharray)?.into_bytes(),
+        Output::Svg => post::svg(p, job, &m.bed, dasharray)?.into_bytes(),
     })
 }
 

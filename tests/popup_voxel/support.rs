@@ -1,7 +1,13 @@
 //! Helpers of the voxel pop-up tests: samples and the geometric assertions (eq. 1, 2: the
 //! faces tile the sheet; at 90° every face lies on the voxel surface).
 
-use foldcam::design::popup::voxel::{VoxelCard, fold_card, parse_voxel_card};
+// Shared by several test crates; each uses only some helpers.
+#![allow(dead_code)]
+
+use foldcam::design::popup::voxel::surface::{Line, Plane, Surface};
+use foldcam::design::popup::voxel::{
+    FrontCellProblem, PopupProblem, VoxelCard, fold_card, parse_voxel_card,
+};
 use foldcam::geom::polygon::signed_area;
 use foldcam::pattern::{Assignment, CreasePattern, Face};
 use glam::{DVec2, DVec3};
@@ -126,4 +132,61 @@ pub fn assert_faces_on_solid(card: &VoxelCard, cp: &CreasePattern) {
         }
     }
     assert!(fronts > 0 && tops > 0, "{fronts} fronts, {tops} tops");
+}
+
+/// The pop-up check of §2.6 done literally, cell by cell over the public [`Surface`]: flood
+/// (a) from the top-left cell moving left, down and right, flood (b) from the bottom-left cell
+/// moving left, up and right, never across a cut. Returns the failing front cells by column
+/// then row, as `check_popup` reports them.
+pub fn cell_flood_problems(card: &VoxelCard) -> Vec<FrontCellProblem> {
+    let s = Surface::new(card);
+    let flood = |start: (usize, usize), dr: i64| {
+        let mut seen = vec![false; s.planes.len()];
+        let mut stack = vec![start];
+        seen[start.0 * s.rows + start.1] = true;
+        while let Some((x, r)) = stack.pop() {
+            let (xi, ri) = (x as i64, r as i64);
+            let mut next = Vec::new();
+            if x > 0 && s.line_left(xi, ri) != Line::Cut {
+                next.push((x - 1, r));
+            }
+            if x + 1 < s.nx && s.line_left(xi + 1, ri) != Line::Cut {
+                next.push((x + 1, r));
+            }
+            let nr = ri + dr;
+            if (0..s.rows as i64).contains(&nr) && s.line_below(xi, ri.max(nr)) != Line::Cut {
+                next.push((x, nr as usize));
+            }
+            for (nx, nr) in next {
+                if !std::mem::replace(&mut seen[nx * s.rows + nr], true) {
+                    stack.push((nx, nr));
+                }
+            }
+        }
+        seen
+    };
+    let (a, b) = (flood((0, s.rows - 1), -1), flood((0, 0), 1));
+    let mut problems = Vec::new();
+    for x in 0..s.nx {
+        for r in 0..s.rows {
+            let Plane::Vertical(depth) = s.plane(x as i64, r as i64) else {
+                continue;
+            };
+            let i = x * s.rows + r;
+            let problem = match (a[i], b[i]) {
+                _ if depth == 0 => continue,
+                (true, true) => continue,
+                (false, false) => PopupProblem::Floating,
+                (true, false) => PopupProblem::HeldFromBackOnly,
+                (false, true) => PopupProblem::HeldFromBaseOnly,
+            };
+            problems.push(FrontCellProblem {
+                x,
+                depth: depth as usize,
+                z: r + depth as usize - s.ny,
+                problem,
+            });
+        }
+    }
+    problems
 }

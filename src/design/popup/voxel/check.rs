@@ -6,10 +6,8 @@
 //! one reached by neither floats (Fig. 8 a), one reached by only one flood is held from one
 //! side only and is not pulled up when the card opens (Fig. 8 b).
 
-use std::collections::VecDeque;
-
 use super::VoxelCard;
-use super::surface::{Line, Plane, Surface};
+use super::runs::ColumnRuns;
 
 /// Why a front cell fails the pop-up check.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -63,65 +61,7 @@ impl PopupReport {
 
 /// Runs both floods of §2.6 on `card`'s pattern cells.
 pub fn check_popup(card: &VoxelCard) -> PopupReport {
-    let surface = Surface::new(card);
-    let top = surface.rows - 1;
-    let from_back = flood(&surface, (0, top), -1);
-    let from_base = flood(&surface, (0, 0), 1);
-    let mut problems = Vec::new();
-    for x in 0..surface.nx {
-        for r in 0..surface.rows {
-            let Plane::Vertical(depth) = surface.plane(x as i64, r as i64) else {
-                continue;
-            };
-            let i = x * surface.rows + r;
-            let problem = match (depth > 0, from_back[i], from_base[i]) {
-                (false, _, _) | (true, true, true) => continue,
-                (true, false, false) => PopupProblem::Floating,
-                (true, true, false) => PopupProblem::HeldFromBackOnly,
-                (true, false, true) => PopupProblem::HeldFromBaseOnly,
-            };
-            let z = r + depth as usize - surface.ny;
-            problems.push(FrontCellProblem {
-                x,
-                depth: depth as usize,
-                z,
-                problem,
-            });
-        }
+    PopupReport {
+        problems: ColumnRuns::new(card).problems(card.ny()),
     }
-    PopupReport { problems }
-}
-
-/// Breadth-first flood from `start` moving left, right and `dr` rows (−1 down, +1 up).
-fn flood(s: &Surface, start: (usize, usize), dr: i64) -> Vec<bool> {
-    let mut seen = vec![false; s.planes.len()];
-    let mut queue = VecDeque::from([start]);
-    seen[start.0 * s.rows + start.1] = true;
-    while let Some((x, r)) = queue.pop_front() {
-        for (nx, nr) in steps(s, x, r, dr) {
-            let i = nx * s.rows + nr;
-            if !seen[i] {
-                seen[i] = true;
-                queue.push_back((nx, nr));
-            }
-        }
-    }
-    seen
-}
-
-/// The neighbours of (x, r) reachable without crossing a cut.
-fn steps(s: &Surface, x: usize, r: usize, dr: i64) -> impl Iterator<Item = (usize, usize)> {
-    let mut out = [None; 3];
-    let (xi, ri) = (x as i64, r as i64);
-    if x > 0 && s.line_left(xi, ri) != Line::Cut {
-        out[0] = Some((x - 1, r));
-    }
-    if x + 1 < s.nx && s.line_left(xi + 1, ri) != Line::Cut {
-        out[1] = Some((x + 1, r));
-    }
-    let nr = ri + dr;
-    if (0..s.rows as i64).contains(&nr) && s.line_below(xi, ri.max(nr)) != Line::Cut {
-        out[2] = Some((x, nr as usize));
-    }
-    out.into_iter().flatten()
 }

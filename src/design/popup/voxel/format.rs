@@ -13,7 +13,8 @@
 //!
 //! After `rows`, each line is one height level, the highest first and the last line z = 0;
 //! levels above the first line are empty. Each token is a column's depth in cells (the row's
-//! filled cells are `y < depth`); a trailing `w` makes the row's front face a window (eq. 5).
+//! filled cells are `y < depth`); a trailing `w` makes the row's front face a window (eq. 5),
+//! a trailing `t` leaves out the row's top face (§3.3), both may follow one depth (`3wt`).
 //! Every line has the same number of tokens, which is the card's width `nx`. Depths must not
 //! grow upwards (eq. 4) nor exceed `depth`. Errors name the line.
 
@@ -70,7 +71,7 @@ pub fn parse_voxel_card(text: &str) -> Result<VoxelCard, VoxelFormatError> {
         header_line(&mut header, n, line)?;
     }
     let rows_line = rows_line.ok_or(VoxelFormatError::MissingKey("rows"))?;
-    let rows: Vec<(usize, Vec<(usize, bool)>)> = lines
+    let rows: Vec<(usize, Vec<Token>)> = lines
         .map(|(n, l)| row_line(n, l).map(|r| (n, r)))
         .collect::<Result<_, _>>()?;
     build(&header, rows_line, &rows)
@@ -99,22 +100,58 @@ fn header_line(h: &mut Header, n: usize, line: &str) -> Result<(), VoxelFormatEr
     Ok(())
 }
 
-fn row_line(n: usize, line: &str) -> Result<Vec<(usize, bool)>, VoxelFormatError> {
+/// One column of a row: depth, window, top face left out.
+type Token = (usize, bool, bool);
+
+fn row_line(n: usize, line: &str) -> Result<Vec<Token>, VoxelFormatError> {
     line.split_whitespace()
         .map(|t| {
-            let (digits, window) = t.strip_suffix('w').map_or((t, false), |d| (d, true));
+            let digits = t.trim_end_matches(['w', 't']);
+            let flags = &t[digits.len()..];
+            let (window, top) = (flags.contains('w'), flags.contains('t'));
+            if flags.len() > usize::from(window) + usize::from(top) {
+                return Err(syntax(n, format!("`{t}` repeats a flag")));
+            }
             digits
                 .parse()
-                .map(|d| (d, window))
-                .map_err(|_| syntax(n, format!("`{t}` is not a depth (like `3` or `3w`)")))
+                .map(|d| (d, window, top))
+                .map_err(|_| syntax(n, format!("`{t}` is not a depth (like `3`, `3w` or `3t`)")))
         })
         .collect()
+}
+
+/// Writes `card` in the text format (every row, the highest first), so that
+/// [`parse_voxel_card`] reads back the same card.
+pub fn format_voxel_card(card: &VoxelCard) -> String {
+    use std::fmt::Write;
+    let mut out = String::from("# foldcam voxel card (see examples/popup/README.txt)\n");
+    let _ = writeln!(out, "cell_mm {}", card.cell_mm());
+    let _ = writeln!(out, "depth {}", card.ny());
+    let _ = writeln!(out, "height {}", card.nz());
+    let _ = writeln!(out, "margin_mm {}", card.margin_mm());
+    out.push_str("rows\n");
+    for z in (0..card.nz()).rev() {
+        for x in 0..card.nx() {
+            if x > 0 {
+                out.push(' ');
+            }
+            let _ = write!(out, "{}", card.depth(x, z));
+            if card.is_hole(x, z) {
+                out.push('w');
+            }
+            if card.is_top_omitted(x, z) {
+                out.push('t');
+            }
+        }
+        out.push('\n');
+    }
+    out
 }
 
 fn build(
     h: &Header,
     rows_line: usize,
-    rows: &[(usize, Vec<(usize, bool)>)],
+    rows: &[(usize, Vec<Token>)],
 ) -> Result<VoxelCard, VoxelFormatError> {
     let cell_mm = h.cell_mm.ok_or(VoxelFormatError::MissingKey("cell_mm"))?;
     let ny = h.depth.ok_or(VoxelFormatError::MissingKey("depth"))?;
@@ -144,10 +181,11 @@ fn build(
     // Bottom-up, so each row is checked against the one below it (eq. 4).
     for (i, (n, row)) in rows.iter().enumerate().rev() {
         let z = rows.len() - 1 - i;
-        for (x, &(depth, window)) in row.iter().enumerate() {
+        for (x, &(depth, window, top)) in row.iter().enumerate() {
             let card_err = |source| VoxelFormatError::Card { line: *n, source };
             card.set_depth(x, z, depth).map_err(card_err)?;
             card.set_hole(x, z, window).map_err(card_err)?;
+            card.set_top_omitted(x, z, top).map_err(card_err)?;
         }
     }
     Ok(card)

@@ -10,14 +10,18 @@
 //!   ±90° fold angles and the outline (§2.5).
 //! - [`check_popup`] (`check.rs`): the two floods of §2.6.
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 6 as a [`FoldedState`].
-//! - [`parse_voxel_card`] (`format.rs`): the text format; samples in `examples/popup/`.
+//! - [`parse_voxel_card`], [`format_voxel_card`] (`format.rs`): the text format; samples in
+//!   `examples/popup/`.
 //! - [`card_from_depth_map`] (`depth_map.rs`): grey-level depth maps made staircase by eq. 7.
+//! - [`card_from_depths`] (`convert/`): §3 — a [`DepthField`] from a height map or a mesh
+//!   rendered from the front ([`depth_field_from_mesh`]), bump removal by opening and closing,
+//!   eq. 7, windows where the card still pops up, thin top faces left out.
 //!
 //! Every card is one sheet that folds flat (eq. 1, 2): each slice is a monotone staircase
 //! whose rectangles have equal opposite sides.
 //!
-//! Limits: no margins besides empty cells; no mesh input, bump removal or automatic windows
-//! (§3) yet.
+//! The pop-up check runs on face strips (`runs.rs`), not cells, and can rebuild one column
+//! after an edit; the searches of §3.2 c) and §3.3 rely on that.
 //!
 //! ```
 //! use foldcam::design::popup::voxel::{VoxelCard, check_popup, crease_pattern};
@@ -35,16 +39,22 @@
 //! [`FoldedState`]: crate::pattern::FoldedState
 
 mod check;
+mod convert;
 mod crease;
 mod depth_map;
 mod fold;
 mod format;
 mod model;
+mod runs;
 pub mod surface;
 
 pub use check::{FrontCellProblem, PopupProblem, PopupReport, check_popup};
+pub use convert::{
+    ConvertOptions, ConvertReport, DepthField, MeshPlacement, PlacementError, UpAxis,
+    card_from_depths, depth_field_from_mesh,
+};
 pub use crease::crease_pattern;
 pub use depth_map::{DepthMap, card_from_depth_map};
 pub use fold::{FoldedCard, fold_card, open_transform};
-pub use format::{VoxelFormatError, parse_voxel_card};
+pub use format::{VoxelFormatError, format_voxel_card, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};

@@ -60,6 +60,12 @@ pub enum VoxelError {
         /// Samples given.
         got: usize,
     },
+    /// The structuring element of §3.2 a) must have an odd side.
+    #[error("the structuring element must be an odd number of cells across, got {0}")]
+    BadElement(usize),
+    /// The window gap is not a fraction in [0, 1].
+    #[error("the window gap must be a fraction of the base depth in [0, 1], got {0}")]
+    BadWindowGap(f64),
     /// Setting a row depth would break the staircase constraint (eq. 4).
     #[error("row (x {x}, z {z}): depth {depth} breaks the staircase (allowed {min}..={max})")]
     NotStaircase {
@@ -89,6 +95,8 @@ pub struct VoxelCard {
     depth: Vec<u16>,
     /// `hole[x * nz + z]`: the front face of row (x, z) is a window (eq. 5, `isHole[x][z]`).
     hole: Vec<bool>,
+    /// `top_omitted[x * nz + z]`: the top face of row (x, z) is left out (§3.3).
+    top_omitted: Vec<bool>,
 }
 
 impl VoxelCard {
@@ -110,6 +118,7 @@ impl VoxelCard {
             margin_mm: 0.0,
             depth: vec![0; nx * nz],
             hole: vec![false; nx * nz],
+            top_omitted: vec![false; nx * nz],
         })
     }
 
@@ -231,6 +240,27 @@ impl VoxelCard {
         let i = self.checked(x, 0, z)?;
         self.hole[i] = on;
         Ok(())
+    }
+
+    /// The top face of row (x, z) (the horizontal face at height z + 1 between the fronts of
+    /// rows z and z + 1) is left out, as §3.3 does for thin faces: its paper lies on the back
+    /// sheet instead (or on the base, where it falls below the fold; Fig. 14).
+    pub fn is_top_omitted(&self, x: usize, z: usize) -> bool {
+        self.index(x, z).is_some_and(|i| self.top_omitted[i])
+    }
+
+    /// Leaves out, or restores, the top face of row (x, z) (§3.3). It has an effect only where
+    /// the row stands out further than the row above it.
+    pub fn set_top_omitted(&mut self, x: usize, z: usize, on: bool) -> Result<(), VoxelError> {
+        let i = self.checked(x, 0, z)?;
+        self.top_omitted[i] = on;
+        Ok(())
+    }
+
+    /// Width in cells of the top face of row (x, z): how far the row stands out beyond the
+    /// row above it (0 when there is no top face).
+    pub fn top_width(&self, x: usize, z: usize) -> usize {
+        self.depth(x, z) - self.depth(x, z + 1)
     }
 
     /// True when every x-slice is a staircase (eq. 4); always true for this type, kept for

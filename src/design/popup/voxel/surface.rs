@@ -19,6 +19,11 @@
 //! none); when that index is negative the cell folds on to the back sheet. Both keep the
 //! pattern coordinate v, which is how they are computed here.
 //!
+//! # Omitted top faces (§3.3, Fig. 14)
+//! A top face left out ([`VoxelCard::is_top_omitted`]) keeps its pattern coordinate v and lies
+//! on the back sheet (`y = 0`, z = v) where v ≥ 0, on the base (`z = 0`, y = −v) where v < 0,
+//! as a window that would show on it does.
+//!
 //! # Lines (Table 1)
 //! Two neighbouring cells on the same plane: nothing (180°). A vertical cell above a horizontal
 //! one meeting at the same 3D edge: valley (90°); a horizontal above a vertical: mountain
@@ -104,17 +109,7 @@ impl Surface {
 
     /// The line between row `r − 1` and row `r` of column x (margins included).
     pub fn line_below(&self, x: i64, r: i64) -> Line {
-        let v = r - self.ny as i64;
-        match (self.plane(x, r), self.plane(x, r - 1)) {
-            (a, b) if a == b => Line::Flat,
-            (Plane::Vertical(y0), Plane::Horizontal(z0)) if z0 as i64 == v + y0 as i64 => {
-                Line::Valley
-            }
-            (Plane::Horizontal(z0), Plane::Vertical(y0)) if z0 as i64 == v + y0 as i64 => {
-                Line::Mountain
-            }
-            _ => Line::Cut,
-        }
+        line_between(self.plane(x, r), self.plane(x, r - 1), r - self.ny as i64)
     }
 
     /// The line between column `x − 1` and column `x` at row r (margins included).
@@ -127,8 +122,21 @@ impl Surface {
     }
 }
 
+/// The line at pattern height `v` between a cell on `upper` and the cell below it on `lower`
+/// (Table 1).
+pub fn line_between(upper: Plane, lower: Plane, v: i64) -> Line {
+    match (upper, lower) {
+        (a, b) if a == b => Line::Flat,
+        (Plane::Vertical(y0), Plane::Horizontal(z0)) if z0 as i64 == v + y0 as i64 => Line::Valley,
+        (Plane::Horizontal(z0), Plane::Vertical(y0)) if z0 as i64 == v + y0 as i64 => {
+            Line::Mountain
+        }
+        _ => Line::Cut,
+    }
+}
+
 /// Fills `out` (one slice, row 0 at the bottom) by walking the staircase path top-down.
-fn slice_planes(card: &VoxelCard, x: usize, out: &mut [Plane]) {
+pub(super) fn slice_planes(card: &VoxelCard, x: usize, out: &mut [Plane]) {
     let ny = card.ny() as i64;
     let (mut y, mut z) = (0usize, card.nz());
     while y < card.ny() || z > 0 {
@@ -138,9 +146,29 @@ fn slice_planes(card: &VoxelCard, x: usize, out: &mut [Plane]) {
             out[r] = vertical_or_window(card, x, z - 1, y);
             z -= 1;
         } else {
-            out[r] = Plane::Horizontal(z as u32);
+            out[r] = horizontal_or_omitted(card, x, z, v_low);
             y += 1;
         }
+    }
+}
+
+/// The plane of a cell of the horizontal face at height `z0` (the top of row `z0 − 1`, or the
+/// base), moved to the sheets per §3.3 when that top face is omitted.
+fn horizontal_or_omitted(card: &VoxelCard, x: usize, z0: usize, v_low: i64) -> Plane {
+    if z0 > 0 && card.is_top_omitted(x, z0 - 1) {
+        on_the_sheets(v_low)
+    } else {
+        Plane::Horizontal(z0 as u32)
+    }
+}
+
+/// Where a cell at pattern height `v_low` lies when it stays in the sheets' plane: the back
+/// sheet above the central fold, the base below it.
+fn on_the_sheets(v_low: i64) -> Plane {
+    if v_low >= 0 {
+        Plane::Vertical(0)
+    } else {
+        Plane::Horizontal(0)
     }
 }
 
@@ -154,8 +182,9 @@ fn vertical_or_window(card: &VoxelCard, x: usize, k: usize, y0: usize) -> Plane 
         .find(|&h| !card.is_hole(x, h))
         .map_or(0, |h| h + 1);
     // The horizontal cell at height `top` with the same v starts at y = top + y0 − k − 1.
+    let v_low = k as i64 - y0 as i64;
     if top + y0 > k {
-        Plane::Horizontal(top as u32)
+        horizontal_or_omitted(card, x, top, v_low)
     } else {
         Plane::Vertical(0)
     }
