@@ -37,7 +37,7 @@
 mod check;
 mod crease;
 mod depth_map;
-mod fold;
+pub(crate) mod fold;
 mod format;
 mod model;
 pub mod surface;
