@@ -12,6 +12,7 @@ mod generate;
 mod input;
 mod plan;
 mod popup;
+mod popup_poly;
 mod preview;
 mod simulate;
 

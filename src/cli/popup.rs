@@ -19,6 +19,8 @@ use super::args::positive;
 pub enum Command {
     /// A card from a voxel model: a `.voxel.txt` front view or a height-map PNG.
     Voxel(VoxelArgs),
+    /// A card from a polygon design (`.popup.toml`): faces and openings on reference planes.
+    Poly(super::popup_poly::PolyArgs),
 }
 
 /// Make a pop-up card from voxels.
@@ -62,6 +64,7 @@ pub struct VoxelArgs {
 pub fn run(command: Command) -> Result<Outcome> {
     match command {
         Command::Voxel(args) => voxel(args),
+        Command::Poly(args) => super::popup_poly::run(args),
     }
 }
 
