@@ -316,7 +316,9 @@ impl PolygonCard {
             return Err(PolygonError::Empty);
         }
         let new_bounds = bounds(&clipped);
-        for face in &mut self.faces {
+        let (mut before, mut after) = (Shapes::new(), Shapes::new());
+        let mut trimmed = Vec::new();
+        for (i, face) in self.faces.iter().enumerate() {
             if face.polygon.is_empty() || !overlap(face.bounds, new_bounds) {
                 continue;
             }
@@ -324,9 +326,21 @@ impl PolygonCard {
             let rest = face
                 .polygon
                 .overlay(&clipped, OverlayRule::Difference, FillRule::NonZero);
-            *face = OaFace::new(face.plane, rest);
+            before.extend(face.polygon.iter().cloned());
+            after.extend(rest.iter().cloned());
+            trimmed.push((i, rest));
         }
-        self.faces.push(OaFace::new(plane, clipped));
+        // The new face is what the trimmed faces gave up: the same region up to the rounding
+        // of crossings, but bounded by exactly the rounded vertices the differences made, so
+        // the faces tile the sheet exactly (eq. 4) on the grid.
+        let taken = before.overlay(&after, OverlayRule::Difference, FillRule::NonZero);
+        if area_units2(&taken) == 0 {
+            return Err(PolygonError::Empty);
+        }
+        for (i, rest) in trimmed {
+            self.faces[i] = OaFace::new(self.faces[i].plane, rest);
+        }
+        self.faces.push(OaFace::new(plane, taken));
         Ok(self.faces.len() - 1)
     }
 
