@@ -1,8 +1,8 @@
 //! The crease pattern of a polygon card (seed 000 §3.4).
 //!
 //! The classified lines ([`super::lines`]) become edges in millimetres: valleys +90°, mountains
-//! −90°, cuts; the sheet outline is the boundary. The pattern is planarised (T-junctions split,
-//! cuts drawn from both sides merged) with its faces, in the voxel card's convention: x along
+//! −90°, cuts; the sheet outline is the boundary. The pattern is planarised (T-junctions split)
+//! with its faces, in the voxel card's convention: x along
 //! the fold from 0, v up (back sheet on top), the central fold on v = 0.
 
 use glam::DVec2;
@@ -11,9 +11,11 @@ use super::lines::{LineKind, Lines, classify};
 use super::model::{PolygonCard, to_mm};
 use crate::pattern::{Assignment, CreasePattern, PlanarizeError, PlanarizeOptions, planarize};
 
-/// Vertices closer than this merge when the pattern is planarised, in millimetres: ten grid
-/// units, well above the rounding of crossings of slanted edges.
-pub const PATTERN_TOLERANCE_MM: f64 = 1e-3;
+/// Vertices closer than this merge when the pattern is planarised, in millimetres: a tenth
+/// of a grid unit. The faces tile the sheet exactly on the grid, so every vertex that lies on
+/// another face's edge lies on it exactly; the tolerance only absorbs the conversion to
+/// millimetres and never moves a vertex off its grid point (a crease stays parallel to x).
+pub const PATTERN_TOLERANCE_MM: f64 = 1e-5;
 
 /// Builds the planarised crease pattern of `card`, with faces.
 pub fn crease_pattern(card: &PolygonCard) -> Result<CreasePattern, PlanarizeError> {

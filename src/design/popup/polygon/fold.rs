@@ -45,7 +45,7 @@ fn face_plane(card: &PolygonCard, cp: &CreasePattern, face: &Face) -> Option<Pla
     let holes: Vec<Vec<DVec2>> = face.holes.iter().map(ring).collect();
     let inside =
         |q: DVec2| contains_point(&outer, q) && !holes.iter().any(|h| contains_point(h, q));
-    for eps in [1e-2, 2e-3] {
+    for eps in [1e-2, 1e-3, 1e-4, 3e-5] {
         for i in 0..outer.len() {
             let (a, b) = (outer[i], outer[(i + 1) % outer.len()]);
             let d = (b - a).normalize_or_zero();
