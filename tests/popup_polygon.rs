@@ -485,3 +485,89 @@ fn total_length(cp: &CreasePattern, kind: Assignment) -> f64 {
         .map(|e| cp.edge_length(e))
         .sum()
 }
+
+fn foldcam(args: &[&str], dir: &std::path::Path) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the foldcam binary runs")
+}
+
+#[test]
+fn cli_writes_pattern_and_previews_and_refuses_invalid_designs() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = example_path("house-door.popup.toml");
+    let o = foldcam(
+        &[
+            "popup",
+            "poly",
+            &design,
+            "-o",
+            "house.svg",
+            "--png",
+            "house.png",
+            "--gif",
+            "house.gif",
+            "--width",
+            "160",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        image::open(dir.path().join("house.png")).unwrap().width(),
+        160
+    );
+    assert!(
+        std::fs::read(dir.path().join("house.gif"))
+            .unwrap()
+            .starts_with(b"GIF8")
+    );
+    let cp = foldcam::formats::load(&dir.path().join("house.svg"))
+        .unwrap()
+        .pattern;
+    assert!(
+        cp.edges
+            .iter()
+            .any(|e| e.assignment == Assignment::Mountain)
+    );
+    // A floating wall added as operation 5: exit 1, the operation named, nothing written.
+    let text = std::fs::read_to_string(&design).unwrap();
+    let bad = format!(
+        "{text}\n[[operation]]\nplane = \"vertical\"\nat = 50\npolygon = [[90,10],[110,10],[110,20],[90,20]]\n"
+    );
+    std::fs::write(dir.path().join("bad.popup.toml"), bad).unwrap();
+    let o = foldcam(
+        &[
+            "popup",
+            "poly",
+            "bad.popup.toml",
+            "-o",
+            "bad.fold",
+            "--png",
+            "bad.png",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.contains("invalid at operation 5") && out.contains("face 6"),
+        "{out}"
+    );
+    assert!(!dir.path().join("bad.fold").exists() && !dir.path().join("bad.png").exists());
+    // Bad input: exit 2 with the file and the operation in the message.
+    std::fs::write(
+        dir.path().join("worse.popup.toml"),
+        "[card]\nwidth = 100\ndepth = 50\nheight = 50\n[[operation]]\nplane = \"vertical\"\nat = 99\npolygon = [[0,0],[1,0],[1,1]]\n",
+    )
+    .unwrap();
+    let o = foldcam(
+        &["popup", "poly", "worse.popup.toml", "-o", "w.fold"],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("worse.popup.toml: operation 1:"), "{err}");
+}
