@@ -140,8 +140,7 @@ pub struct Replay {
     /// The pop-up check of the final card.
     pub report: PopupReport,
     /// When the final card fails: the 1-based operation after which it last turned from
-    /// passing to failing (0: the failure was never fixed since the blank card... which passes,
-    /// so this is at least 1).
+    /// passing to failing (the blank card passes, so at least 1); `None` when it passes.
     pub became_invalid_after: Option<usize>,
 }
 

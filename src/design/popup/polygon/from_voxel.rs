@@ -14,7 +14,8 @@ use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay::Overlay;
 use i_overlay::core::overlay_rule::OverlayRule;
 
-use super::model::{FaceKind, Plane, PolygonCard, PolygonError, rect, to_units};
+use super::grid::{Point, rect, to_units};
+use super::model::{FaceKind, Plane, PolygonCard, PolygonError};
 use crate::design::popup::voxel::VoxelCard;
 use crate::design::popup::voxel::surface::{self, Surface};
 use glam::DVec2;
@@ -27,7 +28,7 @@ pub fn from_voxel(card: &VoxelCard) -> Result<PolygonCard, PolygonError> {
     let depth = card.ny() as f64 * s + m;
     let mut out = PolygonCard::new(w, depth, h - depth)?;
     let surface = Surface::new(card);
-    let mut runs: BTreeMap<Plane, Vec<Vec<super::model::Point>>> = BTreeMap::new();
+    let mut runs: BTreeMap<Plane, Vec<Vec<Point>>> = BTreeMap::new();
     for x in 0..surface.nx {
         let mut r = 0;
         while r < surface.rows {

@@ -46,6 +46,7 @@ mod crease;
 mod design;
 mod fold;
 mod from_voxel;
+mod grid;
 pub mod lines;
 mod model;
 
