@@ -476,7 +476,7 @@ fn assert_same_surface(vcard: &VoxelCard, pcard: &PolygonCard) {
             n += 1;
         }
     }
-    assert!(n > 50);
+    assert!(n >= 9, "sampled {n} cells");
 }
 
 fn total_length(cp: &CreasePattern, kind: Assignment) -> f64 {
@@ -570,4 +570,43 @@ fn cli_writes_pattern_and_previews_and_refuses_invalid_designs() {
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("worse.popup.toml: operation 1:"), "{err}");
+}
+
+#[test]
+fn converted_voxel_cards_with_windows_keep_the_check_result() {
+    // The voxel tests' single column of four rows (Fig. 8 of seed 001): windows at the bottom
+    // (held from the back only), top and bottom (floating), none, one in the middle.
+    for (windows, pops) in [
+        (&[0, 1][..], false),
+        (&[0, 3], false),
+        (&[], true),
+        (&[1], false),
+    ] {
+        let mut vcard = VoxelCard::new(3, 4, 8, 5.0).unwrap();
+        for z in 0..4 {
+            vcard.set_depth(1, z, 2).unwrap();
+        }
+        for &z in windows {
+            vcard.set_hole(1, z, true).unwrap();
+        }
+        assert_eq!(voxel::check_popup(&vcard).passed(), pops);
+        let pcard = from_voxel(&vcard).unwrap();
+        assert_pattern_condition(&pcard);
+        assert_same_surface(&vcard, &pcard);
+        let report = check_popup(&pcard);
+        assert_eq!(
+            report.passed(),
+            pops,
+            "windows {windows:?}: {:?}",
+            report.problems
+        );
+        if !pops {
+            // The failing face is the column's front at y = 10 mm.
+            assert!(
+                report.problems.iter().all(|p| p.plane.t_mm() == 10.0),
+                "{:?}",
+                report.problems
+            );
+        }
+    }
 }

@@ -210,3 +210,39 @@ pub fn relation(upper: Plane, lower: Plane, v: i32) -> LineKind {
         _ => LineKind::Flat,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MM: i32 = 10_000;
+
+    fn v(t: i32) -> Plane {
+        Plane {
+            kind: FaceKind::Vertical,
+            t: t * MM,
+        }
+    }
+
+    fn h(t: i32) -> Plane {
+        Plane {
+            kind: FaceKind::Horizontal,
+            t: t * MM,
+        }
+    }
+
+    #[test]
+    fn relations_follow_eq_2_and_3() {
+        // Back sheet over the base on the central fold: valley.
+        assert_eq!(relation(Plane::BACK, Plane::BASE, 0), LineKind::Valley);
+        // The back sheet over a roof at z = 30 meets it on the card line (y 0, z 30) at v = 30.
+        assert_eq!(relation(Plane::BACK, h(30), 30 * MM), LineKind::Valley);
+        assert_eq!(relation(Plane::BACK, h(30), 20 * MM), LineKind::Cut);
+        // A roof at z = 30 over a wall at y = 30 meets it on (30, 30) at v = 0: mountain.
+        assert_eq!(relation(h(30), v(30), 0), LineKind::Mountain);
+        assert_eq!(relation(h(30), v(20), 0), LineKind::Cut);
+        // Two walls never fold; the same plane is flat paper.
+        assert_eq!(relation(v(30), v(20), 0), LineKind::Cut);
+        assert_eq!(relation(v(30), v(30), 5 * MM), LineKind::Flat);
+    }
+}
