@@ -30,7 +30,10 @@ use super::check::{PopupReport, check_popup};
 use super::model::{FaceKind, PolygonCard, PolygonError};
 
 /// Most operations in one design.
-pub const MAX_OPERATIONS: usize = 100_000;
+pub const MAX_OPERATIONS: usize = 10_000;
+
+/// Most polygon points in one design, all operations together.
+pub const MAX_DESIGN_POINTS: usize = 1_000_000;
 
 /// Why a design cannot be replayed.
 #[derive(Clone, Debug, PartialEq, Error)]
@@ -55,6 +58,9 @@ pub enum DesignError {
     /// More than [`MAX_OPERATIONS`] operations.
     #[error("{0} operations, more than the {MAX_OPERATIONS} allowed")]
     TooMany(usize),
+    /// More than [`MAX_DESIGN_POINTS`] polygon points in all.
+    #[error("{0} polygon points in all, more than the {MAX_DESIGN_POINTS} allowed")]
+    TooManyPoints(usize),
 }
 
 /// The card section.
@@ -150,25 +156,49 @@ pub fn parse_design(text: &str) -> Result<Design, DesignError> {
     if design.operations.len() > MAX_OPERATIONS {
         return Err(DesignError::TooMany(design.operations.len()));
     }
+    let points: usize = design.operations.iter().map(|o| o.polygon.len()).sum();
+    if points > MAX_DESIGN_POINTS {
+        return Err(DesignError::TooManyPoints(points));
+    }
     Ok(design)
 }
 
 impl Design {
     /// Builds the card, applying every operation in order.
     pub fn build(&self) -> Result<PolygonCard, DesignError> {
-        self.run(false).map(|r| r.card)
+        self.run(|_, _| {})
     }
 
-    /// Applies every operation, running the pop-up check after each, and reports after
-    /// which operation the card last became invalid when the final card fails.
+    /// Builds the card and runs the pop-up check. When the final card fails, the design is
+    /// replayed once more with a check after every operation to find after which operation
+    /// the card last turned from passing to failing (quadratic, but only for failing designs).
     pub fn replay(&self) -> Result<Replay, DesignError> {
-        self.run(true)
+        let card = self.build()?;
+        let report = check_popup(&card);
+        if report.passed() {
+            return Ok(Replay {
+                card,
+                report,
+                became_invalid_after: None,
+            });
+        }
+        let mut last_valid = 0;
+        self.run(|index, card| {
+            if check_popup(card).passed() {
+                last_valid = index;
+            }
+        })?;
+        Ok(Replay {
+            card,
+            report,
+            became_invalid_after: Some(last_valid + 1),
+        })
     }
 
-    fn run(&self, check_each: bool) -> Result<Replay, DesignError> {
+    /// Applies the operations in order, calling `after(index, card)` after each (1-based).
+    fn run(&self, mut after: impl FnMut(usize, &PolygonCard)) -> Result<PolygonCard, DesignError> {
         let c = &self.card;
         let mut card = PolygonCard::new(c.width, c.depth, c.height).map_err(DesignError::Card)?;
-        let mut last_valid = 0;
         for (i, op) in self.operations.iter().enumerate() {
             let index = i + 1;
             let scale = match op.units {
@@ -188,16 +218,8 @@ impl Design {
                 Add::Opening => card.add_opening(kind, op.at * scale, &points),
             };
             result.map_err(|source| DesignError::Operation { index, source })?;
-            if check_each && check_popup(&card).passed() {
-                last_valid = index;
-            }
+            after(index, &card);
         }
-        let report = check_popup(&card);
-        let became_invalid_after = (check_each && !report.passed()).then_some(last_valid + 1);
-        Ok(Replay {
-            card,
-            report,
-            became_invalid_after,
-        })
+        Ok(card)
     }
 }

@@ -53,8 +53,8 @@ mod model;
 pub use check::{FaceProblem, PopupProblem, PopupReport, check_popup, check_with_lines};
 pub use crease::{PATTERN_TOLERANCE_MM, crease_pattern, crease_pattern_from};
 pub use design::{
-    Add, CardSize, Design, DesignError, MAX_OPERATIONS, Operation, PlaneName, Replay, Units,
-    parse_design,
+    Add, CardSize, Design, DesignError, MAX_DESIGN_POINTS, MAX_OPERATIONS, Operation, PlaneName,
+    Replay, Units, parse_design,
 };
 pub use fold::{FoldedPolygonCard, face_planes, fold_card, standing_corners};
 pub use from_voxel::from_voxel;
