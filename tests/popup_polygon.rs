@@ -7,11 +7,8 @@ use foldcam::design::popup::polygon::{
     crease_pattern, fold_card, from_voxel, parse_design,
 };
 use foldcam::design::popup::voxel::{self, VoxelCard};
-use foldcam::pattern::{Assignment, CreasePattern};
+use foldcam::pattern::Assignment;
 use glam::{DVec2, DVec3};
-use i_overlay::core::fill_rule::FillRule;
-use i_overlay::core::overlay_rule::OverlayRule;
-use i_overlay::core::single::SingleIntOverlay;
 use proptest::prelude::*;
 
 #[path = "popup_polygon/support.rs"]
@@ -94,36 +91,44 @@ fn box_has_the_lines_of_section_3_4() {
 
 #[test]
 fn partly_shared_segments_are_split_at_end_points() {
-    // Fig. 10: two boxes of different depths side by side share the base line only where
-    // both stand; the roof of the deeper one meets the wall of the other in a cut.
+    // Fig. 10: a horizontal strip at z = 10 over y 10..20 (pattern v −10..0, x 20..80), then a
+    // wall at y = 20 under its right half (x 50..80, z 0..10: v −20..−10). The strip's lower
+    // edge (one segment, x 20..80) is shared with the base on 20..50 and with the wall on
+    // 50..80: split at x = 50, it is a cut where the base lies (card lines (10, 0) and
+    // (20, 10) differ) and a mountain where the wall meets the strip on (20, 10).
     let mut card = PolygonCard::new(100.0, 50.0, 50.0).unwrap();
-    add_box(&mut card, 20.0, 50.0, 20.0, 20.0);
-    add_box(&mut card, 50.0, 80.0, 30.0, 20.0);
-    assert!(check_popup(&card).passed());
+    card.add_face(FaceKind::Horizontal, 10.0, &quad(20.0, 10.0, 80.0, 20.0))
+        .unwrap();
+    card.add_face(FaceKind::Vertical, 20.0, &quad(50.0, 0.0, 80.0, 10.0))
+        .unwrap();
     let cp = crease_pattern(&card).unwrap();
-    let mountains: Vec<f64> = fold_lengths(&cp, Assignment::Mountain);
-    assert_eq!(
-        mountains,
-        vec![30.0, 30.0],
-        "two box tops at v = 0 and v = −10"
-    );
-    // Along v = 0 the first box's roof/wall mountain (20..50) borders the second box's wall
-    // (a VFace on both sides, different planes): that stretch (50..80) is not a fold.
-    let at_zero: Vec<(f64, f64, Assignment)> = cp
+    let mut on_line: Vec<(f64, f64, Assignment)> = cp
         .edge_ids()
         .map(|e| (cp.segment(e), cp.edges[e.index()].assignment))
-        .filter(|((a, b), _)| a.y == 0.0 && b.y == 0.0)
+        .filter(|((a, b), _)| a.y == -10.0 && b.y == -10.0)
         .map(|((a, b), k)| (a.x.min(b.x), a.x.max(b.x), k))
         .collect();
-    assert!(
-        at_zero.contains(&(20.0, 50.0, Assignment::Mountain)),
-        "{at_zero:?}"
+    on_line.sort_by(|p, q| p.0.total_cmp(&q.0));
+    assert_eq!(
+        on_line,
+        vec![
+            (20.0, 50.0, Assignment::Cut),
+            (50.0, 80.0, Assignment::Mountain)
+        ]
     );
-    assert!(
-        !at_zero
-            .iter()
-            .any(|&(x0, x1, k)| k.is_fold() && x0 >= 50.0 && x1 <= 80.0)
+    // The strip's upper edge (v = 0, card line (10, 10)) borders the back sheet (0, 0): cut.
+    let valleys_at_zero: f64 = cp
+        .edge_ids()
+        .filter(|&e| cp.edges[e.index()].assignment == Assignment::Valley)
+        .map(|e| (cp.segment(e), cp.edge_length(e)))
+        .filter(|((a, b), _)| a.y == 0.0 && b.y == 0.0)
+        .map(|(_, l)| l)
+        .sum();
+    assert_eq!(
+        valleys_at_zero, 40.0,
+        "central fold left and right of the strip only"
     );
+    assert_eq!(fold_lengths(&cp, Assignment::Mountain), vec![30.0]);
 }
 
 #[test]
@@ -422,68 +427,6 @@ proptest! {
         let folded = fold_card(&card, &cp, 60.0);
         assert_isometric(&cp, &folded.state, &folded.source);
     }
-}
-
-/// Eq. 4 exactly on the integer grid: pairwise intersections are empty and the areas add up
-/// to the sheet; the regularised union computed separately matches within 1e-9.
-fn assert_pattern_condition(card: &PolygonCard) {
-    let faces = card.faces();
-    for i in 0..faces.len() {
-        for j in i + 1..faces.len() {
-            let common = faces[i].polygon.overlay(
-                &faces[j].polygon,
-                OverlayRule::Intersect,
-                FillRule::NonZero,
-            );
-            assert_eq!(shapes_area(&common), 0.0, "faces {i} and {j} overlap");
-        }
-    }
-    let (w, d, h) = card.size_mm();
-    let sheet = w * (d + h);
-    let sum: f64 = faces.iter().map(|f| f.area_mm2()).sum();
-    assert!(
-        (sum - sheet).abs() <= 1e-9 * sheet,
-        "faces {sum}, sheet {sheet}"
-    );
-    let mut union = faces[0].polygon.clone();
-    for f in &faces[1..] {
-        union = union.overlay(&f.polygon, OverlayRule::Union, FillRule::NonZero);
-    }
-    let area = shapes_area(&union) * UNIT_MM * UNIT_MM;
-    assert!(
-        (area - sheet).abs() <= 1e-9 * sheet,
-        "union {area}, sheet {sheet}"
-    );
-}
-
-/// The same card surface: sample points of the pattern land on the same card point at 90°.
-fn assert_same_surface(vcard: &VoxelCard, pcard: &PolygonCard) {
-    let s = vcard.cell_mm();
-    let m = vcard.margin_mm();
-    let surface = voxel::surface::Surface::new(vcard);
-    let mut n = 0;
-    for x in 0..surface.nx {
-        for r in 0..surface.rows {
-            // A point inside the cell, off every grid line.
-            let (u, v) = (x as f64 + 0.37, r as f64 - vcard.ny() as f64 + 0.61);
-            let want = DVec3::from(surface.plane(x as i64, r as i64).to_card(u, v)) * s
-                + DVec3::new(m, 0.0, 0.0);
-            let got = pcard.card_point(DVec2::new(u * s + m, v * s)).unwrap();
-            assert!(
-                (got - want).length() < 1e-9,
-                "cell ({x}, {r}): {got} vs {want}"
-            );
-            n += 1;
-        }
-    }
-    assert!(n >= 9, "sampled {n} cells");
-}
-
-fn total_length(cp: &CreasePattern, kind: Assignment) -> f64 {
-    cp.edge_ids()
-        .filter(|&e| cp.edges[e.index()].assignment == kind)
-        .map(|e| cp.edge_length(e))
-        .sum()
 }
 
 fn foldcam(args: &[&str], dir: &std::path::Path) -> std::process::Output {

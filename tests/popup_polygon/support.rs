@@ -6,6 +6,7 @@ use foldcam::design::popup::polygon::{
     FaceKind, PATTERN_TOLERANCE_MM, PolygonCard, Shapes, UNIT_MM, face_planes, fold_card,
     parse_design,
 };
+use foldcam::design::popup::voxel::{self, VoxelCard};
 use foldcam::fab::{PlanOptions, plan};
 use foldcam::geom::polygon::signed_area;
 use foldcam::machine::{load_machine, load_material};
@@ -262,4 +263,66 @@ pub fn assert_cuts_clean(name: &str, cp: &CreasePattern) {
             cov.stray.first()
         );
     }
+}
+
+/// Eq. 4 exactly on the integer grid: pairwise intersections are empty and the areas add up
+/// to the sheet; the regularised union computed separately matches within 1e-9.
+pub fn assert_pattern_condition(card: &PolygonCard) {
+    let faces = card.faces();
+    for i in 0..faces.len() {
+        for j in i + 1..faces.len() {
+            let common = faces[i].polygon.overlay(
+                &faces[j].polygon,
+                OverlayRule::Intersect,
+                FillRule::NonZero,
+            );
+            assert_eq!(shapes_area(&common), 0.0, "faces {i} and {j} overlap");
+        }
+    }
+    let (w, d, h) = card.size_mm();
+    let sheet = w * (d + h);
+    let sum: f64 = faces.iter().map(|f| f.area_mm2()).sum();
+    assert!(
+        (sum - sheet).abs() <= 1e-9 * sheet,
+        "faces {sum}, sheet {sheet}"
+    );
+    let mut union = faces[0].polygon.clone();
+    for f in &faces[1..] {
+        union = union.overlay(&f.polygon, OverlayRule::Union, FillRule::NonZero);
+    }
+    let area = shapes_area(&union) * UNIT_MM * UNIT_MM;
+    assert!(
+        (area - sheet).abs() <= 1e-9 * sheet,
+        "union {area}, sheet {sheet}"
+    );
+}
+
+/// The same card surface: sample points of the pattern land on the same card point at 90°.
+pub fn assert_same_surface(vcard: &VoxelCard, pcard: &PolygonCard) {
+    let s = vcard.cell_mm();
+    let m = vcard.margin_mm();
+    let surface = voxel::surface::Surface::new(vcard);
+    let mut n = 0;
+    for x in 0..surface.nx {
+        for r in 0..surface.rows {
+            // A point inside the cell, off every grid line.
+            let (u, v) = (x as f64 + 0.37, r as f64 - vcard.ny() as f64 + 0.61);
+            let want = DVec3::from(surface.plane(x as i64, r as i64).to_card(u, v)) * s
+                + DVec3::new(m, 0.0, 0.0);
+            let got = pcard.card_point(DVec2::new(u * s + m, v * s)).unwrap();
+            assert!(
+                (got - want).length() < 1e-9,
+                "cell ({x}, {r}): {got} vs {want}"
+            );
+            n += 1;
+        }
+    }
+    assert!(n >= 9, "sampled {n} cells");
+}
+
+pub fn total_length(cp: &CreasePattern, kind: Assignment) -> f64 {
+    cp.edge_ids()
+        .filter(|&e| cp.edges[e.index()].assignment == kind)
+        .map(|e| cp.edge_length(e))
+        .sum()
 }
