@@ -226,9 +226,12 @@ impl PolygonCard {
     /// The sheet on the pattern: x in `0..width`, v in `−depth..height` (grid units).
     pub fn sheet(&self) -> [Point; 4] {
         let (w, d, h) = (self.width, self.depth, self.height);
-        rect(0, -d, w, h)
-            .try_into()
-            .unwrap_or([Point::new(0, 0); 4])
+        [
+            Point::new(0, -d),
+            Point::new(w, -d),
+            Point::new(w, h),
+            Point::new(0, h),
+        ]
     }
 
     /// Every face, index 0 the back sheet and 1 the base.
@@ -273,6 +276,8 @@ impl PolygonCard {
         check_points(points)?;
         let t = plane.t_mm();
         let low = points.iter().map(|q| q.y).fold(f64::INFINITY, f64::min);
+        // On the grid, so the equivalent face's pattern polygon is the opening's exactly.
+        let low = f64::from(units(low)) * UNIT_MM;
         // P'_v[i] = (x, y − z + minZ, minZ): a horizontal face at z = minZ, given by (x, y);
         // P'_h[i] = (x, minY, z − y + minY): a vertical face at y = minY, given by (x, z).
         // On the plane's own coordinates (x, w) both read (x, t − w + min w).
@@ -305,6 +310,25 @@ impl PolygonCard {
         plane: Plane,
         shapes: Shapes,
     ) -> Result<usize, PolygonError> {
+        // Keep i_overlay's i32 engine within its coordinate budget (±2^29).
+        let limit = units(2.0 * MAX_SIDE_MM);
+        let far = shapes
+            .iter()
+            .flatten()
+            .flatten()
+            .enumerate()
+            .find(|(_, p)| {
+                p.x.unsigned_abs() > limit.unsigned_abs()
+                    || p.y.unsigned_abs() > limit.unsigned_abs()
+            });
+        if let Some((index, p)) = far {
+            let q = to_mm(*p);
+            return Err(PolygonError::BadPoint {
+                index,
+                x: q.x,
+                y: q.y,
+            });
+        }
         let sheet = self.sheet();
         let clipped = shapes.overlay(&sheet[..], OverlayRule::Intersect, FillRule::NonZero);
         if area_units2(&clipped) == 0 {
