@@ -13,6 +13,7 @@ mod input;
 mod plan;
 mod popup;
 mod popup_input;
+mod popup_poly;
 mod preview;
 mod simulate;
 

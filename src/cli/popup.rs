@@ -19,6 +19,8 @@ use super::fab_args::FabArgs;
 pub enum Command {
     /// A card from voxels: a `.voxel.txt` model, a height-map PNG or an OBJ/STL mesh.
     Voxel(Box<VoxelArgs>),
+    /// A card from a polygon design (`.popup.toml`): faces and openings on reference planes.
+    Poly(super::popup_poly::PolyArgs),
 }
 
 /// Make a pop-up card from voxels.
@@ -83,6 +85,7 @@ pub struct VoxelArgs {
 pub fn run(command: Command) -> Result<Outcome> {
     match command {
         Command::Voxel(args) => voxel(*args),
+        Command::Poly(args) => super::popup_poly::run(args),
     }
 }
 

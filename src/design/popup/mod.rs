@@ -7,4 +7,5 @@
 //!
 //! The polygon model of seed 000 shares the open/close transform and will live next to it.
 
+pub mod polygon;
 pub mod voxel;

@@ -101,7 +101,11 @@ fn face_plane(card: &VoxelCard, surface: &Surface, cp: &CreasePattern, face: &Fa
 /// One folded edge per distinct pair of folded vertices along the faces' cycles, with the
 /// pattern edge's assignment; folds carry the current fold angle `theta_deg` (eq. 6's θ:
 /// every crease of the card turns by the same angle, valleys +θ, mountains −θ).
-fn folded_edges(cp: &CreasePattern, faces: &[(Face, Face)], theta_deg: f64) -> Vec<Edge> {
+pub(crate) fn folded_edges(
+    cp: &CreasePattern,
+    faces: &[(Face, Face)],
+    theta_deg: f64,
+) -> Vec<Edge> {
     let mut pattern_edge = HashMap::new();
     for e in &cp.edges {
         let [a, b] = e.vertices;

@@ -42,7 +42,7 @@ mod check;
 mod convert;
 mod crease;
 mod depth_map;
-mod fold;
+pub(crate) mod fold;
 mod format;
 mod model;
 mod runs;
