@@ -235,31 +235,58 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
     Ok(())
 }
 
-/// The bundled voxel house (seed 001): checked, unfolded into its crease pattern, drawn
-/// standing and opening, and cut from card on the diode laser through the simulated machine.
+/// The bundled voxel house and building mesh (seed 001): made into cards (the mesh through
+/// §3), checked, unfolded into crease patterns, drawn standing and opening, and cut from card
+/// on the diode laser through the simulated machine.
 fn popup_card(dir: &Path, width: u32) -> Result<()> {
-    use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, parse_voxel_card};
-    use foldcam::render::{View3d, render_folded_png, render_gif};
+    use foldcam::design::popup::voxel::{
+        ConvertOptions, MeshPlacement, card_from_depths, depth_field_from_mesh, parse_voxel_card,
+    };
     let text = include_str!("../../examples/popup/house.voxel.txt");
-    let card = parse_voxel_card(text).map_err(|e| anyhow::anyhow!("house.voxel.txt: {e}"))?;
-    let report = check_popup(&card);
-    if !report.passed() {
-        bail!("house.voxel.txt: the bundled card does not pop up");
+    let house = parse_voxel_card(text).map_err(|e| anyhow::anyhow!("house.voxel.txt: {e}"))?;
+    show_card(dir, width, "popup-house", &house)?;
+    let obj = include_bytes!("../../examples/popup/building.obj");
+    let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow::anyhow!("building.obj: {e}"))?;
+    let (field, _) = depth_field_from_mesh(&mesh, &MeshPlacement::default())
+        .map_err(|e| anyhow::anyhow!("building.obj: {e}"))?;
+    let (mut building, report) = card_from_depths(&field, 2.0, &ConvertOptions::default())
+        .map_err(|e| anyhow::anyhow!("building.obj: {e}"))?;
+    building.set_margin_mm(10.0)?;
+    println!(
+        "building.obj: {} faces seen from the front; eq. 7 added {} voxels, {} rows became windows, {} thin tops left out",
+        mesh.faces().len(),
+        report.added_cells,
+        report.window_rows,
+        report.tops_omitted
+    );
+    show_card(dir, width, "popup-building", &building)
+}
+
+fn show_card(
+    dir: &Path,
+    width: u32,
+    name: &str,
+    card: &foldcam::design::popup::voxel::VoxelCard,
+) -> Result<()> {
+    use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card};
+    use foldcam::render::{View3d, render_folded_png, render_gif};
+    if !check_popup(card).passed() {
+        bail!("{name}: the bundled card does not pop up");
     }
-    let cp = crease_pattern(&card).map_err(|e| anyhow::anyhow!("house.voxel.txt: {e}"))?;
-    formats::save(&dir.join("popup-house.fold"), &cp, None)?;
+    let cp = crease_pattern(card).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    formats::save(&dir.join(format!("{name}.fold")), &cp, None)?;
     let view = View3d {
         azimuth_deg: 200.0,
         elevation_deg: 28.0,
         ..View3d::with_width(width.min(640))
     };
-    let standing = render_folded_png(&fold_card(&card, &cp, 90.0).state, &view)?;
-    write_atomic(&dir.join("popup-house.png"), &standing).context("popup-house.png")?;
+    let standing = render_folded_png(&fold_card(card, &cp, 90.0).state, &view)?;
+    write_atomic(&dir.join(format!("{name}.png")), &standing).context("png")?;
     let frames: Vec<_> = (0..=12)
-        .map(|k| fold_card(&card, &cp, 10.0 + 80.0 * f64::from(k) / 12.0).state)
+        .map(|k| fold_card(card, &cp, 10.0 + 80.0 * f64::from(k) / 12.0).state)
         .collect();
     let gif = render_gif(&frames, &view, 100)?;
-    write_atomic(&dir.join("popup-house.gif"), &gif).context("popup-house.gif")?;
+    write_atomic(&dir.join(format!("{name}.gif")), &gif).context("gif")?;
     let machine = load_machine("grbl-diode")?;
     let material = load_material("card-300gsm")?;
     let p = plan(
@@ -271,23 +298,23 @@ fn popup_card(dir: &Path, width: u32) -> Result<()> {
     let gcode = post::gcode(&p, &p.jobs[0], &machine)?;
     let run = sim::run(&gcode, &machine)?;
     let cov = sim::coverage(&run, &cp, &p.jobs[0], &p);
-    write_atomic(&dir.join("popup-house.grbl-diode.gcode"), gcode.as_bytes())
-        .context("popup-house.grbl-diode.gcode")?;
+    write_atomic(
+        &dir.join(format!("{name}.grbl-diode.gcode")),
+        gcode.as_bytes(),
+    )
+    .context("gcode")?;
+    let clean = run.is_clean() && cov.passed();
     println!(
-        "\npop-up house (seed 001): {} × {} × {} voxels, pops up; {} creases and cuts; \
-         grbl-diode/card-300gsm job {}; popup-house.png and .gif show it standing and opening",
+        "\n{name} (seed 001): {} × {} × {} voxels, pops up; {} creases and cuts; \
+         grbl-diode/card-300gsm job {}; {name}.png and .gif show it standing and opening",
         card.nx(),
         card.ny(),
         card.nz(),
         cp.edges.len(),
-        if run.is_clean() && cov.passed() {
-            "clean"
-        } else {
-            "NOT clean"
-        }
+        if clean { "clean" } else { "NOT clean" }
     );
-    if !(run.is_clean() && cov.passed()) {
-        bail!("pop-up house: the simulated machine found problems");
+    if !clean {
+        bail!("{name}: the simulated machine found problems");
     }
     Ok(())
 }
