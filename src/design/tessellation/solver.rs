@@ -114,8 +114,7 @@ pub fn solve(
         && l.min_vertex_angle >= 0.0
         && l.min_vertex_angle < std::f64::consts::FRAC_PI_3
         && l.margin >= 0.0;
-    if !valid
-    {
+    if !valid {
         return Err(TessError::BadParameter(format!(
             "limits out of range: fold angle must be in (0, 180] deg, vertex angle in [0, 60) deg, \
              got {:.2} and {:.2}",
