@@ -306,3 +306,59 @@ fn bad_input_is_refused_with_a_reason() {
         Err(TessError::BadParameter(_))
     ));
 }
+
+fn foldcam(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+/// The command writes a FOLD with the pattern (frame 0) and the folded form (frame 1), the two
+/// previews, and names the variations it cannot do yet instead of falling back.
+#[test]
+fn cli_writes_pattern_folded_form_and_previews() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("dome.fold");
+    let (png, cp_png) = (dir.path().join("f.png"), dir.path().join("cp.png"));
+    let mesh = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/tessellation/dome.obj");
+    let run = foldcam(&[
+        "tessellate",
+        mesh.to_str().expect("utf-8"),
+        "-x",
+        "stainless-0.5",
+        "-o",
+        out.to_str().expect("utf-8"),
+        "--png",
+        png.to_str().expect("utf-8"),
+        "--cp-png",
+        cp_png.to_str().expect("utf-8"),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stdout}\n{stderr}");
+    assert!(
+        stdout.contains("converged") && stderr.contains("iteration"),
+        "{stdout}{stderr}"
+    );
+    let imported = foldcam::formats::load(&out).expect("readable FOLD");
+    let folded = imported.folded.expect("folded frame");
+    assert_eq!(folded.positions.len(), imported.pattern.vertices.len());
+    assert_eq!(folded.edges.len(), imported.pattern.edges.len());
+    assert!(folded.positions.iter().any(|p| p.z.abs() > 1.0));
+    for p in [png, cp_png] {
+        assert!(std::fs::read(&p).expect("written").starts_with(b"\x89PNG"));
+    }
+    for tuck in ["truncated", "twisted", "twist"] {
+        let run = foldcam(&[
+            "tessellate",
+            mesh.to_str().expect("utf-8"),
+            "--tuck",
+            tuck,
+            "-o",
+            "x.fold",
+        ]);
+        assert_eq!(run.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&run.stderr).contains("not implemented yet"));
+    }
+}

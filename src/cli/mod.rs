@@ -14,6 +14,7 @@ mod plan;
 mod popup;
 mod preview;
 mod simulate;
+mod tessellate;
 
 use std::process::ExitCode;
 
@@ -70,6 +71,8 @@ enum Command {
     Popup(popup::Command),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
+    /// Make a freeform origami tessellation (star tucks) from an OBJ/STL mesh.
+    Tessellate(tessellate::Args),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
@@ -85,6 +88,7 @@ pub fn run() -> ExitCode {
         Command::Simulate(a) => simulate::run(a),
         Command::Popup(c) => popup::run(c),
         Command::Demo(a) => demo::run(a),
+        Command::Tessellate(a) => tessellate::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
