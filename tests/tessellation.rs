@@ -362,3 +362,23 @@ fn cli_writes_pattern_folded_form_and_previews() {
         assert!(String::from_utf8_lossy(&run.stderr).contains("not implemented yet"));
     }
 }
+
+/// Ground contact (§6): the bell stands on a table, every boundary vertex on one plane.
+#[test]
+fn bell_stands_on_the_ground() {
+    let mut opts = TessellateOptions::with_limits(stainless_limits());
+    opts.ground = true;
+    let t = tessellate(&example("bell"), &opts, |_| {}).unwrap();
+    assert!(t.report.converged, "{}", t.report.summary());
+    let z0 = t.report.limits.ground_z.expect("plane chosen");
+    let on_ground = t
+        .mesh
+        .positions
+        .iter()
+        .zip(&t.mesh.interior)
+        .filter(|(_, inside)| !**inside)
+        .inspect(|(p, _)| assert!((p.z - z0).abs() < 1e-9, "{} vs {z0}", p.z))
+        .count();
+    assert!(on_ground > 30);
+    check_unfolded("bell on the ground", &t);
+}

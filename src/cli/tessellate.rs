@@ -81,6 +81,10 @@ pub struct Args {
     /// Smallest angle between neighbouring creases, degrees (δ_corner).
     #[arg(long, value_parser = degrees)]
     pub min_vertex_angle: Option<f64>,
+    /// Ground contact: every boundary vertex on the horizontal plane (z) through the lowest
+    /// one, so the shell stands on a table (§6).
+    #[arg(long)]
+    pub ground: bool,
     /// Newton iteration cap.
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
@@ -128,6 +132,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         },
     };
     opts.solve.max_iterations = args.max_iterations;
+    opts.ground = args.ground;
     eprintln!(
         "foldcam: {}: {} faces; solving (fold <= {fold:.1} deg, vertex angle >= {corner:.1} deg)",
         args.mesh.display(),

@@ -29,6 +29,9 @@ pub struct Limits {
     pub min_vertex_angle: f64,
     /// Margin m kept inside each limit by the active rows.
     pub margin: f64,
+    /// Ground contact (§6's design example): when set, every boundary vertex lies on the
+    /// horizontal plane at this z (mesh units), one equality row per vertex.
+    pub ground_z: Option<f64>,
 }
 
 impl Limits {
@@ -38,6 +41,7 @@ impl Limits {
             max_fold: max_fold_deg.to_radians(),
             min_vertex_angle: min_vertex_angle_deg.to_radians(),
             margin: 0.25f64.to_radians(),
+            ground_z: None,
         }
     }
 }
@@ -60,6 +64,8 @@ pub enum Family {
     FoldSign,
     /// §5: a corner angle under δ_corner.
     VertexAngle,
+    /// §6: a boundary vertex off the ground plane.
+    Ground,
 }
 
 /// One constraint: its value and its Jacobian row as (vertex, ∂/∂x) blocks.
@@ -156,6 +162,20 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
             out.push(row);
         }
     }
+    if let Some(z) = limits.ground_z {
+        for (v, _) in mesh
+            .interior
+            .iter()
+            .enumerate()
+            .filter(|(_, inside)| !**inside)
+        {
+            out.push(Row {
+                family: Family::Ground,
+                value: x[v].z - z,
+                entries: vec![(v as u32, DVec3::Z)],
+            });
+        }
+    }
     let mut all: Vec<Row> = dev.into_iter().flatten().collect();
     all.extend(out);
     all
@@ -216,10 +236,12 @@ pub struct Residuals {
     pub wrong_sign: f64,
     /// Smallest triangle corner angle, radians.
     pub min_vertex_angle: f64,
+    /// Largest distance of a boundary vertex from the ground plane (0 without one), mesh units.
+    pub ground: f64,
 }
 
-/// Measures [`Residuals`] at `x`.
-pub fn residuals(mesh: &TessMesh, x: &[DVec3]) -> Residuals {
+/// Measures [`Residuals`] at `x` (the ground distance against `ground_z`).
+pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residuals {
     let developability = angle_defects(mesh, x)
         .iter()
         .fold(0.0f64, |m, d| m.max(d.abs()));
@@ -228,6 +250,16 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3]) -> Residuals {
         min_vertex_angle: f64::INFINITY,
         ..Residuals::default()
     };
+    if let Some(z) = ground_z {
+        for (v, _) in mesh
+            .interior
+            .iter()
+            .enumerate()
+            .filter(|(_, inside)| !**inside)
+        {
+            r.ground = r.ground.max((x[v].z - z).abs());
+        }
+    }
     for t in &mesh.triangles {
         for k in 0..3 {
             let [o, a, b] = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]].map(|v| x[v as usize]);

@@ -14,6 +14,9 @@ pub struct TessellateOptions {
     pub star: StarOptions,
     /// Solver settings and fabrication limits (§3.3, §5).
     pub solve: SolveOptions,
+    /// Ground contact (§6): put every boundary vertex on the horizontal plane through the
+    /// lowest boundary vertex of the initial pattern (overrides `solve.limits.ground_z`).
+    pub ground: bool,
 }
 
 impl TessellateOptions {
@@ -91,7 +94,17 @@ pub fn tessellate(
     let mut initial = star_tucks(&he, &opts.star)?;
     assign_folds(&mut initial.mesh);
     let mut solved = initial.mesh.clone();
-    let report = solve(&mut solved, &opts.solve, progress)?;
+    let mut solve_opts = opts.solve;
+    if opts.ground {
+        solve_opts.limits.ground_z = solved
+            .positions
+            .iter()
+            .zip(&solved.interior)
+            .filter(|(_, inside)| !**inside)
+            .map(|(p, _)| p.z)
+            .reduce(f64::min);
+    }
+    let report = solve(&mut solved, &solve_opts, progress)?;
     let unfolded = unfold(&solved);
     Ok(Tessellation {
         initial,

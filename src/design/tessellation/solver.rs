@@ -41,8 +41,8 @@ pub struct Iteration {
     pub index: usize,
     /// Residuals after the step.
     pub residuals: Residuals,
-    /// Active rows per family: developability, fold limit, fold sign, vertex angle.
-    pub active: [usize; 4],
+    /// Active rows per family: developability, fold limit, fold sign, vertex angle, ground.
+    pub active: [usize; 5],
     /// Step length α taken.
     pub step: f64,
     /// Conjugate-gradient iterations used.
@@ -89,7 +89,13 @@ impl SolveReport {
             },
             deg(self.last.min_vertex_angle),
             deg(self.limits.min_vertex_angle),
-        )
+        ) + &match self.limits.ground_z {
+            Some(z) => format!(
+                "\n  ground contact at z = {z:.3}: max boundary distance {:.2e}",
+                self.last.ground
+            ),
+            None => String::new(),
+        }
     }
 }
 
@@ -98,7 +104,11 @@ fn satisfied(r: &Residuals, opts: &SolveOptions) -> bool {
         && r.max_fold <= opts.limits.max_fold
         && r.wrong_sign >= 0.0
         && r.min_vertex_angle >= opts.limits.min_vertex_angle
+        && r.ground <= GROUND_TOLERANCE
 }
+
+/// Largest accepted distance of a boundary vertex from the ground plane, mesh units.
+pub const GROUND_TOLERANCE: f64 = 1e-9;
 
 /// Solves the constraints for `mesh.positions` in place (§3.3), calling `progress` after every
 /// iteration. Errors only on bad options; not converging is reported, not an error.
@@ -122,7 +132,7 @@ pub fn solve(
             l.min_vertex_angle.to_degrees()
         )));
     }
-    let initial = constraints::residuals(mesh, &mesh.positions);
+    let initial = constraints::residuals(mesh, &mesh.positions, l.ground_z);
     let mut last = initial;
     let mut iterations = 0;
     let mut x = mesh.positions.clone();
@@ -149,7 +159,7 @@ pub fn solve(
         x = trial;
         rows = trial_rows;
         merit = m;
-        last = constraints::residuals(mesh, &x);
+        last = constraints::residuals(mesh, &x, l.ground_z);
         progress(&Iteration {
             index: iterations,
             residuals: last,
@@ -172,14 +182,15 @@ fn merit_of(rows: &[Row]) -> f64 {
     0.5 * rows.iter().map(|r| r.value * r.value).sum::<f64>()
 }
 
-fn active_counts(rows: &[Row]) -> [usize; 4] {
-    let mut c = [0; 4];
+fn active_counts(rows: &[Row]) -> [usize; 5] {
+    let mut c = [0; 5];
     for r in rows {
         c[match r.family {
             Family::Developability => 0,
             Family::FoldLimit => 1,
             Family::FoldSign => 2,
             Family::VertexAngle => 3,
+            Family::Ground => 4,
         }] += 1;
     }
     c
