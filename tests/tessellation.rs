@@ -382,3 +382,26 @@ fn bell_stands_on_the_ground() {
     assert!(on_ground > 30);
     check_unfolded("bell on the ground", &t);
 }
+
+/// Surface fit (§3.4): moves projected by eq. 9 bring the solved saddle closer to its input
+/// face corners while every condition still holds.
+#[test]
+fn surface_fit_reduces_the_distance_and_keeps_the_constraints() {
+    let limits = stainless_limits();
+    let mut opts = TessellateOptions::with_limits(limits);
+    opts.fit = Some(FitOptions {
+        weight: 0.1,
+        rounds: 10,
+    });
+    let t = tessellate(&example("saddle"), &opts, |_| {}).unwrap();
+    let fit = t.fit.expect("fit ran after a converged solve");
+    assert!(fit.accepted > 0 && fit.last < 0.9 * fit.initial, "{fit:?}");
+    let r = residuals(&t.mesh, &t.mesh.positions, None);
+    assert!(r.developability < 1e-9, "{r:?}");
+    assert!(
+        r.max_fold <= limits.max_fold && r.wrong_sign >= 0.0,
+        "{r:?}"
+    );
+    assert!(r.min_vertex_angle >= limits.min_vertex_angle, "{r:?}");
+    check_unfolded("fitted saddle", &t);
+}

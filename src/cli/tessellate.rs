@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::tessellation::{
-    Limits, StarOptions, TessError, TessellateOptions, TuckLayout, tessellate,
+    FitOptions, Limits, StarOptions, TessError, TessellateOptions, TuckLayout, tessellate,
 };
 use foldcam::formats::write_atomic;
 use foldcam::machine::load_material;
@@ -85,6 +85,9 @@ pub struct Args {
     /// one, so the shell stands on a table (§6).
     #[arg(long)]
     pub ground: bool,
+    /// Surface fit (§3.4) after solving, with this tangential weight w in [0, 1] (eq. 10).
+    #[arg(long, value_name = "W")]
+    pub fit: Option<f64>,
     /// Newton iteration cap.
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
@@ -133,6 +136,15 @@ pub fn run(args: Args) -> Result<Outcome> {
     };
     opts.solve.max_iterations = args.max_iterations;
     opts.ground = args.ground;
+    if let Some(weight) = args.fit {
+        if !(0.0..=1.0).contains(&weight) {
+            bail!("--fit must be a weight between 0 and 1, got {weight}");
+        }
+        opts.fit = Some(FitOptions {
+            weight,
+            ..FitOptions::default()
+        });
+    }
     eprintln!(
         "foldcam: {}: {} faces; solving (fold <= {fold:.1} deg, vertex angle >= {corner:.1} deg)",
         args.mesh.display(),
@@ -162,6 +174,12 @@ pub fn run(args: Args) -> Result<Outcome> {
         t.mesh.interior_count()
     );
     println!("{}", t.report.summary());
+    if let Some(fit) = &t.fit {
+        println!(
+            "surface fit (eq. 9-10): distance {:.4e} -> {:.4e} in {} rounds",
+            fit.initial, fit.last, fit.accepted
+        );
+    }
     if !t.report.converged {
         println!("nothing written: the solver did not reach every condition");
         return Ok(Outcome::CheckFailed);

@@ -10,14 +10,15 @@
 //! [`unfold`] lays the result flat triangle by triangle and checks it for overlaps.
 //!
 //! Implemented: §2.1 (checkerboard and digon layouts), eq. 1, eq. 3 with the §5 fold limit,
-//! the §5 vertex-angle limit, §3.3 with an analytic sparse Jacobian (eq. 8) and a matrix-free
-//! conjugate gradient for the minimum-norm step. Not yet implemented: the §2.2 variations
-//! (truncated star, twisted star, twist fold), boundary non-overlap as a constraint (eq. 2:
-//! overlaps are detected after unfolding and reported instead), the vertex-adjacent penalty
-//! (eq. 5–7), the surface fit (§3.4, eq. 9–10), ground contact and the rigid-foldability
-//! simulation (§5).
+//! the §5 vertex-angle limit, ground contact (§6), §3.3 with an analytic sparse Jacobian (eq. 8)
+//! and a matrix-free conjugate gradient for the minimum-norm step, the surface fit of §3.4
+//! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]). Not yet implemented: the §2.2
+//! variations (truncated star, twisted star, twist fold), boundary non-overlap as a
+//! constraint (eq. 2: overlaps are detected after unfolding and reported instead), the
+//! vertex-adjacent penalty (eq. 5–7) and the rigid-foldability simulation (§5).
 
 pub mod constraints;
+pub mod fit;
 pub mod geometry;
 pub mod model;
 pub mod pipeline;
@@ -29,6 +30,7 @@ pub mod unfold;
 use thiserror::Error;
 
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{TessellateOptions, Tessellation, disk, tessellate};
 pub use samples::{SampleSurface, sample_surface};

@@ -1,6 +1,7 @@
 //! The whole design in one call: mesh → star tucks → solve → unfold.
 
 use super::constraints::{Limits, assign_folds};
+use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
 use super::star::{InitialPattern, StarOptions, star_tucks};
 use super::unfold::{Unfolded, unfold};
@@ -17,6 +18,8 @@ pub struct TessellateOptions {
     /// Ground contact (§6): put every boundary vertex on the horizontal plane through the
     /// lowest boundary vertex of the initial pattern (overrides `solve.limits.ground_z`).
     pub ground: bool,
+    /// Surface fit (§3.4) after a converged solve, towards the initial face corners.
+    pub fit: Option<FitOptions>,
 }
 
 impl TessellateOptions {
@@ -37,6 +40,8 @@ pub struct Tessellation {
     pub mesh: TessMesh,
     /// How the solve went.
     pub report: SolveReport,
+    /// How the surface fit went, when requested and the solve converged.
+    pub fit: Option<FitReport>,
     /// The unfolded pattern and its folded state; `Err` when the flat pattern overlaps.
     pub unfolded: Result<Unfolded, TessError>,
 }
@@ -105,11 +110,34 @@ pub fn tessellate(
             .reduce(f64::min);
     }
     let report = solve(&mut solved, &solve_opts, progress)?;
+    let fit = match opts.fit {
+        Some(fit) if report.converged => {
+            let targets = corner_targets(&initial.mesh, &he);
+            Some(fit_surface(&mut solved, &targets, &fit, &solve_opts)?)
+        }
+        _ => None,
+    };
     let unfolded = unfold(&solved);
     Ok(Tessellation {
         initial,
         mesh: solved,
         report,
+        fit,
         unfolded,
     })
+}
+
+/// Every face corner of the initial pattern, at its initial place, with its input vertex's
+/// normal (key vertices get no target).
+fn corner_targets(initial: &TessMesh, he: &HalfEdgeMesh) -> Vec<Target> {
+    (0..initial.positions.len())
+        .filter_map(|v| {
+            let input = initial.input_vertex[v] as usize;
+            (initial.key_of_input[input] != Some(v as u32)).then(|| Target {
+                vertex: v as u32,
+                point: initial.positions[v],
+                normal: he.vertex_normal(input),
+            })
+        })
+        .collect()
 }

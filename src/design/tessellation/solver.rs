@@ -140,7 +140,8 @@ pub fn solve(
     let mut merit = merit_of(&rows);
     while iterations < opts.max_iterations && !satisfied(&last, opts) {
         iterations += 1;
-        let (dx, cg_iterations) = min_norm_step(&rows, x.len());
+        let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
+        let (dx, cg_iterations) = min_norm(&rows, &g, x.len());
         let mut step = 1.0;
         let mut accepted = None;
         while step > 1e-6 {
@@ -207,10 +208,18 @@ fn transpose_times(rows: &[Row], y: &[f64], n: usize) -> Vec<DVec3> {
     out
 }
 
-/// The minimum-norm solution `dx = Cᵀ y` of `C dx = g`, with `(C Cᵀ + εI) y = g` solved by
-/// Jacobi-preconditioned conjugate gradient. Returns the step and the CG iteration count.
-fn min_norm_step(rows: &[Row], n: usize) -> (Vec<DVec3>, usize) {
-    let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
+/// `C dx` for per-vertex blocks `dx`.
+pub(crate) fn times(rows: &[Row], dx: &[DVec3]) -> Vec<f64> {
+    rows.iter()
+        .map(|r| r.entries.iter().map(|&(v, e)| e.dot(dx[v as usize])).sum())
+        .collect()
+}
+
+/// The minimum-norm solution `dx = Cᵀ y` of `C dx = g` (that is `C⁺ g`), with
+/// `(C Cᵀ + εI) y = g` solved by Jacobi-preconditioned conjugate gradient. Returns the step
+/// and the CG iteration count.
+pub(crate) fn min_norm(rows: &[Row], g: &[f64], n: usize) -> (Vec<DVec3>, usize) {
+    let g = g.to_vec();
     let diag: Vec<f64> = rows
         .iter()
         .map(|r| {
