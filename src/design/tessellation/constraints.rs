@@ -12,10 +12,12 @@
 //! limit ([`Limits::margin`]) and stays active within half the margin of it, so the solver
 //! does not chatter on the limit and the result satisfies the limit strictly.
 
+use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use glam::DVec3;
 
+use super::boundary;
 use super::geometry::{corner_angle, fold_angle, relative_height};
 use super::model::{EdgeRole, TessMesh};
 use crate::pattern::Assignment;
@@ -66,6 +68,8 @@ pub enum Family {
     VertexAngle,
     /// §6: a boundary vertex off the ground plane.
     Ground,
+    /// Eq. 2: a run of the boundary turning back by more than half a turn.
+    Boundary,
 }
 
 /// One constraint: its value and its Jacobian row as (vertex, ∂/∂x) blocks.
@@ -104,6 +108,15 @@ pub fn assign_folds(mesh: &mut TessMesh) {
 
 /// Angle sums' defects g_v (eq. 1) of every interior vertex, radians (0 elsewhere).
 pub fn angle_defects(mesh: &TessMesh, x: &[DVec3]) -> Vec<f64> {
+    angle_sums(mesh, x)
+        .iter()
+        .zip(&mesh.interior)
+        .map(|(s, &inside)| if inside { 2.0 * PI - s } else { 0.0 })
+        .collect()
+}
+
+/// Sum of the triangle corner angles at every vertex, radians.
+pub fn angle_sums(mesh: &TessMesh, x: &[DVec3]) -> Vec<f64> {
     let mut sums = vec![0.0; x.len()];
     for t in &mesh.triangles {
         for k in 0..3 {
@@ -111,10 +124,7 @@ pub fn angle_defects(mesh: &TessMesh, x: &[DVec3]) -> Vec<f64> {
             sums[o as usize] += corner_angle(x[o as usize], x[a as usize], x[b as usize]).value;
         }
     }
-    sums.iter()
-        .zip(&mesh.interior)
-        .map(|(s, &inside)| if inside { 2.0 * PI - s } else { 0.0 })
-        .collect()
+    sums
 }
 
 /// All rows at `x`: every developability row and the active inequality rows.
@@ -131,6 +141,7 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
         })
         .collect();
     let mut out = Vec::new();
+    let mut boundary_angles: HashMap<u32, (f64, Vec<(u32, DVec3)>)> = HashMap::new();
     let floor = limits.min_vertex_angle + limits.margin;
     for t in &mesh.triangles {
         for k in 0..3 {
@@ -141,6 +152,12 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
                 row.value -= th.value;
                 for (v, g) in idx.iter().zip(th.grad) {
                     add(&mut row.entries, *v, -g);
+                }
+            } else {
+                let sum = boundary_angles.entry(idx[0]).or_default();
+                sum.0 += th.value;
+                for (v, g) in idx.iter().zip(th.grad) {
+                    add(&mut sum.1, *v, g);
                 }
             }
             if th.value < limits.min_vertex_angle + 0.5 * limits.margin {
@@ -161,6 +178,14 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
         if let Some(row) = fold_row(mesh, x, mesh.hinge(e), sigma, limits) {
             out.push(row);
         }
+    }
+    let outline = boundary::boundary_loop(mesh);
+    for (value, entries) in boundary::rows(&outline, &boundary_angles, limits.margin) {
+        out.push(Row {
+            family: Family::Boundary,
+            value,
+            entries,
+        });
     }
     if let Some(z) = limits.ground_z {
         for (v, _) in mesh
@@ -238,15 +263,18 @@ pub struct Residuals {
     pub min_vertex_angle: f64,
     /// Largest distance of a boundary vertex from the ground plane (0 without one), mesh units.
     pub ground: f64,
+    /// Smallest `Σ τ + π` over runs of the boundary (eq. 2 holds when ≥ 0), radians.
+    pub boundary_turn: f64,
 }
 
 /// Measures [`Residuals`] at `x` (the ground distance against `ground_z`).
 pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residuals {
-    let developability = angle_defects(mesh, x)
-        .iter()
-        .fold(0.0f64, |m, d| m.max(d.abs()));
+    let defects = angle_defects(mesh, x);
+    let developability = defects.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+    let sums = angle_sums(mesh, x);
     let mut r = Residuals {
         developability,
+        boundary_turn: boundary::worst_turn(&boundary::boundary_loop(mesh), &sums),
         min_vertex_angle: f64::INFINITY,
         ..Residuals::default()
     };
@@ -304,11 +332,17 @@ mod tests {
         let init = star_tucks(&bump(), &StarOptions::default()).unwrap();
         let mut mesh = init.mesh;
         assign_folds(&mut mesh);
-        let limits = Limits::from_degrees(20.0, 50.0);
+        // Tight limits activate fold and angle rows; a huge margin activates eq. 2 rows too.
+        let mut limits = Limits::from_degrees(20.0, 50.0);
         let x = mesh.positions.clone();
         let base = rows(&mesh, &x, &limits);
         assert!(base.iter().any(|r| r.family == Family::FoldLimit));
         assert!(base.iter().any(|r| r.family == Family::VertexAngle));
+        limits.margin = 20.0;
+        limits.ground_z = Some(-0.5);
+        let base = rows(&mesh, &x, &limits);
+        assert!(base.iter().any(|r| r.family == Family::Boundary));
+        assert!(base.iter().any(|r| r.family == Family::Ground));
         let h = 1e-6;
         for (v, c) in [(0usize, 0usize), (3, 2), (mesh.positions.len() - 1, 1)] {
             let (mut up, mut down) = (x.clone(), x.clone());

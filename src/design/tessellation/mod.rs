@@ -13,10 +13,11 @@
 //! the §5 vertex-angle limit, ground contact (§6), §3.3 with an analytic sparse Jacobian (eq. 8)
 //! and a matrix-free conjugate gradient for the minimum-norm step, the surface fit of §3.4
 //! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]). Not yet implemented: the §2.2
-//! variations (truncated star, twisted star, twist fold), boundary non-overlap as a
-//! constraint (eq. 2: overlaps are detected after unfolding and reported instead), the
-//! vertex-adjacent penalty (eq. 5–7) and the rigid-foldability simulation (§5).
+//! variations (truncated star, twisted star, twist fold), the vertex-adjacent penalty
+//! (eq. 5–7) and the rigid-foldability simulation (§5). Boundary non-overlap (eq. 2) is a
+//! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
 
+pub mod boundary;
 pub mod constraints;
 pub mod fit;
 pub mod geometry;

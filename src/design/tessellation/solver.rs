@@ -41,8 +41,9 @@ pub struct Iteration {
     pub index: usize,
     /// Residuals after the step.
     pub residuals: Residuals,
-    /// Active rows per family: developability, fold limit, fold sign, vertex angle, ground.
-    pub active: [usize; 5],
+    /// Active rows per family: developability, fold limit, fold sign, vertex angle, ground,
+    /// boundary (eq. 2).
+    pub active: [usize; 6],
     /// Step length α taken.
     pub step: f64,
     /// Conjugate-gradient iterations used.
@@ -71,7 +72,8 @@ impl SolveReport {
         format!(
             "{} after {} iterations\n  developability (eq. 1): max |2pi - sum theta| = {:.3e} rad \
              (start {:.3e})\n  fold angles (eq. 3): max |rho| = {:.2} deg, limit {:.2} deg; \
-             wrong-sign folds: {}\n  vertex angles: min theta = {:.2} deg, limit {:.2} deg",
+             wrong-sign folds: {}\n  vertex angles: min theta = {:.2} deg, limit {:.2} deg\n  \
+             boundary (eq. 2): min turning of a boundary run + pi = {:.2} deg (>= 0)",
             if self.converged {
                 "converged"
             } else {
@@ -89,6 +91,7 @@ impl SolveReport {
             },
             deg(self.last.min_vertex_angle),
             deg(self.limits.min_vertex_angle),
+            deg(self.last.boundary_turn),
         ) + &match self.limits.ground_z {
             Some(z) => format!(
                 "\n  ground contact at z = {z:.3}: max boundary distance {:.2e}",
@@ -105,6 +108,7 @@ fn satisfied(r: &Residuals, opts: &SolveOptions) -> bool {
         && r.wrong_sign >= 0.0
         && r.min_vertex_angle >= opts.limits.min_vertex_angle
         && r.ground <= GROUND_TOLERANCE
+        && r.boundary_turn >= 0.0
 }
 
 /// Largest accepted distance of a boundary vertex from the ground plane, mesh units.
@@ -183,8 +187,8 @@ fn merit_of(rows: &[Row]) -> f64 {
     0.5 * rows.iter().map(|r| r.value * r.value).sum::<f64>()
 }
 
-fn active_counts(rows: &[Row]) -> [usize; 5] {
-    let mut c = [0; 5];
+fn active_counts(rows: &[Row]) -> [usize; 6] {
+    let mut c = [0; 6];
     for r in rows {
         c[match r.family {
             Family::Developability => 0,
@@ -192,6 +196,7 @@ fn active_counts(rows: &[Row]) -> [usize; 5] {
             Family::FoldSign => 2,
             Family::VertexAngle => 3,
             Family::Ground => 4,
+            Family::Boundary => 5,
         }] += 1;
     }
     c
