@@ -13,6 +13,12 @@ use glam::DVec3;
 
 use super::model::TessMesh;
 
+/// A sparse gradient: (vertex, ∂/∂x) blocks.
+pub type Blocks = Vec<(u32, DVec3)>;
+
+/// Per boundary vertex: its angle sum Σθ_v and the gradient of that sum.
+pub type AngleSums = HashMap<u32, (f64, Blocks)>;
+
 /// Boundary vertices in counter-clockwise order (the first loop found; a disk has one).
 pub fn boundary_loop(mesh: &TessMesh) -> Vec<u32> {
     let next: HashMap<u32, u32> = mesh
@@ -56,11 +62,7 @@ pub fn worst_runs(turn: &[f64]) -> Vec<(usize, usize, f64)> {
 
 /// Eq. 2 rows for the violated runs: `(value, entries)`, given per-vertex angle sums and
 /// their gradients (`angle_rows[v]`: Σθ_v and ∂Σθ_v/∂X blocks) at the boundary vertices.
-pub fn rows(
-    loop_vertices: &[u32],
-    angle_rows: &HashMap<u32, (f64, Vec<(u32, DVec3)>)>,
-    margin: f64,
-) -> Vec<(f64, Vec<(u32, DVec3)>)> {
+pub fn rows(loop_vertices: &[u32], angle_rows: &AngleSums, margin: f64) -> Vec<(f64, Blocks)> {
     let turn: Vec<f64> = loop_vertices
         .iter()
         .map(|v| PI - angle_rows.get(v).map_or(0.0, |r| r.0))
@@ -71,7 +73,7 @@ pub fn rows(
         if sum + PI >= 0.5 * margin || !seen.insert((i, len)) {
             continue;
         }
-        let mut entries: Vec<(u32, DVec3)> = Vec::new();
+        let mut entries: Blocks = Vec::new();
         for k in 0..len {
             let v = loop_vertices[(i + k) % loop_vertices.len()];
             for &(w, g) in angle_rows.get(&v).map_or(&[][..], |r| &r.1[..]) {

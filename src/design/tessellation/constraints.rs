@@ -12,7 +12,6 @@
 //! limit ([`Limits::margin`]) and stays active within half the margin of it, so the solver
 //! does not chatter on the limit and the result satisfies the limit strictly.
 
-use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use glam::DVec3;
@@ -141,7 +140,7 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
         })
         .collect();
     let mut out = Vec::new();
-    let mut boundary_angles: HashMap<u32, (f64, Vec<(u32, DVec3)>)> = HashMap::new();
+    let mut boundary_angles = boundary::AngleSums::new();
     let floor = limits.min_vertex_angle + limits.margin;
     for t in &mesh.triangles {
         for k in 0..3 {
