@@ -405,3 +405,28 @@ fn surface_fit_reduces_the_distance_and_keeps_the_constraints() {
     assert!(r.min_vertex_angle >= limits.min_vertex_angle, "{r:?}");
     check_unfolded("fitted saddle", &t);
 }
+
+/// The digon layout (every face black, a six-pointed star at each valence-6 vertex) solves the
+/// dome once the limits allow its 12 thin tuck triangles per key vertex (their angles at the
+/// key average 30°, so δ_corner = 30° leaves no room): fold ≤ 178°, vertex angle ≥ 15°.
+#[test]
+fn digon_layout_solves_the_dome_with_relaxed_limits() {
+    let limits = Limits::from_degrees(178.0, 15.0);
+    let mut opts = TessellateOptions::with_limits(limits);
+    opts.star.layout = TuckLayout::Digon;
+    let t = tessellate(&example("dome"), &opts, |_| {}).unwrap();
+    assert_eq!(t.initial.layout, TuckLayout::Digon);
+    assert!(t.report.converged, "{}", t.report.summary());
+    let r = residuals(&t.mesh, &t.mesh.positions, None);
+    assert!(r.developability < 1e-9 && r.wrong_sign >= 0.0, "{r:?}");
+    assert!(r.max_fold <= limits.max_fold && r.min_vertex_angle >= limits.min_vertex_angle);
+    let u = t.unfolded.as_ref().expect("no overlaps");
+    assert!(u.max_length_error < 1e-9);
+    let digons = t
+        .mesh
+        .edges
+        .iter()
+        .filter(|e| e.role == EdgeRole::Digon)
+        .count();
+    assert_eq!(digons, 90, "one digon crease per interior input edge");
+}
