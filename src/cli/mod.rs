@@ -16,6 +16,7 @@ mod popup_input;
 mod popup_poly;
 mod preview;
 mod simulate;
+mod tessellate;
 
 use std::process::ExitCode;
 
@@ -72,6 +73,8 @@ enum Command {
     Popup(popup::Command),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
+    /// Make a freeform origami tessellation (star tucks) from an OBJ/STL mesh.
+    Tessellate(tessellate::Args),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
@@ -87,6 +90,7 @@ pub fn run() -> ExitCode {
         Command::Simulate(a) => simulate::run(a),
         Command::Popup(c) => popup::run(c),
         Command::Demo(a) => demo::run(a),
+        Command::Tessellate(a) => tessellate::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

@@ -2,3 +2,4 @@
 
 pub mod classic;
 pub mod popup;
+pub mod tessellation;

@@ -18,8 +18,10 @@
 //! # Ok::<(), foldcam::mesh::MeshError>(())
 //! ```
 
+pub mod half_edge;
 mod read;
 
+pub use half_edge::{HalfEdgeError, HalfEdgeMesh};
 pub use read::{parse_obj, parse_stl, read_mesh};
 
 use glam::DVec3;

@@ -1,0 +1,221 @@
+//! `foldcam tessellate MESH -o shell.fold`: freeform origami tessellations (seed 002).
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result, anyhow, bail};
+use clap::ValueEnum;
+use foldcam::design::tessellation::{
+    FitOptions, Limits, StarOptions, TessError, TessellateOptions, TuckLayout, tessellate,
+};
+use foldcam::formats::write_atomic;
+use foldcam::machine::load_material;
+use foldcam::mesh::read_mesh;
+use foldcam::render::{PreviewOptions, View3d, preview_png, render_folded_png};
+
+use super::Outcome;
+use super::args::degrees;
+
+/// Tuck structure (§2.1, §2.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Tuck {
+    /// Star tuck (§2.1).
+    Star,
+    /// Truncated star (§2.2), not implemented yet.
+    Truncated,
+    /// Twisted star (§2.2), not implemented yet.
+    Twisted,
+    /// Twist fold (§2.2), not implemented yet.
+    Twist,
+}
+
+/// Gap layout of the star tucks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Layout {
+    /// Checkerboard when every interior vertex has even valence >= 6, else digons.
+    Auto,
+    /// Two-coloured faces (Resch's triangle pattern).
+    Checkerboard,
+    /// A zero-area digon on every edge (any mesh).
+    Digon,
+}
+
+/// Make an origami tessellation from a mesh.
+#[derive(clap::Args)]
+#[command(
+    long_about = "Turns a disk-like polygon mesh (OBJ or STL, millimetres) into a Resch-like \
+                  origami tessellation (seed 002, Tachi): a star tuck behind every vertex (§2.1), \
+                  then a generalized Newton-Raphson solve (§3.3) for developability (eq. 1), \
+                  mountain/valley fold ranges with the fold-angle limit (eq. 3, §5) and the \
+                  vertex-angle limit (§5), then the unfolded crease pattern. The output FOLD \
+                  holds the crease pattern (frame 0, mm) and the folded form (frame 1).\n\n\
+                  Limits default to the material's (--material) or to the paper's example \
+                  (fold angle <= 165 deg, vertex angle >= 30 deg).\n\nExit status: 0 written, \
+                  1 the solver did not converge or the pattern overlaps (nothing is written), \
+                  2 bad input.",
+    after_help = "Examples:\n  cargo run --example tessellation_meshes\n  \
+                  foldcam tessellate examples/tessellation/dome.obj -o dome.fold --png dome.png --cp-png dome-cp.png\n  \
+                  foldcam tessellate saddle.obj --material stainless-0.5 --shrink 0.7 -o saddle.fold\n  \
+                  foldcam cut dome.fold -m linuxcnc-fiber -x stainless-0.5 -o dome.ngc"
+)]
+pub struct Args {
+    /// Input mesh (.obj or .stl), a disk with one boundary, in millimetres.
+    pub mesh: PathBuf,
+    /// Output crease pattern (.fold keeps the folded form too; .svg and .cp the pattern only).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Tuck structure.
+    #[arg(long, value_enum, default_value = "star")]
+    pub tuck: Tuck,
+    /// Gap layout of the star tucks.
+    #[arg(long, value_enum, default_value = "auto")]
+    pub layout: Layout,
+    /// Face shrink s in (0, 1]: smaller opens the tucks more.
+    #[arg(long, default_value_t = 0.8)]
+    pub shrink: f64,
+    /// Material profile whose design limits to use (e.g. stainless-0.5).
+    #[arg(short = 'x', long)]
+    pub material: Option<String>,
+    /// Largest fold angle, degrees (180 − δ_fold).
+    #[arg(long, value_parser = degrees)]
+    pub max_fold_angle: Option<f64>,
+    /// Smallest angle between neighbouring creases, degrees (δ_corner).
+    #[arg(long, value_parser = degrees)]
+    pub min_vertex_angle: Option<f64>,
+    /// Ground contact: every boundary vertex on the horizontal plane (z) through the lowest
+    /// one, so the shell stands on a table (§6).
+    #[arg(long)]
+    pub ground: bool,
+    /// Surface fit (§3.4) after solving, with this tangential weight w in [0, 1] (eq. 10).
+    #[arg(long, value_name = "W")]
+    pub fit: Option<f64>,
+    /// Newton iteration cap.
+    #[arg(long, default_value_t = 200)]
+    pub max_iterations: usize,
+    /// Write a preview of the folded form.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// Write a preview of the crease pattern.
+    #[arg(long)]
+    pub cp_png: Option<PathBuf>,
+    /// Image width in pixels for the previews.
+    #[arg(long, default_value_t = 800)]
+    pub width: u32,
+}
+
+/// Runs `foldcam tessellate`.
+pub fn run(args: Args) -> Result<Outcome> {
+    if args.tuck != Tuck::Star {
+        let name = match args.tuck {
+            Tuck::Truncated => "truncated-star",
+            Tuck::Twisted => "twisted-star",
+            _ => "twist-fold",
+        };
+        return Err(TessError::NotImplemented(name).into());
+    }
+    if args.max_iterations == 0 || args.max_iterations > 100_000 {
+        bail!("--max-iterations must be between 1 and 100000");
+    }
+    let mesh = read_mesh(&args.mesh).map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
+    let (mut fold, mut corner) = (165.0, 30.0);
+    if let Some(name) = &args.material {
+        let m = load_material(name)?;
+        (fold, corner) = (m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg);
+    }
+    let limits = Limits::from_degrees(
+        args.max_fold_angle.unwrap_or(fold),
+        args.min_vertex_angle.unwrap_or(corner),
+    );
+    let mut opts = TessellateOptions::with_limits(limits);
+    opts.star = StarOptions {
+        shrink: args.shrink,
+        layout: match args.layout {
+            Layout::Auto => TuckLayout::Auto,
+            Layout::Checkerboard => TuckLayout::Checkerboard,
+            Layout::Digon => TuckLayout::Digon,
+        },
+    };
+    opts.solve.max_iterations = args.max_iterations;
+    opts.ground = args.ground;
+    if let Some(weight) = args.fit {
+        if !(0.0..=1.0).contains(&weight) {
+            bail!("--fit must be a weight between 0 and 1, got {weight}");
+        }
+        opts.fit = Some(FitOptions {
+            weight,
+            ..FitOptions::default()
+        });
+    }
+    eprintln!(
+        "foldcam: {}: {} faces; solving (fold <= {fold:.1} deg, vertex angle >= {corner:.1} deg)",
+        args.mesh.display(),
+        mesh.faces().len(),
+        fold = limits.max_fold.to_degrees(),
+        corner = limits.min_vertex_angle.to_degrees(),
+    );
+    let t = tessellate(&mesh, &opts, |it| {
+        eprintln!(
+            "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \
+             active limits {}, step {}",
+            it.index,
+            it.residuals.developability,
+            it.residuals.max_fold.to_degrees(),
+            it.residuals.min_vertex_angle.to_degrees(),
+            it.active[1] + it.active[2] + it.active[3],
+            it.step
+        );
+    })
+    .map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
+    println!(
+        "{}: {:?} layout, {} vertices, {} triangles, {} interior vertices",
+        args.mesh.display(),
+        t.initial.layout,
+        t.mesh.positions.len(),
+        t.mesh.triangles.len(),
+        t.mesh.interior_count()
+    );
+    println!("{}", t.report.summary());
+    if let Some(fit) = &t.fit {
+        println!(
+            "surface fit (eq. 9-10): distance {:.4e} -> {:.4e} in {} rounds",
+            fit.initial, fit.last, fit.accepted
+        );
+    }
+    if !t.report.converged {
+        println!("nothing written: the solver did not reach every condition");
+        return Ok(Outcome::CheckFailed);
+    }
+    let unfolded = match t.unfolded {
+        Ok(u) => u,
+        Err(e) => {
+            println!("nothing written: {e}");
+            return Ok(Outcome::CheckFailed);
+        }
+    };
+    println!(
+        "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
+        unfolded.max_length_error
+    );
+    super::input::save(&args.output, &unfolded.pattern, Some(&unfolded.folded))?;
+    if let Some(png) = &args.png {
+        let view = View3d {
+            azimuth_deg: 30.0,
+            elevation_deg: 35.0,
+            ..View3d::with_width(args.width)
+        };
+        let bytes = render_folded_png(&unfolded.folded, &view)
+            .map_err(|e| anyhow!("{}: {e}", png.display()))?;
+        write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
+        eprintln!("foldcam: wrote {}", png.display());
+    }
+    if let Some(png) = &args.cp_png {
+        let bytes = preview_png(
+            &unfolded.pattern,
+            &PreviewOptions::with_width(args.width),
+            &[],
+        )
+        .map_err(|e| anyhow!("{}: {e}", png.display()))?;
+        write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
+        eprintln!("foldcam: wrote {}", png.display());
+    }
+    Ok(Outcome::Done)
+}

@@ -1,0 +1,366 @@
+//! The constraint rows g(X) = 0 of §3 with their sparse analytic Jacobian rows (eq. 8).
+//!
+//! - developability of every interior vertex, eq. 1: `g_v = 2π − Σ θ_{v,i}`;
+//! - fold-angle range and limit, eq. 3 with §5's `ρ_limit = 180° − δ_fold`: with σ = +1 for a
+//!   valley and −1 for a mountain and ρ' = σρ, a fold beyond the limit gets
+//!   `f = 2 (sin(ρ'/2) − sin(ρ_target/2)) h_p h_q` and a fold of the wrong sign gets
+//!   `f = 2 (sin(ρ'/2) − sin(m/2)) h_p h_q` (eq. 4: h are relative heights, Fig. 7);
+//! - vertex angles, §5: every triangle corner θ ≥ δ_corner, `θ − (δ_corner + m)` when violated.
+//!
+//! Inequalities are handled as the paper handles eq. 2: a violated one becomes an equality for
+//! that step (an active set). Deviation: each inequality targets a small margin m inside its
+//! limit ([`Limits::margin`]) and stays active within half the margin of it, so the solver
+//! does not chatter on the limit and the result satisfies the limit strictly.
+
+use std::f64::consts::PI;
+
+use glam::DVec3;
+
+use super::boundary;
+use super::geometry::{corner_angle, fold_angle, relative_height};
+use super::model::{EdgeRole, TessMesh};
+use crate::pattern::Assignment;
+
+/// The fabrication limits of §5, in radians.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Limits {
+    /// ρ_limit = 180° − δ_fold: the largest fold angle magnitude.
+    pub max_fold: f64,
+    /// δ_corner: the smallest corner angle of any triangle.
+    pub min_vertex_angle: f64,
+    /// Margin m kept inside each limit by the active rows.
+    pub margin: f64,
+    /// Ground contact (§6's design example): when set, every boundary vertex lies on the
+    /// horizontal plane at this z (mesh units), one equality row per vertex.
+    pub ground_z: Option<f64>,
+}
+
+impl Limits {
+    /// Limits from degrees (a material's `max_fold_angle_deg`, `min_vertex_angle_deg`).
+    pub fn from_degrees(max_fold_deg: f64, min_vertex_angle_deg: f64) -> Self {
+        Limits {
+            max_fold: max_fold_deg.to_radians(),
+            min_vertex_angle: min_vertex_angle_deg.to_radians(),
+            margin: 0.25f64.to_radians(),
+            ground_z: None,
+        }
+    }
+}
+
+impl Default for Limits {
+    /// The paper's example: δ_fold = 15° (ρ_limit = 165°), δ_corner = 30°.
+    fn default() -> Self {
+        Limits::from_degrees(165.0, 30.0)
+    }
+}
+
+/// Which condition a row expresses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// Eq. 1 at an interior vertex.
+    Developability,
+    /// Eq. 3: a fold beyond ρ_limit.
+    FoldLimit,
+    /// Eq. 3 with limit 0: a fold of the wrong sign for its assignment.
+    FoldSign,
+    /// §5: a corner angle under δ_corner.
+    VertexAngle,
+    /// §6: a boundary vertex off the ground plane.
+    Ground,
+    /// Eq. 2: a run of the boundary turning back by more than half a turn.
+    Boundary,
+}
+
+/// One constraint: its value and its Jacobian row as (vertex, ∂/∂x) blocks.
+#[derive(Clone, Debug)]
+pub struct Row {
+    /// What it expresses.
+    pub family: Family,
+    /// g_r(X).
+    pub value: f64,
+    /// Non-zero blocks of ∂g_r/∂X.
+    pub entries: Vec<(u32, DVec3)>,
+}
+
+fn add(entries: &mut Vec<(u32, DVec3)>, v: u32, g: DVec3) {
+    match entries.iter_mut().find(|(w, _)| *w == v) {
+        Some((_, acc)) => *acc += g,
+        None => entries.push((v, g)),
+    }
+}
+
+/// Mountain/valley of every interior crease by its role in the star tuck, seen from the front
+/// (the side the input faces' normals point to, with the key vertices behind): face rims,
+/// digons and key-to-corner creases are mountains, key-to-tip creases valleys, diagonals of
+/// polygon faces flat. These are the signs of the half-open initial pattern (s < 1), where the
+/// closed tucks of s = 1 leave them undecided (±180°).
+pub fn assign_folds(mesh: &mut TessMesh) {
+    for e in mesh.edges.iter_mut().filter(|e| e.interior) {
+        e.assignment = match e.role {
+            EdgeRole::Diagonal => Assignment::Flat,
+            EdgeRole::KeyTip => Assignment::Valley,
+            EdgeRole::FaceRim | EdgeRole::Digon | EdgeRole::KeyCorner => Assignment::Mountain,
+            EdgeRole::Boundary => Assignment::Boundary,
+        };
+    }
+}
+
+/// Angle sums' defects g_v (eq. 1) of every interior vertex, radians (0 elsewhere).
+pub fn angle_defects(mesh: &TessMesh, x: &[DVec3]) -> Vec<f64> {
+    angle_sums(mesh, x)
+        .iter()
+        .zip(&mesh.interior)
+        .map(|(s, &inside)| if inside { 2.0 * PI - s } else { 0.0 })
+        .collect()
+}
+
+/// Sum of the triangle corner angles at every vertex, radians.
+pub fn angle_sums(mesh: &TessMesh, x: &[DVec3]) -> Vec<f64> {
+    let mut sums = vec![0.0; x.len()];
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            let (o, a, b) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+            sums[o as usize] += corner_angle(x[o as usize], x[a as usize], x[b as usize]).value;
+        }
+    }
+    sums
+}
+
+/// All rows at `x`: every developability row and the active inequality rows.
+pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
+    let mut dev: Vec<Option<Row>> = mesh
+        .interior
+        .iter()
+        .map(|&inside| {
+            inside.then(|| Row {
+                family: Family::Developability,
+                value: 2.0 * PI,
+                entries: Vec::new(),
+            })
+        })
+        .collect();
+    let mut out = Vec::new();
+    let mut boundary_angles = boundary::AngleSums::new();
+    let floor = limits.min_vertex_angle + limits.margin;
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            let idx = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]];
+            let [o, a, b] = idx.map(|v| x[v as usize]);
+            let th = corner_angle(o, a, b);
+            if let Some(row) = dev[idx[0] as usize].as_mut() {
+                row.value -= th.value;
+                for (v, g) in idx.iter().zip(th.grad) {
+                    add(&mut row.entries, *v, -g);
+                }
+            } else {
+                let sum = boundary_angles.entry(idx[0]).or_default();
+                sum.0 += th.value;
+                for (v, g) in idx.iter().zip(th.grad) {
+                    add(&mut sum.1, *v, g);
+                }
+            }
+            if th.value < limits.min_vertex_angle + 0.5 * limits.margin {
+                out.push(Row {
+                    family: Family::VertexAngle,
+                    value: th.value - floor,
+                    entries: idx.iter().copied().zip(th.grad).collect(),
+                });
+            }
+        }
+    }
+    for e in mesh.edges.iter().filter(|e| e.interior) {
+        let sigma = match e.assignment {
+            Assignment::Valley => 1.0,
+            Assignment::Mountain => -1.0,
+            _ => continue,
+        };
+        if let Some(row) = fold_row(mesh, x, mesh.hinge(e), sigma, limits) {
+            out.push(row);
+        }
+    }
+    let outline = boundary::boundary_loop(mesh);
+    for (value, entries) in boundary::rows(&outline, &boundary_angles, limits.margin) {
+        out.push(Row {
+            family: Family::Boundary,
+            value,
+            entries,
+        });
+    }
+    if let Some(z) = limits.ground_z {
+        for (v, _) in mesh
+            .interior
+            .iter()
+            .enumerate()
+            .filter(|(_, inside)| !**inside)
+        {
+            out.push(Row {
+                family: Family::Ground,
+                value: x[v].z - z,
+                entries: vec![(v as u32, DVec3::Z)],
+            });
+        }
+    }
+    let mut all: Vec<Row> = dev.into_iter().flatten().collect();
+    all.extend(out);
+    all
+}
+
+/// Eq. 3 for one crease when its fold ρ' = σρ is past the limit or of the wrong sign.
+fn fold_row(
+    mesh: &TessMesh,
+    x: &[DVec3],
+    hinge: [u32; 4],
+    sigma: f64,
+    limits: &Limits,
+) -> Option<Row> {
+    let _ = mesh;
+    let [i, j, a, b] = hinge.map(|v| x[v as usize]);
+    let rho = fold_angle(i, j, a, b);
+    let r = sigma * rho.value;
+    let (family, target) = if r > limits.max_fold - 0.5 * limits.margin {
+        (Family::FoldLimit, limits.max_fold - limits.margin)
+    } else if r < 0.5 * limits.margin {
+        (Family::FoldSign, limits.margin)
+    } else {
+        return None;
+    };
+    let hp = relative_height(i, j, a);
+    let hq = relative_height(j, i, b);
+    let (s, st) = ((r / 2.0).sin(), (target / 2.0).sin());
+    let hh = hp.value * hq.value;
+    let value = 2.0 * (s - st) * hh;
+    let dr = (r / 2.0).cos() * sigma * hh;
+    let dh = 2.0 * (s - st);
+    let mut entries = Vec::with_capacity(4);
+    for (k, v) in hinge.iter().enumerate() {
+        add(&mut entries, *v, dr * rho.grad[k]);
+    }
+    // h_p over (i, j, a), h_q over (j, i, b).
+    for (k, v) in [hinge[0], hinge[1], hinge[2]].iter().enumerate() {
+        add(&mut entries, *v, dh * hq.value * hp.grad[k]);
+    }
+    for (k, v) in [hinge[1], hinge[0], hinge[3]].iter().enumerate() {
+        add(&mut entries, *v, dh * hp.value * hq.grad[k]);
+    }
+    Some(Row {
+        family,
+        value,
+        entries,
+    })
+}
+
+/// The worst state of each condition at `x`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Residuals {
+    /// Largest |g_v| over interior vertices (eq. 1), radians.
+    pub developability: f64,
+    /// Largest fold magnitude over creases, radians.
+    pub max_fold: f64,
+    /// Most negative σρ over creases (0 when every crease folds its assigned way), radians.
+    pub wrong_sign: f64,
+    /// Smallest triangle corner angle, radians.
+    pub min_vertex_angle: f64,
+    /// Largest distance of a boundary vertex from the ground plane (0 without one), mesh units.
+    pub ground: f64,
+    /// Smallest `Σ τ + π` over runs of the boundary (eq. 2 holds when ≥ 0), radians.
+    pub boundary_turn: f64,
+}
+
+/// Measures [`Residuals`] at `x` (the ground distance against `ground_z`).
+pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residuals {
+    let defects = angle_defects(mesh, x);
+    let developability = defects.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+    let sums = angle_sums(mesh, x);
+    let mut r = Residuals {
+        developability,
+        boundary_turn: boundary::worst_turn(&boundary::boundary_loop(mesh), &sums),
+        min_vertex_angle: f64::INFINITY,
+        ..Residuals::default()
+    };
+    if let Some(z) = ground_z {
+        for (v, _) in mesh
+            .interior
+            .iter()
+            .enumerate()
+            .filter(|(_, inside)| !**inside)
+        {
+            r.ground = r.ground.max((x[v].z - z).abs());
+        }
+    }
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            let [o, a, b] = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]].map(|v| x[v as usize]);
+            r.min_vertex_angle = r.min_vertex_angle.min(corner_angle(o, a, b).value);
+        }
+    }
+    for e in mesh.edges.iter().filter(|e| e.interior) {
+        let sigma = match e.assignment {
+            Assignment::Valley => 1.0,
+            Assignment::Mountain => -1.0,
+            _ => 0.0,
+        };
+        let [i, j, a, b] = mesh.hinge(e).map(|v| x[v as usize]);
+        let rho = fold_angle(i, j, a, b).value;
+        r.max_fold = r.max_fold.max(rho.abs());
+        if sigma != 0.0 {
+            r.wrong_sign = r.wrong_sign.min(sigma * rho);
+        }
+    }
+    r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::tessellation::star::{StarOptions, star_tucks};
+    use crate::mesh::{HalfEdgeMesh, PolyMesh};
+
+    /// A bumped hexagonal patch: seven vertices, six triangles.
+    fn bump() -> HalfEdgeMesh {
+        let mut p = vec![DVec3::new(0.0, 0.0, 0.4)];
+        for k in 0..6 {
+            let a = k as f64 * PI / 3.0;
+            p.push(DVec3::new(a.cos(), a.sin(), 0.0));
+        }
+        let faces = (0..6).map(|k| vec![0, 1 + k, 1 + (k + 1) % 6]).collect();
+        HalfEdgeMesh::new(&PolyMesh::new(p, faces).unwrap(), 1e-12).unwrap()
+    }
+
+    #[test]
+    fn rows_match_finite_differences() {
+        let init = star_tucks(&bump(), &StarOptions::default()).unwrap();
+        let mut mesh = init.mesh;
+        assign_folds(&mut mesh);
+        // Tight limits activate fold and angle rows; a huge margin activates eq. 2 rows too.
+        let mut limits = Limits::from_degrees(20.0, 50.0);
+        let x = mesh.positions.clone();
+        let base = rows(&mesh, &x, &limits);
+        assert!(base.iter().any(|r| r.family == Family::FoldLimit));
+        assert!(base.iter().any(|r| r.family == Family::VertexAngle));
+        limits.margin = 20.0;
+        limits.ground_z = Some(-0.5);
+        let base = rows(&mesh, &x, &limits);
+        assert!(base.iter().any(|r| r.family == Family::Boundary));
+        assert!(base.iter().any(|r| r.family == Family::Ground));
+        let h = 1e-6;
+        for (v, c) in [(0usize, 0usize), (3, 2), (mesh.positions.len() - 1, 1)] {
+            let (mut up, mut down) = (x.clone(), x.clone());
+            up[v][c] += h;
+            down[v][c] -= h;
+            let (ru, rd) = (rows(&mesh, &up, &limits), rows(&mesh, &down, &limits));
+            for (k, row) in base.iter().enumerate() {
+                let numeric = (ru[k].value - rd[k].value) / (2.0 * h);
+                let analytic = row
+                    .entries
+                    .iter()
+                    .find(|(w, _)| *w as usize == v)
+                    .map_or(0.0, |(_, g)| g[c]);
+                assert!(
+                    (numeric - analytic).abs() < 1e-5,
+                    "row {k} {:?} vertex {v}: {numeric} vs {analytic}",
+                    row.family
+                );
+            }
+        }
+    }
+}

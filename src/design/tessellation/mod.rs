@@ -1,0 +1,62 @@
+//! Freeform origami tessellations (seed 002, Tachi, "Freeform 3D Origami Tessellations for
+//! Fabrication"): from a disk-like polygon mesh to a developable, Resch-like tessellation that
+//! respects the fabrication limits, unfolded into a [`CreasePattern`](crate::pattern::CreasePattern)
+//! with its folded state.
+//!
+//! Pipeline: [`star_tucks`] inserts a star tuck at every vertex (§2.1, [`star`]);
+//! [`assign_folds`] reads mountains and valleys off the half-open tucks; [`solve`] moves every
+//! vertex by generalized Newton–Raphson until the interior vertices are developable (eq. 1)
+//! and the fold-angle (eq. 3, §5) and vertex-angle (§5) limits hold ([`solver`]);
+//! [`unfold`] lays the result flat triangle by triangle and checks it for overlaps.
+//!
+//! Implemented: §2.1 (checkerboard and digon layouts), eq. 1, eq. 3 with the §5 fold limit,
+//! the §5 vertex-angle limit, ground contact (§6), §3.3 with an analytic sparse Jacobian (eq. 8)
+//! and a matrix-free conjugate gradient for the minimum-norm step, the surface fit of §3.4
+//! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]). Not yet implemented: the §2.2
+//! variations (truncated star, twisted star, twist fold), the vertex-adjacent penalty
+//! (eq. 5–7) and the rigid-foldability simulation (§5). Boundary non-overlap (eq. 2) is a
+//! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
+
+pub mod boundary;
+pub mod constraints;
+pub mod fit;
+pub mod geometry;
+pub mod model;
+pub mod pipeline;
+pub mod samples;
+pub mod solver;
+pub mod star;
+pub mod unfold;
+
+use thiserror::Error;
+
+pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use fit::{FitOptions, FitReport, Target, fit_surface};
+pub use model::{EdgeRole, TessEdge, TessMesh};
+pub use pipeline::{TessellateOptions, Tessellation, disk, tessellate};
+pub use samples::{SampleSurface, sample_surface};
+pub use solver::{Iteration, SolveOptions, SolveReport, solve};
+pub use star::{InitialPattern, StarOptions, TuckLayout, star_tucks};
+pub use unfold::{Unfolded, unfold};
+
+use crate::mesh::HalfEdgeError;
+
+/// Why a tessellation cannot be made.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum TessError {
+    /// The input mesh is not an oriented manifold.
+    #[error("input mesh: {0}")]
+    Mesh(#[from] HalfEdgeError),
+    /// A parameter is out of range.
+    #[error("{0}")]
+    BadParameter(String),
+    /// The input mesh is not a disk (one boundary loop, Euler characteristic 1).
+    #[error("the mesh must be a disk with one boundary: {0}")]
+    NotADisk(String),
+    /// The developed pattern overlaps itself.
+    #[error("the unfolded pattern overlaps itself (triangles {0} and {1})")]
+    Overlap(usize, usize),
+    /// A requested variation of §2.2 is not implemented.
+    #[error("{0} tucks are not implemented yet (only the star tuck of §2.1 is)")]
+    NotImplemented(&'static str),
+}

@@ -1,0 +1,437 @@
+//! Freeform origami tessellations (seed 002): initial star-tuck patterns on the regular
+//! tilings of Fig. 5, the solver on the example surfaces (dome, saddle, bell), the unfolded
+//! crease pattern, and its fabrication on 0.5 mm stainless steel.
+
+#[path = "tessellation/support.rs"]
+mod support;
+
+use std::f64::consts::PI;
+use std::path::PathBuf;
+
+use foldcam::design::tessellation::geometry::fold_angle;
+use foldcam::design::tessellation::*;
+use foldcam::fab::{PlanOptions, plan};
+use foldcam::machine::{load_machine, load_material};
+use foldcam::mesh::{HalfEdgeMesh, PolyMesh, read_mesh};
+use foldcam::pattern::{Assignment, CreasePattern};
+use foldcam::{post, sim};
+use support::*;
+
+fn half_edges(m: &PolyMesh) -> HalfEdgeMesh {
+    HalfEdgeMesh::new(m, 1e-12).expect("manifold")
+}
+
+fn example(name: &str) -> PolyMesh {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("examples/tessellation/{name}.obj"));
+    read_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+fn stainless_limits() -> Limits {
+    let m = load_material("stainless-0.5").expect("shipped material");
+    Limits::from_degrees(m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg)
+}
+
+/// Fig. 5: at s = 1 the star tucks of the regular triangle (checkerboard and digon), square and
+/// hexagon tilings are exactly developable, with d = l·cot(π/n).
+#[test]
+fn regular_tilings_give_exactly_developable_initial_patterns() {
+    let l = 10.0;
+    let cases = [
+        (
+            "triangles, checkerboard",
+            triangle_tiling(5, 5, l),
+            TuckLayout::Checkerboard,
+            3,
+        ),
+        (
+            "triangles, digons",
+            triangle_tiling(5, 5, l),
+            TuckLayout::Digon,
+            6,
+        ),
+        (
+            "squares, digons",
+            square_tiling(5, 5, l),
+            TuckLayout::Auto,
+            4,
+        ),
+        (
+            "hexagons, digons",
+            hexagon_tiling(4, 4, l),
+            TuckLayout::Auto,
+            3,
+        ),
+    ];
+    for (name, mesh, layout, n) in cases {
+        let he = half_edges(&mesh);
+        let init = star_tucks(
+            &he,
+            &StarOptions {
+                shrink: 1.0,
+                layout,
+            },
+        )
+        .expect(name);
+        let defects = angle_defects(&init.mesh, &init.mesh.positions);
+        let interior = init.mesh.interior_count();
+        assert!(interior > 20, "{name}: only {interior} interior vertices");
+        for (v, d) in defects.iter().enumerate() {
+            assert!(d.abs() < 1e-12, "{name}: vertex {v} has angle defect {d:e}");
+        }
+        let want = l / (PI / n as f64).tan();
+        let mut checked = 0;
+        for v in (0..mesh.positions().len()).filter(|&v| !he.is_boundary(v)) {
+            assert_eq!(init.points[v], n, "{name}: star points at {v}");
+            let d = init.depth[v].expect("interior vertices get a tuck");
+            assert!(
+                (d - want).abs() < 1e-12 * want,
+                "{name}: depth {d} vs {want}"
+            );
+            let k = init.mesh.key_of_input[v].expect("key") as usize;
+            let offset = mesh.positions()[v] - init.mesh.positions[k];
+            assert!(
+                (offset - glam::DVec3::new(0.0, 0.0, want)).length() < 1e-12,
+                "{name}"
+            );
+            checked += 1;
+        }
+        assert!(checked >= 4, "{name}");
+    }
+}
+
+/// The role-based mountain/valley assignment is the fold sign of the half-open pattern: on
+/// the flat tilings for any shrink and layout, on the curved examples in their checkerboard
+/// layout. (With digons on the dome, neighbouring tucks converge behind the surface and some
+/// digon creases start over-closed, past 180°: the solver has to open them.)
+#[test]
+fn assignments_are_the_folds_of_the_half_open_tucks() {
+    let meshes = [
+        (triangle_tiling(4, 4, 10.0), true),
+        (square_tiling(4, 4, 10.0), true),
+        (hexagon_tiling(3, 3, 10.0), true),
+        (example("dome"), false),
+        (example("saddle"), false),
+        (example("bell"), false),
+    ];
+    let shrinks = [0.6, 0.8, 0.95];
+    for (mesh, flat) in meshes {
+        let mesh = &mesh;
+        let layouts: &[TuckLayout] = if flat {
+            &[TuckLayout::Auto, TuckLayout::Digon]
+        } else {
+            &[TuckLayout::Auto]
+        };
+        for &layout in layouts {
+            for shrink in shrinks {
+                let mut init =
+                    star_tucks(&half_edges(mesh), &StarOptions { shrink, layout }).unwrap();
+                assign_folds(&mut init.mesh);
+                let mut creases = 0;
+                for e in init.mesh.edges.iter().filter(|e| e.interior) {
+                    let [i, j, a, b] = init.mesh.hinge(e).map(|v| init.mesh.positions[v as usize]);
+                    let rho = fold_angle(i, j, a, b).value;
+                    let want = match e.assignment {
+                        Assignment::Valley => 1.0,
+                        Assignment::Mountain => -1.0,
+                        _ => continue,
+                    };
+                    assert_eq!(rho.signum(), want, "{:?} at s = {shrink}: {rho}", e.role);
+                    creases += 1;
+                }
+                assert!(creases > 50);
+            }
+        }
+    }
+}
+
+/// Solves an example with the 0.5 mm stainless limits and checks every done-when criterion.
+fn solved(name: &str) -> Tessellation {
+    let limits = stainless_limits();
+    let t = tessellate(
+        &example(name),
+        &TessellateOptions::with_limits(limits),
+        |_| {},
+    )
+    .unwrap();
+    let r = &t.report;
+    eprintln!("{name}: {}", r.summary());
+    assert!(r.converged, "{name}: {}", r.summary());
+    assert!(r.last.developability < 1e-9, "{name}");
+    assert!(r.last.max_fold <= limits.max_fold, "{name}");
+    assert!(r.last.wrong_sign >= 0.0, "{name}");
+    assert!(r.last.min_vertex_angle >= limits.min_vertex_angle, "{name}");
+    // Independent re-measurement on the solved mesh.
+    for (v, d) in angle_defects(&t.mesh, &t.mesh.positions).iter().enumerate() {
+        assert!(d.abs() < 1e-9, "{name}: vertex {v} defect {d:e}");
+    }
+    t
+}
+
+fn check_unfolded(name: &str, t: &Tessellation) {
+    let u = t
+        .unfolded
+        .as_ref()
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let cp = &u.pattern;
+    cp.validate().expect("valid pattern");
+    assert!(u.max_length_error < 1e-9, "{name}: {}", u.max_length_error);
+    let faces = cp.faces.as_ref().expect("faces");
+    assert_eq!(Some(faces), u.folded.faces.as_ref());
+    assert_eq!(cp.edges, u.folded.edges);
+    for e in &cp.edges {
+        let [a, b] = e.vertices;
+        let l2 = cp.position(a).distance(cp.position(b));
+        let l3 = u.folded.positions[a.index()].distance(u.folded.positions[b.index()]);
+        assert!((l2 - l3).abs() <= 1e-9 * l3, "{name}: {l2} vs {l3}");
+    }
+    let mut area = 0.0;
+    for f in faces {
+        let [p, q, r] = [0, 1, 2].map(|k| cp.position(f.outer[k]));
+        let a = 0.5 * (q - p).perp_dot(r - p);
+        assert!(a > 0.0, "{name}: a flipped face");
+        area += a;
+    }
+    // Triangles that do not overlap fill the outline's area exactly once: compare with the 3D area.
+    let area3: f64 = faces
+        .iter()
+        .map(|f| {
+            let [p, q, r] = [0, 1, 2].map(|k| u.folded.positions[f.outer[k].index()]);
+            0.5 * (q - p).cross(r - p).length()
+        })
+        .sum();
+    assert!((area - area3).abs() < 1e-9 * area3, "{name}");
+    let folds = cp.edges.iter().filter(|e| e.assignment.is_fold()).count();
+    assert!(folds > 100, "{name}: {folds} folds");
+    for e in cp.edges.iter().filter(|e| e.assignment.is_fold()) {
+        let angle = e.fold_angle.expect("target angle");
+        let sign = if e.assignment == Assignment::Valley {
+            1.0
+        } else {
+            -1.0
+        };
+        assert!(
+            angle * sign > 0.0 && angle.abs() <= 165.0,
+            "{name}: {angle}"
+        );
+    }
+}
+
+#[test]
+fn dome_converges_and_unfolds_isometrically() {
+    let t = solved("dome");
+    check_unfolded("dome", &t);
+}
+
+#[test]
+fn saddle_converges_and_unfolds_isometrically() {
+    let t = solved("saddle");
+    check_unfolded("saddle", &t);
+}
+
+#[test]
+fn bell_converges_and_unfolds_isometrically() {
+    let t = solved("bell");
+    check_unfolded("bell", &t);
+}
+
+/// The unfolded dome goes through the fabrication pipeline on the fiber laser with 0.5 mm
+/// stainless steel: planned, written as G-code, run on the simulated machine without
+/// violations and with every crease and cut covered.
+#[test]
+fn unfolded_dome_cuts_clean_on_stainless() {
+    let t = solved("dome");
+    let cp: &CreasePattern = &t.unfolded.as_ref().expect("unfolds").pattern;
+    let machine = load_machine("linuxcnc-fiber").expect("shipped machine");
+    let material = load_material("stainless-0.5").expect("shipped material");
+    let mut options = PlanOptions::from_material(&material);
+    options
+        .adapt_to_machine(&machine)
+        .expect("fiber laser cuts stainless");
+    let p = plan(cp, &machine, &material, &options).unwrap_or_else(|e| panic!("{e}"));
+    assert!(!p.jobs.is_empty());
+    for job in &p.jobs {
+        let gcode = post::gcode(&p, job, &machine).expect("G-code");
+        let run = sim::run(&gcode, &machine).expect("readable");
+        assert!(run.is_clean(), "{:?}", run.violations.first());
+        let cov = sim::coverage(&run, cp, job, &p);
+        assert!(
+            cov.passed(),
+            "{:?}, stray {:?}",
+            cov.failed_edges().next(),
+            cov.stray.first()
+        );
+    }
+}
+
+#[test]
+fn bad_input_is_refused_with_a_reason() {
+    let tetra = PolyMesh::new(
+        vec![
+            glam::DVec3::ZERO,
+            glam::DVec3::X,
+            glam::DVec3::Y,
+            glam::DVec3::Z,
+        ],
+        vec![vec![0, 2, 1], vec![0, 1, 3], vec![1, 2, 3], vec![0, 3, 2]],
+    )
+    .unwrap();
+    let opts = TessellateOptions::default();
+    assert!(matches!(
+        tessellate(&tetra, &opts, |_| {}),
+        Err(TessError::NotADisk(_))
+    ));
+    let mut shrink = opts;
+    shrink.star.shrink = 0.0;
+    assert!(matches!(
+        tessellate(&example("dome"), &shrink, |_| {}),
+        Err(TessError::BadParameter(_))
+    ));
+    shrink.star.shrink = f64::NAN;
+    assert!(matches!(
+        tessellate(&example("dome"), &shrink, |_| {}),
+        Err(TessError::BadParameter(_))
+    ));
+    let mut checker = opts;
+    checker.star.layout = TuckLayout::Checkerboard;
+    let squares = square_tiling(3, 3, 10.0);
+    assert!(matches!(
+        tessellate(&squares, &checker, |_| {}),
+        Err(TessError::BadParameter(_))
+    ));
+    let mut limits = opts;
+    limits.solve.limits = Limits::from_degrees(200.0, 30.0);
+    assert!(matches!(
+        tessellate(&example("dome"), &limits, |_| {}),
+        Err(TessError::BadParameter(_))
+    ));
+}
+
+fn foldcam(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+/// The command writes a FOLD with the pattern (frame 0) and the folded form (frame 1), the two
+/// previews, and names the variations it cannot do yet instead of falling back.
+#[test]
+fn cli_writes_pattern_folded_form_and_previews() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("dome.fold");
+    let (png, cp_png) = (dir.path().join("f.png"), dir.path().join("cp.png"));
+    let mesh = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/tessellation/dome.obj");
+    let run = foldcam(&[
+        "tessellate",
+        mesh.to_str().expect("utf-8"),
+        "-x",
+        "stainless-0.5",
+        "-o",
+        out.to_str().expect("utf-8"),
+        "--png",
+        png.to_str().expect("utf-8"),
+        "--cp-png",
+        cp_png.to_str().expect("utf-8"),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stdout}\n{stderr}");
+    assert!(
+        stdout.contains("converged") && stderr.contains("iteration"),
+        "{stdout}{stderr}"
+    );
+    let imported = foldcam::formats::load(&out).expect("readable FOLD");
+    let folded = imported.folded.expect("folded frame");
+    assert_eq!(folded.positions.len(), imported.pattern.vertices.len());
+    assert_eq!(folded.edges.len(), imported.pattern.edges.len());
+    assert!(folded.positions.iter().any(|p| p.z.abs() > 1.0));
+    for p in [png, cp_png] {
+        assert!(std::fs::read(&p).expect("written").starts_with(b"\x89PNG"));
+    }
+    for tuck in ["truncated", "twisted", "twist"] {
+        let run = foldcam(&[
+            "tessellate",
+            mesh.to_str().expect("utf-8"),
+            "--tuck",
+            tuck,
+            "-o",
+            "x.fold",
+        ]);
+        assert_eq!(run.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&run.stderr).contains("not implemented yet"));
+    }
+}
+
+/// Ground contact (§6): the bell stands on a table, every boundary vertex on one plane.
+#[test]
+fn bell_stands_on_the_ground() {
+    let mut opts = TessellateOptions::with_limits(stainless_limits());
+    opts.ground = true;
+    let t = tessellate(&example("bell"), &opts, |_| {}).unwrap();
+    assert!(t.report.converged, "{}", t.report.summary());
+    let z0 = t.report.limits.ground_z.expect("plane chosen");
+    let on_ground = t
+        .mesh
+        .positions
+        .iter()
+        .zip(&t.mesh.interior)
+        .filter(|(_, inside)| !**inside)
+        .inspect(|(p, _)| assert!((p.z - z0).abs() < 1e-9, "{} vs {z0}", p.z))
+        .count();
+    assert!(on_ground > 30);
+    check_unfolded("bell on the ground", &t);
+}
+
+/// Surface fit (§3.4): moves projected by eq. 9 bring the solved saddle closer to its input
+/// face corners while every condition still holds.
+#[test]
+fn surface_fit_reduces_the_distance_and_keeps_the_constraints() {
+    let limits = stainless_limits();
+    let mut opts = TessellateOptions::with_limits(limits);
+    opts.fit = Some(FitOptions {
+        weight: 0.1,
+        rounds: 10,
+    });
+    let t = tessellate(&example("saddle"), &opts, |_| {}).unwrap();
+    let fit = t.fit.expect("fit ran after a converged solve");
+    assert!(fit.accepted > 0 && fit.last < 0.9 * fit.initial, "{fit:?}");
+    let r = residuals(&t.mesh, &t.mesh.positions, None);
+    assert!(r.developability < 1e-9, "{r:?}");
+    assert!(
+        r.max_fold <= limits.max_fold && r.wrong_sign >= 0.0,
+        "{r:?}"
+    );
+    assert!(r.min_vertex_angle >= limits.min_vertex_angle, "{r:?}");
+    check_unfolded("fitted saddle", &t);
+}
+
+/// The digon layout (every face black, a six-pointed star at each valence-6 vertex) solves the
+/// dome once the limits allow its 12 thin tuck triangles per key vertex (their angles at the
+/// key average 30°, so δ_corner = 30° leaves no room): fold ≤ 178°, vertex angle ≥ 15°.
+#[test]
+fn digon_layout_solves_the_dome_with_relaxed_limits() {
+    let limits = Limits::from_degrees(178.0, 15.0);
+    let mut opts = TessellateOptions::with_limits(limits);
+    opts.star.layout = TuckLayout::Digon;
+    let t = tessellate(&example("dome"), &opts, |_| {}).unwrap();
+    assert_eq!(t.initial.layout, TuckLayout::Digon);
+    assert!(t.report.converged, "{}", t.report.summary());
+    let r = residuals(&t.mesh, &t.mesh.positions, None);
+    assert!(r.developability < 1e-9 && r.wrong_sign >= 0.0, "{r:?}");
+    assert!(r.max_fold <= limits.max_fold && r.min_vertex_angle >= limits.min_vertex_angle);
+    let u = t.unfolded.as_ref().expect("no overlaps");
+    assert!(u.max_length_error < 1e-9);
+    let digons = t
+        .mesh
+        .edges
+        .iter()
+        .filter(|e| e.role == EdgeRole::Digon)
+        .count();
+    let he = half_edges(&example("dome"));
+    let interior_edges = he.half_edges().iter().filter(|h| h.twin.is_some()).count() / 2;
+    assert_eq!(
+        digons, interior_edges,
+        "one digon crease per interior input edge"
+    );
+}
