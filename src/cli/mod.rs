@@ -8,6 +8,7 @@ mod convert;
 mod cut;
 mod demo;
 mod fab_args;
+mod fold;
 mod generate;
 mod input;
 mod plan;
@@ -68,6 +69,8 @@ enum Command {
     /// Design pop-up cards (origamic architecture).
     #[command(subcommand)]
     Popup(popup::Command),
+    /// Fold a sheet step by step from a script (seed 003) and write its crease pattern.
+    Fold(fold::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
 }
@@ -85,6 +88,7 @@ pub fn run() -> ExitCode {
         Command::Simulate(a) => simulate::run(a),
         Command::Popup(c) => popup::run(c),
         Command::Demo(a) => demo::run(a),
+        Command::Fold(a) => fold::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

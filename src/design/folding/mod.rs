@@ -13,6 +13,7 @@
 //! - [`crease`]: the crease pattern (unfolded fold lines, mountain/valley from the final state)
 //!   and the folded state of every step on that pattern's topology.
 //! - [`script`]: the TOML fold script.
+//! - [`display`]: step states with layers spread apart, for previews.
 //!
 //! Deviations from the paper: the sheet must be convex (faces stay convex, so splitting a face
 //! by a line gives two faces); vertex positions are not stored as cells with a history but
@@ -22,6 +23,7 @@
 //! along; collisions between faces of different planes are not checked.
 
 pub mod crease;
+pub mod display;
 pub mod drag;
 mod error;
 pub mod geometry;
