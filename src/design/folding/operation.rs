@@ -28,10 +28,11 @@ use crate::pattern::MAX_COORDINATE;
 pub enum Layers {
     /// Every face of the layer plane that reaches the moving side.
     All,
-    /// Only the outermost face at the `moving` point on the side the fold turns to (the top
-    /// one for a turn towards the normal; for a tuck-in, the top and the bottom one), plus
-    /// what the search adds.
-    Outer,
+    /// The `n`-th face (1 = the outermost) at the `moving` point counted from the side the
+    /// fold turns to (from the top for a turn towards the normal), plus what the search adds —
+    /// so, by rule ③, the outer `n` layers there. For a tuck-in, the `n`-th from the top and
+    /// from the bottom.
+    Outer(usize),
     /// The given faces (indices into [`State::faces`]).
     Faces(Vec<usize>),
 }
@@ -164,15 +165,17 @@ impl Folding {
             Layers::Faces(faces) => (0..layer.stack.len())
                 .filter(|&i| faces.contains(&layer.stack[i]))
                 .collect(),
-            Layers::Outer => {
+            Layers::Outer(n) => {
                 let under: Vec<usize> = candidates
                     .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
                     .collect();
-                match (turning, under.first(), under.last()) {
-                    (Turning::Towards(s), _, Some(&top)) if s > 0.0 => vec![top],
-                    (Turning::Towards(_), Some(&bottom), _) => vec![bottom],
-                    (Turning::Tuck, Some(&bottom), Some(&top)) => vec![bottom, top],
-                    _ => Vec::new(),
+                let k = n.saturating_sub(1);
+                let from_top = under.len().checked_sub(k + 1).map(|i| under[i]);
+                let from_bottom = under.get(k).copied();
+                match turning {
+                    Turning::Towards(s) if s > 0.0 => from_top.into_iter().collect(),
+                    Turning::Towards(_) => from_bottom.into_iter().collect(),
+                    Turning::Tuck => from_bottom.into_iter().chain(from_top).collect(),
                 }
             }
         }

@@ -40,9 +40,10 @@
 //!   follows the paper's rule, with snapping; `mountain` as for `bend` when `to` lies in the
 //!   layer's plane.
 //!
-//! `layers` (bend, fold, tuck) is `"all"` (default: every face reaching the moving side) or
+//! `layers` (bend, fold, tuck) is `"all"` (default: every face reaching the moving side),
 //! `"outer"` (the outermost face at `moving` on the side the fold turns to, plus the faces the
-//! moving-face search adds).
+//! moving-face search adds) or a number `n` (the `n`-th face from that side, so the outer `n`
+//! layers at `moving`).
 
 use glam::{DVec2, DVec3};
 use serde::Deserialize;
@@ -134,8 +135,18 @@ pub struct LineSpec {
     /// Turn away from the normal (only for `bend`).
     #[serde(default)]
     pub mountain: bool,
+    /// `"all"`, `"outer"` or a number of outer layers.
+    pub layers: Option<LayersSpec>,
+}
+
+/// The `layers` key: `"all"`, `"outer"` (= 1) or a count of outer layers.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(untagged)]
+pub enum LayersSpec {
     /// `"all"` or `"outer"`.
-    pub layers: Option<String>,
+    Name(String),
+    /// The outer `n` layers at the `moving` point.
+    Count(i64),
 }
 
 /// A drag.
@@ -282,12 +293,14 @@ fn action(step: &StepSpec, snap: Snap) -> Result<Action, String> {
 }
 
 fn line_fold(l: &LineSpec, turn: Turn) -> Result<Fold, String> {
-    let layers = match l.layers.as_deref() {
-        None | Some("all") => Layers::All,
-        Some("outer") => Layers::Outer,
+    let layers = match &l.layers {
+        None => Layers::All,
+        Some(LayersSpec::Name(n)) if n == "all" => Layers::All,
+        Some(LayersSpec::Name(n)) if n == "outer" => Layers::Outer(1),
+        Some(LayersSpec::Count(n)) if (1..=100_000).contains(n) => Layers::Outer(*n as usize),
         Some(other) => {
             return Err(format!(
-                "layers must be \"all\" or \"outer\", not \"{other}\""
+                "layers must be \"all\", \"outer\" or a count of layers from 1, not {other:?}"
             ));
         }
     };
