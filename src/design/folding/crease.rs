@@ -106,10 +106,11 @@ fn vertex_id(
     let cell = ((p.x / tol).floor() as i64, (p.y / tol).floor() as i64);
     for dx in -1..=1 {
         for dy in -1..=1 {
-            if let Some(ids) = grid.get(&(cell.0 + dx, cell.1 + dy)) {
-                if let Some(&id) = ids.iter().find(|&&i| vertices[i].distance(p) <= tol) {
-                    return id;
-                }
+            if let Some(&id) = grid
+                .get(&(cell.0 + dx, cell.1 + dy))
+                .and_then(|ids| ids.iter().find(|&&i| vertices[i].distance(p) <= tol))
+            {
+                return id;
             }
         }
     }

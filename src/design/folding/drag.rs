@@ -109,7 +109,7 @@ impl Frame {
     fn to_plane(&self, p: DVec3) -> DVec2 {
         DVec2::new((p - self.origin).dot(self.u), (p - self.origin).dot(self.v))
     }
-    fn from_plane(&self, p: DVec2) -> DVec3 {
+    fn in_space(&self, p: DVec2) -> DVec3 {
         self.origin + self.u * p.x + self.v * p.y
     }
 }
@@ -182,17 +182,15 @@ impl Folding {
         }
         let fold = Fold {
             line: [
-                frame.from_plane(line.point),
-                frame.from_plane(line.point + line.dir),
+                frame.in_space(line.point),
+                frame.in_space(line.point + line.dir),
             ],
             moving: p,
             turn: Turn::Angle(angle),
             layers: Layers::Faces(vec![face]),
         };
-        let outward = frame
-            .normal
-            .cross(frame.from_plane(line.dir) - frame.origin)
-            * line.side(pp).signum();
+        let outward =
+            frame.normal.cross(frame.in_space(line.dir) - frame.origin) * line.side(pp).signum();
         let axis = outward.cross(frame.normal);
         let landed = rotation_about(fold.line[0], axis, angle.to_radians()).transform_point3(p);
         Ok(DragPlan {
@@ -337,10 +335,20 @@ fn edge_onto_edge(
     let moving = line.side(*p).signum();
     let mut best: Option<(f64, Line2)> = None;
     for &(a, b) in own {
-        if moving * line.side(a) < -eps || moving * line.side(b) < -eps {
+        // The part of the edge on the moving side.
+        let (sa, sb) = (moving * line.side(a), moving * line.side(b));
+        if sa <= eps && sb <= eps {
             continue;
         }
-        if line.side(a).abs() <= eps && line.side(b).abs() <= eps {
+        let cut = |s: f64, t: f64, p: DVec2, q: DVec2| {
+            if s >= -eps {
+                p
+            } else {
+                p + (q - p) * (s / (s - t))
+            }
+        };
+        let (a, b) = (cut(sa, sb, a, b), cut(sb, sa, b, a));
+        if a.distance(b) <= tol {
             continue;
         }
         let (ra, rb) = (line.reflect(a), line.reflect(b));
@@ -355,10 +363,10 @@ fn edge_onto_edge(
             let Some(source) = Line2::through(a, b, eps) else {
                 continue;
             };
-            if let Some(l) = bisector_of(&source, &target, line, eps) {
-                if best.as_ref().is_none_or(|(d, _)| da + db < *d) {
-                    best = Some((da + db, l));
-                }
+            if let Some(l) = bisector_of(&source, &target, line, eps)
+                && best.as_ref().is_none_or(|(d, _)| da + db < *d)
+            {
+                best = Some((da + db, l));
             }
         }
     }

@@ -87,8 +87,8 @@ fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<Stri
         }
     }
     for t in &tacos {
-        for h in t.low + 1..t.high {
-            if segment_crosses_interior(t.p, t.q, &polys[h], tol) {
+        for (h, poly) in polys.iter().enumerate().take(t.high).skip(t.low + 1) {
+            if segment_crosses_interior(t.p, t.q, poly, tol) {
                 out.push(format!(
                     "group {g}: face {} lies between the two faces of a flat crease and runs across it",
                     group.stack[h]

@@ -174,6 +174,7 @@ pub(super) fn moving_faces(
                 if every_candidate_moves {
                     continue;
                 }
+                #[allow(clippy::needless_range_loop)] // b indexes three parallel arrays
                 for b in 0..n {
                     let beyond = if sign > 0.0 { b > a } else { b < a };
                     if beyond
