@@ -164,6 +164,9 @@ pub(super) fn moving_faces(
                     out_of_plane |= layer.joined_beyond_line(folding, state, a, k);
                     continue;
                 }
+                if every_candidate_moves {
+                    continue;
+                }
                 if !moving[b] && layer.joined_beyond_line(folding, state, a, k) {
                     moving[b] = true;
                     queue.push(b);
