@@ -1,6 +1,6 @@
 //! Fold-sequence simulator (seed 003): isometry after every step, consistent layer orders,
 //! flat-foldable crease patterns, exact undo, the paper's drag rule and snapping, refused
-//! steps, FOLD frames, and the bird base through the fabrication pipeline.
+//! steps, FOLD frames, the bird base and its path through the fabrication pipeline.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -569,4 +569,40 @@ fn cli_writes_frames_and_pictures_and_refuses_bad_scripts() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("bad.toml") && err.contains("step 1"), "{err}");
     assert!(!dir.path().join("bad.fold").exists());
+}
+
+#[test]
+fn bird_base_has_two_petals_and_the_petal_creases() {
+    let f = example("bird-base.toml");
+    let sheet = crease_pattern(&f);
+    let cp = &sheet.pattern;
+    let count = |a| cp.edges.iter().filter(|e| e.assignment == a).count();
+    // Eight kite lines and the four midline halves inside the kite points are valleys, the two
+    // petal lines and the two halves of the first diagonal mountains; the midline halves beyond
+    // the kite points unfold (flat).
+    assert_eq!(
+        (
+            count(Assignment::Valley),
+            count(Assignment::Mountain),
+            count(Assignment::Flat)
+        ),
+        (12, 4, 4)
+    );
+    // Folded: a long diamond from the corner stack at the origin to the two petal tips, which
+    // are the sheet corners (0, 0) and (150, 150), 75·√2 mm along the diagonal.
+    let last = step_states(&f, &sheet).pop().expect("states");
+    let tip = DVec3::splat(75.0 * std::f64::consts::FRAC_1_SQRT_2 * 2.0).with_z(0.0);
+    for corner in [DVec2::ZERO, DVec2::splat(150.0)] {
+        let v = cp
+            .vertices
+            .iter()
+            .position(|p| p.distance(corner) < 1e-6)
+            .expect("corner vertex");
+        assert!(
+            last.positions[v].distance(tip) < 1e-9,
+            "{:?}",
+            last.positions[v]
+        );
+    }
+    assert!(last.positions.iter().all(|p| p.z.abs() < 1e-9));
 }

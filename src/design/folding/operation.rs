@@ -30,9 +30,12 @@ pub enum Layers {
     All,
     /// The `n`-th face (1 = the outermost) at the `moving` point counted from the side the
     /// fold turns to (from the top for a turn towards the normal), plus what the search adds —
-    /// so, by rule ③, the outer `n` layers there. For a tuck-in, the `n`-th from the top and
-    /// from the bottom.
+    /// so, by rule ③, the outer `n` layers there. For a tuck-in, the `n`-th from the top, with
+    /// the faces joined to it beyond the line (rule ②) and those between (rule ④).
     Outer(usize),
+    /// The `n`-th face (1 = the outermost) at the `moving` point counted from the back (the
+    /// side away from the normal), whatever the turn, plus what the search adds.
+    Back(usize),
     /// The given faces (indices into [`State::faces`]).
     Faces(Vec<usize>),
 }
@@ -165,6 +168,11 @@ impl Folding {
             Layers::Faces(faces) => (0..layer.stack.len())
                 .filter(|&i| faces.contains(&layer.stack[i]))
                 .collect(),
+            Layers::Back(n) => candidates
+                .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
+                .nth(n.saturating_sub(1))
+                .into_iter()
+                .collect(),
             Layers::Outer(n) => {
                 let under: Vec<usize> = candidates
                     .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
@@ -175,7 +183,7 @@ impl Folding {
                 match turning {
                     Turning::Towards(s) if s > 0.0 => from_top.into_iter().collect(),
                     Turning::Towards(_) => from_bottom.into_iter().collect(),
-                    Turning::Tuck => from_bottom.into_iter().chain(from_top).collect(),
+                    Turning::Tuck => from_top.into_iter().collect(),
                 }
             }
         }

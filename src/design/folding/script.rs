@@ -41,9 +41,10 @@
 //!   layer's plane.
 //!
 //! `layers` (bend, fold, tuck) is `"all"` (default: every face reaching the moving side),
-//! `"outer"` (the outermost face at `moving` on the side the fold turns to, plus the faces the
-//! moving-face search adds) or a number `n` (the `n`-th face from that side, so the outer `n`
-//! layers at `moving`).
+//! `"outer"` (the outermost face at `moving` on the side the fold turns to — the top one for a
+//! tuck — plus the faces the moving-face search adds), a number `n` (the `n`-th face from that
+//! side, so the outer `n` layers at `moving`), or `"back"` / `-n` (counted from the back, the
+//! side away from the layer's normal).
 
 use glam::{DVec2, DVec3};
 use serde::Deserialize;
@@ -297,10 +298,14 @@ fn line_fold(l: &LineSpec, turn: Turn) -> Result<Fold, String> {
         None => Layers::All,
         Some(LayersSpec::Name(n)) if n == "all" => Layers::All,
         Some(LayersSpec::Name(n)) if n == "outer" => Layers::Outer(1),
+        Some(LayersSpec::Name(n)) if n == "back" => Layers::Back(1),
         Some(LayersSpec::Count(n)) if (1..=100_000).contains(n) => Layers::Outer(*n as usize),
+        Some(LayersSpec::Count(n)) if (-100_000..=-1).contains(n) => {
+            Layers::Back(n.unsigned_abs() as usize)
+        }
         Some(other) => {
             return Err(format!(
-                "layers must be \"all\", \"outer\" or a count of layers from 1, not {other:?}"
+                "layers must be \"all\", \"outer\", \"back\" or a count of layers (negative from the back), not {other:?}"
             ));
         }
     };
