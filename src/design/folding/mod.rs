@@ -5,10 +5,11 @@
 //! - [`state`]: the data of §3 — the face tree (every face ever made, with its parent and its
 //!   region of the sheet), the current faces with rigid transforms, face groups (coplanar
 //!   faces) with their face stacks; one immutable state per step, so undo is exact.
-//! - [`operation`]: the operations of §2.1 and the list update of §4 (search in [`search`]).
+//! - [`operation`]: the operations of §2.1 and the list update of §4 (the moving-face search
+//!   in `search`, the face stack update and tuck-in conditions in `stack`).
 //! - [`drag`]: the paper's interaction (§2.3): pick a vertex, move it; the fold line is the
 //!   perpendicular bisector of the move, the fold angle twice the plane angle (Fig. 3); the
-//!   snapping rules of §2.3 4).
+//!   snapping rules of §2.3 4) (in `snap`).
 //! - [`layers`]: consistency of flat layer orders (no face passes through another).
 //! - [`crease`]: the crease pattern (unfolded fold lines, mountain/valley from the final state)
 //!   and the folded state of every step on that pattern's topology.
@@ -31,6 +32,8 @@ pub mod layers;
 pub mod operation;
 pub mod script;
 mod search;
+mod snap;
+mod stack;
 pub mod state;
 
 pub use error::FoldError;
