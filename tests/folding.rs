@@ -81,8 +81,41 @@ fn every_face_keeps_its_shape_after_every_step() {
                 (total - sheet_area).abs() < 1e-6 * sheet_area,
                 "{name} step {k}"
             );
+            assert_neighbours_match_the_sheet(&f, k);
         }
     }
+}
+
+/// The kept edge-neighbour lists equal the pairs of faces that share an edge on the sheet.
+fn assert_neighbours_match_the_sheet(f: &Folding, step: usize) {
+    let faces = &f.steps()[step].state.faces;
+    for (i, a) in faces.iter().enumerate() {
+        for (j, b) in faces.iter().enumerate().filter(|(j, _)| *j != i) {
+            let (pa, pb) = (f.polygon(a), f.polygon(b));
+            let touching = (0..pa.len()).any(|x| {
+                (0..pb.len()).any(|y| {
+                    shares_edge(pa[x], pa[(x + 1) % pa.len()], pb[y], pb[(y + 1) % pb.len()])
+                })
+            });
+            assert_eq!(
+                a.neighbours.contains(&j),
+                touching,
+                "step {step}: faces {i}, {j}"
+            );
+        }
+    }
+}
+
+/// Whether two segments lie on one line and overlap over more than a micrometre.
+fn shares_edge(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> bool {
+    let d = (a1 - a0).normalize();
+    let off = |p: DVec2| d.perp_dot(p - a0).abs();
+    if off(b0) > 1e-6 || off(b1) > 1e-6 {
+        return false;
+    }
+    let t = |p: DVec2| d.dot(p - a0);
+    let (lo, hi) = (t(b0).min(t(b1)), t(b0).max(t(b1)));
+    hi.min(t(a1)) - lo.max(0.0) > 1e-3
 }
 
 fn area(poly: &[DVec2]) -> f64 {

@@ -242,6 +242,7 @@ impl Folding {
         step: usize,
         rotation: DAffine3,
     ) -> usize {
+        let neighbours = std::mem::take(&mut state.faces[f].neighbours);
         let face = state.faces[f].clone();
         let inverse = face.transform.inverse();
         let from_plane = |p: DVec2| layer.origin + layer.u * p.x + layer.v * p.y;
@@ -283,15 +284,25 @@ impl Folding {
         });
         state.faces[f].cell = fixed_cell;
         state.faces[f].neighbours.clear();
-        for k in face.neighbours {
+        // A neighbour touches the child on whose side its shared edge with the parent lies
+        // (both when the edge crosses the fold line).
+        for k in neighbours {
             state.faces[k].neighbours.retain(|&x| x != f);
-            for child in [f, g] {
-                let touch = contact(
-                    &self.cells[state.faces[child].cell.index()].polygon,
-                    &self.cells[state.faces[k].cell.index()].polygon,
-                    self.tol,
-                );
-                if touch.is_some() {
+            let Some((p, q)) = contact(
+                &polygon,
+                &self.cells[state.faces[k].cell.index()].polygon,
+                self.tol,
+            ) else {
+                continue;
+            };
+            let (sp, sq) = (
+                sheet_side * sheet_line.side(p),
+                sheet_side * sheet_line.side(q),
+            );
+            let on_moving = sp.max(sq) > self.tol;
+            let on_fixed = sp.min(sq) < -self.tol;
+            for (child, touches) in [(f, on_fixed || !on_moving), (g, on_moving || !on_fixed)] {
+                if touches {
                     state.faces[child].neighbours.push(k);
                     state.faces[k].neighbours.push(child);
                 }
