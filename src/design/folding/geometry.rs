@@ -47,13 +47,22 @@ pub fn double_area(poly: &[DVec2]) -> f64 {
 /// The part of a convex polygon on the side `sign` (+1 left, −1 right) of `line`, vertices
 /// within `tol` of the line snapped onto it; empty when that part is thinner than `tol`.
 pub fn clip(poly: &[DVec2], line: &Line2, sign: f64, tol: f64) -> Vec<DVec2> {
-    let dist: Vec<f64> = poly
-        .iter()
-        .map(|&p| {
-            let s = sign * line.side(p);
-            if s.abs() <= tol { 0.0 } else { s }
-        })
-        .collect();
+    let d = |p: DVec2| {
+        let s = sign * line.side(p);
+        if s.abs() <= tol { 0.0 } else { s }
+    };
+    // Signed distances: on the stack for the small polygons folding makes.
+    let mut small = [0.0f64; 16];
+    let mut large = Vec::new();
+    let dist: &mut [f64] = if poly.len() <= small.len() {
+        &mut small[..poly.len()]
+    } else {
+        large.resize(poly.len(), 0.0);
+        &mut large
+    };
+    for (slot, &p) in dist.iter_mut().zip(poly) {
+        *slot = d(p);
+    }
     if dist.iter().all(|&s| s <= 0.0) {
         return Vec::new();
     }

@@ -62,10 +62,14 @@ impl Layer {
         let mut moving_part = Vec::with_capacity(g.stack.len());
         let mut fixed_part = Vec::with_capacity(g.stack.len());
         for &f in &g.stack {
+            let face = &state.faces[f];
             let poly: Vec<DVec2> = folding
-                .corners(&state.faces[f])
-                .into_iter()
-                .map(|p| DVec2::new((p - origin).dot(u), (p - origin).dot(v)))
+                .polygon(face)
+                .iter()
+                .map(|p| {
+                    let q = face.transform.transform_point3(p.extend(0.0)) - origin;
+                    DVec2::new(q.dot(u), q.dot(v))
+                })
                 .collect();
             moving_part.push(clip(&poly, &line, side, tol));
             fixed_part.push(clip(&poly, &line, -side, tol));
@@ -177,11 +181,10 @@ pub(super) fn moving_faces(
                 if every_candidate_moves {
                     continue;
                 }
-                #[allow(clippy::needless_range_loop)] // b indexes three parallel arrays
-                for b in 0..n {
-                    let beyond = if sign > 0.0 { b > a } else { b < a };
-                    if beyond
-                        && !moving[b]
+                // Only the faces beyond `a` on the turning side.
+                let beyond = if sign > 0.0 { a + 1..n } else { 0..a };
+                for b in beyond {
+                    if !moving[b]
                         && !layer.moving_part[b].is_empty()
                         && layer.moving_overlap(a, b, tol)
                     {
