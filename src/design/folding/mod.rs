@@ -16,12 +16,24 @@
 //! - [`script`]: the TOML fold script.
 //! - [`display`]: step states with layers spread apart, for previews.
 //!
-//! Deviations from the paper: the sheet must be convex (faces stay convex, so splitting a face
-//! by a line gives two faces); vertex positions are not stored as cells with a history but
-//! derived from each face's sheet polygon and its rigid transform (the history is the list of
-//! per-step states); a fold may only move faces of one layer plane (the paper's §4.5 says the
-//! same), and a face of another plane attached beyond the fold line is an error, not moved
-//! along; collisions between faces of different planes are not checked.
+//! Deviations from the paper:
+//! - The sheet must be convex, so every face stays convex and a line splits it in two.
+//! - The edge layer (§3.2) and the vertex cells (§3.3) are not stored: edges are the face
+//!   polygons' sides with kept neighbour lists, vertex positions follow from each face's sheet
+//!   polygon and rigid transform (isometry by construction), and the position history is the
+//!   list of per-step states ([`crease::step_states`] gives every vertex's position per step).
+//! - Input is a script, not the mouse Picker of §2.2; there is no viewpoint (§2.4): picking
+//!   looks down from +z, and "valley" means turning towards the layer plane's normal.
+//! - §4.5 gives no table for the new stack; the rules used are in [`operation`]'s docs (bend:
+//!   reversed on the turning side; tuck-in: each half reversed next to its hinge; fold-up: a new
+//!   group, or the side of arrival when landing on an existing plane).
+//! - A fold moves faces of one layer plane only (as §4.5 assumes); a face of another plane
+//!   attached beyond the fold line is an error, not moved along. Collisions between faces of
+//!   different planes are not checked.
+//! - Tuck-ins are 180° and symmetric (the paper's restriction), with the moving layers split
+//!   into a lower and an upper half of equal count.
+//! - Edge-onto-edge snapping applies to bends only; a snapped drag's destination is the image
+//!   of the picked vertex under the snapped fold.
 
 pub mod crease;
 pub mod display;
