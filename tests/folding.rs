@@ -639,3 +639,63 @@ fn bird_base_has_two_petals_and_the_petal_creases() {
     }
     assert!(last.positions.iter().all(|p| p.z.abs() < 1e-9));
 }
+
+/// Random sequences of bends (all layers or the outer few, fixed seed): after every step that folds, the
+/// layer order is consistent and the crease pattern flat-foldable; a refused step changes
+/// nothing.
+#[test]
+fn random_bend_sequences_stay_consistent_and_flat_foldable() {
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut folded = 0;
+    for _ in 0..60 {
+        let mut f = square(100.0);
+        for _ in 0..5 {
+            // A line through two points of the current flat outline's bounding box.
+            let (lo, hi) = bounds(&f);
+            let pick = |t: f64, u: f64| {
+                DVec3::new(lo.x + (hi.x - lo.x) * t, lo.y + (hi.y - lo.y) * u, 0.0)
+            };
+            let (a, b) = (pick(next(), next()), pick(next(), next()));
+            let side = pick(next(), next());
+            let fold = Fold {
+                line: [a, b],
+                moving: side,
+                turn: Turn::Angle(if next() < 0.5 { 180.0 } else { -180.0 }),
+                layers: if next() < 0.5 {
+                    Layers::All
+                } else {
+                    Layers::Outer(1 + (next() * 3.0) as usize)
+                },
+            };
+            let before = f.clone();
+            match f.fold(&fold, None) {
+                Ok(_) => {
+                    folded += 1;
+                    let problems = layer_problems(&f, f.current());
+                    assert!(problems.is_empty(), "{fold:?}: {problems:?}");
+                    let report = check(&crease_pattern(&f).pattern, &CheckOptions::default());
+                    assert!(report.passed(), "{fold:?}: {:?}", report.findings.first());
+                }
+                Err(_) => assert_eq!(f, before),
+            }
+        }
+    }
+    assert!(folded >= 60, "{folded} folds made");
+}
+
+fn bounds(f: &Folding) -> (DVec3, DVec3) {
+    f.current()
+        .faces
+        .iter()
+        .flat_map(|face| f.corners(face))
+        .fold(
+            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(p), hi.max(p)),
+        )
+}
