@@ -93,8 +93,9 @@ fn onto(line: &Line2, p: DVec2) -> DVec2 {
 
 /// Removes consecutive vertices closer than `tol` (cyclically).
 fn dedup_ring(ring: &mut Vec<DVec2>, tol: f64) {
-    ring.dedup_by(|a, b| a.distance(*b) <= tol);
-    while ring.len() > 1 && ring[0].distance(ring[ring.len() - 1]) <= tol {
+    let tol2 = tol * tol;
+    ring.dedup_by(|a, b| a.distance_squared(*b) <= tol2);
+    while ring.len() > 1 && ring[0].distance_squared(ring[ring.len() - 1]) <= tol2 {
         ring.pop();
     }
 }
@@ -179,10 +180,17 @@ pub fn shared_segment(
     b1: DVec2,
     tol: f64,
 ) -> Option<(DVec2, DVec2)> {
-    let line = Line2::through(a0, a1, tol)?;
-    if line.side(b0).abs() > tol || line.side(b1).abs() > tol {
+    // Collinearity first, without a square root (most pairs fail here).
+    let d = a1 - a0;
+    let limit = tol * tol * d.length_squared();
+    let off = |p: DVec2| {
+        let c = d.perp_dot(p - a0);
+        c * c > limit
+    };
+    if off(b0) || off(b1) {
         return None;
     }
+    let line = Line2::through(a0, a1, tol)?;
     let t = |p: DVec2| line.dir.dot(p - a0);
     let (tb0, tb1) = (t(b0), t(b1));
     let lo = tb0.min(tb1).max(0.0);
