@@ -54,7 +54,7 @@ fn edge_kind(folding: &Folding, state: &State, f: usize, a: DVec2, b: DVec2) -> 
     let Some(edge) = Line2::through(a, b, tol) else {
         return Assignment::Boundary;
     };
-    for &k in &state.faces[f].neighbours {
+    for k in state.faces[f].neighbours.iter().map(|n| n.face) {
         let Some((p, q)) = contact(&[a, b], folding.polygon(&state.faces[k]), tol) else {
             continue;
         };

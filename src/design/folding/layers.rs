@@ -11,7 +11,7 @@ use glam::DVec2;
 
 use super::geometry::{Line2, double_area, segment_crosses_interior, shared_segment};
 use super::search::Layer;
-use super::state::{Folding, State, contact};
+use super::state::{Folding, State};
 
 /// A flat crease in a group: its segment in plane coordinates and the two stack positions.
 struct Taco {
@@ -60,19 +60,13 @@ fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<Stri
     }
     let mut tacos = Vec::new();
     for (a, &f) in group.stack.iter().enumerate() {
-        for &k in &state.faces[f].neighbours {
+        for n in &state.faces[f].neighbours {
+            let (k, (s0, s1)) = (n.face, n.edge);
             let b = pos[k];
             if b == usize::MAX || b < a || state.face_normal(f).dot(state.face_normal(k)) > 0.0 {
                 continue;
             }
             let face = &state.faces[f];
-            let Some((s0, s1)) = contact(
-                folding.polygon(face),
-                folding.polygon(&state.faces[k]),
-                folding.tol,
-            ) else {
-                continue;
-            };
             let map = |s: DVec2| layer.to_plane(face.transform.transform_point3(s.extend(0.0)));
             let (p, q) = (map(s0), map(s1));
             let centroid = polys[a].iter().copied().sum::<DVec2>() / polys[a].len() as f64;

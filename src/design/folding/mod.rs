@@ -50,4 +50,4 @@ pub mod state;
 
 pub use error::FoldError;
 pub use operation::{Fold, FoldReport, Layers, Turn};
-pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, State, Step};
+pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

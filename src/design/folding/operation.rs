@@ -21,7 +21,7 @@ use super::FoldError;
 use super::geometry::{Line2, clip, contains, double_area, plane_basis};
 use super::search::{Layer, Turning, moving_faces};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
-use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, State, contact};
+use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
 use crate::pattern::MAX_COORDINATE;
 
 /// Which faces a fold starts from (rule ① of §4.1).
@@ -283,33 +283,42 @@ impl Folding {
             neighbours: Vec::new(),
         });
         state.faces[f].cell = fixed_cell;
-        state.faces[f].neighbours.clear();
-        // A neighbour touches the child on whose side its shared edge with the parent lies
-        // (both when the edge crosses the fold line).
-        for k in neighbours {
-            state.faces[k].neighbours.retain(|&x| x != f);
-            let Some((p, q)) = contact(
-                &polygon,
-                &self.cells[state.faces[k].cell.index()].polygon,
-                self.tol,
-            ) else {
-                continue;
-            };
+        // A neighbour keeps, with each child, the part of its shared edge on that child's side.
+        for n in neighbours {
+            let k = n.face;
+            state.faces[k].neighbours.retain(|m| m.face != f);
+            let (p, q) = n.edge;
             let (sp, sq) = (
                 sheet_side * sheet_line.side(p),
                 sheet_side * sheet_line.side(q),
             );
-            let on_moving = sp.max(sq) > self.tol;
-            let on_fixed = sp.min(sq) < -self.tol;
-            for (child, touches) in [(f, on_fixed || !on_moving), (g, on_moving || !on_fixed)] {
-                if touches {
-                    state.faces[child].neighbours.push(k);
-                    state.faces[k].neighbours.push(child);
+            for (child, sign) in [(f, -1.0), (g, 1.0)] {
+                if let Some(edge) = segment_part(p, q, sign * sp, sign * sq, self.tol) {
+                    state.faces[child]
+                        .neighbours
+                        .push(Neighbour { face: k, edge });
+                    state.faces[k]
+                        .neighbours
+                        .push(Neighbour { face: child, edge });
                 }
             }
         }
-        state.faces[f].neighbours.push(g);
-        state.faces[g].neighbours.push(f);
+        let cut: Vec<DVec2> = self.cells[fixed_cell.index()]
+            .polygon
+            .iter()
+            .copied()
+            .filter(|&p| sheet_line.side(p).abs() <= self.tol)
+            .collect();
+        if let [p, q, ..] = cut[..] {
+            state.faces[f].neighbours.push(Neighbour {
+                face: g,
+                edge: (p, q),
+            });
+            state.faces[g].neighbours.push(Neighbour {
+                face: f,
+                edge: (p, q),
+            });
+        }
         g
     }
 
@@ -317,6 +326,23 @@ impl Folding {
         self.cells.push(cell);
         CellId((self.cells.len() - 1) as u32)
     }
+}
+
+/// The part of segment `p`–`q` where the signed distances (`sp`, `sq` at the ends, linear
+/// along it) are not below −`tol`, if longer than `tol`.
+fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<(DVec2, DVec2)> {
+    if sp < -tol && sq < -tol {
+        return None;
+    }
+    let cross = |s: f64, t: f64, a: DVec2, b: DVec2| {
+        if s >= -tol {
+            a
+        } else {
+            a + (b - a) * (s / (s - t))
+        }
+    };
+    let (a, b) = (cross(sp, sq, p, q), cross(sq, sp, q, p));
+    (a.distance(b) > tol).then_some((a, b))
 }
 
 /// Whether `p` lies in the convex polygon, whatever its orientation.

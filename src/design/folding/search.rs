@@ -13,7 +13,7 @@
 use glam::{DVec2, DVec3};
 
 use super::geometry::{Line2, clip, overlaps};
-use super::state::{Folding, State, contact};
+use super::state::{Folding, State};
 
 /// How the moving faces turn.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -105,17 +105,17 @@ impl Layer {
         overlaps(&self.moving_part[a], &self.moving_part[b], tol)
     }
 
-    /// Whether face `f` (stack position `a`) and face `k` share an edge on the moving side.
-    fn joined_beyond_line(&self, folding: &Folding, state: &State, a: usize, k: usize) -> bool {
-        let f = self.stack[a];
-        let (pf, pk) = (
-            folding.polygon(&state.faces[f]),
-            folding.polygon(&state.faces[k]),
-        );
-        let Some((p, q)) = contact(pf, pk, folding.tol) else {
-            return false;
-        };
-        let t = &state.faces[f].transform;
+    /// Whether the face at stack position `a` shares `edge` (a sheet segment) with a neighbour
+    /// on the moving side.
+    fn joined_beyond_line(
+        &self,
+        folding: &Folding,
+        state: &State,
+        a: usize,
+        edge: (DVec2, DVec2),
+    ) -> bool {
+        let (p, q) = edge;
+        let t = &state.faces[self.stack[a]].transform;
         let side = |s: DVec2| {
             self.side
                 * self
@@ -162,16 +162,16 @@ pub(super) fn moving_faces(
     loop {
         while let Some(a) = queue.pop() {
             // ② edge-connected on the moving side.
-            for &k in &state.faces[layer.stack[a]].neighbours {
-                let b = pos[k];
+            for n in &state.faces[layer.stack[a]].neighbours {
+                let b = pos[n.face];
                 if b == usize::MAX {
-                    out_of_plane |= layer.joined_beyond_line(folding, state, a, k);
+                    out_of_plane |= layer.joined_beyond_line(folding, state, a, n.edge);
                     continue;
                 }
                 if every_candidate_moves {
                     continue;
                 }
-                if !moving[b] && layer.joined_beyond_line(folding, state, a, k) {
+                if !moving[b] && layer.joined_beyond_line(folding, state, a, n.edge) {
                     moving[b] = true;
                     queue.push(b);
                 }

@@ -40,8 +40,17 @@ pub struct LiveFace {
     /// The rigid motion from the sheet (z = 0) to its place in space (rotation and
     /// translation only, so the face keeps its shape by construction).
     pub transform: DAffine3,
-    /// Indices (in [`State::faces`]) of the faces sharing an edge with it on the sheet.
-    pub neighbours: Vec<usize>,
+    /// The faces sharing an edge with it on the sheet, with that edge.
+    pub neighbours: Vec<Neighbour>,
+}
+
+/// A face sharing an edge with another on the sheet.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Neighbour {
+    /// Its index in [`State::faces`].
+    pub face: usize,
+    /// The shared segment on the sheet, millimetres.
+    pub edge: (DVec2, DVec2),
 }
 
 /// A face group (§3.1): faces lying in one plane, with their face stack.
