@@ -257,9 +257,9 @@ impl Folding {
         let sheet_side = sheet_line
             .side(inverse.transform_point3(probe).truncate())
             .signum();
-        let polygon = self.polygon(&face).to_vec();
-        let mut fixed = clip(&polygon, &sheet_line, -sheet_side, self.tol);
-        let mut moved = clip(&polygon, &sheet_line, sheet_side, self.tol);
+        let polygon = self.polygon(&face);
+        let mut fixed = clip(polygon, &sheet_line, -sheet_side, self.tol);
+        let mut moved = clip(polygon, &sheet_line, sheet_side, self.tol);
         for p in [&mut fixed, &mut moved] {
             if double_area(p) < 0.0 {
                 p.reverse();

@@ -61,16 +61,14 @@ impl Layer {
         let tol = folding.tol;
         let mut moving_part = Vec::with_capacity(g.stack.len());
         let mut fixed_part = Vec::with_capacity(g.stack.len());
+        let mut poly: Vec<DVec2> = Vec::with_capacity(8);
         for &f in &g.stack {
             let face = &state.faces[f];
-            let poly: Vec<DVec2> = folding
-                .polygon(face)
-                .iter()
-                .map(|p| {
-                    let q = face.transform.transform_point3(p.extend(0.0)) - origin;
-                    DVec2::new(q.dot(u), q.dot(v))
-                })
-                .collect();
+            poly.clear();
+            poly.extend(folding.polygon(face).iter().map(|p| {
+                let q = face.transform.transform_point3(p.extend(0.0)) - origin;
+                DVec2::new(q.dot(u), q.dot(v))
+            }));
             moving_part.push(clip(&poly, &line, side, tol));
             fixed_part.push(clip(&poly, &line, -side, tol));
         }
