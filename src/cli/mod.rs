@@ -8,6 +8,7 @@ mod convert;
 mod cut;
 mod demo;
 mod fab_args;
+mod fold;
 mod generate;
 mod input;
 mod plan;
@@ -71,6 +72,8 @@ enum Command {
     /// Design pop-up cards (origamic architecture).
     #[command(subcommand)]
     Popup(popup::Command),
+    /// Fold a sheet step by step from a script (seed 003) and write its crease pattern.
+    Fold(fold::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
     /// Make a freeform origami tessellation (star tucks) from an OBJ/STL mesh.
@@ -91,6 +94,7 @@ pub fn run() -> ExitCode {
         Command::Popup(c) => popup::run(c),
         Command::Demo(a) => demo::run(a),
         Command::Tessellate(a) => tessellate::run(a),
+        Command::Fold(a) => fold::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

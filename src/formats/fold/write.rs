@@ -30,6 +30,21 @@ pub fn write_string(pattern: &CreasePattern, folded: Option<&FoldedState>) -> St
     json::to_text(&Value::Object(root))
 }
 
+/// Renders a pattern with a sequence of folded states as FOLD 1.2: the pattern is the key
+/// frame and each state a `file_frames` entry shaped as by [`write_string`], in order (any
+/// `file_frames` kept from an input are replaced).
+pub fn write_string_frames(pattern: &CreasePattern, folded: &[FoldedState]) -> String {
+    let mut root = Map::new();
+    write_file_keys(&mut root, &pattern.meta);
+    write_frame(&mut root, pattern);
+    let frames = folded
+        .iter()
+        .map(|f| Value::Object(folded_frame(pattern, f)))
+        .collect();
+    root.insert(FRAMES_KEY.into(), Value::Array(frames));
+    json::to_text(&Value::Object(root))
+}
+
 /// The descriptive keys: file-level where the file level has room, frame-level otherwise.
 const TEXT_KEYS: [(&str, &str); 3] = [
     ("file_title", "frame_title"),

@@ -1,0 +1,83 @@
+//! Display copies of the steps, for previews only: every face gets its own vertices, and the
+//! layers of a stack are spread apart along the group normal so that all of them can be seen.
+
+use glam::DVec2;
+
+use super::crease::fold_angle;
+use super::geometry::Line2;
+use super::state::{Folding, State, contact};
+use crate::pattern::{Assignment, Edge, Face, FoldedState, VertexId};
+
+/// One folded state per step (0 = the flat sheet), layers `gap_mm` apart (centred on their
+/// plane). The states are for drawing: their vertices are not shared between faces.
+pub fn display_states(folding: &Folding, gap_mm: f64) -> Vec<FoldedState> {
+    folding
+        .steps()
+        .iter()
+        .map(|s| display_state(folding, &s.state, gap_mm))
+        .collect()
+}
+
+fn display_state(folding: &Folding, state: &State, gap_mm: f64) -> FoldedState {
+    let layers = state.layers();
+    let mut out = FoldedState {
+        faces: Some(Vec::new()),
+        ..FoldedState::default()
+    };
+    for (f, face) in state.faces.iter().enumerate() {
+        let (g, pos) = layers[f];
+        let group = &state.groups[g];
+        let lift = group.normal * gap_mm * (pos as f64 - (group.stack.len() as f64 - 1.0) / 2.0);
+        let polygon = folding.polygon(face);
+        let first = out.positions.len();
+        out.positions.extend(
+            polygon
+                .iter()
+                .map(|p| face.transform.transform_point3(p.extend(0.0)) + lift),
+        );
+        let n = polygon.len();
+        let ids: Vec<VertexId> = (0..n).map(|i| VertexId((first + i) as u32)).collect();
+        for i in 0..n {
+            let a = edge_kind(folding, state, f, polygon[i], polygon[(i + 1) % n]);
+            out.edges.push(Edge::new(ids[i], ids[(i + 1) % n], a));
+        }
+        if let Some(faces) = out.faces.as_mut() {
+            faces.push(Face::simple(ids));
+        }
+    }
+    out
+}
+
+/// Boundary for an edge on no other face, otherwise the crease's current kind.
+fn edge_kind(folding: &Folding, state: &State, f: usize, a: DVec2, b: DVec2) -> Assignment {
+    let tol = folding.tolerance();
+    let Some(edge) = Line2::through(a, b, tol) else {
+        return Assignment::Boundary;
+    };
+    for k in state.faces[f].neighbours.iter().map(|n| n.face) {
+        let Some((p, q)) = contact(&[a, b], folding.polygon(&state.faces[k]), tol) else {
+            continue;
+        };
+        if edge.side(p).abs() > tol || p.distance(q) <= tol {
+            continue;
+        }
+        let angle = fold_angle(state, f, k, b - a);
+        return if angle.abs() < 1e-6 {
+            Assignment::Flat
+        } else if angle > 0.0 {
+            Assignment::Valley
+        } else {
+            Assignment::Mountain
+        };
+    }
+    Assignment::Boundary
+}
+
+/// The length of the sheet's longer bounding-box side, millimetres.
+pub fn sheet_size(folding: &Folding) -> f64 {
+    let (lo, hi) = folding.sheet().iter().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    (hi - lo).max_element()
+}

@@ -1,0 +1,53 @@
+//! Fold-sequence simulator (seed 003, Miyazaki, Yasuda, Yokoi, Toriwaki: "Interactive
+//! manipulation of origami in 3D virtual space"): a sheet folded step by step by folding up,
+//! bending and tucking in, with the layer order kept, from which the crease pattern is cut.
+//!
+//! - [`state`]: the data of §3 — the face tree (every face ever made, with its parent and its
+//!   region of the sheet), the current faces with rigid transforms, face groups (coplanar
+//!   faces) with their face stacks; one immutable state per step, so undo is exact.
+//! - [`operation`]: the operations of §2.1 and the list update of §4 (the moving-face search
+//!   in `search`, the face stack update and tuck-in conditions in `stack`).
+//! - [`drag`]: the paper's interaction (§2.3): pick a vertex, move it; the fold line is the
+//!   perpendicular bisector of the move, the fold angle twice the plane angle (Fig. 3); the
+//!   snapping rules of §2.3 4) (in `snap`).
+//! - [`layers`]: consistency of flat layer orders (no face passes through another).
+//! - [`crease`]: the crease pattern (unfolded fold lines, mountain/valley from the final state)
+//!   and the folded state of every step on that pattern's topology.
+//! - [`script`]: the TOML fold script.
+//! - [`display`]: step states with layers spread apart, for previews.
+//!
+//! Deviations from the paper:
+//! - The sheet must be convex, so every face stays convex and a line splits it in two.
+//! - The edge layer (§3.2) and the vertex cells (§3.3) are not stored: edges are the face
+//!   polygons' sides with kept neighbour lists, vertex positions follow from each face's sheet
+//!   polygon and rigid transform (isometry by construction), and the position history is the
+//!   list of per-step states ([`crease::step_states`] gives every vertex's position per step).
+//! - Input is a script, not the mouse Picker of §2.2; there is no viewpoint (§2.4): picking
+//!   looks down from +z, and "valley" means turning towards the layer plane's normal.
+//! - §4.5 gives no table for the new stack; the rules used are in [`operation`]'s docs (bend:
+//!   reversed on the turning side; tuck-in: each half reversed next to its hinge; fold-up: a new
+//!   group, or the side of arrival when landing on an existing plane).
+//! - A fold moves faces of one layer plane only (as §4.5 assumes); a face of another plane
+//!   attached beyond the fold line is an error, not moved along. Collisions between faces of
+//!   different planes are not checked.
+//! - Tuck-ins are 180° and symmetric (the paper's restriction), with the moving layers split
+//!   into a lower and an upper half of equal count.
+//! - Edge-onto-edge snapping applies to bends only; a snapped drag's destination is the image
+//!   of the picked vertex under the snapped fold.
+
+pub mod crease;
+pub mod display;
+pub mod drag;
+mod error;
+pub mod geometry;
+pub mod layers;
+pub mod operation;
+pub mod script;
+mod search;
+mod snap;
+mod stack;
+pub mod state;
+
+pub use error::FoldError;
+pub use operation::{Fold, FoldReport, Layers, Turn};
+pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

@@ -1,0 +1,335 @@
+//! The TOML fold script: a sheet, then fold steps run one after the other.
+//!
+//! ```toml
+//! title = "Waterbomb base"          # optional
+//!
+//! [sheet]                           # exactly one of:
+//! square = 150                      #   side, mm
+//! # rectangle = [210, 297]          #   width and height, mm
+//! # polygon = [[0, 0], [100, 0], [50, 80]]   # convex corners, mm
+//!
+//! [snap]                            # optional: drag snapping tolerances (§2.3 4)
+//! vertex = 1.0                      # mm, destination onto a vertex
+//! edge = 1.0                        # mm, edge onto edge
+//! line = 1.0                        # mm, fold line through two vertices
+//! angle = 3.0                       # degrees, fold angle to multiples of 30° / 45°
+//!
+//! [[step]]
+//! name = "fold in half"             # optional
+//! bend = { line = [[0, 75], [150, 75]], moving = [75, 150] }
+//!
+//! [[step]]
+//! drag = { from = [150, 0], to = [0, 150], mountain = false, pick = 1.0 }
+//!
+//! [[step]]
+//! fold = { line = [[0, 0], [0, 75]], moving = [10, 10], angle = 90, layers = "outer" }
+//!
+//! [[step]]
+//! tuck = { line = [[75, 75], [0, 0]], moving = [0, 50] }
+//! ```
+//!
+//! Points are `[x, y]` (z = 0) or `[x, y, z]`, millimetres, in space (where the paper is now,
+//! not where it was on the flat sheet). Every step but `drag` takes the fold `line` (two
+//! points in one layer plane) and a point `moving` on the side that moves.
+//! - `bend`: turn 180°; `mountain = true` turns away from the layer's normal (behind, for a
+//!   flat model seen from +z), otherwise towards it (valley).
+//! - `fold`: turn by `angle` degrees, positive towards the normal (valley seen from +z).
+//! - `tuck`: tuck in symmetrically (the lower half of the moving layers turns up, the upper
+//!   half down).
+//! - `drag`: move the vertex nearest `from` (within `pick` mm, default 1) to `to`; the fold
+//!   follows the paper's rule, with snapping; `mountain` as for `bend` when `to` lies in the
+//!   layer's plane.
+//!
+//! `layers` (bend, fold, tuck) is `"all"` (default: every face reaching the moving side),
+//! `"outer"` (the outermost face at `moving` on the side the fold turns to — the top one for a
+//! tuck — plus the faces the moving-face search adds), a number `n` (the `n`-th face from that
+//! side, so the outer `n` layers at `moving`), or `"back"` / `-n` (counted from the back, the
+//! side away from the layer's normal).
+
+use glam::{DVec2, DVec3};
+use serde::Deserialize;
+
+use super::drag::{Drag, Snap};
+use super::operation::{Fold, Layers, Turn};
+use super::{FoldError, Folding};
+
+/// A parsed fold script.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Script {
+    /// Title of the model.
+    pub title: Option<String>,
+    /// The sheet.
+    pub sheet: SheetSpec,
+    /// Snapping tolerances for drags.
+    #[serde(default)]
+    pub snap: SnapSpec,
+    /// The steps in order.
+    #[serde(default, rename = "step")]
+    pub steps: Vec<StepSpec>,
+}
+
+/// The `[sheet]` table: exactly one shape.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SheetSpec {
+    /// Side of a square, mm.
+    pub square: Option<f64>,
+    /// Width and height, mm.
+    pub rectangle: Option<[f64; 2]>,
+    /// Convex corners, mm.
+    pub polygon: Option<Vec<[f64; 2]>>,
+}
+
+/// The `[snap]` table.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SnapSpec {
+    /// Destination onto a vertex, mm.
+    pub vertex: f64,
+    /// Edge onto edge, mm.
+    pub edge: f64,
+    /// Fold line through two vertices, mm.
+    pub line: f64,
+    /// Fold angle, degrees.
+    pub angle: f64,
+}
+
+impl Default for SnapSpec {
+    fn default() -> Self {
+        let s = Snap::default();
+        SnapSpec {
+            vertex: s.vertex,
+            edge: s.edge,
+            line: s.line,
+            angle: s.angle_deg,
+        }
+    }
+}
+
+/// One `[[step]]`: a name and exactly one operation.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StepSpec {
+    /// Optional name.
+    pub name: Option<String>,
+    /// Bend (180°).
+    pub bend: Option<LineSpec>,
+    /// Fold up by an angle.
+    pub fold: Option<LineSpec>,
+    /// Tuck in.
+    pub tuck: Option<LineSpec>,
+    /// Drag a vertex.
+    pub drag: Option<DragSpec>,
+}
+
+/// A fold given by its line.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineSpec {
+    /// Two points of the fold line.
+    pub line: [Vec<f64>; 2],
+    /// A point on the moving side.
+    pub moving: Vec<f64>,
+    /// Degrees (only for `fold`).
+    pub angle: Option<f64>,
+    /// Turn away from the normal (only for `bend`).
+    #[serde(default)]
+    pub mountain: bool,
+    /// `"all"`, `"outer"` or a number of outer layers.
+    pub layers: Option<LayersSpec>,
+}
+
+/// The `layers` key: `"all"`, `"outer"` (= 1) or a count of outer layers.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(untagged)]
+pub enum LayersSpec {
+    /// `"all"` or `"outer"`.
+    Name(String),
+    /// The outer `n` layers at the `moving` point.
+    Count(i64),
+}
+
+/// A drag.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DragSpec {
+    /// Near the vertex to pick.
+    pub from: Vec<f64>,
+    /// Where it goes.
+    pub to: Vec<f64>,
+    /// Fold behind for a move within the layer plane.
+    #[serde(default)]
+    pub mountain: bool,
+    /// Pick radius, mm (default 1).
+    pub pick: Option<f64>,
+}
+
+/// A problem with a script: where (a TOML line, or a step) and what.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ScriptError {
+    /// The text is not a valid script.
+    #[error("{0}")]
+    Syntax(String),
+    /// A step is malformed or cannot be folded.
+    #[error("step {number}{}: {message}", name.as_ref().map(|n| format!(" (\"{n}\")")).unwrap_or_default())]
+    Step {
+        /// 1-based step number.
+        number: usize,
+        /// The step's name.
+        name: Option<String>,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// Parses a script's text (checking the sheet and step shapes, not yet folding).
+pub fn parse_script(text: &str) -> Result<Script, ScriptError> {
+    let script: Script = toml::from_str(text)
+        .map_err(|e| ScriptError::Syntax(e.to_string().trim_end().to_string()))?;
+    sheet_outline(&script.sheet)?;
+    Ok(script)
+}
+
+/// Runs a script: the simulator after every step (step `i` of the result is script step `i`).
+pub fn run_script(script: &Script) -> Result<Folding, ScriptError> {
+    let outline = sheet_outline(&script.sheet)?;
+    let mut folding =
+        Folding::new(&outline).map_err(|e| ScriptError::Syntax(format!("[sheet]: {e}")))?;
+    let snap = Snap {
+        vertex: script.snap.vertex,
+        edge: script.snap.edge,
+        line: script.snap.line,
+        angle_deg: script.snap.angle,
+    };
+    for (i, step) in script.steps.iter().enumerate() {
+        let fail = |message: String| ScriptError::Step {
+            number: i + 1,
+            name: step.name.clone(),
+            message,
+        };
+        let action = action(step, snap).map_err(fail)?;
+        let result = match action {
+            Action::Fold(f) => folding.fold(&f, step.name.clone()).map(|_| ()),
+            Action::Drag(d) => folding.drag(&d, step.name.clone()).map(|_| ()),
+        };
+        result.map_err(|e: FoldError| fail(e.to_string()))?;
+    }
+    Ok(folding)
+}
+
+/// The sheet outline of a `[sheet]` table.
+pub fn sheet_outline(sheet: &SheetSpec) -> Result<Vec<DVec2>, ScriptError> {
+    let bad = |m: &str| ScriptError::Syntax(format!("[sheet]: {m}"));
+    let positive = |x: f64| x.is_finite() && x > 0.0 && x <= 1e6;
+    match (sheet.square, sheet.rectangle, &sheet.polygon) {
+        (Some(s), None, None) if positive(s) => Ok(rect(s, s)),
+        (None, Some([w, h]), None) if positive(w) && positive(h) => Ok(rect(w, h)),
+        (None, None, Some(p)) if p.iter().flatten().all(|x| x.is_finite() && x.abs() <= 1e6) => {
+            Ok(p.iter().map(|c| DVec2::new(c[0], c[1])).collect())
+        }
+        (None, None, None) => Err(bad("give one of square, rectangle or polygon")),
+        (Some(_), None, None) | (None, Some(_), None) => {
+            Err(bad("sizes must be positive millimetres up to 1e6"))
+        }
+        (None, None, Some(_)) => Err(bad("polygon corners must be finite millimetres up to ±1e6")),
+        _ => Err(bad("give only one of square, rectangle or polygon")),
+    }
+}
+
+fn rect(w: f64, h: f64) -> Vec<DVec2> {
+    vec![
+        DVec2::ZERO,
+        DVec2::new(w, 0.0),
+        DVec2::new(w, h),
+        DVec2::new(0.0, h),
+    ]
+}
+
+enum Action {
+    Fold(Fold),
+    Drag(Drag),
+}
+
+fn action(step: &StepSpec, snap: Snap) -> Result<Action, String> {
+    match (&step.bend, &step.fold, &step.tuck, &step.drag) {
+        (Some(l), None, None, None) => {
+            let angle = if l.mountain { -180.0 } else { 180.0 };
+            if l.angle.is_some() {
+                return Err("bend takes no angle (it is 180°; use fold)".into());
+            }
+            line_fold(l, Turn::Angle(angle)).map(Action::Fold)
+        }
+        (None, Some(l), None, None) => {
+            let a = l.angle.ok_or("fold needs an angle in degrees")?;
+            if l.mountain {
+                return Err("fold takes the direction from the angle's sign, not mountain".into());
+            }
+            line_fold(l, Turn::Angle(a)).map(Action::Fold)
+        }
+        (None, None, Some(l), None) => {
+            if l.angle.is_some() || l.mountain {
+                return Err("tuck takes neither angle nor mountain".into());
+            }
+            line_fold(l, Turn::Tuck).map(Action::Fold)
+        }
+        (None, None, None, Some(d)) => Ok(Action::Drag(Drag {
+            from: point(&d.from, "drag.from")?,
+            to: point(&d.to, "drag.to")?,
+            pick_radius: match d.pick {
+                Some(r) if r.is_finite() && r > 0.0 => r,
+                Some(r) => {
+                    return Err(format!(
+                        "drag.pick must be a positive radius in mm, not {r}"
+                    ));
+                }
+                None => 1.0,
+            },
+            mountain: d.mountain,
+            snap,
+        })),
+        (None, None, None, None) => Err("give one of bend, fold, tuck or drag".into()),
+        _ => Err("give only one of bend, fold, tuck or drag per step".into()),
+    }
+}
+
+fn line_fold(l: &LineSpec, turn: Turn) -> Result<Fold, String> {
+    let layers = match &l.layers {
+        None => Layers::All,
+        Some(LayersSpec::Name(n)) if n == "all" => Layers::All,
+        Some(LayersSpec::Name(n)) if n == "outer" => Layers::Outer(1),
+        Some(LayersSpec::Name(n)) if n == "back" => Layers::Back(1),
+        Some(LayersSpec::Count(n)) if (1..=100_000).contains(n) => Layers::Outer(*n as usize),
+        Some(LayersSpec::Count(n)) if (-100_000..=-1).contains(n) => {
+            Layers::Back(n.unsigned_abs() as usize)
+        }
+        Some(other) => {
+            return Err(format!(
+                "layers must be \"all\", \"outer\", \"back\" or a count of layers (negative from the back), not {other:?}"
+            ));
+        }
+    };
+    Ok(Fold {
+        line: [point(&l.line[0], "line[0]")?, point(&l.line[1], "line[1]")?],
+        moving: point(&l.moving, "moving")?,
+        turn,
+        layers,
+    })
+}
+
+fn point(v: &[f64], what: &str) -> Result<DVec3, String> {
+    let p = match v {
+        [x, y] => DVec3::new(*x, *y, 0.0),
+        [x, y, z] => DVec3::new(*x, *y, *z),
+        _ => {
+            return Err(format!(
+                "{what} must be [x, y] or [x, y, z], found {} numbers",
+                v.len()
+            ));
+        }
+    };
+    if !p.is_finite() {
+        return Err(format!("{what} is not finite"));
+    }
+    Ok(p)
+}

@@ -1,0 +1,226 @@
+//! The moving-face search of §4.1 on one face group, in the group's plane coordinates.
+//!
+//! Starting from the seed faces (rule ①: the face of the picked vertex, or the faces a script
+//! names), a face becomes moving when
+//! - ② it shares an edge with a moving face on the moving side of the fold line,
+//! - ③ (folding up, bending) its moving part overlaps a moving face's moving part and it lies
+//!   on the side the faces rotate towards (above for a turn towards the group normal),
+//! - ④ (tucking in) it lies between two moving faces in the stack and its moving part overlaps
+//!   both of theirs;
+//!
+//! repeated until nothing changes; the rest stay (⑤). Overlap tests use bounding boxes first.
+
+use glam::{DVec2, DVec3};
+
+use super::geometry::{Line2, clip, overlaps};
+use super::state::{Folding, State};
+
+/// How the moving faces turn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Turning {
+    /// All towards +normal (`+1.0`) or −normal (`−1.0`) of the group.
+    Towards(f64),
+    /// Tucking in: the lower half turns up, the upper half down.
+    Tuck,
+}
+
+/// One face group seen in its plane: positions, parts on either side of the fold line.
+pub(super) struct Layer {
+    /// Index of the group in [`State::groups`].
+    pub group: usize,
+    /// Face indices in stack order (bottom first).
+    pub stack: Vec<usize>,
+    /// Plane frame: origin and in-plane axes.
+    pub origin: DVec3,
+    pub u: DVec3,
+    pub v: DVec3,
+    pub normal: DVec3,
+    /// The fold line in plane coordinates.
+    pub line: Line2,
+    /// +1 when the moving side is left of the line, −1 when right.
+    pub side: f64,
+    /// Per stack position: the part of the face on the moving side (empty if none).
+    pub moving_part: Vec<Vec<DVec2>>,
+    /// Per stack position: the part on the stationary side (empty if none).
+    pub fixed_part: Vec<Vec<DVec2>>,
+    boxes: Vec<(DVec2, DVec2)>,
+}
+
+impl Layer {
+    /// Sets up group `group` of `state` for a fold along `line` (plane coordinates).
+    pub fn new(
+        folding: &Folding,
+        state: &State,
+        group: usize,
+        frame: (DVec3, DVec3, DVec3),
+        line: Line2,
+        side: f64,
+    ) -> Layer {
+        let g = &state.groups[group];
+        let (origin, u, v) = frame;
+        let tol = folding.tol;
+        let mut moving_part = Vec::with_capacity(g.stack.len());
+        let mut fixed_part = Vec::with_capacity(g.stack.len());
+        let mut poly: Vec<DVec2> = Vec::with_capacity(8);
+        for &f in &g.stack {
+            let face = &state.faces[f];
+            poly.clear();
+            poly.extend(folding.polygon(face).iter().map(|p| {
+                let q = face.transform.transform_point3(p.extend(0.0)) - origin;
+                DVec2::new(q.dot(u), q.dot(v))
+            }));
+            moving_part.push(clip(&poly, &line, side, tol));
+            fixed_part.push(clip(&poly, &line, -side, tol));
+        }
+        let boxes = moving_part.iter().map(|p| bounds(p)).collect();
+        Layer {
+            group,
+            stack: g.stack.clone(),
+            origin,
+            u,
+            v,
+            normal: g.normal,
+            line,
+            side,
+            moving_part,
+            fixed_part,
+            boxes,
+        }
+    }
+
+    /// A point of space in plane coordinates.
+    pub fn to_plane(&self, p: DVec3) -> DVec2 {
+        DVec2::new((p - self.origin).dot(self.u), (p - self.origin).dot(self.v))
+    }
+
+    /// Whether the moving parts at stack positions `a` and `b` overlap.
+    fn moving_overlap(&self, a: usize, b: usize, tol: f64) -> bool {
+        let (la, ha) = self.boxes[a];
+        let (lb, hb) = self.boxes[b];
+        if la.x > hb.x || lb.x > ha.x || la.y > hb.y || lb.y > ha.y {
+            return false;
+        }
+        overlaps(&self.moving_part[a], &self.moving_part[b], tol)
+    }
+
+    /// Whether the face at stack position `a` shares `edge` (a sheet segment) with a neighbour
+    /// on the moving side.
+    fn joined_beyond_line(
+        &self,
+        folding: &Folding,
+        state: &State,
+        a: usize,
+        edge: (DVec2, DVec2),
+    ) -> bool {
+        let (p, q) = edge;
+        let t = &state.faces[self.stack[a]].transform;
+        let side = |s: DVec2| {
+            self.side
+                * self
+                    .line
+                    .side(self.to_plane(t.transform_point3(s.extend(0.0))))
+        };
+        side(p).max(side(q)) > folding.tol
+    }
+}
+
+/// Bounding box of a polygon (inverted for an empty one).
+fn bounds(poly: &[DVec2]) -> (DVec2, DVec2) {
+    poly.iter().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    )
+}
+
+/// The moving faces, as a flag per stack position, from the seed positions (§4.1 ①–⑤).
+/// Also returns whether a moving face is joined beyond the line to a face of another group.
+pub(super) fn moving_faces(
+    folding: &Folding,
+    state: &State,
+    layer: &Layer,
+    seeds: &[usize],
+    turning: Turning,
+) -> (Vec<bool>, bool) {
+    let n = layer.stack.len();
+    let tol = folding.tol;
+    let mut pos = vec![usize::MAX; state.faces.len()];
+    for (i, &f) in layer.stack.iter().enumerate() {
+        pos[f] = i;
+    }
+    let mut moving = vec![false; n];
+    let mut queue: Vec<usize> = Vec::new();
+    for &s in seeds {
+        if !layer.moving_part[s].is_empty() && !moving[s] {
+            moving[s] = true;
+            queue.push(s);
+        }
+    }
+    let every_candidate_moves = (0..n).all(|i| moving[i] || layer.moving_part[i].is_empty());
+    let mut out_of_plane = false;
+    loop {
+        while let Some(a) = queue.pop() {
+            // ② edge-connected on the moving side.
+            for n in &state.faces[layer.stack[a]].neighbours {
+                let b = pos[n.face];
+                if b == usize::MAX {
+                    out_of_plane |= layer.joined_beyond_line(folding, state, a, n.edge);
+                    continue;
+                }
+                if every_candidate_moves {
+                    continue;
+                }
+                if !moving[b] && layer.joined_beyond_line(folding, state, a, n.edge) {
+                    moving[b] = true;
+                    queue.push(b);
+                }
+            }
+            // ③ overlapping on the rotation side.
+            if let Turning::Towards(sign) = turning {
+                if every_candidate_moves {
+                    continue;
+                }
+                // Only the faces beyond `a` on the turning side.
+                let beyond = if sign > 0.0 { a + 1..n } else { 0..a };
+                for b in beyond {
+                    if !moving[b]
+                        && !layer.moving_part[b].is_empty()
+                        && layer.moving_overlap(a, b, tol)
+                    {
+                        moving[b] = true;
+                        queue.push(b);
+                    }
+                }
+            }
+        }
+        // ④ between two moving faces (tucking in).
+        if turning != Turning::Tuck {
+            break;
+        }
+        let added = between_moving(layer, &mut moving, tol);
+        if added.is_empty() {
+            break;
+        }
+        queue = added;
+    }
+    (moving, out_of_plane)
+}
+
+/// Rule ④: faces between two moving ones whose moving part overlaps both; returns those added.
+fn between_moving(layer: &Layer, moving: &mut [bool], tol: f64) -> Vec<usize> {
+    let n = moving.len();
+    let mut added = Vec::new();
+    for b in 0..n {
+        if moving[b] || layer.moving_part[b].is_empty() {
+            continue;
+        }
+        let below = (0..b).any(|a| moving[a] && layer.moving_overlap(a, b, tol));
+        let above = (b + 1..n).any(|c| moving[c] && layer.moving_overlap(c, b, tol));
+        if below && above {
+            added.push(b);
+        }
+    }
+    for &b in &added {
+        moving[b] = true;
+    }
+    added
+}

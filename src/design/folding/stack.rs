@@ -1,0 +1,137 @@
+//! The face stack update of §4.5 and the tuck-in conditions: where the moving faces land in
+//! the layer order after a bend, a fold-up or a tuck-in (see [`super::operation`]).
+
+use glam::{DAffine3, DVec2, DVec3};
+
+use super::FoldError;
+use super::geometry::{double_area, overlaps, rotation_about};
+use super::operation::contains_either;
+use super::search::Layer;
+use super::state::FaceGroup;
+
+/// A tuck-in needs an even number of moving faces whose moving parts pair up mirror-wise
+/// (i-th from the bottom with i-th from the top), and no stationary face between the halves
+/// covering the place they fold to.
+pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(), FoldError> {
+    let ids: Vec<usize> = (0..moving.len()).filter(|&i| moving[i]).collect();
+    if ids.len() % 2 == 1 {
+        return Err(FoldError::TuckAsymmetric(format!(
+            "{} layers move, an odd number",
+            ids.len()
+        )));
+    }
+    let half = ids.len() / 2;
+    for i in 0..half {
+        let (a, b) = (
+            &layer.moving_part[ids[i]],
+            &layer.moving_part[ids[ids.len() - 1 - i]],
+        );
+        let same = (double_area(a).abs() - double_area(b).abs()).abs() <= tol * 1e3
+            && a.iter().all(|&p| contains_either(b, p, tol * 1e3))
+            && b.iter().all(|&p| contains_either(a, p, tol * 1e3));
+        if !same {
+            return Err(FoldError::TuckAsymmetric(
+                "the moving parts of mirrored layers differ in shape".into(),
+            ));
+        }
+    }
+    let (lo, hi) = (ids[half - 1], ids[half]);
+    let landing: Vec<Vec<DVec2>> = ids
+        .iter()
+        .map(|&i| {
+            layer.moving_part[i]
+                .iter()
+                .map(|&p| layer.line.reflect(p))
+                .collect()
+        })
+        .collect();
+    for b in (lo + 1..hi).filter(|&b| !moving[b]) {
+        let covers = |l: &Vec<DVec2>| {
+            [&layer.fixed_part[b], &layer.moving_part[b]]
+                .iter()
+                .any(|part| !part.is_empty() && overlaps(l, part, tol))
+        };
+        if landing.iter().any(covers) {
+            return Err(FoldError::TuckBlocked);
+        }
+    }
+    Ok(())
+}
+
+/// The stack after a tuck-in: each moving half reversed next to its hinge — the lower half
+/// just above the layer its top face came from (including that face's stationary part), the
+/// upper half just below the layer its bottom face came from.
+pub(super) fn tucked_stack(stack: &[(usize, bool, usize)]) -> Vec<usize> {
+    let moving: Vec<(usize, usize)> = stack.iter().filter(|s| s.1).map(|s| (s.0, s.2)).collect();
+    let half = moving.len() / 2;
+    let (lower, upper) = moving.split_at(half);
+    let (Some(&(_, lower_top)), Some(&(_, upper_bottom))) = (lower.last(), upper.first()) else {
+        return stack.iter().map(|s| s.0).collect();
+    };
+    let stationary = |lo: usize, hi: usize| {
+        stack
+            .iter()
+            .filter(move |s| !s.1 && s.2 >= lo && s.2 < hi)
+            .map(|s| s.0)
+    };
+    let mut out: Vec<usize> = stationary(0, lower_top + 1).collect();
+    out.extend(lower.iter().rev().map(|m| m.0));
+    out.extend(stationary(lower_top + 1, upper_bottom));
+    out.extend(upper.iter().rev().map(|m| m.0));
+    out.extend(stationary(upper_bottom, usize::MAX));
+    out
+}
+
+/// The rotation of a fold: its point on the fold line, axis and signed angle (radians).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Hinge {
+    pub point: DVec3,
+    pub axis: DVec3,
+    pub angle: f64,
+    /// Unit vector in the old plane from the line towards the moving side.
+    pub outward: DVec3,
+}
+
+impl Hinge {
+    pub fn motion(&self) -> DAffine3 {
+        rotation_about(self.point, self.axis, self.angle)
+    }
+}
+
+/// Puts the turned block of faces (old stack order) into the group whose plane it now lies in,
+/// on the side it arrives from, or into a new group.
+pub(super) fn land(
+    groups: &mut Vec<FaceGroup>,
+    old: (DVec3, DVec3),
+    mut block: Vec<usize>,
+    hinge: &Hinge,
+    tol: f64,
+) {
+    let rotation = hinge.motion();
+    let origin = rotation.transform_point3(old.0);
+    let normal = rotation.transform_vector3(old.1).normalize();
+    let target = groups.iter().position(|g| {
+        normal.dot(g.normal).abs() >= 1.0 - 1e-9 && (origin - g.origin).dot(g.normal).abs() <= tol
+    });
+    let Some(h) = target else {
+        groups.push(FaceGroup {
+            origin,
+            normal,
+            stack: block,
+        });
+        return;
+    };
+    let g = &mut groups[h];
+    if normal.dot(g.normal) < 0.0 {
+        block.reverse();
+    }
+    // Arrival side: the velocity of a moving point at the end of the turn.
+    let landed = rotation.transform_vector3(hinge.outward);
+    let velocity = hinge.axis.cross(landed) * hinge.angle.signum();
+    if velocity.dot(g.normal) <= 0.0 {
+        g.stack.extend(block);
+    } else {
+        block.extend(g.stack.iter().copied());
+        g.stack = block;
+    }
+}
