@@ -3,8 +3,8 @@
 //! last points, which cut lines share at the network's vertices.
 //!
 //! Segment i between points P_i and P_{i+1} is the uniform Catmull–Rom cubic
-//! `C(t) = ½ [2P_i + (P_{i+1} − P_{i−1}) t + (2P_{i−1} − 5P_i + 4P_{i+1} − P_{i+2}) t²
-//!  + (−P_{i−1} + 3P_i − 3P_{i+1} + P_{i+2}) t³]`, t ∈ [0, 1]. The thesis does not say how the
+//! `C(t) = ½ [2P_i + (P_{i+1} − P_{i−1}) t + (2P_{i−1} − 5P_i + 4P_{i+1} − P_{i+2}) t² +
+//! (−P_{i−1} + 3P_i − 3P_{i+1} + P_{i+2}) t³]`, t ∈ [0, 1]. The thesis does not say how the
 //! end segments get their outer neighbours; we reflect: `P_{−1} = 2P_0 − P_1` and
 //! `P_n = 2P_{n−1} − P_{n−2}`. With that choice, reversing the points traces the same curve
 //! backwards (the thesis reverses cut lines this way when building the network).
@@ -67,11 +67,18 @@ impl CutLine {
     }
 
     /// The curve at parameter `s ∈ [0, segments]` (clamped): segment `⌊s⌋`, local t = s − ⌊s⌋.
+    /// At integer `s` it returns point `s` exactly, so cut lines sharing an end share it.
     pub fn at(&self, s: f64) -> DVec3 {
         let n = self.segments();
         let s = s.clamp(0.0, n as f64);
         let i = (s.floor() as usize).min(n - 1);
         let t = s - i as f64;
+        if t == 0.0 {
+            return self.points[i];
+        }
+        if t == 1.0 {
+            return self.points[i + 1];
+        }
         let p = |k: isize| self.point_ext(k);
         let i = i as isize;
         catmull_rom(p(i - 1), p(i), p(i + 1), p(i + 2), t)

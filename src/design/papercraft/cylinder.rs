@@ -57,7 +57,7 @@ impl CylinderPatch {
             acc += patch.section_length_between(k as f64 * h, (k + 1) as f64 * h);
             patch.table.push(acc);
         }
-        if !(acc > 0.0) {
+        if acc.is_nan() || acc <= 0.0 {
             return Err(PapercraftError::BadParameter(
                 "the directrix runs along the ruling (its section has no length)".into(),
             ));
