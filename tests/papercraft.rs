@@ -14,5 +14,8 @@ mod cut_lines;
 #[path = "papercraft/network.rs"]
 mod network;
 
+#[path = "papercraft/walls.rs"]
+mod walls;
+
 #[path = "papercraft/cylinder.rs"]
 mod cylinder;

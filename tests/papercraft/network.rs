@@ -3,42 +3,7 @@ use foldcam::design::papercraft::cut_line::CutLine;
 use foldcam::design::papercraft::network::Network;
 use glam::DVec3;
 
-/// The cube's 8 corners and 12 edges as straight cut lines.
-fn cube_lines() -> (Vec<CutLine>, [[usize; 2]; 12]) {
-    let corner = |i: usize| DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64);
-    let edges = [
-        [0, 1],
-        [2, 3],
-        [4, 5],
-        [6, 7], // along x
-        [0, 2],
-        [1, 3],
-        [4, 6],
-        [5, 7], // along y
-        [0, 4],
-        [1, 5],
-        [2, 6],
-        [3, 7], // along z
-    ];
-    let lines = edges
-        .iter()
-        .enumerate()
-        .map(|(k, &[a, b])| CutLine::new(k, vec![corner(a), corner(b)]).unwrap())
-        .collect();
-    (lines, edges)
-}
-
-/// The six faces, each as its four edges in order round it (directions as they come).
-fn cube_patches() -> Vec<Vec<usize>> {
-    vec![
-        vec![0, 5, 1, 4],   // z = 0: 0-1, 1-3, 3-2 (reversed), 2-0 (reversed)
-        vec![6, 3, 7, 2],   // z = 1, listed the other way round
-        vec![0, 9, 2, 8],   // y = 0
-        vec![1, 11, 3, 10], // y = 1
-        vec![4, 10, 6, 8],  // x = 0
-        vec![5, 11, 7, 9],  // x = 1
-    ]
-}
+use crate::support::{cube_lines, cube_patches};
 
 #[test]
 fn a_cube_network_is_a_closed_oriented_surface() {

@@ -9,9 +9,12 @@
 //! - [`network`]: the cut-line network as a half-edge structure, patches as faces (§3.3).
 //! - [`bspline`], [`cylinder`]: degree-4 B-spline directrices and cylindrical patches with
 //!   their isometric unrolling (§3.2 Step 2).
+//! - [`walls`]: boundary walls, swept vertices v_s = v + k·normalize(Σ n_p) (§3.4).
+//! - [`trim`]: the real boundary of a patch, where it crosses its walls (§3.2 Step 3), as a
+//!   closed polyline in 3D and unrolled, refined to a tolerance.
 //! - [`shapes`]: meshes of bodies of revolution for tests and examples.
 //!
-//! Not built yet: boundary walls (§3.4), trimming (Step 3), automatic neighbouring patches
+//! Not built yet: automatic neighbouring patches
 //! (§3.5), parts with glue tabs, sheet layout, design files and the CLI.
 
 pub mod bspline;
@@ -21,6 +24,8 @@ mod grid;
 pub mod network;
 pub mod reference;
 pub mod shapes;
+pub mod trim;
+pub mod walls;
 
 pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
 
@@ -66,6 +71,25 @@ pub enum PapercraftError {
         patch: usize,
         /// What is wrong.
         message: String,
+    },
+    /// The mesh normals along a patch's cut lines cancel out, so it has no rough direction.
+    #[error("patch {patch}: the mesh normals along its cut lines cancel out (no direction n_p)")]
+    NoPatchDirection {
+        /// Patch index.
+        patch: usize,
+    },
+    /// A patch does not reach the wall of one of its cut lines, so it cannot be trimmed there.
+    #[error(
+        "patch {patch} does not reach the wall of cut line {line} near parameter {s:.3} \
+         (extend its directrix or move it closer to the cut line)"
+    )]
+    MissesWall {
+        /// Patch index.
+        patch: usize,
+        /// Cut-line index.
+        line: usize,
+        /// Cut-line parameter of the rib that is missed.
+        s: f64,
     },
     /// More than two patches share a cut line, or their loops cannot be oriented consistently.
     #[error("cut line {line}: {message}")]
