@@ -17,5 +17,8 @@ mod network;
 #[path = "papercraft/walls.rs"]
 mod walls;
 
+#[path = "papercraft/parts.rs"]
+mod parts;
+
 #[path = "papercraft/cylinder.rs"]
 mod cylinder;

@@ -12,16 +12,20 @@
 //! - [`walls`]: boundary walls, swept vertices v_s = v + k·normalize(Σ n_p) (§3.4).
 //! - [`trim`]: the real boundary of a patch, where it crosses its walls (§3.2 Step 3), as a
 //!   closed polyline in 3D and unrolled, refined to a tolerance.
+//! - [`parts`], [`layout`]: parts with glue tabs, packed on sheets, one crease pattern per
+//!   sheet (outlines cut, tab roots mountain folds).
 //! - [`shapes`]: meshes of bodies of revolution for tests and examples.
 //!
-//! Not built yet: automatic neighbouring patches
-//! (§3.5), parts with glue tabs, sheet layout, design files and the CLI.
+//! Not built yet: automatic neighbouring patches (§3.5), edge labels drawn on
+//! the parts, design files and the CLI.
 
 pub mod bspline;
 pub mod cut_line;
 pub mod cylinder;
 mod grid;
+pub mod layout;
 pub mod network;
+pub mod parts;
 pub mod reference;
 pub mod shapes;
 pub mod trim;
@@ -90,6 +94,12 @@ pub enum PapercraftError {
         line: usize,
         /// Cut-line parameter of the rib that is missed.
         s: f64,
+    },
+    /// A part does not fit on the sheet at any angle tried.
+    #[error("part {part} does not fit on the sheet (use a larger sheet or a smaller scale)")]
+    PartTooLarge {
+        /// Part index.
+        part: usize,
     },
     /// More than two patches share a cut line, or their loops cannot be oriented consistently.
     #[error("cut line {line}: {message}")]
