@@ -7,7 +7,7 @@ use foldcam::design::papercraft::trim::real_boundary;
 use foldcam::design::papercraft::walls::Walls;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::fab::{PlanOptions, plan};
-use foldcam::geom::polygon::contains_point;
+use foldcam::geom::polygon::{contains_point, signed_area};
 use foldcam::geom::segment::{Crossing, distance_to_point, intersect};
 use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::{Assignment, CreasePattern};
@@ -75,9 +75,15 @@ fn interiors_overlap(a: &[DVec2], b: &[DVec2]) -> bool {
             && (0..poly.len())
                 .all(|i| distance_to_point(poly[i], poly[(i + 1) % poly.len()], p) > eps)
     };
+    // Corners, edge midpoints, and points just inside each edge (for coincident polygons).
     let probes = |poly: &[DVec2]| -> Vec<DVec2> {
+        let turn = signed_area(poly.iter().copied()).signum();
         (0..poly.len())
-            .flat_map(|i| [poly[i], 0.5 * (poly[i] + poly[(i + 1) % poly.len()])])
+            .flat_map(|i| {
+                let (p, q) = (poly[i], poly[(i + 1) % poly.len()]);
+                let inward = turn * (q - p).perp().normalize() * 1e-4;
+                [p, 0.5 * (p + q), 0.5 * (p + q) + inward]
+            })
             .collect()
     };
     if probes(a).iter().any(|&p| strictly_inside(p, b))
