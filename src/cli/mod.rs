@@ -10,6 +10,7 @@ mod demo;
 mod fab_args;
 mod generate;
 mod input;
+mod papercraft;
 mod plan;
 mod popup;
 mod popup_input;
@@ -70,6 +71,8 @@ enum Command {
     /// Design pop-up cards (origamic architecture).
     #[command(subcommand)]
     Popup(popup::Command),
+    /// Make paper-craft parts from developable patches and cut lines on a mesh.
+    Papercraft(papercraft::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
 }
@@ -86,6 +89,7 @@ pub fn run() -> ExitCode {
         Command::Plan(a) => plan::run(a),
         Command::Simulate(a) => simulate::run(a),
         Command::Popup(c) => popup::run(c),
+        Command::Papercraft(a) => papercraft::run(a),
         Command::Demo(a) => demo::run(a),
     };
     match result {

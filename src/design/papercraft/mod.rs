@@ -22,6 +22,7 @@
 pub mod bspline;
 pub mod cut_line;
 pub mod cylinder;
+pub mod design;
 mod grid;
 pub mod layout;
 pub mod network;
