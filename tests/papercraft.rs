@@ -20,5 +20,8 @@ mod walls;
 #[path = "papercraft/parts.rs"]
 mod parts;
 
+#[path = "papercraft/design.rs"]
+mod design;
+
 #[path = "papercraft/cylinder.rs"]
 mod cylinder;

@@ -6,15 +6,12 @@ use foldcam::design::papercraft::parts::{Part, TabStyle, add_tabs};
 use foldcam::design::papercraft::trim::real_boundary;
 use foldcam::design::papercraft::walls::Walls;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
-use foldcam::fab::{PlanOptions, plan};
 use foldcam::geom::polygon::{contains_point, signed_area};
 use foldcam::geom::segment::{Crossing, distance_to_point, intersect};
-use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::{Assignment, CreasePattern};
-use foldcam::{post, sim};
 use glam::{DVec2, DVec3};
 
-use crate::support::{cube_lines, cube_mesh, cube_patches};
+use crate::support::{assert_cuts_clean_on_paper, cube_lines, cube_mesh, cube_patches};
 
 const SCALE: f64 = 25.0; // millimetres per mesh unit
 const STYLE: TabStyle = TabStyle {
@@ -206,35 +203,14 @@ fn sheet_patterns_cut_clean_on_paper() {
     let (_, parts) = tabbed(1.1);
     let placements = pack(&parts, &A4).unwrap();
     let sheets = 1 + placements.iter().map(|p| p.sheet).max().unwrap();
-    let machine = load_machine("grbl-diode").unwrap();
-    let material = load_material("paper-160gsm").unwrap();
-    let mut options = PlanOptions::from_material(&material);
-    options.adapt_to_machine(&machine).unwrap();
     for s in 0..sheets {
         let cp: CreasePattern = sheet_pattern(&parts, &placements, s);
-        cp.validate().unwrap();
-        let counts = cp.assignment_counts();
         assert!(
             cp.edges
                 .iter()
                 .any(|e| e.assignment == Assignment::Mountain)
         );
-        assert!(counts.iter().sum::<usize>() == cp.edges.len());
-        let p =
-            plan(&cp, &machine, &material, &options).unwrap_or_else(|e| panic!("sheet {s}: {e}"));
-        assert!(!p.jobs.is_empty());
-        for job in &p.jobs {
-            let gcode = post::gcode(&p, job, &machine).unwrap();
-            let run = sim::run(&gcode, &machine).unwrap();
-            assert!(run.is_clean(), "sheet {s}: {:?}", run.violations.first());
-            let cov = sim::coverage(&run, &cp, job, &p);
-            assert!(
-                cov.passed(),
-                "sheet {s}: {:?}, stray {:?}",
-                cov.failed_edges().next(),
-                cov.stray.first()
-            );
-        }
+        assert_cuts_clean_on_paper(&format!("cube sheet {s}"), &cp);
     }
 }
 
