@@ -77,3 +77,43 @@ fn bad_designs_name_the_problem() {
         "{err}"
     );
 }
+
+#[test]
+fn the_cli_writes_every_sheet() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("vase.fold");
+    let svg = dir.path().join("vase.svg");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(["papercraft", "examples/papercraft/vase.craft.toml", "-o"])
+        .arg(&out)
+        .arg("--svg")
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&status.stdout);
+    assert!(stdout.contains("8 parts"), "{stdout}");
+    for name in ["vase.fold", "vase-2.fold", "vase.svg", "vase-2.svg"] {
+        assert!(dir.path().join(name).exists(), "{name} missing");
+    }
+    let loaded = foldcam::formats::load(&out).unwrap();
+    assert!(
+        loaded
+            .pattern
+            .edges
+            .iter()
+            .any(|e| e.assignment == foldcam::pattern::Assignment::Mountain)
+    );
+    // A missing design is exit status 2 with the path named.
+    let missing = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(["papercraft", "no-such.craft.toml", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.craft.toml"));
+}
