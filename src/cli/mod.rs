@@ -11,6 +11,7 @@ mod fab_args;
 mod fold;
 mod generate;
 mod input;
+mod papercraft;
 mod plan;
 mod popup;
 mod popup_input;
@@ -74,6 +75,8 @@ enum Command {
     Popup(popup::Command),
     /// Fold a sheet step by step from a script (seed 003) and write its crease pattern.
     Fold(fold::Args),
+    /// Make paper-craft parts from developable patches and cut lines on a mesh.
+    Papercraft(papercraft::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
     Demo(demo::Args),
     /// Make a freeform origami tessellation (star tucks) from an OBJ/STL mesh.
@@ -92,6 +95,7 @@ pub fn run() -> ExitCode {
         Command::Plan(a) => plan::run(a),
         Command::Simulate(a) => simulate::run(a),
         Command::Popup(c) => popup::run(c),
+        Command::Papercraft(a) => papercraft::run(a),
         Command::Demo(a) => demo::run(a),
         Command::Tessellate(a) => tessellate::run(a),
         Command::Fold(a) => fold::run(a),

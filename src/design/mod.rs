@@ -2,5 +2,6 @@
 
 pub mod classic;
 pub mod folding;
+pub mod papercraft;
 pub mod popup;
 pub mod tessellation;

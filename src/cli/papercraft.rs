@@ -1,0 +1,102 @@
+//! `foldcam papercraft DESIGN -o parts.fold`: paper-craft parts from developable patches
+//! (seed 004).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Result, anyhow};
+use foldcam::design::papercraft::ReferenceMesh;
+use foldcam::design::papercraft::design::parse_design;
+use foldcam::formats::{read_text, write_atomic};
+use foldcam::mesh::read_mesh;
+use foldcam::render::{PreviewOptions, preview_png};
+
+use super::Outcome;
+
+/// Make paper-craft parts from a design file.
+#[derive(clap::Args)]
+#[command(
+    long_about = "Builds paper-craft parts (seed 004, Ōgaki) from a TOML design: cut lines \
+                  traced on a reference mesh, and cylindrical patches given by a degree-4 \
+                  B-spline directrix and a ruling direction. Sweeps boundary walls from the \
+                  cut lines (§3.4), trims each patch where it crosses its walls, unrolls it \
+                  isometrically, adds glue tabs on one side of every shared boundary and packs \
+                  the parts onto sheets. Writes one crease pattern per sheet: outlines cut, tab \
+                  roots mountain folds. With several sheets, sheet n > 1 goes to NAME-n.EXT.",
+    after_help = "Examples:\n  foldcam papercraft examples/papercraft/vase.craft.toml -o vase.fold --svg vase.svg --png vase.png\n  \
+                  foldcam cut vase.fold --machine grbl-diode --material paper-160gsm -o vase.gcode"
+)]
+pub struct Args {
+    /// Design file (`.craft.toml`).
+    pub design: PathBuf,
+    /// Crease pattern of the sheets (.fold, .svg or .cp), millimetres.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Also write the sheets as SVG.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Also write PNG previews of the sheets.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// PNG width in pixels.
+    #[arg(long, default_value_t = 1200)]
+    pub width: u32,
+}
+
+/// `path` for sheet 0, `stem-n.ext` for sheet n − 1 > 0.
+fn sheet_path(path: &Path, sheet: usize) -> PathBuf {
+    if sheet == 0 {
+        return path.to_path_buf();
+    }
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy())
+        .unwrap_or_default();
+    let name = match path.extension() {
+        Some(ext) => format!("{stem}-{}.{}", sheet + 1, ext.to_string_lossy()),
+        None => format!("{stem}-{}", sheet + 1),
+    };
+    path.with_file_name(name)
+}
+
+/// Runs `papercraft`.
+pub fn run(args: Args) -> Result<Outcome> {
+    let path = &args.design;
+    let err = |e: &dyn std::fmt::Display| anyhow!("{}: {e}", path.display());
+    let design = parse_design(&read_text(path)?).map_err(|e| err(&e))?;
+    let mesh_path = path.parent().unwrap_or(Path::new(".")).join(&design.mesh);
+    let mesh = read_mesh(&mesh_path).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
+    let reference =
+        ReferenceMesh::new(&mesh).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
+    eprintln!(
+        "foldcam: {} cut lines, {} patches on a mesh of {} triangles",
+        design.cut_lines.len(),
+        design.patches.len(),
+        reference.triangle_count()
+    );
+    let made = design.build(&reference).map_err(|e| err(&e))?;
+    for (s, cp) in made.sheets.iter().enumerate() {
+        super::input::save(&sheet_path(&args.output, s), cp, None)?;
+        if let Some(svg) = &args.svg {
+            super::input::save(&sheet_path(svg, s), cp, None)?;
+        }
+        if let Some(png) = &args.png {
+            let options = PreviewOptions {
+                width: args.width,
+                ..PreviewOptions::default()
+            };
+            let bytes = preview_png(cp, &options, &[]).map_err(|e| err(&e))?;
+            let out = sheet_path(png, s);
+            write_atomic(&out, &bytes).map_err(|e| anyhow!("{}: {e}", out.display()))?;
+            eprintln!("foldcam: wrote {}", out.display());
+        }
+    }
+    let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
+    let dropped: usize = made.parts.iter().map(|p| p.dropped_tabs).sum();
+    println!(
+        "{}: {} parts, {tabs} tabs ({dropped} left out), {} sheet(s)",
+        path.display(),
+        made.parts.len(),
+        made.sheets.len()
+    );
+    Ok(Outcome::Done)
+}

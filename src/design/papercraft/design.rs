@@ -1,0 +1,234 @@
+//! The design file (TOML): what the user did in the thesis's interface — the cut lines'
+//! points (§3.2 Step 1), each patch's loop of cut lines and its directrix control points and
+//! ruling direction (Step 2) — plus the making parameters. [`Design::build`] runs the whole
+//! chain: network, walls, trimming, parts with tabs, packing, one pattern per sheet.
+//!
+//! ```toml
+//! mesh = "vase.obj"        # reference mesh, relative to the design file
+//! scale = 1.0              # millimetres per mesh unit
+//! wall_length = 15.0       # k of §3.4, mesh units
+//! tolerance = 0.05         # real-boundary polyline tolerance, mesh units
+//! [sheet]                  # millimetres
+//! width = 210.0
+//! height = 297.0
+//! [tabs]                   # millimetres, degrees
+//! width = 6.0
+//! angle = 45.0
+//! [[cut_lines]]
+//! points = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]
+//! [[patches]]
+//! cut_lines = [0, 1, 2, 1]
+//! directrix = [[...], ...] # at least 5 control points (degree 4)
+//! ruling = [0.0, 0.0, 1.0]
+//! ```
+//!
+//! Not yet in the format: the planes of automatically generated patches (§3.5).
+
+use glam::DVec3;
+use serde::Deserialize;
+
+use super::bspline::BSpline;
+use super::cut_line::CutLine;
+use super::cylinder::CylinderPatch;
+use super::layout::{Placement, SheetSpec, pack, sheet_pattern};
+use super::network::Network;
+use super::parts::{Part, TabStyle, add_tabs};
+use super::trim::real_boundary;
+use super::walls::Walls;
+use super::{PapercraftError, ReferenceMesh};
+use crate::pattern::CreasePattern;
+
+/// Most cut lines, patches or points per list a design may hold.
+pub const MAX_ITEMS: usize = 10_000;
+
+/// A parsed design file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Design {
+    /// Reference mesh path, relative to the design file.
+    pub mesh: String,
+    /// Millimetres per mesh unit.
+    #[serde(default = "one")]
+    pub scale: f64,
+    /// Sweep length k of the boundary walls (mesh units).
+    pub wall_length: f64,
+    /// Real-boundary polyline tolerance (mesh units).
+    pub tolerance: f64,
+    /// End points closer than this are one network vertex (mesh units).
+    #[serde(default = "small")]
+    pub vertex_tolerance: f64,
+    /// Samples per cut-line segment for the patch directions n_p.
+    #[serde(default = "eight")]
+    pub samples: usize,
+    /// Sheet size.
+    pub sheet: SheetToml,
+    /// Tab style.
+    pub tabs: TabsToml,
+    /// Cut lines.
+    pub cut_lines: Vec<CutLineToml>,
+    /// Placed patches.
+    pub patches: Vec<PatchToml>,
+}
+
+fn one() -> f64 {
+    1.0
+}
+fn small() -> f64 {
+    1e-6
+}
+fn eight() -> usize {
+    8
+}
+
+/// `[sheet]`, millimetres.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SheetToml {
+    /// Width.
+    pub width: f64,
+    /// Height.
+    pub height: f64,
+    /// Border (default 8).
+    #[serde(default = "eight_f")]
+    pub margin: f64,
+    /// Gap between parts (default 4).
+    #[serde(default = "four")]
+    pub gap: f64,
+}
+
+fn eight_f() -> f64 {
+    8.0
+}
+fn four() -> f64 {
+    4.0
+}
+
+/// `[tabs]`, millimetres and degrees.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TabsToml {
+    /// Width.
+    pub width: f64,
+    /// Slope of the ends, degrees.
+    #[serde(default = "forty_five")]
+    pub angle: f64,
+    /// Longest root (default 40).
+    #[serde(default = "forty")]
+    pub max_length: f64,
+}
+
+fn forty_five() -> f64 {
+    45.0
+}
+fn forty() -> f64 {
+    40.0
+}
+
+/// `[[cut_lines]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CutLineToml {
+    /// Points the Catmull–Rom spline passes through.
+    pub points: Vec<[f64; 3]>,
+}
+
+/// `[[patches]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PatchToml {
+    /// The cut lines round the patch, in order.
+    pub cut_lines: Vec<usize>,
+    /// Directrix control points (degree-4 B-spline).
+    pub directrix: Vec<[f64; 3]>,
+    /// Ruling direction.
+    pub ruling: [f64; 3],
+}
+
+/// What [`Design::build`] makes.
+#[derive(Clone, Debug)]
+pub struct Made {
+    /// Parts (one per patch), millimetres.
+    pub parts: Vec<Part>,
+    /// Where each part went.
+    pub placements: Vec<Placement>,
+    /// One crease pattern per sheet.
+    pub sheets: Vec<CreasePattern>,
+}
+
+/// Parses a design file.
+pub fn parse_design(text: &str) -> Result<Design, PapercraftError> {
+    let design: Design =
+        toml::from_str(text).map_err(|e| PapercraftError::BadParameter(e.to_string()))?;
+    if design.cut_lines.len() > MAX_ITEMS || design.patches.len() > MAX_ITEMS {
+        return Err(PapercraftError::BadParameter(format!(
+            "more than {MAX_ITEMS} cut lines or patches"
+        )));
+    }
+    let positive = |v: f64| v.is_finite() && v > 0.0;
+    if !positive(design.scale) || !(1..=1000).contains(&design.samples) {
+        return Err(PapercraftError::BadParameter(
+            "scale must be > 0 and samples in 1..=1000".into(),
+        ));
+    }
+    Ok(design)
+}
+
+fn points(list: &[[f64; 3]]) -> Result<Vec<DVec3>, PapercraftError> {
+    if list.len() > MAX_ITEMS {
+        return Err(PapercraftError::BadParameter(format!(
+            "more than {MAX_ITEMS} points in a list"
+        )));
+    }
+    Ok(list.iter().map(|&p| DVec3::from_array(p)).collect())
+}
+
+impl Design {
+    /// Runs the chain on the reference mesh.
+    pub fn build(&self, mesh: &ReferenceMesh) -> Result<Made, PapercraftError> {
+        let lines = self
+            .cut_lines
+            .iter()
+            .enumerate()
+            .map(|(i, c)| CutLine::new(i, points(&c.points)?))
+            .collect::<Result<Vec<_>, _>>()?;
+        let loops: Vec<Vec<usize>> = self.patches.iter().map(|p| p.cut_lines.clone()).collect();
+        let network = Network::build(&lines, &loops, self.vertex_tolerance)?;
+        let walls = Walls::build(mesh, &lines, &network, self.wall_length, self.samples)?;
+        let mut parts = Vec::with_capacity(self.patches.len());
+        for (p, spec) in self.patches.iter().enumerate() {
+            let what = format!("patch {p} directrix");
+            let ruling = DVec3::from_array(spec.ruling);
+            if !ruling.is_finite() {
+                return Err(PapercraftError::NonFinite {
+                    what: format!("patch {p} ruling"),
+                });
+            }
+            let patch =
+                CylinderPatch::new(BSpline::directrix(points(&spec.directrix)?, &what)?, ruling)?;
+            let boundary = real_boundary(mesh, &network, &walls, p, &patch, self.tolerance)?;
+            parts.push(Part::from_boundary(p, &boundary, self.scale));
+        }
+        let style = TabStyle {
+            width: self.tabs.width,
+            angle_deg: self.tabs.angle,
+            max_length: self.tabs.max_length,
+        };
+        add_tabs(&mut parts, &network, &style)?;
+        let spec = SheetSpec {
+            width: self.sheet.width,
+            height: self.sheet.height,
+            margin: self.sheet.margin,
+            gap: self.sheet.gap,
+        };
+        let placements = pack(&parts, &spec)?;
+        let count = placements.iter().map(|p| p.sheet + 1).max().unwrap_or(0);
+        let sheets = (0..count)
+            .map(|s| sheet_pattern(&parts, &placements, s))
+            .collect();
+        Ok(Made {
+            parts,
+            placements,
+            sheets,
+        })
+    }
+}

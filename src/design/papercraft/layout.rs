@@ -1,0 +1,222 @@
+//! Laying parts out on sheets and turning each sheet into a [`CreasePattern`].
+//!
+//! Each part (with its tabs) is turned to the angle, in 5° steps over a half turn, that gives
+//! the smallest bounding box, then packed by a skyline bottom-left packer on bounding boxes
+//! enlarged by the gap: the lowest position along the skyline where the box fits, leftmost
+//! on ties; a part that fits nowhere opens a new sheet. Parts go in order of decreasing box
+//! height. This is a first packing on boxes, not on the parts' shapes.
+//!
+//! The sheet's pattern: outlines and tab edges are cuts (`B`), tab roots mountain folds
+//! (`M`, −90°: the tab turns behind the printed side).
+
+use glam::DVec2;
+
+use super::PapercraftError;
+use super::parts::Part;
+use crate::pattern::{Assignment, CreasePattern, Edge};
+
+/// Sheet size and spacing, millimetres.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SheetSpec {
+    /// Sheet width (x).
+    pub width: f64,
+    /// Sheet height (y).
+    pub height: f64,
+    /// Empty border along every sheet edge.
+    pub margin: f64,
+    /// Smallest distance between the boxes of two parts.
+    pub gap: f64,
+}
+
+/// A part placed on a sheet: rotated by `angle` (radians) about the origin, then moved by
+/// `offset`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placement {
+    /// Index into the parts list.
+    pub part: usize,
+    /// Sheet index.
+    pub sheet: usize,
+    /// Rotation, radians counter-clockwise.
+    pub angle: f64,
+    /// Translation after the rotation.
+    pub offset: DVec2,
+}
+
+impl Placement {
+    /// Maps a point of the part to the sheet.
+    pub fn apply(&self, p: DVec2) -> DVec2 {
+        DVec2::from_angle(self.angle).rotate(p) + self.offset
+    }
+}
+
+/// Every point of a part with its tabs (outline and outer tab corners).
+pub fn part_points(part: &Part) -> Vec<DVec2> {
+    let mut pts = part.outline.clone();
+    pts.extend(part.tabs.iter().flat_map(|t| t.outer));
+    pts
+}
+
+fn bounds(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
+    points.fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(p), hi.max(p)),
+    )
+}
+
+/// Packs `parts` onto as many sheets as needed. Refuses a bad spec or a part larger than the
+/// usable sheet at every angle tried.
+pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
+    let ok = [spec.width, spec.height, spec.margin, spec.gap]
+        .iter()
+        .all(|v| v.is_finite() && *v >= 0.0)
+        && spec.width > 2.0 * spec.margin
+        && spec.height > 2.0 * spec.margin;
+    if !ok {
+        return Err(PapercraftError::BadParameter(format!(
+            "sheet {spec:?}: sizes must be finite, margins leave room"
+        )));
+    }
+    let usable = DVec2::new(
+        spec.width - 2.0 * spec.margin,
+        spec.height - 2.0 * spec.margin,
+    );
+    let mut boxed: Vec<(usize, f64, DVec2, DVec2)> = Vec::new();
+    for (i, part) in parts.iter().enumerate() {
+        let pts = part_points(part);
+        let best = (0..36)
+            .map(|k| {
+                let angle = k as f64 * std::f64::consts::PI / 36.0;
+                let rot = DVec2::from_angle(angle);
+                let (lo, hi) = bounds(pts.iter().map(|&p| rot.rotate(p)));
+                (angle, lo, hi - lo)
+            })
+            .filter(|(_, _, size)| size.x <= usable.x && size.y <= usable.y)
+            .min_by(|a, b| (a.2.x * a.2.y).total_cmp(&(b.2.x * b.2.y)))
+            .ok_or(PapercraftError::PartTooLarge { part: i })?;
+        boxed.push((i, best.0, best.1, best.2));
+    }
+    boxed.sort_by(|a, b| b.3.y.total_cmp(&a.3.y));
+    let mut sheets: Vec<Skyline> = Vec::new();
+    let mut out = Vec::new();
+    for (i, angle, lo, size) in boxed {
+        let need = size + DVec2::splat(spec.gap);
+        let placed = sheets
+            .iter_mut()
+            .enumerate()
+            .find_map(|(s, sky)| sky.place(need).map(|at| (s, at)));
+        let (sheet, at) = match placed {
+            Some(found) => found,
+            None => {
+                let mut sky = Skyline::new(usable + DVec2::splat(spec.gap));
+                let at = sky
+                    .place(need)
+                    .ok_or(PapercraftError::PartTooLarge { part: i })?;
+                sheets.push(sky);
+                (sheets.len() - 1, at)
+            }
+        };
+        out.push(Placement {
+            part: i,
+            sheet,
+            angle,
+            offset: DVec2::splat(spec.margin) + at - lo,
+        });
+    }
+    out.sort_by_key(|p| p.part);
+    Ok(out)
+}
+
+/// A skyline: segments `(x, width, y)` covering `[0, size.x]`.
+struct Skyline {
+    size: DVec2,
+    segments: Vec<(f64, f64, f64)>,
+}
+
+impl Skyline {
+    fn new(size: DVec2) -> Self {
+        Skyline {
+            size,
+            segments: vec![(0.0, size.x, 0.0)],
+        }
+    }
+
+    /// The bottom-left position for a box of `need`, which is then added to the skyline.
+    fn place(&mut self, need: DVec2) -> Option<DVec2> {
+        let mut best: Option<(f64, f64)> = None;
+        for i in 0..self.segments.len() {
+            let x = self.segments[i].0;
+            if x + need.x > self.size.x + 1e-9 {
+                break;
+            }
+            let y = self.segments[i..]
+                .iter()
+                .take_while(|s| s.0 < x + need.x - 1e-12)
+                .map(|s| s.2)
+                .fold(0.0, f64::max);
+            if y + need.y <= self.size.y + 1e-9
+                && best.is_none_or(|(by, bx)| y < by || (y == by && x < bx))
+            {
+                best = Some((y, x));
+            }
+        }
+        let (y, x) = best?;
+        self.raise(x, need.x, y + need.y);
+        Some(DVec2::new(x, y))
+    }
+
+    fn raise(&mut self, x: f64, w: f64, top: f64) {
+        let mut next = Vec::new();
+        for &(sx, sw, sy) in &self.segments {
+            let (s0, s1) = (sx, sx + sw);
+            if s1 <= x || s0 >= x + w {
+                next.push((sx, sw, sy));
+                continue;
+            }
+            if s0 < x {
+                next.push((s0, x - s0, sy));
+            }
+            if s1 > x + w {
+                next.push((x + w, s1 - x - w, sy));
+            }
+        }
+        next.push((x, w, top));
+        next.sort_by(|a, b| a.0.total_cmp(&b.0));
+        self.segments = next;
+    }
+}
+
+/// The crease pattern of sheet `sheet`: every part placed on it, outlines and tab edges as
+/// cuts, tab roots as mountain folds.
+pub fn sheet_pattern(parts: &[Part], placements: &[Placement], sheet: usize) -> CreasePattern {
+    let mut cp = CreasePattern::new();
+    for pl in placements.iter().filter(|p| p.sheet == sheet) {
+        let part = &parts[pl.part];
+        let n = part.outline.len();
+        let ids: Vec<_> = part
+            .outline
+            .iter()
+            .map(|&p| cp.add_vertex(pl.apply(p)))
+            .collect();
+        let mut fold = vec![false; n];
+        for tab in &part.tabs {
+            (0..tab.len).for_each(|k| fold[(tab.from + k) % n] = true);
+        }
+        for i in 0..n {
+            let edge = if fold[i] {
+                Edge::new(ids[i], ids[(i + 1) % n], Assignment::Mountain).with_angle(-90.0)
+            } else {
+                Edge::new(ids[i], ids[(i + 1) % n], Assignment::Boundary)
+            };
+            cp.edges.push(edge);
+        }
+        for tab in &part.tabs {
+            let (a, b) = (ids[tab.from % n], ids[(tab.from + tab.len) % n]);
+            let oa = cp.add_vertex(pl.apply(tab.outer[0]));
+            let ob = cp.add_vertex(pl.apply(tab.outer[1]));
+            cp.add_edge(a, oa, Assignment::Boundary);
+            cp.add_edge(oa, ob, Assignment::Boundary);
+            cp.add_edge(ob, b, Assignment::Boundary);
+        }
+    }
+    cp
+}

@@ -1,0 +1,113 @@
+//! Paper craft from developable patches with user cut lines (seed 004, Ōgaki's thesis).
+//!
+//! The user traces cut lines on a reference mesh, places cylindrical developable patches, and
+//! the system trims them and unrolls them into parts. Built so far:
+//!
+//! - [`reference`]: the reference mesh with closest-point projection and normals (§3.1).
+//! - [`cut_line`]: Catmull–Rom cut lines through points on the mesh, sampled and projected
+//!   (§3.2 Step 1).
+//! - [`network`]: the cut-line network as a half-edge structure, patches as faces (§3.3).
+//! - [`bspline`], [`cylinder`]: degree-4 B-spline directrices and cylindrical patches with
+//!   their isometric unrolling (§3.2 Step 2).
+//! - [`walls`]: boundary walls, swept vertices v_s = v + k·normalize(Σ n_p) (§3.4).
+//! - [`trim`]: the real boundary of a patch, where it crosses its walls (§3.2 Step 3), as a
+//!   closed polyline in 3D and unrolled, refined to a tolerance.
+//! - [`parts`], [`layout`]: parts with glue tabs, packed on sheets, one crease pattern per
+//!   sheet (outlines cut, tab roots mountain folds).
+//! - [`shapes`]: meshes of bodies of revolution for tests and examples.
+//!
+//! Not built yet: automatic neighbouring patches (§3.5), edge labels drawn on
+//! the parts, design files and the CLI.
+
+pub mod bspline;
+pub mod cut_line;
+pub mod cylinder;
+pub mod design;
+mod grid;
+pub mod layout;
+pub mod network;
+pub mod parts;
+pub mod reference;
+pub mod shapes;
+pub mod trim;
+pub mod walls;
+
+pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
+
+use thiserror::Error;
+
+/// Why a paper-craft design cannot be built.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum PapercraftError {
+    /// The reference mesh has no triangle of positive area.
+    #[error("the reference mesh has no triangle of positive area")]
+    DegenerateMesh,
+    /// A parameter is out of range (the message names it).
+    #[error("bad parameter: {0}")]
+    BadParameter(String),
+    /// A cut line has too few points.
+    #[error("cut line {line} has {points} points (at least 2 needed)")]
+    ShortCutLine {
+        /// Cut-line index.
+        line: usize,
+        /// Its point count.
+        points: usize,
+    },
+    /// A point is NaN or infinite.
+    #[error("{what} has a non-finite coordinate")]
+    NonFinite {
+        /// Which input ("cut line 3", "patch 1 directrix").
+        what: String,
+    },
+    /// A patch's cut lines do not close into a loop.
+    #[error("patch {patch}: cut line {from} does not meet cut line {to} (the loop is open)")]
+    OpenLoop {
+        /// Patch index.
+        patch: usize,
+        /// The cut line whose end is loose.
+        from: usize,
+        /// The next cut line in the patch's list.
+        to: usize,
+    },
+    /// A patch names a cut line that does not exist, or names one twice.
+    #[error("patch {patch}: {message}")]
+    BadLoop {
+        /// Patch index.
+        patch: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// The mesh normals along a patch's cut lines cancel out, so it has no rough direction.
+    #[error("patch {patch}: the mesh normals along its cut lines cancel out (no direction n_p)")]
+    NoPatchDirection {
+        /// Patch index.
+        patch: usize,
+    },
+    /// A patch does not reach the wall of one of its cut lines, so it cannot be trimmed there.
+    #[error(
+        "patch {patch} does not reach the wall of cut line {line} near parameter {s:.3} \
+         (extend its directrix or move it closer to the cut line)"
+    )]
+    MissesWall {
+        /// Patch index.
+        patch: usize,
+        /// Cut-line index.
+        line: usize,
+        /// Cut-line parameter of the rib that is missed.
+        s: f64,
+    },
+    /// A part does not fit on the sheet at any angle tried.
+    #[error("part {part} does not fit on the sheet (use a larger sheet or a smaller scale)")]
+    PartTooLarge {
+        /// Part index.
+        part: usize,
+    },
+    /// More than two patches share a cut line, or their loops cannot be oriented consistently.
+    #[error("cut line {line}: {message}")]
+    BadSharing {
+        /// Cut-line index.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+}

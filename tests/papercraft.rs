@@ -1,0 +1,27 @@
+//! Paper craft from developable patches (seed 004): reference-mesh projection, Catmull–Rom
+//! cut lines, the half-edge cut-line network (§3.3) and cylindrical patches with their
+//! isometric unrolling (§3.2 Step 2).
+
+#[path = "papercraft/support.rs"]
+mod support;
+
+#[path = "papercraft/reference.rs"]
+mod reference;
+
+#[path = "papercraft/cut_lines.rs"]
+mod cut_lines;
+
+#[path = "papercraft/network.rs"]
+mod network;
+
+#[path = "papercraft/walls.rs"]
+mod walls;
+
+#[path = "papercraft/parts.rs"]
+mod parts;
+
+#[path = "papercraft/design.rs"]
+mod design;
+
+#[path = "papercraft/cylinder.rs"]
+mod cylinder;

@@ -1,0 +1,119 @@
+use std::path::Path;
+
+use foldcam::design::papercraft::design::parse_design;
+use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
+use foldcam::mesh::read_mesh;
+
+use crate::support::assert_cuts_clean_on_paper;
+
+fn vase_text() -> String {
+    std::fs::read_to_string("examples/papercraft/vase.craft.toml").unwrap()
+}
+
+#[test]
+fn the_vase_example_builds_cuts_clean_and_its_gores_match() {
+    let design = parse_design(&vase_text()).unwrap();
+    let mesh = read_mesh(&Path::new("examples/papercraft").join(&design.mesh)).unwrap();
+    let made = design.build(&ReferenceMesh::new(&mesh).unwrap()).unwrap();
+    assert_eq!(made.parts.len(), 8);
+    assert!(made.parts.iter().all(|p| p.dropped_tabs == 0));
+    // The gores are mirror images across each meridian plane, so they meet on the shared
+    // wall: the two sides glued together have the same length, up to the 1e-4 mm rounding of
+    // the design file's coordinates and the two polylines' different refinements (0.05 mm
+    // tolerance).
+    let side = |e: usize| -> Vec<f64> {
+        made.parts
+            .iter()
+            .flat_map(|part| {
+                part.sides.iter().filter(|s| s.half_edge / 2 == e).map(|s| {
+                    (0..s.len)
+                        .map(|k| {
+                            part.point(s.start + k)
+                                .distance(part.point(s.start + k + 1))
+                        })
+                        .sum::<f64>()
+                })
+            })
+            .collect()
+    };
+    for meridian in 0..8 {
+        let lengths = side(meridian);
+        assert_eq!(lengths.len(), 2, "meridian {meridian} joins two gores");
+        assert!(
+            (lengths[0] - lengths[1]).abs() < 1e-3,
+            "meridian {meridian}: {lengths:?}"
+        );
+        assert!(
+            lengths[0] > 100.0,
+            "a meridian is longer than the vase is tall"
+        );
+    }
+    for (s, cp) in made.sheets.iter().enumerate() {
+        assert_cuts_clean_on_paper(&format!("vase sheet {s}"), cp);
+    }
+}
+
+#[test]
+fn bad_designs_name_the_problem() {
+    let unknown = vase_text().replacen("scale = 1.0", "scale = 1.0\ncolour = 3", 1);
+    assert!(
+        matches!(parse_design(&unknown), Err(PapercraftError::BadParameter(m)) if m.contains("colour"))
+    );
+    let zero = vase_text().replacen("scale = 1.0", "scale = 0.0", 1);
+    assert!(matches!(
+        parse_design(&zero),
+        Err(PapercraftError::BadParameter(_))
+    ));
+    // Gore 0 listing a rim arc of another gore: its loop no longer closes.
+    let open = vase_text().replacen("cut_lines = [8, 1, 16, 0]", "cut_lines = [8, 1, 17, 0]", 1);
+    assert_ne!(open, vase_text());
+    let design = parse_design(&open).unwrap();
+    let mesh = read_mesh(Path::new("examples/papercraft/vase.obj")).unwrap();
+    let err = design
+        .build(&ReferenceMesh::new(&mesh).unwrap())
+        .unwrap_err();
+    assert!(
+        matches!(err, PapercraftError::OpenLoop { patch: 0, .. }),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_cli_writes_every_sheet() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("vase.fold");
+    let svg = dir.path().join("vase.svg");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(["papercraft", "examples/papercraft/vase.craft.toml", "-o"])
+        .arg(&out)
+        .arg("--svg")
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&status.stdout);
+    assert!(stdout.contains("8 parts"), "{stdout}");
+    for name in ["vase.fold", "vase-2.fold", "vase.svg", "vase-2.svg"] {
+        assert!(dir.path().join(name).exists(), "{name} missing");
+    }
+    let loaded = foldcam::formats::load(&out).unwrap();
+    assert!(
+        loaded
+            .pattern
+            .edges
+            .iter()
+            .any(|e| e.assignment == foldcam::pattern::Assignment::Mountain)
+    );
+    // A missing design is exit status 2 with the path named.
+    let missing = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(["papercraft", "no-such.craft.toml", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.craft.toml"));
+}
