@@ -165,6 +165,10 @@ fn solved(name: &str) -> Tessellation {
     for (v, d) in angle_defects(&t.mesh, &t.mesh.positions).iter().enumerate() {
         assert!(d.abs() < 1e-9, "{name}: vertex {v} defect {d:e}");
     }
+    // Eq. 5–7 are active by default and leave no crease through a vertex-adjacent face.
+    assert!(r.limits.vertex_penalty, "{name}");
+    assert_eq!(r.last.illegal_creases, 0, "{name}");
+    assert!(t.intersections.is_empty(), "{name}: {:?}", t.intersections);
     t
 }
 
@@ -178,6 +182,9 @@ fn check_unfolded(name: &str, t: &Tessellation) {
     assert!(u.max_length_error < 1e-9, "{name}: {}", u.max_length_error);
     let faces = cp.faces.as_ref().expect("faces");
     assert_eq!(Some(faces), u.folded.faces.as_ref());
+    // The folded form has no intersecting faces, even at a tolerance of 1 nm.
+    let crossing = folded_intersections(&u.folded, 1e-6).expect("triangles");
+    assert!(crossing.is_empty(), "{name}: {crossing:?}");
     assert_eq!(cp.edges, u.folded.edges);
     for e in &cp.edges {
         let [a, b] = e.vertices;
@@ -341,6 +348,12 @@ fn cli_writes_pattern_folded_form_and_previews() {
         stdout.contains("converged") && stderr.contains("iteration"),
         "{stdout}{stderr}"
     );
+    assert!(
+        stdout.contains("illegal creases 0")
+            && stdout.contains("face intersections")
+            && stdout.contains("): none"),
+        "{stdout}"
+    );
     let imported = foldcam::formats::load(&out).expect("readable FOLD");
     let folded = imported.folded.expect("folded frame");
     assert_eq!(folded.positions.len(), imported.pattern.vertices.len());
@@ -434,4 +447,47 @@ fn digon_layout_solves_the_dome_with_relaxed_limits() {
         digons, interior_edges,
         "one digon crease per interior input edge"
     );
+}
+
+/// The face-intersection check finds a constructed pair of folded faces passing through each
+/// other (one sharing a vertex with it, one apart), and refuses non-triangular faces.
+#[test]
+fn folded_intersections_find_faces_through_each_other() {
+    use foldcam::pattern::{Face, FoldedState, VertexId};
+    use glam::DVec3;
+    let face = |v: [usize; 3]| Face::simple(v.map(VertexId::new).to_vec());
+    let positions = vec![
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(10.0, 0.0, 0.0),
+        DVec3::new(0.0, 10.0, 0.0),
+        // Shares vertex 0; its far edge pierces face 0.
+        DVec3::new(5.0, 1.0, -2.0),
+        DVec3::new(1.0, 5.0, 2.0),
+        // Apart from everything, well above the plane.
+        DVec3::new(2.0, 2.0, 5.0),
+        DVec3::new(4.0, 2.0, 6.0),
+        DVec3::new(2.0, 4.0, 7.0),
+        // Shares nothing; pierces faces 0 and 1 along (2, 2, 0)–(2.5, 2.5, 0).
+        DVec3::new(2.0, 2.0, -1.0),
+        DVec3::new(2.0, 2.0, 1.0),
+        DVec3::new(3.0, 3.0, 1.0),
+    ];
+    let mut folded = FoldedState {
+        positions,
+        edges: Vec::new(),
+        faces: Some(vec![
+            face([0, 1, 2]),
+            face([0, 3, 4]),
+            face([5, 6, 7]),
+            face([8, 9, 10]),
+        ]),
+        face_orders: Vec::new(),
+    };
+    let found = folded_intersections(&folded, 1e-3).unwrap();
+    assert_eq!(found, vec![(0, 1), (0, 3), (1, 3)]);
+    folded.faces = Some(vec![Face::simple([0, 1, 2, 3].map(VertexId::new).to_vec())]);
+    assert!(matches!(
+        folded_intersections(&folded, 1e-3),
+        Err(TessError::BadParameter(_))
+    ));
 }
