@@ -491,3 +491,61 @@ fn folded_intersections_find_faces_through_each_other() {
         Err(TessError::BadParameter(_))
     ));
 }
+
+/// A straight strip of squares (2 × 40, 10 mm) wrapped onto a cone with sin(half-angle) =
+/// 1/4: the strip is a geodesic band that winds 1.6 times around the cone and crosses itself,
+/// a global (type 3) collision that no local condition of §3 sees.
+fn strip_on_a_cone() -> PolyMesh {
+    let (sa, ca) = (0.25f64, (1.0f64 - 0.0625).sqrt());
+    let ys = [60.0, 70.0, 80.0];
+    let mut positions = Vec::new();
+    for i in 0..41 {
+        let x = -200.0 + 10.0 * i as f64;
+        for y in ys {
+            let (r, phi) = (f64::hypot(x, y), f64::atan2(y, x));
+            let (rho, psi) = (r * sa, phi / sa);
+            positions.push(glam::DVec3::new(rho * psi.cos(), rho * psi.sin(), -r * ca));
+        }
+    }
+    let faces = (0..40u32)
+        .flat_map(|i| (0..2u32).map(move |j| (i * 3 + j, (i + 1) * 3 + j)))
+        .map(|(p, q)| vec![p, p + 1, q + 1, q])
+        .collect();
+    PolyMesh::new(positions, faces).expect("valid strip")
+}
+
+/// The solve converges on the self-crossing strip, the check reports the crossing faces, and
+/// the command refuses to write it (exit 1, with the reason).
+#[test]
+fn a_self_crossing_result_is_found_and_not_written() {
+    let mesh = strip_on_a_cone();
+    let t = tessellate(
+        &mesh,
+        &TessellateOptions::with_limits(stainless_limits()),
+        |_| {},
+    )
+    .unwrap();
+    assert!(t.report.converged, "{}", t.report.summary());
+    assert!(t.intersections.len() > 10, "{}", t.summary());
+    let folded = &t.unfolded.as_ref().expect("unfolds flat").folded;
+    assert_eq!(
+        folded_intersections(folded, t.intersection_tolerance).unwrap(),
+        t.intersections
+    );
+    let dir = tempfile::tempdir().expect("temp dir");
+    let obj = dir.path().join("cone.obj");
+    std::fs::write(&obj, mesh.to_obj()).expect("written");
+    let out = dir.path().join("cone.fold");
+    let run = foldcam(&[
+        "tessellate",
+        obj.to_str().expect("utf-8"),
+        "-x",
+        "stainless-0.5",
+        "-o",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert_eq!(run.status.code(), Some(1), "{stdout}");
+    assert!(stdout.contains("intersects itself"), "{stdout}");
+    assert!(!out.exists());
+}
