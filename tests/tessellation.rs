@@ -165,6 +165,10 @@ fn solved(name: &str) -> Tessellation {
     for (v, d) in angle_defects(&t.mesh, &t.mesh.positions).iter().enumerate() {
         assert!(d.abs() < 1e-9, "{name}: vertex {v} defect {d:e}");
     }
+    // Eq. 5–7 are active by default and leave no crease through a vertex-adjacent face.
+    assert!(r.limits.vertex_penalty, "{name}");
+    assert_eq!(r.last.illegal_creases, 0, "{name}");
+    assert!(t.intersections.is_empty(), "{name}: {:?}", t.intersections);
     t
 }
 
@@ -178,6 +182,9 @@ fn check_unfolded(name: &str, t: &Tessellation) {
     assert!(u.max_length_error < 1e-9, "{name}: {}", u.max_length_error);
     let faces = cp.faces.as_ref().expect("faces");
     assert_eq!(Some(faces), u.folded.faces.as_ref());
+    // The folded form has no intersecting faces, even at a tolerance of 1 nm.
+    let crossing = folded_intersections(&u.folded, 1e-6).expect("triangles");
+    assert!(crossing.is_empty(), "{name}: {crossing:?}");
     assert_eq!(cp.edges, u.folded.edges);
     for e in &cp.edges {
         let [a, b] = e.vertices;
@@ -341,6 +348,12 @@ fn cli_writes_pattern_folded_form_and_previews() {
         stdout.contains("converged") && stderr.contains("iteration"),
         "{stdout}{stderr}"
     );
+    assert!(
+        stdout.contains("illegal creases 0")
+            && stdout.contains("face intersections")
+            && stdout.contains("): none"),
+        "{stdout}"
+    );
     let imported = foldcam::formats::load(&out).expect("readable FOLD");
     let folded = imported.folded.expect("folded frame");
     assert_eq!(folded.positions.len(), imported.pattern.vertices.len());
@@ -434,4 +447,105 @@ fn digon_layout_solves_the_dome_with_relaxed_limits() {
         digons, interior_edges,
         "one digon crease per interior input edge"
     );
+}
+
+/// The face-intersection check finds a constructed pair of folded faces passing through each
+/// other (one sharing a vertex with it, one apart), and refuses non-triangular faces.
+#[test]
+fn folded_intersections_find_faces_through_each_other() {
+    use foldcam::pattern::{Face, FoldedState, VertexId};
+    use glam::DVec3;
+    let face = |v: [usize; 3]| Face::simple(v.map(VertexId::new).to_vec());
+    let positions = vec![
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(10.0, 0.0, 0.0),
+        DVec3::new(0.0, 10.0, 0.0),
+        // Shares vertex 0; its far edge pierces face 0.
+        DVec3::new(5.0, 1.0, -2.0),
+        DVec3::new(1.0, 5.0, 2.0),
+        // Apart from everything, well above the plane.
+        DVec3::new(2.0, 2.0, 5.0),
+        DVec3::new(4.0, 2.0, 6.0),
+        DVec3::new(2.0, 4.0, 7.0),
+        // Shares nothing; pierces faces 0 and 1 along (2, 2, 0)–(2.5, 2.5, 0).
+        DVec3::new(2.0, 2.0, -1.0),
+        DVec3::new(2.0, 2.0, 1.0),
+        DVec3::new(3.0, 3.0, 1.0),
+    ];
+    let mut folded = FoldedState {
+        positions,
+        edges: Vec::new(),
+        faces: Some(vec![
+            face([0, 1, 2]),
+            face([0, 3, 4]),
+            face([5, 6, 7]),
+            face([8, 9, 10]),
+        ]),
+        face_orders: Vec::new(),
+    };
+    let found = folded_intersections(&folded, 1e-3).unwrap();
+    assert_eq!(found, vec![(0, 1), (0, 3), (1, 3)]);
+    folded.faces = Some(vec![Face::simple([0, 1, 2, 3].map(VertexId::new).to_vec())]);
+    assert!(matches!(
+        folded_intersections(&folded, 1e-3),
+        Err(TessError::BadParameter(_))
+    ));
+}
+
+/// A straight strip of squares (2 × 40, 10 mm) wrapped onto a cone with sin(half-angle) =
+/// 1/4: the strip is a geodesic band that winds 1.6 times around the cone and crosses itself,
+/// a global (type 3) collision that no local condition of §3 sees.
+fn strip_on_a_cone() -> PolyMesh {
+    let (sa, ca) = (0.25f64, (1.0f64 - 0.0625).sqrt());
+    let ys = [60.0, 70.0, 80.0];
+    let mut positions = Vec::new();
+    for i in 0..41 {
+        let x = -200.0 + 10.0 * i as f64;
+        for y in ys {
+            let (r, phi) = (f64::hypot(x, y), f64::atan2(y, x));
+            let (rho, psi) = (r * sa, phi / sa);
+            positions.push(glam::DVec3::new(rho * psi.cos(), rho * psi.sin(), -r * ca));
+        }
+    }
+    let faces = (0..40u32)
+        .flat_map(|i| (0..2u32).map(move |j| (i * 3 + j, (i + 1) * 3 + j)))
+        .map(|(p, q)| vec![p, p + 1, q + 1, q])
+        .collect();
+    PolyMesh::new(positions, faces).expect("valid strip")
+}
+
+/// The solve converges on the self-crossing strip, the check reports the crossing faces, and
+/// the command refuses to write it (exit 1, with the reason).
+#[test]
+fn a_self_crossing_result_is_found_and_not_written() {
+    let mesh = strip_on_a_cone();
+    let t = tessellate(
+        &mesh,
+        &TessellateOptions::with_limits(stainless_limits()),
+        |_| {},
+    )
+    .unwrap();
+    assert!(t.report.converged, "{}", t.report.summary());
+    assert!(t.intersections.len() > 10, "{}", t.summary());
+    let folded = &t.unfolded.as_ref().expect("unfolds flat").folded;
+    assert_eq!(
+        folded_intersections(folded, t.intersection_tolerance).unwrap(),
+        t.intersections
+    );
+    let dir = tempfile::tempdir().expect("temp dir");
+    let obj = dir.path().join("cone.obj");
+    std::fs::write(&obj, mesh.to_obj()).expect("written");
+    let out = dir.path().join("cone.fold");
+    let run = foldcam(&[
+        "tessellate",
+        obj.to_str().expect("utf-8"),
+        "-x",
+        "stainless-0.5",
+        "-o",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert_eq!(run.status.code(), Some(1), "{stdout}");
+    assert!(stdout.contains("intersects itself"), "{stdout}");
+    assert!(!out.exists());
 }

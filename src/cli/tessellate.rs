@@ -50,7 +50,8 @@ pub enum Layout {
                   holds the crease pattern (frame 0, mm) and the folded form (frame 1).\n\n\
                   Limits default to the material's (--material) or to the paper's example \
                   (fold angle <= 165 deg, vertex angle >= 30 deg).\n\nExit status: 0 written, \
-                  1 the solver did not converge or the pattern overlaps (nothing is written), \
+                  1 the solver did not converge, the pattern overlaps or the folded form \
+                  intersects itself (nothing is written), \
                   2 bad input.",
     after_help = "Examples:\n  cargo run --example tessellation_meshes\n  \
                   foldcam tessellate examples/tessellation/dome.obj -o dome.fold --png dome.png --cp-png dome-cp.png\n  \
@@ -155,12 +156,13 @@ pub fn run(args: Args) -> Result<Outcome> {
     let t = tessellate(&mesh, &opts, |it| {
         eprintln!(
             "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \
-             active limits {}, step {}",
+             active limits {}, eq. 5-7 rows {}, step {}",
             it.index,
             it.residuals.developability,
             it.residuals.max_fold.to_degrees(),
             it.residuals.min_vertex_angle.to_degrees(),
             it.active[1] + it.active[2] + it.active[3],
+            it.active[6],
             it.step
         );
     })
@@ -173,7 +175,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         t.mesh.triangles.len(),
         t.mesh.interior_count()
     );
-    println!("{}", t.report.summary());
+    println!("{}", t.summary());
     if let Some(fit) = &t.fit {
         println!(
             "surface fit (eq. 9-10): distance {:.4e} -> {:.4e} in {} rounds",
@@ -182,6 +184,14 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     if !t.report.converged {
         println!("nothing written: the solver did not reach every condition");
+        return Ok(Outcome::CheckFailed);
+    }
+    if let Some((a, b)) = t.intersections.first() {
+        println!(
+            "nothing written: the folded form intersects itself ({} face pairs, first: faces {a} \
+             and {b})",
+            t.intersections.len()
+        );
         return Ok(Outcome::CheckFailed);
     }
     let unfolded = match t.unfolded {

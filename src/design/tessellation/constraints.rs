@@ -5,7 +5,9 @@
 //!   valley and −1 for a mountain and ρ' = σρ, a fold beyond the limit gets
 //!   `f = 2 (sin(ρ'/2) − sin(ρ_target/2)) h_p h_q` and a fold of the wrong sign gets
 //!   `f = 2 (sin(ρ'/2) − sin(m/2)) h_p h_q` (eq. 4: h are relative heights, Fig. 7);
-//! - vertex angles, §5: every triangle corner θ ≥ δ_corner, `θ − (δ_corner + m)` when violated.
+//! - vertex angles, §5: every triangle corner θ ≥ δ_corner, `θ − (δ_corner + m)` when violated;
+//! - vertex-adjacent faces, eq. 5–7: a crease passing through a face that shares only its
+//!   vertex gets the penalty row `f_o = 0` (see [`vertex_penalty`]).
 //!
 //! Inequalities are handled as the paper handles eq. 2: a violated one becomes an equality for
 //! that step (an active set). Deviation: each inequality targets a small margin m inside its
@@ -19,6 +21,7 @@ use glam::DVec3;
 use super::boundary;
 use super::geometry::{corner_angle, fold_angle, relative_height};
 use super::model::{EdgeRole, TessMesh};
+use super::vertex_penalty;
 use crate::pattern::Assignment;
 
 /// The fabrication limits of §5, in radians.
@@ -33,6 +36,8 @@ pub struct Limits {
     /// Ground contact (§6's design example): when set, every boundary vertex lies on the
     /// horizontal plane at this z (mesh units), one equality row per vertex.
     pub ground_z: Option<f64>,
+    /// Whether the vertex-adjacent penalty rows (eq. 5–7) are active (the paper: always).
+    pub vertex_penalty: bool,
 }
 
 impl Limits {
@@ -43,6 +48,7 @@ impl Limits {
             min_vertex_angle: min_vertex_angle_deg.to_radians(),
             margin: 0.25f64.to_radians(),
             ground_z: None,
+            vertex_penalty: true,
         }
     }
 }
@@ -69,6 +75,8 @@ pub enum Family {
     Ground,
     /// Eq. 2: a run of the boundary turning back by more than half a turn.
     Boundary,
+    /// Eq. 5–7: a crease through a face that shares only its vertex.
+    VertexPenalty,
 }
 
 /// One constraint: its value and its Jacobian row as (vertex, ∂/∂x) blocks.
@@ -200,6 +208,19 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
             });
         }
     }
+    if limits.vertex_penalty {
+        for fan in vertex_penalty::fans(mesh) {
+            for c in vertex_penalty::creases(x, &fan) {
+                if c.illegal {
+                    out.push(Row {
+                        family: Family::VertexPenalty,
+                        value: c.penalty,
+                        entries: c.grad,
+                    });
+                }
+            }
+        }
+    }
     let mut all: Vec<Row> = dev.into_iter().flatten().collect();
     all.extend(out);
     all
@@ -264,6 +285,10 @@ pub struct Residuals {
     pub ground: f64,
     /// Smallest `Σ τ + π` over runs of the boundary (eq. 2 holds when ≥ 0), radians.
     pub boundary_turn: f64,
+    /// Creases through a vertex-adjacent face (eq. 5–7), whether or not the rows are active.
+    pub illegal_creases: usize,
+    /// Largest penalty f_o (eq. 7, dimensionless) among the illegal creases, 0 without any.
+    pub max_penalty: f64,
 }
 
 /// Measures [`Residuals`] at `x` (the ground distance against `ground_z`).
@@ -271,7 +296,10 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residua
     let defects = angle_defects(mesh, x);
     let developability = defects.iter().fold(0.0f64, |m, d| m.max(d.abs()));
     let sums = angle_sums(mesh, x);
+    let (illegal_creases, max_penalty) = vertex_penalty::measure(x, &vertex_penalty::fans(mesh));
     let mut r = Residuals {
+        illegal_creases,
+        max_penalty,
         developability,
         boundary_turn: boundary::worst_turn(&boundary::boundary_loop(mesh), &sums),
         min_vertex_angle: f64::INFINITY,

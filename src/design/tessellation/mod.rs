@@ -7,31 +7,37 @@
 //! [`assign_folds`] reads mountains and valleys off the half-open tucks; [`solve`] moves every
 //! vertex by generalized Newton–Raphson until the interior vertices are developable (eq. 1)
 //! and the fold-angle (eq. 3, §5) and vertex-angle (§5) limits hold ([`solver`]);
-//! [`unfold`] lays the result flat triangle by triangle and checks it for overlaps.
+//! [`unfold`] lays the result flat triangle by triangle and checks it for overlaps;
+//! [`intersect`] checks the folded form for faces passing through each other.
 //!
 //! Implemented: §2.1 (checkerboard and digon layouts), eq. 1, eq. 3 with the §5 fold limit,
 //! the §5 vertex-angle limit, ground contact (§6), §3.3 with an analytic sparse Jacobian (eq. 8)
 //! and a matrix-free conjugate gradient for the minimum-norm step, the surface fit of §3.4
-//! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]). Not yet implemented: the §2.2
-//! variations (truncated star, twisted star, twist fold), the vertex-adjacent penalty
-//! (eq. 5–7) and the rigid-foldability simulation (§5). Boundary non-overlap (eq. 2) is a
+//! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]), the vertex-adjacent penalty
+//! (eq. 5–7, [`vertex_penalty`]) as solver rows. Not yet implemented: the §2.2 variations
+//! (truncated star, twisted star, twist fold) and the rigid-foldability simulation (§5).
+//! Beyond the paper (which leaves global collisions to the user's eye), the folded form is
+//! checked exactly for intersecting faces ([`intersect`]). Boundary non-overlap (eq. 2) is a
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
 
 pub mod boundary;
 pub mod constraints;
 pub mod fit;
 pub mod geometry;
+pub mod intersect;
 pub mod model;
 pub mod pipeline;
 pub mod samples;
 pub mod solver;
 pub mod star;
 pub mod unfold;
+pub mod vertex_penalty;
 
 use thiserror::Error;
 
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
+pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{TessellateOptions, Tessellation, disk, tessellate};
 pub use samples::{SampleSurface, sample_surface};

@@ -1,7 +1,8 @@
-//! The whole design in one call: mesh → star tucks → solve → unfold.
+//! The whole design in one call: mesh → star tucks → solve → unfold → face-intersection check.
 
 use super::constraints::{Limits, assign_folds};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
+use super::intersect::intersecting_triangles;
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
 use super::star::{InitialPattern, StarOptions, star_tucks};
 use super::unfold::{Unfolded, unfold};
@@ -9,7 +10,7 @@ use super::{TessError, TessMesh};
 use crate::mesh::{HalfEdgeMesh, PolyMesh};
 
 /// Everything [`tessellate`] needs besides the mesh.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TessellateOptions {
     /// Initial pattern (§2.1).
     pub star: StarOptions,
@@ -20,6 +21,20 @@ pub struct TessellateOptions {
     pub ground: bool,
     /// Surface fit (§3.4) after a converged solve, towards the initial face corners.
     pub fit: Option<FitOptions>,
+    /// Faces of the folded form crossing each other by less than this (mm) only touch.
+    pub intersection_tolerance: f64,
+}
+
+impl Default for TessellateOptions {
+    fn default() -> Self {
+        TessellateOptions {
+            star: StarOptions::default(),
+            solve: SolveOptions::default(),
+            ground: false,
+            fit: None,
+            intersection_tolerance: 1e-3,
+        }
+    }
 }
 
 impl TessellateOptions {
@@ -44,6 +59,29 @@ pub struct Tessellation {
     pub fit: Option<FitReport>,
     /// The unfolded pattern and its folded state; `Err` when the flat pattern overlaps.
     pub unfolded: Result<Unfolded, TessError>,
+    /// Pairs of triangles of the solved surface (the folded state's faces, same indices)
+    /// that pass through each other, see [`intersect`](super::intersect).
+    pub intersections: Vec<(usize, usize)>,
+    /// The tolerance they were found with, mm.
+    pub intersection_tolerance: f64,
+}
+
+impl Tessellation {
+    /// The solver's summary with the face-intersection count of the folded form.
+    pub fn summary(&self) -> String {
+        let found = match self.intersections.first() {
+            None => "none".to_string(),
+            Some((a, b)) => format!(
+                "{} pairs (first: triangles {a} and {b})",
+                self.intersections.len()
+            ),
+        };
+        format!(
+            "{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
+            self.report.summary(),
+            self.intersection_tolerance
+        )
+    }
 }
 
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler
@@ -89,7 +127,7 @@ pub fn disk(mesh: &PolyMesh) -> Result<HalfEdgeMesh, TessError> {
 }
 
 /// Tessellates `mesh`: star tucks (§2.1), mountain/valley by role, the solve (§3.3) with
-/// `progress` called per iteration, and the unfolding.
+/// `progress` called per iteration, the unfolding and the face-intersection check.
 pub fn tessellate(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
@@ -118,12 +156,19 @@ pub fn tessellate(
         _ => None,
     };
     let unfolded = unfold(&solved);
+    let intersections = intersecting_triangles(
+        &solved.positions,
+        &solved.triangles,
+        opts.intersection_tolerance,
+    )?;
     Ok(Tessellation {
         initial,
         mesh: solved,
         report,
         fit,
         unfolded,
+        intersections,
+        intersection_tolerance: opts.intersection_tolerance,
     })
 }
 

@@ -4,7 +4,11 @@
 //! Jacobi-preconditioned conjugate gradient over the sparse rows of [`constraints::rows`]
 //! (no dense matrix is ever formed; ε is a tiny Tikhonov term that keeps redundant rows
 //! harmless). The step length α is found by backtracking on ½‖g‖² over the rows active at
-//! the trial point. Convergence: every interior vertex developable within
+//! the trial point, starting from the longest step that moves no vertex farther than a tenth
+//! of the mean edge length. Deviation: the paper's interactive solver moves in small steps;
+//! without this cap a full first step (for instance onto the ground plane of §6) can push
+//! creases through vertex-adjacent faces, where the eq. 5–7 penalty (a necessary condition
+//! that only works from an untangled state) then holds the solve in a tangled minimum. Convergence: every interior vertex developable within
 //! [`SolveOptions::tolerance`] radians and every limit satisfied.
 
 use glam::DVec3;
@@ -12,6 +16,7 @@ use glam::DVec3;
 use super::TessError;
 use super::constraints::{self, Family, Limits, Residuals, Row};
 use super::model::TessMesh;
+use super::vertex_penalty;
 
 /// Solver settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,8 +47,8 @@ pub struct Iteration {
     /// Residuals after the step.
     pub residuals: Residuals,
     /// Active rows per family: developability, fold limit, fold sign, vertex angle, ground,
-    /// boundary (eq. 2).
-    pub active: [usize; 6],
+    /// boundary (eq. 2), vertex-adjacent penalty (eq. 5–7).
+    pub active: [usize; 7],
     /// Step length α taken.
     pub step: f64,
     /// Conjugate-gradient iterations used.
@@ -73,7 +78,8 @@ impl SolveReport {
             "{} after {} iterations\n  developability (eq. 1): max |2pi - sum theta| = {:.3e} rad \
              (start {:.3e})\n  fold angles (eq. 3): max |rho| = {:.2} deg, limit {:.2} deg; \
              wrong-sign folds: {}\n  vertex angles: min theta = {:.2} deg, limit {:.2} deg\n  \
-             boundary (eq. 2): min turning of a boundary run + pi = {:.2} deg (>= 0)",
+             boundary (eq. 2): min turning of a boundary run + pi = {:.2} deg (>= 0)\n  \
+             vertex-adjacent faces (eq. 5-7{}): illegal creases {} (start {}), max penalty {:.2e}",
             if self.converged {
                 "converged"
             } else {
@@ -92,6 +98,14 @@ impl SolveReport {
             deg(self.last.min_vertex_angle),
             deg(self.limits.min_vertex_angle),
             deg(self.last.boundary_turn),
+            if self.limits.vertex_penalty {
+                ""
+            } else {
+                ", rows off"
+            },
+            self.last.illegal_creases,
+            self.initial.illegal_creases,
+            self.last.max_penalty,
         ) + &match self.limits.ground_z {
             Some(z) => format!(
                 "\n  ground contact at z = {z:.3}: max boundary distance {:.2e}",
@@ -109,6 +123,7 @@ fn satisfied(r: &Residuals, opts: &SolveOptions) -> bool {
         && r.min_vertex_angle >= opts.limits.min_vertex_angle
         && r.ground <= GROUND_TOLERANCE
         && r.boundary_turn >= 0.0
+        && (!opts.limits.vertex_penalty || r.max_penalty <= vertex_penalty::TOLERANCE)
 }
 
 /// Largest accepted distance of a boundary vertex from the ground plane, mesh units.
@@ -142,11 +157,17 @@ pub fn solve(
     let mut x = mesh.positions.clone();
     let mut rows = constraints::rows(mesh, &x, &l);
     let mut merit = merit_of(&rows);
+    let cap = 0.1 * mean_edge(mesh, &x);
     while iterations < opts.max_iterations && !satisfied(&last, opts) {
         iterations += 1;
         let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
         let (dx, cg_iterations) = min_norm(&rows, &g, x.len());
-        let mut step = 1.0;
+        let reach = dx.iter().fold(0.0f64, |m, d| m.max(d.length()));
+        let mut step = if reach > 0.0 {
+            (cap / reach).min(1.0)
+        } else {
+            1.0
+        };
         let mut accepted = None;
         while step > 1e-6 {
             let trial: Vec<DVec3> = x.iter().zip(&dx).map(|(p, d)| *p - step * *d).collect();
@@ -183,12 +204,21 @@ pub fn solve(
     })
 }
 
+fn mean_edge(mesh: &TessMesh, x: &[DVec3]) -> f64 {
+    let total: f64 = mesh
+        .edges
+        .iter()
+        .map(|e| x[e.vertices[0] as usize].distance(x[e.vertices[1] as usize]))
+        .sum();
+    total / mesh.edges.len().max(1) as f64
+}
+
 fn merit_of(rows: &[Row]) -> f64 {
     0.5 * rows.iter().map(|r| r.value * r.value).sum::<f64>()
 }
 
-fn active_counts(rows: &[Row]) -> [usize; 6] {
-    let mut c = [0; 6];
+fn active_counts(rows: &[Row]) -> [usize; 7] {
+    let mut c = [0; 7];
     for r in rows {
         c[match r.family {
             Family::Developability => 0,
@@ -197,6 +227,7 @@ fn active_counts(rows: &[Row]) -> [usize; 6] {
             Family::VertexAngle => 3,
             Family::Ground => 4,
             Family::Boundary => 5,
+            Family::VertexPenalty => 6,
         }] += 1;
     }
     c
