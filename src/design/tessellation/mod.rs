@@ -23,6 +23,7 @@ pub mod fit;
 pub mod geometry;
 pub mod model;
 pub mod pipeline;
+pub mod rigid;
 pub mod samples;
 pub mod solver;
 pub mod star;
