@@ -58,6 +58,17 @@ pub enum RigidError {
     BadInput(String),
 }
 
+/// A face placed across a crease from its parent face; the crease line runs `a → b` with the
+/// face on its left, so a valley (positive angle) is a positive rotation about `b − a`.
+#[derive(Clone, Copy, Debug)]
+struct Link {
+    face: usize,
+    parent: usize,
+    crease: usize,
+    a: DVec3,
+    b: DVec3,
+}
+
 /// The kinematic model of a flat crease pattern.
 #[derive(Clone, Debug)]
 pub struct RigidModel {
@@ -67,8 +78,8 @@ pub struct RigidModel {
     creases: Vec<usize>,
     /// Per interior vertex: (crease, unit axis from the vertex) counter-clockwise.
     loops: Vec<Vec<(usize, DVec3)>>,
-    /// Breadth-first face order: (face, parent face, crease, axis start, axis end).
-    tree: Vec<(usize, usize, usize, DVec3, DVec3)>,
+    /// Breadth-first face order; the first entry is the root face.
+    tree: Vec<Link>,
     triangles: Vec<[usize; 3]>,
     triangle_face: Vec<usize>,
     scale: f64,
@@ -326,15 +337,15 @@ impl RigidModel {
     /// 3D vertex positions for the fold angles `rho` and the rigid transform of every face.
     pub fn positions(&self, rho: &[f64]) -> (Vec<DVec3>, Vec<(DMat3, DVec3)>) {
         let mut frames = vec![(DMat3::IDENTITY, DVec3::ZERO); self.faces.len()];
-        for &(f, parent, c, a, b) in &self.tree[1..] {
-            let (m, t) = frames[parent];
-            let r = DMat3::from_axis_angle((b - a).normalize(), rho[c]);
-            frames[f] = (m * r, m * (a - r * a) + t);
+        for l in &self.tree[1..] {
+            let (m, t) = frames[l.parent];
+            let r = DMat3::from_axis_angle((l.b - l.a).normalize(), rho[l.crease]);
+            frames[l.face] = (m * r, m * (l.a - r * l.a) + t);
         }
         let mut pos = vec![DVec3::NAN; self.flat.len()];
-        for &(f, ..) in self.tree.iter().rev() {
-            let (m, t) = frames[f];
-            for &v in &self.faces[f] {
+        for l in self.tree.iter().rev() {
+            let (m, t) = frames[l.face];
+            for &v in &self.faces[l.face] {
                 pos[v] = m * self.flat[v] + t;
             }
         }
@@ -593,7 +604,7 @@ fn face_tree(
     sides: &[Vec<(usize, usize, usize)>],
     crease_of: &HashMap<usize, usize>,
     flat: &[DVec3],
-) -> Result<Vec<(usize, usize, usize, DVec3, DVec3)>, RigidError> {
+) -> Result<Vec<Link>, RigidError> {
     let mut across: Vec<Vec<(usize, usize, usize, usize)>> = vec![Vec::new(); faces.len()];
     for (e, s) in sides.iter().enumerate() {
         if let [(f, ..), (g, ga, gb)] = s[..] {
@@ -604,14 +615,26 @@ fn face_tree(
     }
     let mut seen = vec![false; faces.len()];
     seen[0] = true;
-    let mut tree = vec![(0, 0, 0, DVec3::ZERO, DVec3::ZERO)];
+    let mut tree = vec![Link {
+        face: 0,
+        parent: 0,
+        crease: 0,
+        a: DVec3::ZERO,
+        b: DVec3::X,
+    }];
     let mut queue = VecDeque::from([0]);
     while let Some(f) = queue.pop_front() {
         for &(g, c, a, b) in &across[f] {
             if !seen[g] {
                 seen[g] = true;
                 // g traverses a → b counter-clockwise, so g lies left of a → b.
-                tree.push((g, f, c, flat[a], flat[b]));
+                tree.push(Link {
+                    face: g,
+                    parent: f,
+                    crease: c,
+                    a: flat[a],
+                    b: flat[b],
+                });
                 queue.push_back(g);
             }
         }
