@@ -222,6 +222,8 @@ fn folding_a_sheet_onto_itself_collides() {
         "{:?}",
         r.stuck
     );
+    assert_eq!(r.target_collision, Some([0, 2]));
+    assert_eq!(ok.target_collision, None);
 }
 
 #[test]
@@ -278,6 +280,7 @@ fn example_tessellations_fold_rigidly_from_flat() {
         let r = simulate(&m, &m.targets_from(&u.pattern), &opts, |_, _| {}).unwrap();
         assert!(r.reached, "{name}: {}", r.summary());
         assert!(r.final_residual < 1e-9, "{name}: {}", r.summary());
+        assert_eq!(r.target_collision, None, "{name}");
         let x = &u.folded.positions;
         let p = &r.positions;
         for i in (0..x.len()).step_by(7) {
@@ -287,4 +290,38 @@ fn example_tessellations_fold_rigidly_from_flat() {
             }
         }
     }
+}
+
+#[test]
+fn cli_reports_the_rigid_simulation() {
+    let dir = tempfile::tempdir().unwrap();
+    let mesh = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/tessellation/dome.obj");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .arg("tessellate")
+        .arg(&mesh)
+        .arg("-o")
+        .arg(dir.path().join("dome.fold"))
+        .args(["--material", "stainless-0.5", "--rigid", "20"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert!(
+        stdout.contains("rigid folding (§5): reached the target after 20 steps"),
+        "{stdout}"
+    );
+    let bad = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .arg("tessellate")
+        .arg(&mesh)
+        .arg("-o")
+        .arg(dir.path().join("bad.fold"))
+        .args(["--rigid", "0"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        bad.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&bad.stderr)
+    );
 }

@@ -118,6 +118,9 @@ pub struct RigidReport {
     pub steps: usize,
     /// Why the run stopped early, if it did.
     pub stuck: Option<Stuck>,
+    /// Two faces that intersect in the target shape itself (faces placed by the target
+    /// angles), if any: then no folding path can reach it without collision.
+    pub target_collision: Option<[usize; 2]>,
     /// The fold angles at the end, per crease (see [`RigidModel::crease_edges`]), radians.
     pub angles: Vec<f64>,
     /// Vertex positions at the end (each vertex placed by the first face that holds it), mm.
@@ -143,9 +146,13 @@ impl RigidReport {
                 None => "did not reach the target".into(),
             }
         };
+        let target = match self.target_collision {
+            Some([a, b]) => format!("; faces {a} and {b} intersect in the target shape itself"),
+            None => "; the target shape has no face intersections".into(),
+        };
         format!(
             "rigid folding (§5): {verdict} after {} steps; final angle error {:.3e} deg, \
-             max loop-closure residual {:.2e} (final {:.2e})",
+             max loop-closure residual {:.2e} (final {:.2e}){target}",
             self.steps,
             self.angle_error.to_degrees(),
             self.max_residual,
@@ -223,6 +230,7 @@ pub fn simulate(
         .zip(&rho)
         .fold(0.0f64, |m, (t, r)| m.max((t - r).abs()));
     let final_residual = model.closure_error(&rho);
+    let target_collision = model.collision(&model.positions(target).1);
     Ok(RigidReport {
         reached: stuck.is_none() && angle_error <= opts.angle_tolerance,
         angle_error,
@@ -230,6 +238,7 @@ pub fn simulate(
         final_residual,
         steps,
         stuck,
+        target_collision,
         positions: model.positions(&rho).0,
         angles: rho,
     })
