@@ -1,5 +1,5 @@
 //! Rigid-foldability check (§5): Tachi's rigid origami simulation ("Simulation of rigid
-//! origami", the paper's reference [11]) run from the flat sheet to the target fold angles.
+//! origami", the paper's reference 11) run from the flat sheet to the target fold angles.
 //!
 //! Unknowns are the fold angles ρ of all creases (FOLD sign: valley positive). Every interior
 //! vertex with creases `l_1 … l_n` in counter-clockwise order (unit directions in the flat
