@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
 use clap::ValueEnum;
+use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
 use foldcam::design::tessellation::{
     FitOptions, Limits, StarOptions, TessError, TessellateOptions, TuckLayout, tessellate,
 };
@@ -101,6 +102,9 @@ pub struct Args {
     /// Image width in pixels for the previews.
     #[arg(long, default_value_t = 800)]
     pub width: u32,
+    /// After solving, simulate rigid folding from flat to the result in STEPS increments (§5).
+    #[arg(long, value_name = "STEPS", num_args = 0..=1, default_missing_value = "100")]
+    pub rigid: Option<usize>,
 }
 
 /// Runs `foldcam tessellate`.
@@ -205,6 +209,20 @@ pub fn run(args: Args) -> Result<Outcome> {
         "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
         unfolded.max_length_error
     );
+    if let Some(steps) = args.rigid {
+        let opts = RigidOptions {
+            steps,
+            ..RigidOptions::default()
+        };
+        let model = RigidModel::new(&unfolded.pattern)?;
+        let report = simulate(
+            &model,
+            &model.targets_from(&unfolded.pattern),
+            &opts,
+            |s, r| eprintln!("  rigid step {s:4}: loop-closure residual {r:.2e}"),
+        )?;
+        println!("{}", report.summary());
+    }
     super::input::save(&args.output, &unfolded.pattern, Some(&unfolded.folded))?;
     if let Some(png) = &args.png {
         let view = View3d {

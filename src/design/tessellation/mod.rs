@@ -27,6 +27,7 @@ pub mod geometry;
 pub mod intersect;
 pub mod model;
 pub mod pipeline;
+pub mod rigid;
 pub mod samples;
 pub mod solver;
 pub mod star;
