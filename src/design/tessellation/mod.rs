@@ -15,7 +15,7 @@
 //! and a matrix-free conjugate gradient for the minimum-norm step, the surface fit of §3.4
 //! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]), the vertex-adjacent penalty
 //! (eq. 5–7, [`vertex_penalty`]) as solver rows. Not yet implemented: the §2.2 variations
-//! (truncated star, twisted star, twist fold) and the rigid-foldability simulation (§5).
+//! (truncated star, twisted star, twist fold). The rigid-foldability simulation of §5 is in `rigid`.
 //! Beyond the paper (which leaves global collisions to the user's eye), the folded form is
 //! checked exactly for intersecting faces ([`intersect`]). Boundary non-overlap (eq. 2) is a
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
