@@ -4,11 +4,8 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow};
 use clap::Subcommand;
-use foldcam::design::popup::voxel::{
-    VoxelCard, check_popup, crease_pattern, fold_card, format_voxel_card,
-};
+use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, format_voxel_card};
 use foldcam::formats::write_atomic;
-use foldcam::pattern::CreasePattern;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
@@ -103,7 +100,9 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         return Ok(Outcome::CheckFailed);
     }
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
-    let images = previews(&args, &card, &cp)?;
+    let images = card_previews(args.png.as_ref(), args.gif.as_ref(), args.width, |angle| {
+        fold_card(&card, &cp, angle).state
+    })?;
     match (&args.machine, &args.material) {
         (Some(machine), Some(material)) => {
             let (machine, material, options) = args.fab.resolve(machine, material)?;
@@ -133,29 +132,32 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     Ok(Outcome::Done)
 }
 
-/// The PNG and GIF asked for, rendered before anything is written.
-fn previews(
-    args: &VoxelArgs,
-    card: &VoxelCard,
-    cp: &CreasePattern,
+/// The PNG of a card standing at 90° and the GIF of it opening, as asked for, rendered
+/// before anything is written. `fold(angle)` gives the card's folded state at an opening angle
+/// in degrees. Shared by the voxel and polygon cards.
+pub fn card_previews(
+    png: Option<&PathBuf>,
+    gif: Option<&PathBuf>,
+    width: u32,
+    fold: impl Fn(f64) -> foldcam::pattern::FoldedState,
 ) -> Result<Vec<(PathBuf, Vec<u8>)>> {
     // The card's base runs towards +y (the paper's axes) and the renderer's azimuth 0 looks
     // from −y: look from the front-left, above, at the front of the pop-up.
     let view = View3d {
         azimuth_deg: 200.0,
         elevation_deg: 28.0,
-        ..View3d::with_width(args.width)
+        ..View3d::with_width(width)
     };
     let mut images = Vec::new();
-    if let Some(png) = &args.png {
-        let state = fold_card(card, cp, 90.0).state;
+    if let Some(png) = png {
         let bytes =
-            render_folded_png(&state, &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
+            render_folded_png(&fold(90.0), &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
         images.push((png.clone(), bytes));
     }
-    if let Some(gif) = &args.gif {
+    if let Some(gif) = gif {
+        eprintln!("foldcam: rendering 25 frames");
         let states: Vec<_> = (0..=24)
-            .map(|k| fold_card(card, cp, 5.0 + 85.0 * f64::from(k) / 24.0).state)
+            .map(|k| fold(5.0 + 85.0 * f64::from(k) / 24.0))
             .collect();
         let bytes =
             render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;

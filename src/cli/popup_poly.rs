@@ -3,12 +3,8 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow};
-use foldcam::design::popup::polygon::{
-    PolygonCard, Replay, crease_pattern, fold_card, parse_design,
-};
+use foldcam::design::popup::polygon::{Replay, crease_pattern, fold_card, parse_design};
 use foldcam::formats::{read_text, write_atomic};
-use foldcam::pattern::CreasePattern;
-use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
 
@@ -60,7 +56,10 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
     }
     let card = replay.card;
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    let images = previews(&args, &card, &cp)?;
+    let images =
+        super::popup::card_previews(args.png.as_ref(), args.gif.as_ref(), args.width, |angle| {
+            fold_card(&card, &cp, angle).state
+        })?;
     super::input::save(&args.output, &cp, None)?;
     for (path, bytes) in images {
         write_atomic(&path, &bytes).with_context(|| path.display().to_string())?;
@@ -100,36 +99,4 @@ fn report_failure(args: &PolyArgs, replay: &Replay) {
     if replay.report.problems.len() > 40 {
         println!("  … and {} more faces", replay.report.problems.len() - 40);
     }
-}
-
-/// The PNG and GIF previews asked for, rendered before anything is written.
-fn previews(
-    args: &PolyArgs,
-    card: &PolygonCard,
-    cp: &CreasePattern,
-) -> Result<Vec<(PathBuf, Vec<u8>)>> {
-    // As for the voxel card: the base runs towards +y and azimuth 0 looks from −y, so look
-    // from the front-left, above, at the front of the pop-up.
-    let view = View3d {
-        azimuth_deg: 200.0,
-        elevation_deg: 28.0,
-        ..View3d::with_width(args.width)
-    };
-    let mut images = Vec::new();
-    if let Some(png) = &args.png {
-        let state = fold_card(card, cp, 90.0).state;
-        let bytes =
-            render_folded_png(&state, &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        images.push((png.clone(), bytes));
-    }
-    if let Some(gif) = &args.gif {
-        eprintln!("foldcam: rendering 25 frames");
-        let states: Vec<_> = (0..=24)
-            .map(|k| fold_card(card, cp, 5.0 + 85.0 * f64::from(k) / 24.0).state)
-            .collect();
-        let bytes =
-            render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
-        images.push((gif.clone(), bytes));
-    }
-    Ok(images)
 }
