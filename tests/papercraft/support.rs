@@ -1,5 +1,8 @@
 //! Shared helpers: a seeded generator and polyline lengths.
 
+#[path = "../common/cuts_clean.rs"]
+mod cuts_clean;
+
 use foldcam::design::papercraft::cut_line::CutLine;
 use foldcam::mesh::PolyMesh;
 use glam::DVec3;
@@ -128,26 +131,6 @@ pub fn cube_mesh() -> PolyMesh {
 /// Plans `cp` for a diode laser on 160 g/m² paper, writes G-code and runs it on the simulated
 /// machine: no violations, every cut and crease covered as planned.
 pub fn assert_cuts_clean_on_paper(name: &str, cp: &foldcam::pattern::CreasePattern) {
-    use foldcam::fab::{PlanOptions, plan};
-    use foldcam::machine::{load_machine, load_material};
-    use foldcam::{post, sim};
     cp.validate().unwrap();
-    let machine = load_machine("grbl-diode").unwrap();
-    let material = load_material("paper-160gsm").unwrap();
-    let mut options = PlanOptions::from_material(&material);
-    options.adapt_to_machine(&machine).unwrap();
-    let p = plan(cp, &machine, &material, &options).unwrap_or_else(|e| panic!("{name}: {e}"));
-    assert!(!p.jobs.is_empty());
-    for job in &p.jobs {
-        let gcode = post::gcode(&p, job, &machine).unwrap();
-        let run = sim::run(&gcode, &machine).unwrap();
-        assert!(run.is_clean(), "{name}: {:?}", run.violations.first());
-        let cov = sim::coverage(&run, cp, job, &p);
-        assert!(
-            cov.passed(),
-            "{name}: {:?}, stray {:?}",
-            cov.failed_edges().next(),
-            cov.stray.first()
-        );
-    }
+    cuts_clean::assert_cuts_clean_on(name, cp, "grbl-diode", "paper-160gsm");
 }

@@ -1,5 +1,8 @@
 //! Helpers of the polygon pop-up tests: samples, small builders and the geometric assertions.
 
+#[path = "../common/cuts_clean.rs"]
+mod cuts_clean;
+
 use std::collections::HashMap;
 
 use foldcam::design::popup::polygon::{
@@ -7,11 +10,8 @@ use foldcam::design::popup::polygon::{
     parse_design,
 };
 use foldcam::design::popup::voxel::{self, VoxelCard};
-use foldcam::fab::{PlanOptions, plan};
 use foldcam::geom::polygon::signed_area;
-use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::{Assignment, CreasePattern, Face, FoldedState, VertexId};
-use foldcam::{post, sim};
 use glam::{DVec2, DVec3};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
@@ -245,24 +245,7 @@ pub fn assert_fold_angles(state: &FoldedState) -> usize {
 /// Plans `cp` for a diode laser on 300 g/m² card, writes G-code and runs it on the simulated
 /// machine: no violations, every crease and cut covered as planned.
 pub fn assert_cuts_clean(name: &str, cp: &CreasePattern) {
-    let machine = load_machine("grbl-diode").unwrap();
-    let material = load_material("card-300gsm").unwrap();
-    let mut options = PlanOptions::from_material(&material);
-    options.adapt_to_machine(&machine).unwrap();
-    let p = plan(cp, &machine, &material, &options).unwrap_or_else(|e| panic!("{name}: {e}"));
-    assert!(!p.jobs.is_empty());
-    for job in &p.jobs {
-        let gcode = post::gcode(&p, job, &machine).unwrap();
-        let run = sim::run(&gcode, &machine).unwrap();
-        assert!(run.is_clean(), "{name}: {:?}", run.violations.first());
-        let cov = sim::coverage(&run, cp, job, &p);
-        assert!(
-            cov.passed(),
-            "{name}: {:?}, stray {:?}",
-            cov.failed_edges().next(),
-            cov.stray.first()
-        );
-    }
+    cuts_clean::assert_cuts_clean_on(name, cp, "grbl-diode", "card-300gsm");
 }
 
 /// Eq. 4 exactly on the integer grid: pairwise intersections are empty and the areas add up
