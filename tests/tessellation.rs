@@ -2,34 +2,26 @@
 //! tilings of Fig. 5, the solver on the example surfaces (dome, saddle, bell), the unfolded
 //! crease pattern, and its fabrication on 0.5 mm stainless steel.
 
+#[path = "tessellation/checks.rs"]
+mod checks;
+#[path = "common/cuts_clean.rs"]
+mod cuts_clean;
 #[path = "tessellation/support.rs"]
 mod support;
 
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
+use checks::*;
+use cuts_clean::assert_cuts_clean_on;
 use foldcam::design::tessellation::geometry::fold_angle;
 use foldcam::design::tessellation::*;
-use foldcam::fab::{PlanOptions, plan};
-use foldcam::machine::{load_machine, load_material};
-use foldcam::mesh::{HalfEdgeMesh, PolyMesh, read_mesh};
+use foldcam::mesh::{HalfEdgeMesh, PolyMesh};
 use foldcam::pattern::{Assignment, CreasePattern};
-use foldcam::{post, sim};
 use support::*;
 
 fn half_edges(m: &PolyMesh) -> HalfEdgeMesh {
     HalfEdgeMesh::new(m, 1e-12).expect("manifold")
-}
-
-fn example(name: &str) -> PolyMesh {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("examples/tessellation/{name}.obj"));
-    read_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-}
-
-fn stainless_limits() -> Limits {
-    let m = load_material("stainless-0.5").expect("shipped material");
-    Limits::from_degrees(m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg)
 }
 
 /// Fig. 5: at s = 1 the star tucks of the regular triangle (checkerboard and digon), square and
@@ -70,6 +62,7 @@ fn regular_tilings_give_exactly_developable_initial_patterns() {
             &StarOptions {
                 shrink: 1.0,
                 layout,
+                ..StarOptions::default()
             },
         )
         .expect(name);
@@ -124,8 +117,15 @@ fn assignments_are_the_folds_of_the_half_open_tucks() {
         };
         for &layout in layouts {
             for shrink in shrinks {
-                let mut init =
-                    star_tucks(&half_edges(mesh), &StarOptions { shrink, layout }).unwrap();
+                let mut init = star_tucks(
+                    &half_edges(mesh),
+                    &StarOptions {
+                        shrink,
+                        layout,
+                        ..StarOptions::default()
+                    },
+                )
+                .unwrap();
                 assign_folds(&mut init.mesh);
                 let mut creases = 0;
                 for e in init.mesh.edges.iter().filter(|e| e.interior) {
@@ -172,58 +172,6 @@ fn solved(name: &str) -> Tessellation {
     t
 }
 
-fn check_unfolded(name: &str, t: &Tessellation) {
-    let u = t
-        .unfolded
-        .as_ref()
-        .unwrap_or_else(|e| panic!("{name}: {e}"));
-    let cp = &u.pattern;
-    cp.validate().expect("valid pattern");
-    assert!(u.max_length_error < 1e-9, "{name}: {}", u.max_length_error);
-    let faces = cp.faces.as_ref().expect("faces");
-    assert_eq!(Some(faces), u.folded.faces.as_ref());
-    // The folded form has no intersecting faces, even at a tolerance of 1 nm.
-    let crossing = folded_intersections(&u.folded, 1e-6).expect("triangles");
-    assert!(crossing.is_empty(), "{name}: {crossing:?}");
-    assert_eq!(cp.edges, u.folded.edges);
-    for e in &cp.edges {
-        let [a, b] = e.vertices;
-        let l2 = cp.position(a).distance(cp.position(b));
-        let l3 = u.folded.positions[a.index()].distance(u.folded.positions[b.index()]);
-        assert!((l2 - l3).abs() <= 1e-9 * l3, "{name}: {l2} vs {l3}");
-    }
-    let mut area = 0.0;
-    for f in faces {
-        let [p, q, r] = [0, 1, 2].map(|k| cp.position(f.outer[k]));
-        let a = 0.5 * (q - p).perp_dot(r - p);
-        assert!(a > 0.0, "{name}: a flipped face");
-        area += a;
-    }
-    // Triangles that do not overlap fill the outline's area exactly once: compare with the 3D area.
-    let area3: f64 = faces
-        .iter()
-        .map(|f| {
-            let [p, q, r] = [0, 1, 2].map(|k| u.folded.positions[f.outer[k].index()]);
-            0.5 * (q - p).cross(r - p).length()
-        })
-        .sum();
-    assert!((area - area3).abs() < 1e-9 * area3, "{name}");
-    let folds = cp.edges.iter().filter(|e| e.assignment.is_fold()).count();
-    assert!(folds > 100, "{name}: {folds} folds");
-    for e in cp.edges.iter().filter(|e| e.assignment.is_fold()) {
-        let angle = e.fold_angle.expect("target angle");
-        let sign = if e.assignment == Assignment::Valley {
-            1.0
-        } else {
-            -1.0
-        };
-        assert!(
-            angle * sign > 0.0 && angle.abs() <= 165.0,
-            "{name}: {angle}"
-        );
-    }
-}
-
 #[test]
 fn dome_converges_and_unfolds_isometrically() {
     let t = solved("dome");
@@ -249,26 +197,7 @@ fn bell_converges_and_unfolds_isometrically() {
 fn unfolded_dome_cuts_clean_on_stainless() {
     let t = solved("dome");
     let cp: &CreasePattern = &t.unfolded.as_ref().expect("unfolds").pattern;
-    let machine = load_machine("linuxcnc-fiber").expect("shipped machine");
-    let material = load_material("stainless-0.5").expect("shipped material");
-    let mut options = PlanOptions::from_material(&material);
-    options
-        .adapt_to_machine(&machine)
-        .expect("fiber laser cuts stainless");
-    let p = plan(cp, &machine, &material, &options).unwrap_or_else(|e| panic!("{e}"));
-    assert!(!p.jobs.is_empty());
-    for job in &p.jobs {
-        let gcode = post::gcode(&p, job, &machine).expect("G-code");
-        let run = sim::run(&gcode, &machine).expect("readable");
-        assert!(run.is_clean(), "{:?}", run.violations.first());
-        let cov = sim::coverage(&run, cp, job, &p);
-        assert!(
-            cov.passed(),
-            "{:?}, stray {:?}",
-            cov.failed_edges().next(),
-            cov.stray.first()
-        );
-    }
+    assert_cuts_clean_on("dome", cp, "linuxcnc-fiber", "stainless-0.5");
 }
 
 #[test]
@@ -321,8 +250,8 @@ fn foldcam(args: &[&str]) -> std::process::Output {
         .expect("runs")
 }
 
-/// The command writes a FOLD with the pattern (frame 0) and the folded form (frame 1), the two
-/// previews, and names the variations it cannot do yet instead of falling back.
+/// The command writes a FOLD with the pattern (frame 0) and the folded form (frame 1) and the two
+/// previews, and refuses out-of-range variation parameters with exit 2, writing nothing.
 #[test]
 fn cli_writes_pattern_folded_form_and_previews() {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -362,17 +291,31 @@ fn cli_writes_pattern_folded_form_and_previews() {
     for p in [png, cp_png] {
         assert!(std::fs::read(&p).expect("written").starts_with(b"\x89PNG"));
     }
-    for tuck in ["truncated", "twisted", "twist"] {
+    for (tuck, flag, value, complaint) in [
+        (
+            "truncated",
+            "--truncation",
+            "1.5",
+            "truncation must be in (0, 1)",
+        ),
+        ("twisted", "--twist", "0", "twist must be non-zero"),
+        ("twist", "--twist", "95", "within (-90, 90) degrees"),
+    ] {
+        let out = dir.path().join(format!("{tuck}.fold"));
         let run = foldcam(&[
             "tessellate",
             mesh.to_str().expect("utf-8"),
             "--tuck",
             tuck,
+            flag,
+            value,
             "-o",
-            "x.fold",
+            out.to_str().expect("utf-8"),
         ]);
-        assert_eq!(run.status.code(), Some(2));
-        assert!(String::from_utf8_lossy(&run.stderr).contains("not implemented yet"));
+        assert_eq!(run.status.code(), Some(2), "{tuck}");
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert!(stderr.contains(complaint), "{tuck}: {stderr}");
+        assert!(!out.exists(), "{tuck}: nothing written");
     }
 }
 

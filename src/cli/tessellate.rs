@@ -6,7 +6,8 @@ use anyhow::{Context, Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
 use foldcam::design::tessellation::{
-    FitOptions, Limits, StarOptions, TessError, TessellateOptions, TuckLayout, tessellate,
+    FitOptions, Limits, SHRINK_LADDER, StarOptions, TessellateOptions, Tessellation, TuckKind,
+    TuckLayout, TuckShape, tessellate_shrinking,
 };
 use foldcam::formats::write_atomic;
 use foldcam::machine::load_material;
@@ -21,11 +22,11 @@ use super::args::degrees;
 pub enum Tuck {
     /// Star tuck (§2.1).
     Star,
-    /// Truncated star (§2.2), not implemented yet.
+    /// Truncated star (§2.2): the key vertex becomes a flat n-gon (--truncation).
     Truncated,
-    /// Twisted star (§2.2), not implemented yet.
+    /// Twisted star (§2.2): a fold in each star triangle (--twist).
     Twisted,
-    /// Twist fold (§2.2), not implemented yet.
+    /// Twist fold (§2.2): a twisted star with a flat n-gon (--truncation, --twist).
     Twist,
 }
 
@@ -44,7 +45,8 @@ pub enum Layout {
 #[derive(clap::Args)]
 #[command(
     long_about = "Turns a disk-like polygon mesh (OBJ or STL, millimetres) into a Resch-like \
-                  origami tessellation (seed 002, Tachi): a star tuck behind every vertex (§2.1), \
+                  origami tessellation (seed 002, Tachi): a tuck behind every vertex (§2.1 star, \
+                  or the §2.2 truncated star, twisted star or twist fold), \
                   then a generalized Newton-Raphson solve (§3.3) for developability (eq. 1), \
                   mountain/valley fold ranges with the fold-angle limit (eq. 3, §5) and the \
                   vertex-angle limit (§5), then the unfolded crease pattern. The output FOLD \
@@ -71,9 +73,18 @@ pub struct Args {
     /// Gap layout of the star tucks.
     #[arg(long, value_enum, default_value = "auto")]
     pub layout: Layout,
-    /// Face shrink s in (0, 1]: smaller opens the tucks more.
-    #[arg(long, default_value_t = 0.8)]
-    pub shrink: f64,
+    /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6 and
+    /// 0.5 are tried in turn until the result converges without face collisions.
+    #[arg(long)]
+    pub shrink: Option<f64>,
+    /// Truncated star and twist fold: initial size of the flat n-gon, the fraction in (0, 1)
+    /// of the way from the key vertex towards each face corner (the solver then adapts it).
+    #[arg(long, default_value_t = 0.3)]
+    pub truncation: f64,
+    /// Twisted star and twist fold: initial twist about the vertex normal, degrees (non-zero,
+    /// within ±90; the sign picks the handedness).
+    #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
+    pub twist: f64,
     /// Material profile whose design limits to use (e.g. stainless-0.5).
     #[arg(short = 'x', long)]
     pub material: Option<String>,
@@ -109,14 +120,6 @@ pub struct Args {
 
 /// Runs `foldcam tessellate`.
 pub fn run(args: Args) -> Result<Outcome> {
-    if args.tuck != Tuck::Star {
-        let name = match args.tuck {
-            Tuck::Truncated => "truncated-star",
-            Tuck::Twisted => "twisted-star",
-            _ => "twist-fold",
-        };
-        return Err(TessError::NotImplemented(name).into());
-    }
     if args.max_iterations == 0 || args.max_iterations > 100_000 {
         bail!("--max-iterations must be between 1 and 100000");
     }
@@ -132,11 +135,21 @@ pub fn run(args: Args) -> Result<Outcome> {
     );
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star = StarOptions {
-        shrink: args.shrink,
+        shrink: args.shrink.unwrap_or(SHRINK_LADDER[0]),
         layout: match args.layout {
             Layout::Auto => TuckLayout::Auto,
             Layout::Checkerboard => TuckLayout::Checkerboard,
             Layout::Digon => TuckLayout::Digon,
+        },
+        tuck: TuckShape {
+            kind: match args.tuck {
+                Tuck::Star => TuckKind::Star,
+                Tuck::Truncated => TuckKind::Truncated,
+                Tuck::Twisted => TuckKind::Twisted,
+                Tuck::Twist => TuckKind::TwistFold,
+            },
+            truncation: args.truncation,
+            twist: args.twist.to_radians(),
         },
     };
     opts.solve.max_iterations = args.max_iterations;
@@ -157,7 +170,21 @@ pub fn run(args: Args) -> Result<Outcome> {
         fold = limits.max_fold.to_degrees(),
         corner = limits.min_vertex_angle.to_degrees(),
     );
-    let t = tessellate(&mesh, &opts, |it| {
+    let shrinks = args.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
+    let retry = |s: f64, t: &Tessellation| {
+        if args.shrink.is_none() {
+            let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
+                "trying a smaller shrink"
+            } else {
+                "no shrink worked; reporting the first"
+            };
+            eprintln!(
+                "foldcam: shrink {s}: {}; {next}",
+                t.problem().unwrap_or_default()
+            );
+        }
+    };
+    let t = tessellate_shrinking(&mesh, &opts, &shrinks, retry, |it| {
         eprintln!(
             "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \
              active limits {}, eq. 5-7 rows {}, step {}",
@@ -172,9 +199,11 @@ pub fn run(args: Args) -> Result<Outcome> {
     })
     .map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
     println!(
-        "{}: {:?} layout, {} vertices, {} triangles, {} interior vertices",
+        "{}: {:?} {:?} tucks, shrink {}, {} vertices, {} triangles, {} interior vertices",
         args.mesh.display(),
         t.initial.layout,
+        opts.star.tuck.kind,
+        t.initial.shrink,
         t.mesh.positions.len(),
         t.mesh.triangles.len(),
         t.mesh.interior_count()

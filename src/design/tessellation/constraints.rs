@@ -5,7 +5,11 @@
 //!   valley and −1 for a mountain and ρ' = σρ, a fold beyond the limit gets
 //!   `f = 2 (sin(ρ'/2) − sin(ρ_target/2)) h_p h_q` and a fold of the wrong sign gets
 //!   `f = 2 (sin(ρ'/2) − sin(m/2)) h_p h_q` (eq. 4: h are relative heights, Fig. 7);
-//! - vertex angles, §5: every triangle corner θ ≥ δ_corner, `θ − (δ_corner + m)` when violated;
+//! - vertex angles, §5: every angle θ between neighbouring creases ≥ δ_corner (a triangle
+//!   corner, or corners summed across flat diagonals: [`Sectors`]), `θ − (δ_corner + m)` when
+//!   violated;
+//! - flat diagonals (polygon faces, the n-gon of a truncated star) stay flat: eq. 3 with
+//!   ρ_limit = 0 as an equality;
 //! - vertex-adjacent faces, eq. 5–7: a crease passing through a face that shares only its
 //!   vertex gets the penalty row `f_o = 0` (see [`vertex_penalty`]).
 //!
@@ -21,6 +25,7 @@ use glam::DVec3;
 use super::boundary;
 use super::geometry::{corner_angle, fold_angle, relative_height};
 use super::model::{EdgeRole, TessMesh};
+use super::sectors::Sectors;
 use super::vertex_penalty;
 use crate::pattern::Assignment;
 
@@ -77,6 +82,9 @@ pub enum Family {
     Boundary,
     /// Eq. 5–7: a crease through a face that shares only its vertex.
     VertexPenalty,
+    /// A flat diagonal (of a polygon face or a truncated star's n-gon) kept flat: eq. 3's
+    /// form with ρ_limit = 0 as an equality.
+    Flat,
 }
 
 /// One constraint: its value and its Jacobian row as (vertex, ∂/∂x) blocks.
@@ -101,13 +109,33 @@ fn add(entries: &mut Vec<(u32, DVec3)>, v: u32, g: DVec3) {
 /// (the side the input faces' normals point to, with the key vertices behind): face rims,
 /// digons and key-to-corner creases are mountains, key-to-tip creases valleys, diagonals of
 /// polygon faces flat. These are the signs of the half-open initial pattern (s < 1), where the
-/// closed tucks of s = 1 leave them undecided (±180°).
+/// closed tucks of s = 1 leave them undecided (±180°). The creases the §2.2 variations add
+/// (n-gon rims, twist folds) take the sign of their fold in the initial pattern
+/// (`mesh.positions`), a valley when it is exactly flat.
 pub fn assign_folds(mesh: &mut TessMesh) {
-    for e in mesh.edges.iter_mut().filter(|e| e.interior) {
+    let by_shape: Vec<Option<Assignment>> = mesh
+        .edges
+        .iter()
+        .map(|e| {
+            matches!(e.role, EdgeRole::TruncationRim | EdgeRole::TwistFold).then(|| {
+                let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
+                if fold_angle(i, j, a, b).value >= 0.0 {
+                    Assignment::Valley
+                } else {
+                    Assignment::Mountain
+                }
+            })
+        })
+        .collect();
+    for (e, shaped) in mesh.edges.iter_mut().zip(by_shape) {
+        if !e.interior {
+            continue;
+        }
         e.assignment = match e.role {
             EdgeRole::Diagonal => Assignment::Flat,
             EdgeRole::KeyTip => Assignment::Valley,
             EdgeRole::FaceRim | EdgeRole::Digon | EdgeRole::KeyCorner => Assignment::Mountain,
+            EdgeRole::TruncationRim | EdgeRole::TwistFold => shaped.unwrap_or(Assignment::Valley),
             EdgeRole::Boundary => Assignment::Boundary,
         };
     }
@@ -150,11 +178,14 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
     let mut out = Vec::new();
     let mut boundary_angles = boundary::AngleSums::new();
     let floor = limits.min_vertex_angle + limits.margin;
-    for t in &mesh.triangles {
+    let sectors = Sectors::new(mesh);
+    let mut sector_angle = vec![0.0; sectors.count];
+    for (t, tri) in mesh.triangles.iter().enumerate() {
         for k in 0..3 {
-            let idx = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]];
+            let idx = [tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]];
             let [o, a, b] = idx.map(|v| x[v as usize]);
             let th = corner_angle(o, a, b);
+            sector_angle[sectors.of_corner[3 * t + k] as usize] += th.value;
             if let Some(row) = dev[idx[0] as usize].as_mut() {
                 row.value -= th.value;
                 for (v, g) in idx.iter().zip(th.grad) {
@@ -167,22 +198,27 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
                     add(&mut sum.1, *v, g);
                 }
             }
-            if th.value < limits.min_vertex_angle + 0.5 * limits.margin {
-                out.push(Row {
-                    family: Family::VertexAngle,
-                    value: th.value - floor,
-                    entries: idx.iter().copied().zip(th.grad).collect(),
-                });
-            }
         }
     }
+    out.extend(vertex_angle_rows(
+        mesh,
+        x,
+        &sectors,
+        &sector_angle,
+        limits,
+        floor,
+    ));
     for e in mesh.edges.iter().filter(|e| e.interior) {
         let sigma = match e.assignment {
             Assignment::Valley => 1.0,
             Assignment::Mountain => -1.0,
+            Assignment::Flat if e.role == EdgeRole::Diagonal => {
+                out.push(hinge_row(x, mesh.hinge(e), 1.0, 0.0, Family::Flat));
+                continue;
+            }
             _ => continue,
         };
-        if let Some(row) = fold_row(mesh, x, mesh.hinge(e), sigma, limits) {
+        if let Some(row) = fold_row(x, mesh.hinge(e), sigma, limits) {
             out.push(row);
         }
     }
@@ -226,18 +262,53 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
     all
 }
 
-/// Eq. 3 for one crease when its fold ρ' = σρ is past the limit or of the wrong sign.
-fn fold_row(
+/// §5 vertex-angle rows: `θ − (δ_corner + m)` for every sector (the angle between two
+/// neighbouring creases, see [`Sectors`]) under `δ_corner + m/2`.
+fn vertex_angle_rows(
     mesh: &TessMesh,
     x: &[DVec3],
-    hinge: [u32; 4],
-    sigma: f64,
+    sectors: &Sectors,
+    sector_angle: &[f64],
     limits: &Limits,
-) -> Option<Row> {
-    let _ = mesh;
+    floor: f64,
+) -> Vec<Row> {
+    let threshold = limits.min_vertex_angle + 0.5 * limits.margin;
+    let mut row_of: Vec<u32> = vec![u32::MAX; sectors.count];
+    let mut out: Vec<Row> = Vec::new();
+    for (s, &angle) in sector_angle.iter().enumerate() {
+        if angle < threshold {
+            row_of[s] = out.len() as u32;
+            out.push(Row {
+                family: Family::VertexAngle,
+                value: angle - floor,
+                entries: Vec::new(),
+            });
+        }
+    }
+    if out.is_empty() {
+        return out;
+    }
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        for k in 0..3 {
+            let r = row_of[sectors.of_corner[3 * t + k] as usize];
+            if r == u32::MAX {
+                continue;
+            }
+            let idx = [tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]];
+            let [o, a, b] = idx.map(|v| x[v as usize]);
+            let th = corner_angle(o, a, b);
+            for (v, g) in idx.iter().zip(th.grad) {
+                add(&mut out[r as usize].entries, *v, g);
+            }
+        }
+    }
+    out
+}
+
+/// Eq. 3 for one crease when its fold ρ' = σρ is past the limit or of the wrong sign.
+fn fold_row(x: &[DVec3], hinge: [u32; 4], sigma: f64, limits: &Limits) -> Option<Row> {
     let [i, j, a, b] = hinge.map(|v| x[v as usize]);
-    let rho = fold_angle(i, j, a, b);
-    let r = sigma * rho.value;
+    let r = sigma * fold_angle(i, j, a, b).value;
     let (family, target) = if r > limits.max_fold - 0.5 * limits.margin {
         (Family::FoldLimit, limits.max_fold - limits.margin)
     } else if r < 0.5 * limits.margin {
@@ -245,6 +316,15 @@ fn fold_row(
     } else {
         return None;
     };
+    Some(hinge_row(x, hinge, sigma, target, family))
+}
+
+/// Eq. 3–4: `f = 2 (sin(σρ/2) − sin(target/2)) h_p h_q` over `hinge = [i, j, a, b]`, with its
+/// gradient (eq. 8's chain rule through ρ and the relative heights).
+fn hinge_row(x: &[DVec3], hinge: [u32; 4], sigma: f64, target: f64, family: Family) -> Row {
+    let [i, j, a, b] = hinge.map(|v| x[v as usize]);
+    let rho = fold_angle(i, j, a, b);
+    let r = sigma * rho.value;
     let hp = relative_height(i, j, a);
     let hq = relative_height(j, i, b);
     let (s, st) = ((r / 2.0).sin(), (target / 2.0).sin());
@@ -263,11 +343,11 @@ fn fold_row(
     for (k, v) in [hinge[1], hinge[0], hinge[3]].iter().enumerate() {
         add(&mut entries, *v, dh * hp.value * hq.grad[k]);
     }
-    Some(Row {
+    Row {
         family,
         value,
         entries,
-    })
+    }
 }
 
 /// The worst state of each condition at `x`.
@@ -279,8 +359,11 @@ pub struct Residuals {
     pub max_fold: f64,
     /// Most negative σρ over creases (0 when every crease folds its assigned way), radians.
     pub wrong_sign: f64,
-    /// Smallest triangle corner angle, radians.
+    /// Smallest angle between neighbouring creases (a triangle corner, or corners joined
+    /// across flat diagonals: see [`Sectors`]), radians.
     pub min_vertex_angle: f64,
+    /// Largest |ρ| over the flat diagonals (0 without any), radians.
+    pub max_flat: f64,
     /// Largest distance of a boundary vertex from the ground plane (0 without one), mesh units.
     pub ground: f64,
     /// Smallest `Σ τ + π` over runs of the boundary (eq. 2 holds when ≥ 0), radians.
@@ -315,11 +398,9 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residua
             r.ground = r.ground.max((x[v].z - z).abs());
         }
     }
-    for t in &mesh.triangles {
-        for k in 0..3 {
-            let [o, a, b] = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]].map(|v| x[v as usize]);
-            r.min_vertex_angle = r.min_vertex_angle.min(corner_angle(o, a, b).value);
-        }
+    let sectors = Sectors::new(mesh);
+    for angle in sectors.angles(mesh, x) {
+        r.min_vertex_angle = r.min_vertex_angle.min(angle);
     }
     for e in mesh.edges.iter().filter(|e| e.interior) {
         let sigma = match e.assignment {
@@ -329,6 +410,9 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residua
         };
         let [i, j, a, b] = mesh.hinge(e).map(|v| x[v as usize]);
         let rho = fold_angle(i, j, a, b).value;
+        if e.role == EdgeRole::Diagonal && e.assignment == Assignment::Flat {
+            r.max_flat = r.max_flat.max(rho.abs());
+        }
         r.max_fold = r.max_fold.max(rho.abs());
         if sigma != 0.0 {
             r.wrong_sign = r.wrong_sign.min(sigma * rho);

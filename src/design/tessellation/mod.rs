@@ -3,7 +3,7 @@
 //! respects the fabrication limits, unfolded into a [`CreasePattern`](crate::pattern::CreasePattern)
 //! with its folded state.
 //!
-//! Pipeline: [`star_tucks`] inserts a star tuck at every vertex (§2.1, [`star`]);
+//! Pipeline: [`star_tucks`] inserts a tuck at every vertex (§2.1, §2.2: [`star`], [`tuck`]);
 //! [`assign_folds`] reads mountains and valleys off the half-open tucks; [`solve`] moves every
 //! vertex by generalized Newton–Raphson until the interior vertices are developable (eq. 1)
 //! and the fold-angle (eq. 3, §5) and vertex-angle (§5) limits hold ([`solver`]);
@@ -14,8 +14,10 @@
 //! the §5 vertex-angle limit, ground contact (§6), §3.3 with an analytic sparse Jacobian (eq. 8)
 //! and a matrix-free conjugate gradient for the minimum-norm step, the surface fit of §3.4
 //! (eq. 9, eq. 10 as a weighted sum of squares: see [`fit`]), the vertex-adjacent penalty
-//! (eq. 5–7, [`vertex_penalty`]) as solver rows. Not yet implemented: the §2.2 variations
-//! (truncated star, twisted star, twist fold). The rigid-foldability simulation of §5 is in `rigid`.
+//! (eq. 5–7, [`vertex_penalty`]) as solver rows, the §2.2 variations (truncated star,
+//! twisted star, twist fold: [`tuck`]) with their flat n-gons kept flat and the vertex-angle
+//! limit measured between creases ([`sectors`]). The rigid-foldability simulation of §5 is in
+//! `rigid`.
 //! Beyond the paper (which leaves global collisions to the user's eye), the folded form is
 //! checked exactly for intersecting faces ([`intersect`]). Boundary non-overlap (eq. 2) is a
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
@@ -29,8 +31,10 @@ pub mod model;
 pub mod pipeline;
 pub mod rigid;
 pub mod samples;
+pub mod sectors;
 pub mod solver;
 pub mod star;
+pub mod tuck;
 pub mod unfold;
 pub mod vertex_penalty;
 
@@ -40,10 +44,13 @@ pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals}
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
-pub use pipeline::{TessellateOptions, Tessellation, disk, tessellate};
+pub use pipeline::{
+    SHRINK_LADDER, TessellateOptions, Tessellation, disk, tessellate, tessellate_shrinking,
+};
 pub use samples::{SampleSurface, sample_surface};
 pub use solver::{Iteration, SolveOptions, SolveReport, solve};
 pub use star::{InitialPattern, StarOptions, TuckLayout, star_tucks};
+pub use tuck::{TuckKind, TuckShape};
 pub use unfold::{Unfolded, unfold};
 
 use crate::mesh::HalfEdgeError;
@@ -63,7 +70,4 @@ pub enum TessError {
     /// The developed pattern overlaps itself.
     #[error("the unfolded pattern overlaps itself (triangles {0} and {1})")]
     Overlap(usize, usize),
-    /// A requested variation of §2.2 is not implemented.
-    #[error("{0} tucks are not implemented yet (only the star tuck of §2.1 is)")]
-    NotImplemented(&'static str),
 }

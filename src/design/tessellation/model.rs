@@ -20,6 +20,11 @@ pub enum EdgeRole {
     KeyTip,
     /// A tuck crease from the key vertex to a corner of a face around the tuck's vertex.
     KeyCorner,
+    /// An edge of the flat n-gon of a truncated star or twist fold (§2.2).
+    TruncationRim,
+    /// A fold added to a star triangle by the twist (§2.2), from the twist vertex to a face
+    /// corner.
+    TwistFold,
     /// An edge on the sheet boundary.
     Boundary,
 }
@@ -52,8 +57,12 @@ pub struct TessMesh {
     pub interior: Vec<bool>,
     /// For every vertex of the input mesh, the key vertex of its tuck (if it has one).
     pub key_of_input: Vec<Option<u32>>,
-    /// For every tessellation vertex, the input vertex it comes from (a face corner or key).
+    /// For every tessellation vertex, the input vertex it comes from (a face corner or a
+    /// vertex of its tuck).
     pub input_vertex: Vec<u32>,
+    /// Vertices `0..corner_count` are corners of the (shrunk) input faces; the rest belong
+    /// to the tucks.
+    pub corner_count: usize,
 }
 
 impl TessMesh {
@@ -65,6 +74,7 @@ impl TessMesh {
         roles: &HashMap<(u32, u32), EdgeRole>,
         key_of_input: Vec<Option<u32>>,
         input_vertex: Vec<u32>,
+        corner_count: usize,
     ) -> Self {
         let mut index: HashMap<(u32, u32), usize> = HashMap::new();
         let mut edges: Vec<TessEdge> = Vec::new();
@@ -101,6 +111,7 @@ impl TessMesh {
             interior,
             key_of_input,
             input_vertex,
+            corner_count,
         }
     }
 

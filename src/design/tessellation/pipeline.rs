@@ -84,6 +84,53 @@ impl Tessellation {
     }
 }
 
+impl Tessellation {
+    /// Why the result cannot be used (not converged, a self-intersecting folded form, an
+    /// overlapping pattern), or `None` when it can.
+    pub fn problem(&self) -> Option<String> {
+        if !self.report.converged {
+            return Some("the solver did not reach every condition".into());
+        }
+        if let Some((a, b)) = self.intersections.first() {
+            return Some(format!(
+                "the folded form intersects itself ({} face pairs, first: faces {a} and {b})",
+                self.intersections.len()
+            ));
+        }
+        self.unfolded.as_ref().err().map(|e| e.to_string())
+    }
+}
+
+/// The face shrinks [`tessellate_shrinking`] tries by default, largest first.
+pub const SHRINK_LADDER: [f64; 4] = [0.8, 0.7, 0.6, 0.5];
+
+/// [`tessellate`] with each face shrink of `shrinks` in turn (overriding `opts.star.shrink`)
+/// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one
+/// before the next shrink is tried. Returns the first usable result, else the first one (the
+/// result of the shrink asked for first).
+/// This stands in for the paper's user, who avoids global face collisions (type 3, §3.2) by
+/// adjusting the design: a smaller shrink opens the tucks wider.
+pub fn tessellate_shrinking(
+    mesh: &PolyMesh,
+    opts: &TessellateOptions,
+    shrinks: &[f64],
+    mut attempt: impl FnMut(f64, &Tessellation),
+    mut progress: impl FnMut(&Iteration),
+) -> Result<Tessellation, TessError> {
+    let mut first = None;
+    for &shrink in shrinks {
+        let mut o = *opts;
+        o.star.shrink = shrink;
+        let t = tessellate(mesh, &o, &mut progress)?;
+        if t.problem().is_none() {
+            return Ok(t);
+        }
+        attempt(shrink, &t);
+        first.get_or_insert(t);
+    }
+    first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
+}
+
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler
 /// characteristic 1.
 pub fn disk(mesh: &PolyMesh) -> Result<HalfEdgeMesh, TessError> {
@@ -173,16 +220,16 @@ pub fn tessellate(
 }
 
 /// Every face corner of the initial pattern, at its initial place, with its input vertex's
-/// normal (key vertices get no target).
+/// normal (the tucks' vertices get no target).
 fn corner_targets(initial: &TessMesh, he: &HalfEdgeMesh) -> Vec<Target> {
-    (0..initial.positions.len())
-        .filter_map(|v| {
+    (0..initial.corner_count)
+        .map(|v| {
             let input = initial.input_vertex[v] as usize;
-            (initial.key_of_input[input] != Some(v as u32)).then(|| Target {
+            Target {
                 vertex: v as u32,
                 point: initial.positions[v],
                 normal: he.vertex_normal(input),
-            })
+            }
         })
         .collect()
 }

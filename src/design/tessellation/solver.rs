@@ -47,8 +47,8 @@ pub struct Iteration {
     /// Residuals after the step.
     pub residuals: Residuals,
     /// Active rows per family: developability, fold limit, fold sign, vertex angle, ground,
-    /// boundary (eq. 2), vertex-adjacent penalty (eq. 5–7).
-    pub active: [usize; 7],
+    /// boundary (eq. 2), vertex-adjacent penalty (eq. 5–7), flat diagonals.
+    pub active: [usize; 8],
     /// Step length α taken.
     pub step: f64,
     /// Conjugate-gradient iterations used.
@@ -78,6 +78,7 @@ impl SolveReport {
             "{} after {} iterations\n  developability (eq. 1): max |2pi - sum theta| = {:.3e} rad \
              (start {:.3e})\n  fold angles (eq. 3): max |rho| = {:.2} deg, limit {:.2} deg; \
              wrong-sign folds: {}\n  vertex angles: min theta = {:.2} deg, limit {:.2} deg\n  \
+             flat diagonals: max |rho| = {:.1e} rad\n  \
              boundary (eq. 2): min turning of a boundary run + pi = {:.2} deg (>= 0)\n  \
              vertex-adjacent faces (eq. 5-7{}): illegal creases {} (start {}), max penalty {:.2e}",
             if self.converged {
@@ -97,6 +98,7 @@ impl SolveReport {
             },
             deg(self.last.min_vertex_angle),
             deg(self.limits.min_vertex_angle),
+            self.last.max_flat,
             deg(self.last.boundary_turn),
             if self.limits.vertex_penalty {
                 ""
@@ -123,8 +125,12 @@ fn satisfied(r: &Residuals, opts: &SolveOptions) -> bool {
         && r.min_vertex_angle >= opts.limits.min_vertex_angle
         && r.ground <= GROUND_TOLERANCE
         && r.boundary_turn >= 0.0
+        && r.max_flat <= FLAT_TOLERANCE
         && (!opts.limits.vertex_penalty || r.max_penalty <= vertex_penalty::TOLERANCE)
 }
+
+/// Largest accepted fold of a flat diagonal, radians.
+pub const FLAT_TOLERANCE: f64 = 1e-9;
 
 /// Largest accepted distance of a boundary vertex from the ground plane, mesh units.
 pub const GROUND_TOLERANCE: f64 = 1e-9;
@@ -217,8 +223,8 @@ fn merit_of(rows: &[Row]) -> f64 {
     0.5 * rows.iter().map(|r| r.value * r.value).sum::<f64>()
 }
 
-fn active_counts(rows: &[Row]) -> [usize; 7] {
-    let mut c = [0; 7];
+fn active_counts(rows: &[Row]) -> [usize; 8] {
+    let mut c = [0; 8];
     for r in rows {
         c[match r.family {
             Family::Developability => 0,
@@ -228,6 +234,7 @@ fn active_counts(rows: &[Row]) -> [usize; 7] {
             Family::Ground => 4,
             Family::Boundary => 5,
             Family::VertexPenalty => 6,
+            Family::Flat => 7,
         }] += 1;
     }
     c

@@ -1,4 +1,5 @@
-//! The initial pattern (§2.1): a star tuck inserted at every vertex of the input mesh.
+//! The initial pattern (§2.1): a tuck inserted at every vertex of the input mesh — the star
+//! of §2.1 or one of the §2.2 variations, built from the gaps described here by [`tuck`].
 //!
 //! Every face keeps its own corners; the corner of face `f` at vertex `v` is named by the
 //! half-edge of `f` leaving `v`. For the half-edge `h = v → w` of face `f` whose twin
@@ -19,7 +20,8 @@
 //! The key vertex `k_v` lies behind the surface, `d = l·cot(π/n)` along the area-weighted
 //! vertex normal, with `l` the mean length of the edges at `v` and `n` the number of star
 //! points; this makes the regular triangle, square and hexagon tilings exactly developable at
-//! `s = 1` (Fig. 5). Then every input face is shrunk by `s` about its centroid.
+//! `s = 1` (Fig. 5). Then every input face is shrunk by `s` about its centroid. The variations
+//! start from the same key vertex (see [`tuck`]).
 //!
 //! Deviations, all where the paper says nothing: a boundary vertex gets a partial star whose
 //! `n` is the number of faces around it scaled to a full turn (`faces · 2π / Σ face angles`,
@@ -35,6 +37,7 @@ use glam::DVec3;
 
 use super::TessError;
 use super::model::{EdgeRole, TessMesh};
+use super::tuck::{self, Arm, Builder, TuckShape};
 use crate::mesh::HalfEdgeMesh;
 
 /// How gaps are chosen (§2.1).
@@ -56,6 +59,8 @@ pub struct StarOptions {
     pub shrink: f64,
     /// Gap layout.
     pub layout: TuckLayout,
+    /// Tuck structure (§2.1 star or a §2.2 variation) and its parameters.
+    pub tuck: TuckShape,
 }
 
 impl Default for StarOptions {
@@ -63,6 +68,7 @@ impl Default for StarOptions {
         StarOptions {
             shrink: 0.8,
             layout: TuckLayout::Auto,
+            tuck: TuckShape::default(),
         }
     }
 }
@@ -78,6 +84,8 @@ pub struct InitialPattern {
     pub depth: Vec<Option<f64>>,
     /// Star points n per input vertex (0: no tuck).
     pub points: Vec<usize>,
+    /// The face shrink s used.
+    pub shrink: f64,
 }
 
 /// Inserts star tucks into `mesh` (§2.1). Errors: `shrink` outside (0, 1], a checkerboard
@@ -89,6 +97,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
             opts.shrink
         )));
     }
+    opts.tuck.validate().map_err(TessError::BadParameter)?;
     let colours = checkerboard_colours(mesh);
     let layout = match (opts.layout, colours.is_some()) {
         (TuckLayout::Checkerboard, false) => {
@@ -138,17 +147,24 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         sums[id as usize].0 += p;
         sums[id as usize].1 += 1.0;
     }
-    let mut positions: Vec<DVec3> = sums.iter().map(|(p, n)| *p / *n).collect();
+    let positions: Vec<DVec3> = sums.iter().map(|(p, n)| *p / *n).collect();
     let corner = |h: u32| vertex_of_corner[h as usize];
 
-    let mut triangles = Vec::new();
-    let mut roles = HashMap::new();
+    let corner_count = positions.len();
+    let mut b = Builder {
+        positions,
+        triangles: Vec::new(),
+        roles: HashMap::new(),
+        input_vertex,
+    };
     for f in 0..mesh.faces().len() {
         let hs: Vec<u32> = mesh.face_half_edges(f).collect();
         for k in 1..hs.len() - 1 {
-            triangles.push([corner(hs[0]), corner(hs[k]), corner(hs[k + 1])]);
+            b.triangles
+                .push([corner(hs[0]), corner(hs[k]), corner(hs[k + 1])]);
             if k > 1 {
-                roles.insert((corner(hs[0]), corner(hs[k])), EdgeRole::Diagonal);
+                b.roles
+                    .insert((corner(hs[0]), corner(hs[k])), EdgeRole::Diagonal);
             }
         }
     }
@@ -157,41 +173,57 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
     let mut depth = vec![None; nv];
     let mut points = vec![0; nv];
     for v in 0..nv {
-        let fan = mesh.fan(v);
-        let tucked: Vec<u32> = fan.iter().copied().filter(|&h| opens(h as usize)).collect();
-        if tucked.is_empty() {
+        let arms: Vec<Arm> = mesh
+            .fan(v)
+            .iter()
+            .copied()
+            .filter(|&h| opens(h as usize))
+            .filter_map(|h| {
+                let e = hes[h as usize];
+                let t = e.twin?;
+                Some(Arm {
+                    own: corner(h),
+                    tip: corner(e.next),
+                    other: corner(hes[t as usize].next),
+                })
+            })
+            .collect();
+        if arms.is_empty() {
             continue;
         }
-        let n = star_points(mesh, v, tucked.len(), layout);
+        let (arms, cyclic) = tuck::chain(&arms).ok_or_else(|| {
+            TessError::BadParameter(format!(
+                "the gaps at input vertex {v} do not form one chain (a non-manifold vertex?)"
+            ))
+        })?;
+        let n = star_points(mesh, v, arms.len(), layout);
         let l = mean_edge_length(mesh, v);
         let d = l / (PI / n).tan();
-        let k = positions.len() as u32;
-        positions.push(mesh.positions()[v] - d * mesh.vertex_normal(v));
-        input_vertex.push(v as u32);
-        key_of_input[v] = Some(k);
+        let normal = mesh.vertex_normal(v);
+        let key = mesh.positions()[v] - d * normal;
+        key_of_input[v] = tuck::insert(&mut b, v as u32, key, normal, &arms, cyclic, &opts.tuck);
         depth[v] = Some(d);
-        points[v] = tucked.len();
-        for h in tucked {
-            let e = hes[h as usize];
-            let Some(t) = e.twin else { continue };
-            let tip = corner(e.next);
-            let (own, other) = (corner(h), corner(hes[t as usize].next));
-            triangles.push([k, tip, own]);
-            triangles.push([k, other, tip]);
-            roles.insert((k, tip), EdgeRole::KeyTip);
-            roles.insert((k, own), EdgeRole::KeyCorner);
-            roles.insert((k, other), EdgeRole::KeyCorner);
-            if layout == TuckLayout::Digon {
-                roles.insert((other, tip), EdgeRole::Digon);
+        points[v] = arms.len();
+        if layout == TuckLayout::Digon {
+            for a in &arms {
+                b.roles.insert((a.other, a.tip), EdgeRole::Digon);
             }
         }
     }
-    let tess = TessMesh::from_triangles(positions, triangles, &roles, key_of_input, input_vertex);
+    let tess = TessMesh::from_triangles(
+        b.positions,
+        b.triangles,
+        &b.roles,
+        key_of_input,
+        b.input_vertex,
+        corner_count,
+    );
     Ok(InitialPattern {
         mesh: tess,
         layout,
         depth,
         points,
+        shrink: opts.shrink,
     })
 }
 

@@ -254,6 +254,7 @@ mod tests {
             &HashMap::new(),
             Vec::new(),
             Vec::new(),
+            0,
         )
     }
 
