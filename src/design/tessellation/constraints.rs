@@ -246,14 +246,12 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
     }
     if limits.vertex_penalty {
         for fan in vertex_penalty::fans(mesh) {
-            for c in vertex_penalty::creases(x, &fan) {
-                if c.illegal {
-                    out.push(Row {
-                        family: Family::VertexPenalty,
-                        value: c.penalty,
-                        entries: c.grad,
-                    });
-                }
+            for c in vertex_penalty::illegal_creases(x, &fan) {
+                out.push(Row {
+                    family: Family::VertexPenalty,
+                    value: c.penalty,
+                    entries: c.grad,
+                });
             }
         }
     }

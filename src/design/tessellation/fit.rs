@@ -17,8 +17,9 @@ use glam::DVec3;
 
 use super::TessError;
 use super::constraints;
+use super::min_norm::{min_norm, times};
 use super::model::TessMesh;
-use super::solver::{SolveOptions, min_norm, solve, times};
+use super::solver::{SolveOptions, solve};
 
 /// A vertex pulled towards a target point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,7 +109,7 @@ pub fn fit_surface(
             dx0[t.vertex as usize] = -g;
         }
         let rows = constraints::rows(mesh, x, &solve_opts.limits);
-        let (correction, _) = min_norm(&rows, &times(&rows, &dx0), x.len());
+        let (correction, _) = min_norm(&rows, &times(&rows, &dx0), x.len(), 1e-12);
         let mut trial = mesh.clone();
         for (p, (a, c)) in trial.positions.iter_mut().zip(dx0.iter().zip(&correction)) {
             *p += alpha * (*a - *c); // eq. 9

@@ -27,6 +27,7 @@ pub mod constraints;
 pub mod fit;
 pub mod geometry;
 pub mod intersect;
+mod min_norm;
 pub mod model;
 pub mod pipeline;
 pub mod rigid;

@@ -133,6 +133,16 @@ fn folds(x: &[DVec3], fan: &Fan) -> Vec<f64> {
 
 /// The creases of `fan` at `x` that can be classified, with their penalties (eq. 5–7).
 pub fn creases(x: &[DVec3], fan: &Fan) -> Vec<Crease> {
+    classified(x, fan, false)
+}
+
+/// Only the illegal creases of `fan` at `x`, with their penalties: what the solver rows and
+/// [`measure`] need, without the penalty work for legal creases.
+pub fn illegal_creases(x: &[DVec3], fan: &Fan) -> Vec<Crease> {
+    classified(x, fan, true)
+}
+
+fn classified(x: &[DVec3], fan: &Fan, only_illegal: bool) -> Vec<Crease> {
     let n = fan.ring.len();
     let Some((e, len)) = directions(x, fan) else {
         return Vec::new();
@@ -149,8 +159,8 @@ pub fn creases(x: &[DVec3], fan: &Fan) -> Vec<Crease> {
             continue;
         }
         // Derived chain: e_{o+1}, …, e_{o−1}, closed by the sector (e_{o−1}, e_{o+1}).
-        let chain: Vec<usize> = (1..n).map(|k| (o + k) % n).collect();
-        let arcs = || (0..chain.len()).map(|k| (chain[k], chain[(k + 1) % chain.len()]));
+        let arcs = || (1..n).map(|k| ((o + k) % n, (o + k % (n - 1) + 1) % n));
+        // Eq. 5: the signed view angles of the derived fan's sectors sum to 2π (inside) or 0.
         let winding: f64 = arcs()
             .map(|(i, j)| {
                 let (a, b) = (e[o].cross(e[i]), e[o].cross(e[j]));
@@ -161,6 +171,9 @@ pub fn creases(x: &[DVec3], fan: &Fan) -> Vec<Crease> {
         let inside = (winding.round() - sigma).abs() < 0.5;
         let r = sigma * rho[o];
         let illegal = (r > 0.0 && inside) || (r < 0.0 && !inside);
+        if only_illegal && !illegal {
+            continue;
+        }
         let (penalty, unit_grad) = harmonic_penalty(&e, o, arcs());
         let mut grad: Vec<(u32, DVec3)> = Vec::new();
         for (k, g) in unit_grad {
@@ -230,7 +243,7 @@ pub fn measure(x: &[DVec3], fans: &[Fan]) -> (usize, f64) {
     let mut count = 0;
     let mut worst = 0.0f64;
     for fan in fans {
-        for c in creases(x, fan).into_iter().filter(|c| c.illegal) {
+        for c in illegal_creases(x, fan) {
             count += 1;
             worst = worst.max(c.penalty);
         }
