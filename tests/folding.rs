@@ -18,6 +18,9 @@ use foldcam::pattern::Assignment;
 use foldcam::{post, sim};
 use glam::{DVec2, DVec3};
 
+#[path = "folding/tuck_blocked.rs"]
+mod tuck_blocked;
+
 const EXAMPLES: [&str; 4] = [
     "paper-airplane.toml",
     "waterbomb-base.toml",
