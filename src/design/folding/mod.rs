@@ -27,9 +27,12 @@
 //! - §4.5 gives no table for the new stack; the rules used are in [`operation`]'s docs (bend:
 //!   reversed on the turning side; tuck-in: each half reversed next to its hinge; fold-up: a new
 //!   group, or the side of arrival when landing on an existing plane).
-//! - A fold moves faces of one layer plane only (as §4.5 assumes); a face of another plane
-//!   attached beyond the fold line is an error, not moved along. Collisions between faces of
-//!   different planes are not checked.
+//! - The fold line lies in one layer plane and splits faces of that plane only. Faces of
+//!   other planes joined beyond the line are carried along rigidly with everything joined to
+//!   them (§4.1 ②); one also joined to the stationary side refuses the fold, and tuck-ins carry
+//!   nothing. Carried faces keep their stack order and join the group of the plane they land
+//!   in on the side they arrive from (judged at their centre), or make a new group. Collisions
+//!   between faces of different planes are not checked.
 //! - Tuck-ins are 180° and symmetric (the paper's restriction), with the moving layers split
 //!   into a lower and an upper half of equal count.
 //! - Edge-onto-edge snapping applies to bends only; a snapped drag's destination is the image

@@ -19,7 +19,7 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
 use super::geometry::{Line2, clip, contains, double_area, plane_basis};
-use super::search::{Layer, Turning, moving_faces};
+use super::search::{Layer, Moving, Turning, moving_faces};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
 use crate::pattern::MAX_COORDINATE;
@@ -100,22 +100,21 @@ impl Folding {
         };
         let layer = Layer::new(self, &state, group, frame, line, side);
         let seeds = self.seeds(&layer, fold, to_plane(fold.moving), turning);
-        let (moving, out_of_plane) = moving_faces(self, &state, &layer, &seeds, turning);
-        if out_of_plane {
-            return Err(FoldError::AttachedOutOfPlane);
-        }
+        let search = moving_faces(self, &state, &layer, &seeds, turning)?;
+        let moving = &search.in_layer;
         if !moving.iter().any(|&m| m) {
             return Err(FoldError::LineMissesSheet(
                 "no face reaches the moving side",
             ));
         }
-        if (0..moving.len()).all(|i| moving[i] && layer.fixed_part[i].is_empty()) {
+        let whole_layer = (0..moving.len()).all(|i| moving[i] && layer.fixed_part[i].is_empty());
+        if whole_layer && layer.stack.len() + search.carried.len() == state.faces.len() {
             return Err(FoldError::LineMissesSheet(
-                "the whole layer lies on the moving side",
+                "the whole paper lies on the moving side",
             ));
         }
         if turning == Turning::Tuck {
-            check_tuck(&layer, &moving, self.tol)?;
+            check_tuck(&layer, moving, self.tol)?;
         }
         let split = (0..moving.len())
             .filter(|&i| moving[i] && !layer.fixed_part[i].is_empty())
@@ -125,12 +124,12 @@ impl Folding {
         }
         let hinge = layer_hinge(&layer, angle);
         let report = FoldReport {
-            moved: moving.iter().filter(|&&m| m).count(),
+            moved: moving.iter().filter(|&&m| m).count() + search.carried.len(),
             split,
             angle_deg: angle.to_degrees(),
         };
         let summary = summary(fold.turn, &report);
-        let next = self.apply(state, &layer, &moving, &hinge, turning);
+        let next = self.apply(state, &layer, &search, &hinge, turning);
         self.push(name, summary, next);
         Ok(report)
     }
@@ -190,18 +189,20 @@ impl Folding {
         }
     }
 
-    /// The state after the fold: faces split and moved, stacks updated.
+    /// The state after the fold: faces split and moved, carried faces moved, stacks updated.
     fn apply(
         &mut self,
         mut state: State,
         layer: &Layer,
-        moving: &[bool],
+        search: &Moving,
         hinge: &Hinge,
         turning: Turning,
     ) -> State {
+        let moving = &search.in_layer;
         let rotation = hinge.motion();
         let step = self.steps.len();
-        // Stack of the folded group after splitting: (face index, moving?) bottom first.
+        let carried = carry(&mut state, &search.carried, rotation);
+        // Stack of the folded group after splitting, bottom first.
         // Entries: (face, moving?, stack position before the fold).
         let mut stack: Vec<(usize, bool, usize)> = Vec::with_capacity(layer.stack.len() * 2);
         for (i, &f) in layer.stack.iter().enumerate() {
@@ -226,10 +227,26 @@ impl Folding {
             Turning::Towards(_) => {
                 group.stack = stack.iter().filter(|s| !s.1).map(|s| s.0).collect();
                 let old = (group.origin, group.normal);
-                land(&mut state.groups, old, block, hinge, self.tol);
+                let arrival = hinge.arrival(rotation.transform_vector3(hinge.outward));
+                land(&mut state.groups, old, block, rotation, arrival, self.tol);
             }
         }
+        for (plane, block) in carried {
+            let centre = self.centre(&state, &block);
+            let arrival = hinge.arrival(centre - hinge.point);
+            land(&mut state.groups, plane, block, rotation, arrival, self.tol);
+        }
+        state.groups.retain(|g| !g.stack.is_empty());
         state
+    }
+
+    /// The mean of the corners of `faces`, in space.
+    fn centre(&self, state: &State, faces: &[usize]) -> DVec3 {
+        let corners: Vec<DVec3> = faces
+            .iter()
+            .flat_map(|&f| self.corners(&state.faces[f]))
+            .collect();
+        corners.iter().sum::<DVec3>() / corners.len().max(1) as f64
     }
 
     /// Splits face `f` along the fold line: `f` keeps the stationary part, a new face (returned)
@@ -353,6 +370,32 @@ pub(super) fn contains_either(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
         let rev: Vec<DVec2> = poly.iter().rev().copied().collect();
         contains(&rev, p, tol)
     }
+}
+
+/// Moves the carried faces (faces of other groups) by `rotation` and takes them out of their
+/// groups' stacks: returns, per group that lost faces, its plane (origin, normal) before the
+/// fold and the carried faces in its stack order. Emptied groups stay, empty, until the end.
+fn carry(
+    state: &mut State,
+    carried: &[usize],
+    rotation: DAffine3,
+) -> Vec<((DVec3, DVec3), Vec<usize>)> {
+    let mut is_carried = vec![false; state.faces.len()];
+    for &c in carried {
+        is_carried[c] = true;
+        let t = state.faces[c].transform;
+        state.faces[c].transform = rotation * t;
+    }
+    let mut out = Vec::new();
+    for group in &mut state.groups {
+        let (block, kept): (Vec<usize>, Vec<usize>) =
+            group.stack.iter().partition(|&&f| is_carried[f]);
+        if !block.is_empty() {
+            group.stack = kept;
+            out.push(((group.origin, group.normal), block));
+        }
+    }
+    out
 }
 
 /// The turn of the moving side by `angle` radians (positive towards the normal).

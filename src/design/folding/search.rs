@@ -9,9 +9,16 @@
 //!   both of theirs;
 //!
 //! repeated until nothing changes; the rest stay (⑤). Overlap tests use bounding boxes first.
+//!
+//! Faces of other planes (other face groups) joined to a moving face by an edge beyond the
+//! fold line are carried along rigidly, and so is every face joined to a carried one (rule ②
+//! across planes: the fold line lies in one plane and cuts no other). A carried face joined
+//! beyond the line to a face of the folded group makes that face move; one joined to the
+//! stationary side holds the paper fast, and the fold is refused. Tuck-ins carry nothing.
 
 use glam::{DVec2, DVec3};
 
+use super::FoldError;
 use super::geometry::{Line2, clip, overlaps};
 use super::state::{Folding, State};
 
@@ -103,24 +110,18 @@ impl Layer {
         overlaps(&self.moving_part[a], &self.moving_part[b], tol)
     }
 
-    /// Whether the face at stack position `a` shares `edge` (a sheet segment) with a neighbour
-    /// on the moving side.
-    fn joined_beyond_line(
-        &self,
-        folding: &Folding,
-        state: &State,
-        a: usize,
-        edge: (DVec2, DVec2),
-    ) -> bool {
-        let (p, q) = edge;
-        let t = &state.faces[self.stack[a]].transform;
+    /// The smallest and largest signed distance, positive on the moving side, of the ends of
+    /// `edge` (a sheet segment of face `face`) from the fold line, once placed in the plane.
+    fn edge_sides(&self, state: &State, face: usize, edge: (DVec2, DVec2)) -> (f64, f64) {
+        let t = &state.faces[face].transform;
         let side = |s: DVec2| {
             self.side
                 * self
                     .line
                     .side(self.to_plane(t.transform_point3(s.extend(0.0))))
         };
-        side(p).max(side(q)) > folding.tol
+        let (p, q) = (side(edge.0), side(edge.1));
+        (p.min(q), p.max(q))
     }
 }
 
@@ -132,15 +133,25 @@ fn bounds(poly: &[DVec2]) -> (DVec2, DVec2) {
     )
 }
 
-/// The moving faces, as a flag per stack position, from the seed positions (§4.1 ①–⑤).
-/// Also returns whether a moving face is joined beyond the line to a face of another group.
+/// The result of the search: who moves.
+pub(super) struct Moving {
+    /// Per stack position of the folded group: whether the face (its moving part) turns.
+    pub in_layer: Vec<bool>,
+    /// Faces of other groups carried along rigidly (indices into [`State::faces`]).
+    pub carried: Vec<usize>,
+}
+
+/// The moving faces from the seed positions (§4.1 ①–⑤), and the faces of other planes they
+/// carry along. Errors: a carried face is also joined to the stationary side
+/// ([`FoldError::CarriedFaceHeld`]), or a tuck-in would carry one
+/// ([`FoldError::AttachedOutOfPlane`]).
 pub(super) fn moving_faces(
     folding: &Folding,
     state: &State,
     layer: &Layer,
     seeds: &[usize],
     turning: Turning,
-) -> (Vec<bool>, bool) {
+) -> Result<Moving, FoldError> {
     let n = layer.stack.len();
     let tol = folding.tol;
     let mut pos = vec![usize::MAX; state.faces.len()];
@@ -156,39 +167,70 @@ pub(super) fn moving_faces(
         }
     }
     let every_candidate_moves = (0..n).all(|i| moving[i] || layer.moving_part[i].is_empty());
-    let mut out_of_plane = false;
+    let mut is_carried = vec![false; state.faces.len()];
+    let mut carried: Vec<usize> = Vec::new();
+    let mut next_carried = 0;
     loop {
-        while let Some(a) = queue.pop() {
-            // ② edge-connected on the moving side.
-            for n in &state.faces[layer.stack[a]].neighbours {
-                let b = pos[n.face];
-                if b == usize::MAX {
-                    out_of_plane |= layer.joined_beyond_line(folding, state, a, n.edge);
-                    continue;
-                }
-                if every_candidate_moves {
-                    continue;
-                }
-                if !moving[b] && layer.joined_beyond_line(folding, state, a, n.edge) {
-                    moving[b] = true;
-                    queue.push(b);
-                }
-            }
-            // ③ overlapping on the rotation side.
-            if let Turning::Towards(sign) = turning {
-                if every_candidate_moves {
-                    continue;
-                }
-                // Only the faces beyond `a` on the turning side.
-                let beyond = if sign > 0.0 { a + 1..n } else { 0..a };
-                for b in beyond {
-                    if !moving[b]
-                        && !layer.moving_part[b].is_empty()
-                        && layer.moving_overlap(a, b, tol)
-                    {
+        loop {
+            while let Some(a) = queue.pop() {
+                let fa = layer.stack[a];
+                // ② edge-connected on the moving side.
+                for n in &state.faces[fa].neighbours {
+                    let b = pos[n.face];
+                    if b == usize::MAX {
+                        if !is_carried[n.face] && layer.edge_sides(state, fa, n.edge).1 > tol {
+                            is_carried[n.face] = true;
+                            carried.push(n.face);
+                        }
+                        continue;
+                    }
+                    if every_candidate_moves {
+                        continue;
+                    }
+                    if !moving[b] && layer.edge_sides(state, fa, n.edge).1 > tol {
                         moving[b] = true;
                         queue.push(b);
                     }
+                }
+                // ③ overlapping on the rotation side.
+                if let Turning::Towards(sign) = turning {
+                    if every_candidate_moves {
+                        continue;
+                    }
+                    // Only the faces beyond `a` on the turning side.
+                    let beyond = if sign > 0.0 { a + 1..n } else { 0..a };
+                    for b in beyond {
+                        if !moving[b]
+                            && !layer.moving_part[b].is_empty()
+                            && layer.moving_overlap(a, b, tol)
+                        {
+                            moving[b] = true;
+                            queue.push(b);
+                        }
+                    }
+                }
+            }
+            // Faces of other planes: carried with their neighbours.
+            let Some(&c) = carried.get(next_carried) else {
+                break;
+            };
+            next_carried += 1;
+            for n in &state.faces[c].neighbours {
+                let b = pos[n.face];
+                if b == usize::MAX {
+                    if !is_carried[n.face] {
+                        is_carried[n.face] = true;
+                        carried.push(n.face);
+                    }
+                    continue;
+                }
+                let (lo, hi) = layer.edge_sides(state, n.face, n.edge);
+                if lo < -tol {
+                    return Err(FoldError::CarriedFaceHeld);
+                }
+                if hi > tol && !moving[b] {
+                    moving[b] = true;
+                    queue.push(b);
                 }
             }
         }
@@ -202,7 +244,13 @@ pub(super) fn moving_faces(
         }
         queue = added;
     }
-    (moving, out_of_plane)
+    if turning == Turning::Tuck && !carried.is_empty() {
+        return Err(FoldError::AttachedOutOfPlane);
+    }
+    Ok(Moving {
+        in_layer: moving,
+        carried,
+    })
 }
 
 /// Rule ④: faces between two moving ones whose moving part overlaps both; returns those added.

@@ -96,18 +96,25 @@ impl Hinge {
     pub fn motion(&self) -> DAffine3 {
         rotation_about(self.point, self.axis, self.angle)
     }
+
+    /// The direction a point at `offset` from the hinge point (after the turn) moves in at
+    /// the end of the turn.
+    pub fn arrival(&self, offset: DVec3) -> DVec3 {
+        self.axis.cross(offset) * self.angle.signum()
+    }
 }
 
-/// Puts the turned block of faces (old stack order) into the group whose plane it now lies in,
-/// on the side it arrives from, or into a new group.
+/// Puts a turned block of faces (in their old stack order; `old` is their plane before the
+/// turn `rotation`) into the group whose plane they now lie in, on the side they arrive from
+/// (`arrival`: the direction they move in at the end of the turn), or into a new group.
 pub(super) fn land(
     groups: &mut Vec<FaceGroup>,
     old: (DVec3, DVec3),
     mut block: Vec<usize>,
-    hinge: &Hinge,
+    rotation: DAffine3,
+    arrival: DVec3,
     tol: f64,
 ) {
-    let rotation = hinge.motion();
     let origin = rotation.transform_point3(old.0);
     let normal = rotation.transform_vector3(old.1).normalize();
     let target = groups.iter().position(|g| {
@@ -125,10 +132,7 @@ pub(super) fn land(
     if normal.dot(g.normal) < 0.0 {
         block.reverse();
     }
-    // Arrival side: the velocity of a moving point at the end of the turn.
-    let landed = rotation.transform_vector3(hinge.outward);
-    let velocity = hinge.axis.cross(landed) * hinge.angle.signum();
-    if velocity.dot(g.normal) <= 0.0 {
+    if arrival.dot(g.normal) <= 0.0 {
         g.stack.extend(block);
     } else {
         block.extend(g.stack.iter().copied());
