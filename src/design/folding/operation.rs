@@ -18,7 +18,7 @@
 use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{Line2, clip, contains, double_area, plane_basis};
+use super::geometry::{Line2, contains_either, double_area, plane_basis, split_into};
 use super::search::{Layer, Moving, Turning, moving_faces};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
@@ -107,7 +107,7 @@ impl Folding {
                 "no face reaches the moving side",
             ));
         }
-        let whole_layer = (0..moving.len()).all(|i| moving[i] && layer.fixed_part[i].is_empty());
+        let whole_layer = (0..moving.len()).all(|i| moving[i] && layer.fixed_part(i).is_empty());
         if whole_layer && layer.stack.len() + search.carried.len() == state.faces.len() {
             return Err(FoldError::LineMissesSheet(
                 "the whole paper lies on the moving side",
@@ -117,7 +117,7 @@ impl Folding {
             check_tuck(&layer, moving, self.tol)?;
         }
         let split = (0..moving.len())
-            .filter(|&i| moving[i] && !layer.fixed_part[i].is_empty())
+            .filter(|&i| moving[i] && !layer.fixed_part(i).is_empty())
             .count();
         if state.faces.len() + split > MAX_FACES {
             return Err(FoldError::TooManyFaces(MAX_FACES));
@@ -162,20 +162,20 @@ impl Folding {
 
     /// Stack positions of the seed faces.
     fn seeds(&self, layer: &Layer, fold: &Fold, at: DVec2, turning: Turning) -> Vec<usize> {
-        let candidates = (0..layer.stack.len()).filter(|&i| !layer.moving_part[i].is_empty());
+        let candidates = (0..layer.stack.len()).filter(|&i| !layer.moving_part(i).is_empty());
         match &fold.layers {
             Layers::All => candidates.collect(),
             Layers::Faces(faces) => (0..layer.stack.len())
                 .filter(|&i| faces.contains(&layer.stack[i]))
                 .collect(),
             Layers::Back(n) => candidates
-                .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
+                .filter(|&i| contains_either(layer.moving_part(i), at, self.tol))
                 .nth(n.saturating_sub(1))
                 .into_iter()
                 .collect(),
             Layers::Outer(n) => {
                 let under: Vec<usize> = candidates
-                    .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
+                    .filter(|&i| contains_either(layer.moving_part(i), at, self.tol))
                     .collect();
                 let k = n.saturating_sub(1);
                 let from_top = under.len().checked_sub(k + 1).map(|i| under[i]);
@@ -210,7 +210,7 @@ impl Folding {
                 stack.push((f, false, i));
                 continue;
             }
-            if layer.fixed_part[i].is_empty() {
+            if layer.fixed_part(i).is_empty() {
                 let t = state.faces[f].transform;
                 state.faces[f].transform = rotation * t;
                 stack.push((f, true, i));
@@ -259,7 +259,8 @@ impl Folding {
         step: usize,
         rotation: DAffine3,
     ) -> usize {
-        let neighbours = std::mem::take(&mut state.faces[f].neighbours);
+        let room = Vec::with_capacity(state.faces[f].neighbours.len() + 1);
+        let neighbours = std::mem::replace(&mut state.faces[f].neighbours, room);
         let face = state.faces[f].clone();
         let inverse = face.transform.inverse();
         let from_plane = |p: DVec2| layer.origin + layer.u * p.x + layer.v * p.y;
@@ -275,8 +276,13 @@ impl Folding {
             .side(inverse.transform_point3(probe).truncate())
             .signum();
         let polygon = self.polygon(&face);
-        let mut fixed = clip(polygon, &sheet_line, -sheet_side, self.tol);
-        let mut moved = clip(polygon, &sheet_line, sheet_side, self.tol);
+        let (mut left, mut right) = (Vec::with_capacity(8), Vec::with_capacity(8));
+        split_into(polygon, &sheet_line, self.tol, &mut left, &mut right);
+        let (mut fixed, mut moved) = if sheet_side > 0.0 {
+            (right, left)
+        } else {
+            (left, right)
+        };
         for p in [&mut fixed, &mut moved] {
             if double_area(p) < 0.0 {
                 p.reverse();
@@ -297,7 +303,7 @@ impl Folding {
         state.faces.push(LiveFace {
             cell: moved_cell,
             transform: rotation * face.transform,
-            neighbours: Vec::new(),
+            neighbours: Vec::with_capacity(neighbours.len() + 1),
         });
         state.faces[f].cell = fixed_cell;
         // A neighbour keeps, with each child, the part of its shared edge on that child's side.
@@ -320,13 +326,12 @@ impl Folding {
                 }
             }
         }
-        let cut: Vec<DVec2> = self.cells[fixed_cell.index()]
+        let mut cut = self.cells[fixed_cell.index()]
             .polygon
             .iter()
             .copied()
-            .filter(|&p| sheet_line.side(p).abs() <= self.tol)
-            .collect();
-        if let [p, q, ..] = cut[..] {
+            .filter(|&p| sheet_line.side(p).abs() <= self.tol);
+        if let (Some(p), Some(q)) = (cut.next(), cut.next()) {
             state.faces[f].neighbours.push(Neighbour {
                 face: g,
                 edge: (p, q),
@@ -360,16 +365,6 @@ fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<(DVec2
     };
     let (a, b) = (cross(sp, sq, p, q), cross(sq, sp, q, p));
     (a.distance(b) > tol).then_some((a, b))
-}
-
-/// Whether `p` lies in the convex polygon, whatever its orientation.
-pub(super) fn contains_either(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
-    if double_area(poly) >= 0.0 {
-        contains(poly, p, tol)
-    } else {
-        let rev: Vec<DVec2> = poly.iter().rev().copied().collect();
-        contains(&rev, p, tol)
-    }
 }
 
 /// Moves the carried faces (faces of other groups) by `rotation` and takes them out of their

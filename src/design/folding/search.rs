@@ -19,7 +19,7 @@
 use glam::{DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{Line2, clip, overlaps};
+use super::geometry::{Line2, overlaps, split_into};
 use super::state::{Folding, State};
 
 /// How the moving faces turn.
@@ -46,10 +46,10 @@ pub(super) struct Layer {
     pub line: Line2,
     /// +1 when the moving side is left of the line, −1 when right.
     pub side: f64,
-    /// Per stack position: the part of the face on the moving side (empty if none).
-    pub moving_part: Vec<Vec<DVec2>>,
-    /// Per stack position: the part on the stationary side (empty if none).
-    pub fixed_part: Vec<Vec<DVec2>>,
+    /// Every face's parts on the moving and the stationary side, one after the other.
+    parts: Vec<DVec2>,
+    /// Per stack position: the ranges of `parts` holding its moving and its stationary part.
+    ranges: Vec<[(u32, u32); 2]>,
     boxes: Vec<(DVec2, DVec2)>,
 }
 
@@ -66,9 +66,11 @@ impl Layer {
         let g = &state.groups[group];
         let (origin, u, v) = frame;
         let tol = folding.tol;
-        let mut moving_part = Vec::with_capacity(g.stack.len());
-        let mut fixed_part = Vec::with_capacity(g.stack.len());
+        let mut parts = Vec::with_capacity(g.stack.len() * 8);
+        let mut ranges = Vec::with_capacity(g.stack.len());
+        let mut boxes = Vec::with_capacity(g.stack.len());
         let mut poly: Vec<DVec2> = Vec::with_capacity(8);
+        let mut right: Vec<DVec2> = Vec::with_capacity(8);
         for &f in &g.stack {
             let face = &state.faces[f];
             poly.clear();
@@ -76,10 +78,22 @@ impl Layer {
                 let q = face.transform.transform_point3(p.extend(0.0)) - origin;
                 DVec2::new(q.dot(u), q.dot(v))
             }));
-            moving_part.push(clip(&poly, &line, side, tol));
-            fixed_part.push(clip(&poly, &line, -side, tol));
+            let start = parts.len();
+            split_into(&poly, &line, tol, &mut parts, &mut right);
+            let middle = parts.len();
+            parts.append(&mut right);
+            let (left, right) = (
+                (start as u32, middle as u32),
+                (middle as u32, parts.len() as u32),
+            );
+            let (moving, fixed) = if side > 0.0 {
+                (left, right)
+            } else {
+                (right, left)
+            };
+            boxes.push(bounds(&parts[moving.0 as usize..moving.1 as usize]));
+            ranges.push([moving, fixed]);
         }
-        let boxes = moving_part.iter().map(|p| bounds(p)).collect();
         Layer {
             group,
             stack: g.stack.clone(),
@@ -89,10 +103,23 @@ impl Layer {
             normal: g.normal,
             line,
             side,
-            moving_part,
-            fixed_part,
+            parts,
+            ranges,
             boxes,
         }
+    }
+
+    /// The part of the face at stack position `i` on the moving side (empty if none), in
+    /// plane coordinates, with the orientation the face has in the plane.
+    pub fn moving_part(&self, i: usize) -> &[DVec2] {
+        let (a, b) = self.ranges[i][0];
+        &self.parts[a as usize..b as usize]
+    }
+
+    /// The part of the face at stack position `i` on the stationary side (empty if none).
+    pub fn fixed_part(&self, i: usize) -> &[DVec2] {
+        let (a, b) = self.ranges[i][1];
+        &self.parts[a as usize..b as usize]
     }
 
     /// A point of space in plane coordinates.
@@ -107,7 +134,7 @@ impl Layer {
         if la.x > hb.x || lb.x > ha.x || la.y > hb.y || lb.y > ha.y {
             return false;
         }
-        overlaps(&self.moving_part[a], &self.moving_part[b], tol)
+        overlaps(self.moving_part(a), self.moving_part(b), tol)
     }
 
     /// The smallest and largest signed distance, positive on the moving side, of the ends of
@@ -161,12 +188,18 @@ pub(super) fn moving_faces(
     let mut moving = vec![false; n];
     let mut queue: Vec<usize> = Vec::new();
     for &s in seeds {
-        if !layer.moving_part[s].is_empty() && !moving[s] {
+        if !layer.moving_part(s).is_empty() && !moving[s] {
             moving[s] = true;
             queue.push(s);
         }
     }
-    let every_candidate_moves = (0..n).all(|i| moving[i] || layer.moving_part[i].is_empty());
+    let every_candidate_moves = (0..n).all(|i| moving[i] || layer.moving_part(i).is_empty());
+    let mut unmoved = Unmoved::new(n);
+    for (i, &m) in moving.iter().enumerate() {
+        if m || layer.moving_part(i).is_empty() {
+            unmoved.remove(i);
+        }
+    }
     let mut is_carried = vec![false; state.faces.len()];
     let mut carried: Vec<usize> = Vec::new();
     let mut next_carried = 0;
@@ -189,24 +222,24 @@ pub(super) fn moving_faces(
                     }
                     if !moving[b] && layer.edge_sides(state, fa, n.edge).1 > tol {
                         moving[b] = true;
+                        unmoved.remove(b);
                         queue.push(b);
                     }
                 }
-                // ③ overlapping on the rotation side.
+                // ③ overlapping on the rotation side: the still unmoved candidates beyond `a`
+                // on the turning side.
                 if let Turning::Towards(sign) = turning {
                     if every_candidate_moves {
                         continue;
                     }
-                    // Only the faces beyond `a` on the turning side.
-                    let beyond = if sign > 0.0 { a + 1..n } else { 0..a };
-                    for b in beyond {
-                        if !moving[b]
-                            && !layer.moving_part[b].is_empty()
-                            && layer.moving_overlap(a, b, tol)
-                        {
-                            moving[b] = true;
-                            queue.push(b);
+                    let mut b = unmoved.next(a, sign);
+                    while let Some(c) = b {
+                        if layer.moving_overlap(a, c, tol) {
+                            moving[c] = true;
+                            unmoved.remove(c);
+                            queue.push(c);
                         }
+                        b = unmoved.next(c, sign);
                     }
                 }
             }
@@ -230,6 +263,7 @@ pub(super) fn moving_faces(
                 }
                 if hi > tol && !moving[b] {
                     moving[b] = true;
+                    unmoved.remove(b);
                     queue.push(b);
                 }
             }
@@ -253,12 +287,60 @@ pub(super) fn moving_faces(
     })
 }
 
+/// The stack positions not (yet) moving, as two skip lists with path compression, so that
+/// rule ③ walks only over candidates (amortised near-constant time per step).
+struct Unmoved {
+    /// `up[i]`: a position ≥ `i` that may be unmoved (`n` = none).
+    up: Vec<usize>,
+    /// `down[i + 1]`: a position ≤ `i` that may be unmoved, plus one (`0` = none).
+    down: Vec<usize>,
+}
+
+impl Unmoved {
+    fn new(n: usize) -> Unmoved {
+        Unmoved {
+            up: (0..=n).collect(),
+            down: (0..=n).collect(),
+        }
+    }
+
+    fn remove(&mut self, i: usize) {
+        self.up[i] = i + 1;
+        self.down[i + 1] = i;
+    }
+
+    /// The nearest unmoved position above `a` (`sign` > 0) or below it.
+    fn next(&mut self, a: usize, sign: f64) -> Option<usize> {
+        if sign > 0.0 {
+            let b = find(&mut self.up, a + 1);
+            (b + 1 < self.up.len()).then_some(b)
+        } else {
+            find(&mut self.down, a).checked_sub(1)
+        }
+    }
+}
+
+/// The root of `i` in the forest `parent` (a root is its own parent), compressing the path.
+fn find(parent: &mut [usize], i: usize) -> usize {
+    let mut root = i;
+    while parent[root] != root {
+        root = parent[root];
+    }
+    let mut j = i;
+    while parent[j] != root {
+        let next = parent[j];
+        parent[j] = root;
+        j = next;
+    }
+    root
+}
+
 /// Rule ④: faces between two moving ones whose moving part overlaps both; returns those added.
 fn between_moving(layer: &Layer, moving: &mut [bool], tol: f64) -> Vec<usize> {
     let n = moving.len();
     let mut added = Vec::new();
     for b in 0..n {
-        if moving[b] || layer.moving_part[b].is_empty() {
+        if moving[b] || layer.moving_part(b).is_empty() {
             continue;
         }
         let below = (0..b).any(|a| moving[a] && layer.moving_overlap(a, b, tol));

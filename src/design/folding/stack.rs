@@ -4,8 +4,7 @@
 use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{double_area, overlaps, rotation_about};
-use super::operation::contains_either;
+use super::geometry::{contains_either, double_area, overlaps, rotation_about};
 use super::search::Layer;
 use super::state::FaceGroup;
 
@@ -23,8 +22,8 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
     let half = ids.len() / 2;
     for i in 0..half {
         let (a, b) = (
-            &layer.moving_part[ids[i]],
-            &layer.moving_part[ids[ids.len() - 1 - i]],
+            layer.moving_part(ids[i]),
+            layer.moving_part(ids[ids.len() - 1 - i]),
         );
         let same = (double_area(a).abs() - double_area(b).abs()).abs() <= tol * 1e3
             && a.iter().all(|&p| contains_either(b, p, tol * 1e3))
@@ -39,7 +38,8 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
     let landing: Vec<Vec<DVec2>> = ids
         .iter()
         .map(|&i| {
-            layer.moving_part[i]
+            layer
+                .moving_part(i)
                 .iter()
                 .map(|&p| layer.line.reflect(p))
                 .collect()
@@ -47,7 +47,7 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
         .collect();
     for b in (lo + 1..hi).filter(|&b| !moving[b]) {
         let covers = |l: &Vec<DVec2>| {
-            [&layer.fixed_part[b], &layer.moving_part[b]]
+            [layer.fixed_part(b), layer.moving_part(b)]
                 .iter()
                 .any(|part| !part.is_empty() && overlaps(l, part, tol))
         };
