@@ -44,6 +44,7 @@ pub mod drag;
 mod error;
 pub mod geometry;
 pub mod layers;
+pub mod neighbours;
 pub mod operation;
 pub mod script;
 mod search;
@@ -52,5 +53,6 @@ mod stack;
 pub mod state;
 
 pub use error::FoldError;
+pub use neighbours::Neighbours;
 pub use operation::{Fold, FoldReport, Layers, Turn};
 pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

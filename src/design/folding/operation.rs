@@ -19,6 +19,7 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
 use super::geometry::{Line2, contains_either, double_area, plane_basis, split_into};
+use super::neighbours::Neighbours;
 use super::search::{Layer, Moving, Turning, moving_faces};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
@@ -78,8 +79,8 @@ pub struct FoldReport {
 impl Folding {
     /// Applies a fold as a new step. On error the state is unchanged.
     pub fn fold(&mut self, fold: &Fold, name: Option<String>) -> Result<FoldReport, FoldError> {
-        let state = self.current().clone();
-        let (group, frame) = self.find_plane(&state, fold)?;
+        let state = self.current();
+        let (group, frame) = self.find_plane(state, fold)?;
         let to_plane =
             |p: DVec3| DVec2::new((p - frame.0).dot(frame.1), (p - frame.0).dot(frame.2));
         let line = Line2::through(to_plane(fold.line[0]), to_plane(fold.line[1]), self.tol)
@@ -98,9 +99,9 @@ impl Folding {
             }
             Turn::Tuck => (std::f64::consts::PI, Turning::Tuck),
         };
-        let layer = Layer::new(self, &state, group, frame, line, side);
+        let layer = Layer::new(self, state, group, frame, line, side);
         let seeds = self.seeds(&layer, fold, to_plane(fold.moving), turning);
-        let search = moving_faces(self, &state, &layer, &seeds, turning)?;
+        let search = moving_faces(self, state, &layer, &seeds, turning)?;
         let moving = &search.in_layer;
         if !moving.iter().any(|&m| m) {
             return Err(FoldError::LineMissesSheet(
@@ -129,7 +130,16 @@ impl Folding {
             angle_deg: angle.to_degrees(),
         };
         let summary = summary(fold.turn, &report);
-        let next = self.apply(state, &layer, &search, &hinge, turning);
+        // The next state: a copy with room for the new faces (and the face tree for their
+        // cells), so that splitting does not reallocate.
+        let mut faces = Vec::with_capacity(state.faces.len() + split);
+        faces.extend_from_slice(&state.faces);
+        let copy = State {
+            faces,
+            groups: state.groups.clone(),
+        };
+        self.cells.reserve(2 * split);
+        let next = self.apply(copy, &layer, &search, &hinge, turning);
         self.push(name, summary, next);
         Ok(report)
     }
@@ -259,8 +269,7 @@ impl Folding {
         step: usize,
         rotation: DAffine3,
     ) -> usize {
-        let room = Vec::with_capacity(state.faces[f].neighbours.len() + 1);
-        let neighbours = std::mem::replace(&mut state.faces[f].neighbours, room);
+        let neighbours = std::mem::take(&mut state.faces[f].neighbours);
         let face = state.faces[f].clone();
         let inverse = face.transform.inverse();
         let from_plane = |p: DVec2| layer.origin + layer.u * p.x + layer.v * p.y;
@@ -303,11 +312,11 @@ impl Folding {
         state.faces.push(LiveFace {
             cell: moved_cell,
             transform: rotation * face.transform,
-            neighbours: Vec::with_capacity(neighbours.len() + 1),
+            neighbours: Neighbours::new(),
         });
         state.faces[f].cell = fixed_cell;
         // A neighbour keeps, with each child, the part of its shared edge on that child's side.
-        for n in neighbours {
+        for &n in neighbours.iter() {
             let k = n.face;
             state.faces[k].neighbours.retain(|m| m.face != f);
             let (p, q) = n.edge;

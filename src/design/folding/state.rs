@@ -8,6 +8,7 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
 use super::geometry::{Line2, double_area, shared_segment};
+use super::neighbours::Neighbours;
 use crate::pattern::MAX_COORDINATE;
 
 /// Index of a cell of the face tree ([`Folding::cells`]).
@@ -41,7 +42,7 @@ pub struct LiveFace {
     /// translation only, so the face keeps its shape by construction).
     pub transform: DAffine3,
     /// The faces sharing an edge with it on the sheet, with that edge.
-    pub neighbours: Vec<Neighbour>,
+    pub neighbours: Neighbours,
 }
 
 /// A face sharing an edge with another on the sheet.
@@ -147,7 +148,7 @@ impl Folding {
             faces: vec![LiveFace {
                 cell: CellId(0),
                 transform: DAffine3::IDENTITY,
-                neighbours: Vec::new(),
+                neighbours: Neighbours::new(),
             }],
             groups: vec![FaceGroup {
                 origin: DVec3::ZERO,
