@@ -20,6 +20,8 @@ use glam::{DVec2, DVec3};
 
 #[path = "folding/carry.rs"]
 mod carry;
+#[path = "folding/non_convex.rs"]
+mod non_convex;
 #[path = "folding/tuck_blocked.rs"]
 mod tuck_blocked;
 
@@ -560,8 +562,8 @@ fn script_errors_name_the_step_and_the_problem() {
         ("[sheet]\nsquare = -4\n", "positive"),
         ("[sheet]\nsquare = 10\nrectangle = [1, 2]\n", "only one"),
         (
-            "[sheet]\npolygon = [[0, 0], [10, 0], [5, 2], [5, 10], [0, 10]]\n",
-            "",
+            "[sheet]\npolygon = [[0, 0], [10, 0], [0, 10], [10, 10], [5, -5]]\n",
+            "crosses",
         ),
         (
             "[sheet]\nsquare = 10\n[[step]]\nfold = { line = [[0, 5], [10, 5]], moving = [5, 9] }\n",

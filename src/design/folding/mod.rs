@@ -17,7 +17,10 @@
 //! - [`display`]: step states with layers spread apart, for previews.
 //!
 //! Deviations from the paper:
-//! - The sheet must be convex, so every face stays convex and a line splits it in two.
+//! - Faces are kept convex, so a line splits a face in two at most. A non-convex sheet (any
+//!   simple polygon) is cut into convex pieces at step 0 ([`sheet`]); a fold line crossing it
+//!   several times splits each piece it crosses, giving one face per piece on either side.
+//!   The seams between pieces that end up unfolded are flat (F) lines of the crease pattern.
 //! - The edge layer (§3.2) and the vertex cells (§3.3) are not stored: edges are the face
 //!   polygons' sides with kept neighbour lists, vertex positions follow from each face's sheet
 //!   polygon and rigid transform (isometry by construction), and the position history is the
@@ -48,6 +51,7 @@ pub mod neighbours;
 pub mod operation;
 pub mod script;
 mod search;
+pub mod sheet;
 mod snap;
 mod stack;
 pub mod state;
