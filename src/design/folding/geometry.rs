@@ -102,15 +102,18 @@ fn emit(poly: &[DVec2], dist: &[f64], line: &Line2, sign: f64, tol: f64, out: &m
     }
     let n = poly.len();
     let start = out.len();
-    for i in 0..n {
-        let (p, q) = (poly[i], poly[(i + 1) % n]);
-        let (sp, sq) = (sign * dist[i], sign * dist[(i + 1) % n]);
-        if sp >= 0.0 {
-            out.push(if sp == 0.0 { onto(line, p) } else { p });
-        }
+    out.reserve(n + 1);
+    let (mut p, mut sp) = (poly[n - 1], sign * dist[n - 1]);
+    for (&q, &d) in poly.iter().zip(dist) {
+        // The edge from the previous corner `p` to `q`: its start, then a crossing.
+        let sq = sign * d;
         if (sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0) {
             out.push(p + (q - p) * (sp / (sp - sq)));
         }
+        if sq >= 0.0 {
+            out.push(if sq == 0.0 { onto(line, q) } else { q });
+        }
+        (p, sp) = (q, sq);
     }
     dedup_ring(out, start, tol);
     if out.len() - start < 3 {

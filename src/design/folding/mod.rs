@@ -47,16 +47,16 @@ pub mod drag;
 mod error;
 pub mod geometry;
 pub mod layers;
-pub mod neighbours;
 pub mod operation;
 pub mod script;
 mod search;
 pub mod sheet;
+pub mod small;
 mod snap;
 mod stack;
 pub mod state;
 
 pub use error::FoldError;
-pub use neighbours::Neighbours;
 pub use operation::{Fold, FoldReport, Layers, Turn};
+pub use small::{Neighbours, Ring, SmallList};
 pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

@@ -19,8 +19,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
 use super::geometry::{Line2, contains_either, double_area, plane_basis, split_into};
-use super::neighbours::Neighbours;
 use super::search::{Layer, Moving, Turning, moving_faces};
+use super::small::{Neighbours, Ring};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
 use crate::pattern::MAX_COORDINATE;
@@ -212,6 +212,7 @@ impl Folding {
         let rotation = hinge.motion();
         let step = self.steps.len();
         let carried = carry(&mut state, &search.carried, rotation);
+        let mut scratch = (Vec::with_capacity(16), Vec::with_capacity(16));
         // Stack of the folded group after splitting, bottom first.
         // Entries: (face, moving?, stack position before the fold).
         let mut stack: Vec<(usize, bool, usize)> = Vec::with_capacity(layer.stack.len() * 2);
@@ -226,7 +227,7 @@ impl Folding {
                 stack.push((f, true, i));
                 continue;
             }
-            let g = self.split(&mut state, f, layer, step, rotation);
+            let g = self.split(&mut state, f, layer, step, rotation, &mut scratch);
             stack.push((f, false, i));
             stack.push((g, true, i));
         }
@@ -268,6 +269,7 @@ impl Folding {
         layer: &Layer,
         step: usize,
         rotation: DAffine3,
+        scratch: &mut (Vec<DVec2>, Vec<DVec2>),
     ) -> usize {
         let neighbours = std::mem::take(&mut state.faces[f].neighbours);
         let face = state.faces[f].clone();
@@ -285,18 +287,15 @@ impl Folding {
             .side(inverse.transform_point3(probe).truncate())
             .signum();
         let polygon = self.polygon(&face);
-        let (mut left, mut right) = (Vec::with_capacity(8), Vec::with_capacity(8));
-        split_into(polygon, &sheet_line, self.tol, &mut left, &mut right);
-        let (mut fixed, mut moved) = if sheet_side > 0.0 {
-            (right, left)
+        let (left, right) = (&mut scratch.0, &mut scratch.1);
+        left.clear();
+        right.clear();
+        split_into(polygon, &sheet_line, self.tol, left, right);
+        let (fixed, moved) = if sheet_side > 0.0 {
+            (ccw(right), ccw(left))
         } else {
-            (left, right)
+            (ccw(left), ccw(right))
         };
-        for p in [&mut fixed, &mut moved] {
-            if double_area(p) < 0.0 {
-                p.reverse();
-            }
-        }
         let parent = Some(face.cell);
         let fixed_cell = self.new_cell(FaceCell {
             parent,
@@ -374,6 +373,15 @@ fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<(DVec2
     };
     let (a, b) = (cross(sp, sq, p, q), cross(sq, sp, q, p));
     (a.distance(b) > tol).then_some((a, b))
+}
+
+/// The polygon counter-clockwise, as a face-tree ring.
+fn ccw(poly: &[DVec2]) -> Ring {
+    if double_area(poly) < 0.0 {
+        poly.iter().rev().copied().collect()
+    } else {
+        Ring::from(poly)
+    }
 }
 
 /// Moves the carried faces (faces of other groups) by `rotation` and takes them out of their

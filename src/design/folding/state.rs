@@ -8,8 +8,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
 use super::geometry::{double_area, shared_segment};
-use super::neighbours::Neighbours;
 use super::sheet::{check_simple, convex_pieces, is_convex};
+use super::small::{Neighbours, Ring};
 use crate::pattern::MAX_COORDINATE;
 
 /// Index of a cell of the face tree ([`Folding::cells`]).
@@ -30,7 +30,7 @@ pub struct FaceCell {
     pub parent: Option<CellId>,
     /// The region on the flat sheet, a counter-clockwise polygon in millimetres; convex for
     /// every cell but a non-convex sheet's root (which is never a current face).
-    pub polygon: Vec<DVec2>,
+    pub polygon: Ring,
     /// The step that made the cell (0 for the sheet).
     pub step: usize,
 }
@@ -48,7 +48,7 @@ pub struct LiveFace {
 }
 
 /// A face sharing an edge with another on the sheet.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Neighbour {
     /// Its index in [`State::faces`].
     pub face: usize,
@@ -158,7 +158,7 @@ impl Folding {
         check_simple(&sheet, tol)?;
         let mut cells = vec![FaceCell {
             parent: None,
-            polygon: sheet.clone(),
+            polygon: Ring::from(&sheet[..]),
             step: 0,
         }];
         if !is_convex(&sheet, tol) {
