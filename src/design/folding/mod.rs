@@ -14,6 +14,9 @@
 //! - [`crease`]: the crease pattern (unfolded fold lines, mountain/valley from the final state)
 //!   and the folded state of every step on that pattern's topology.
 //! - [`script`]: the TOML fold script.
+//! - [`sheet`]: the sheet outline, cut into convex faces when it is not convex.
+//! - [`small`]: short inline lists (face polygons, neighbour lists) that keep the per-step
+//!   state copies cheap.
 //! - [`display`]: step states with layers spread apart, for previews.
 //!
 //! Deviations from the paper:
@@ -35,7 +38,9 @@
 //!   them (§4.1 ②); one also joined to the stationary side refuses the fold, and tuck-ins carry
 //!   nothing. Carried faces keep their stack order and join the group of the plane they land
 //!   in on the side they arrive from (judged at their centre), or make a new group. Collisions
-//!   between faces of different planes are not checked.
+//!   between faces of different planes are not checked. A fold line along a layer's hinge
+//!   turns that whole layer (a flap folded on about its crease); a fold is refused only when
+//!   no face of the paper would stay.
 //! - Tuck-ins are 180° and symmetric (the paper's restriction), with the moving layers split
 //!   into a lower and an upper half of equal count.
 //! - Edge-onto-edge snapping applies to bends only; a snapped drag's destination is the image
