@@ -27,12 +27,19 @@ pub enum FoldError {
     /// The fold angle is zero or beyond ±180°.
     #[error("fold angle {0}° is outside (0°, 180°] in magnitude")]
     BadAngle(f64),
-    /// A moving face is joined, beyond the fold line, to a face that lies in another plane.
+    /// A tuck-in would carry faces of another plane along.
     #[error(
-        "a moving face is attached beyond the fold line to a face in another plane \
-         (only faces of one layer plane can fold in one step)"
+        "a tuck-in cannot carry faces of another plane: a moving face is attached beyond the \
+         fold line to a face that does not lie in the layer plane"
     )]
     AttachedOutOfPlane,
+    /// A face of another plane that the fold carries along is also joined to the stationary
+    /// side (for example a standing flap whose hinge the fold line crosses).
+    #[error(
+        "a face in another plane would be carried by the fold but is also attached to the \
+         stationary side of the fold line"
+    )]
+    CarriedFaceHeld,
     /// A tuck-in needs an even number of moving layers, mirrored pairwise.
     #[error("a tuck-in needs symmetric layers: {0}")]
     TuckAsymmetric(String),

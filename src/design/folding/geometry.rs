@@ -47,11 +47,40 @@ pub fn double_area(poly: &[DVec2]) -> f64 {
 /// The part of a convex polygon on the side `sign` (+1 left, −1 right) of `line`, vertices
 /// within `tol` of the line snapped onto it; empty when that part is thinner than `tol`.
 pub fn clip(poly: &[DVec2], line: &Line2, sign: f64, tol: f64) -> Vec<DVec2> {
+    let mut out = Vec::with_capacity(poly.len() + 1);
+    clip_into(poly, line, sign, tol, &mut out);
+    out
+}
+
+/// [`clip`], appending the part to `out` (nothing when it is empty).
+pub fn clip_into(poly: &[DVec2], line: &Line2, sign: f64, tol: f64, out: &mut Vec<DVec2>) {
+    with_distances(poly, line, tol, |dist| {
+        emit(poly, dist, line, sign, tol, out)
+    });
+}
+
+/// Both parts of a convex polygon: the one left of `line` appended to `left`, the one right
+/// of it to `right` (as [`clip_into`] with sign +1 and −1, the distances computed once).
+pub fn split_into(
+    poly: &[DVec2],
+    line: &Line2,
+    tol: f64,
+    left: &mut Vec<DVec2>,
+    right: &mut Vec<DVec2>,
+) {
+    with_distances(poly, line, tol, |dist| {
+        emit(poly, dist, line, 1.0, tol, left);
+        emit(poly, dist, line, -1.0, tol, right);
+    });
+}
+
+/// Calls `f` with the signed distances of the corners from the line, those within `tol`
+/// set to 0 (on the stack for the small polygons folding makes).
+fn with_distances(poly: &[DVec2], line: &Line2, tol: f64, f: impl FnOnce(&[f64])) {
     let d = |p: DVec2| {
-        let s = sign * line.side(p);
+        let s = line.side(p);
         if s.abs() <= tol { 0.0 } else { s }
     };
-    // Signed distances: on the stack for the small polygons folding makes.
     let mut small = [0.0f64; 16];
     let mut large = Vec::new();
     let dist: &mut [f64] = if poly.len() <= small.len() {
@@ -63,27 +92,33 @@ pub fn clip(poly: &[DVec2], line: &Line2, sign: f64, tol: f64) -> Vec<DVec2> {
     for (slot, &p) in dist.iter_mut().zip(poly) {
         *slot = d(p);
     }
-    if dist.iter().all(|&s| s <= 0.0) {
-        return Vec::new();
+    f(dist)
+}
+
+/// Appends the part of `poly` where `sign × dist` is not negative (see [`clip`]).
+fn emit(poly: &[DVec2], dist: &[f64], line: &Line2, sign: f64, tol: f64, out: &mut Vec<DVec2>) {
+    if dist.iter().all(|&s| sign * s <= tol) {
+        return;
     }
     let n = poly.len();
-    let mut out = Vec::with_capacity(n + 1);
-    for i in 0..n {
-        let (p, q) = (poly[i], poly[(i + 1) % n]);
-        let (sp, sq) = (dist[i], dist[(i + 1) % n]);
-        if sp >= 0.0 {
-            out.push(if sp == 0.0 { onto(line, p) } else { p });
-        }
+    let start = out.len();
+    out.reserve(n + 1);
+    let (mut p, mut sp) = (poly[n - 1], sign * dist[n - 1]);
+    for (&q, &d) in poly.iter().zip(dist) {
+        // The edge from the previous corner `p` to `q`: its start, then a crossing.
+        let sq = sign * d;
         if (sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0) {
             out.push(p + (q - p) * (sp / (sp - sq)));
         }
+        if sq >= 0.0 {
+            out.push(if sq == 0.0 { onto(line, q) } else { q });
+        }
+        (p, sp) = (q, sq);
     }
-    dedup_ring(&mut out, tol);
-    let max_dist = dist.iter().fold(0.0f64, |m, &s| m.max(s));
-    if out.len() < 3 || max_dist <= tol {
-        return Vec::new();
+    dedup_ring(out, start, tol);
+    if out.len() - start < 3 {
+        out.truncate(start);
     }
-    out
 }
 
 /// The foot of `p` on the line.
@@ -91,11 +126,18 @@ fn onto(line: &Line2, p: DVec2) -> DVec2 {
     line.point + line.dir * line.dir.dot(p - line.point)
 }
 
-/// Removes consecutive vertices closer than `tol` (cyclically).
-fn dedup_ring(ring: &mut Vec<DVec2>, tol: f64) {
+/// Removes consecutive vertices closer than `tol` (cyclically) from the ring `ring[start..]`.
+fn dedup_ring(ring: &mut Vec<DVec2>, start: usize, tol: f64) {
     let tol2 = tol * tol;
-    ring.dedup_by(|a, b| a.distance_squared(*b) <= tol2);
-    while ring.len() > 1 && ring[0].distance_squared(ring[ring.len() - 1]) <= tol2 {
+    let mut kept = start;
+    for i in start..ring.len() {
+        if kept == start || ring[kept - 1].distance_squared(ring[i]) > tol2 {
+            ring[kept] = ring[i];
+            kept += 1;
+        }
+    }
+    ring.truncate(kept);
+    while ring.len() > start + 1 && ring[start].distance_squared(ring[ring.len() - 1]) <= tol2 {
         ring.pop();
     }
 }
@@ -164,9 +206,19 @@ pub fn segment_crosses_interior(p: DVec2, q: DVec2, poly: &[DVec2], tol: f64) ->
 
 /// Whether `p` lies inside the convex polygon `poly` (counter-clockwise) or within `tol` of it.
 pub fn contains(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
+    contains_oriented(poly, p, tol, 1.0)
+}
+
+/// Whether `p` lies inside the convex polygon `poly` of either orientation, or within `tol`.
+pub fn contains_either(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
+    let sign = if double_area(poly) >= 0.0 { 1.0 } else { -1.0 };
+    contains_oriented(poly, p, tol, sign)
+}
+
+fn contains_oriented(poly: &[DVec2], p: DVec2, tol: f64, sign: f64) -> bool {
     let n = poly.len();
     (0..n).all(|i| match Line2::through(poly[i], poly[(i + 1) % n], 0.0) {
-        Some(edge) => edge.side(p) >= -tol,
+        Some(edge) => sign * edge.side(p) >= -tol,
         None => true,
     })
 }

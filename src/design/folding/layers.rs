@@ -43,11 +43,9 @@ fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<Stri
         dir: DVec2::X,
     };
     let layer = Layer::new(folding, state, g, frame, line, 1.0);
-    let polys: Vec<Vec<DVec2>> = layer
-        .moving_part
-        .iter()
-        .map(|p| {
-            let mut p = p.clone();
+    let polys: Vec<Vec<DVec2>> = (0..layer.stack.len())
+        .map(|i| {
+            let mut p = layer.moving_part(i).to_vec();
             if double_area(&p) < 0.0 {
                 p.reverse();
             }

@@ -14,10 +14,16 @@
 //! - [`crease`]: the crease pattern (unfolded fold lines, mountain/valley from the final state)
 //!   and the folded state of every step on that pattern's topology.
 //! - [`script`]: the TOML fold script.
+//! - [`sheet`]: the sheet outline, cut into convex faces when it is not convex.
+//! - [`small`]: short inline lists (face polygons, neighbour lists) that keep the per-step
+//!   state copies cheap.
 //! - [`display`]: step states with layers spread apart, for previews.
 //!
 //! Deviations from the paper:
-//! - The sheet must be convex, so every face stays convex and a line splits it in two.
+//! - Faces are kept convex, so a line splits a face in two at most. A non-convex sheet (any
+//!   simple polygon) is cut into convex pieces at step 0 ([`sheet`]); a fold line crossing it
+//!   several times splits each piece it crosses, giving one face per piece on either side.
+//!   The seams between pieces that end up unfolded are flat (F) lines of the crease pattern.
 //! - The edge layer (§3.2) and the vertex cells (§3.3) are not stored: edges are the face
 //!   polygons' sides with kept neighbour lists, vertex positions follow from each face's sheet
 //!   polygon and rigid transform (isometry by construction), and the position history is the
@@ -27,9 +33,14 @@
 //! - §4.5 gives no table for the new stack; the rules used are in [`operation`]'s docs (bend:
 //!   reversed on the turning side; tuck-in: each half reversed next to its hinge; fold-up: a new
 //!   group, or the side of arrival when landing on an existing plane).
-//! - A fold moves faces of one layer plane only (as §4.5 assumes); a face of another plane
-//!   attached beyond the fold line is an error, not moved along. Collisions between faces of
-//!   different planes are not checked.
+//! - The fold line lies in one layer plane and splits faces of that plane only. Faces of
+//!   other planes joined beyond the line are carried along rigidly with everything joined to
+//!   them (§4.1 ②); one also joined to the stationary side refuses the fold, and tuck-ins carry
+//!   nothing. Carried faces keep their stack order and join the group of the plane they land
+//!   in on the side they arrive from (judged at their centre), or make a new group. Collisions
+//!   between faces of different planes are not checked. A fold line along a layer's hinge
+//!   turns that whole layer (a flap folded on about its crease); a fold is refused only when
+//!   no face of the paper would stay.
 //! - Tuck-ins are 180° and symmetric (the paper's restriction), with the moving layers split
 //!   into a lower and an upper half of equal count.
 //! - Edge-onto-edge snapping applies to bends only; a snapped drag's destination is the image
@@ -44,10 +55,13 @@ pub mod layers;
 pub mod operation;
 pub mod script;
 mod search;
+pub mod sheet;
+pub mod small;
 mod snap;
 mod stack;
 pub mod state;
 
 pub use error::FoldError;
 pub use operation::{Fold, FoldReport, Layers, Turn};
+pub use small::{Neighbours, Ring, SmallList};
 pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

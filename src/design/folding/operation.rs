@@ -18,8 +18,9 @@
 use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{Line2, clip, contains, double_area, plane_basis};
-use super::search::{Layer, Turning, moving_faces};
+use super::geometry::{Line2, contains_either, double_area, plane_basis, split_into};
+use super::search::{Layer, Moving, Turning, moving_faces};
+use super::small::{Neighbours, Ring};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
 use crate::pattern::MAX_COORDINATE;
@@ -78,8 +79,8 @@ pub struct FoldReport {
 impl Folding {
     /// Applies a fold as a new step. On error the state is unchanged.
     pub fn fold(&mut self, fold: &Fold, name: Option<String>) -> Result<FoldReport, FoldError> {
-        let state = self.current().clone();
-        let (group, frame) = self.find_plane(&state, fold)?;
+        let state = self.current();
+        let (group, frame) = self.find_plane(state, fold)?;
         let to_plane =
             |p: DVec3| DVec2::new((p - frame.0).dot(frame.1), (p - frame.0).dot(frame.2));
         let line = Line2::through(to_plane(fold.line[0]), to_plane(fold.line[1]), self.tol)
@@ -98,39 +99,47 @@ impl Folding {
             }
             Turn::Tuck => (std::f64::consts::PI, Turning::Tuck),
         };
-        let layer = Layer::new(self, &state, group, frame, line, side);
+        let layer = Layer::new(self, state, group, frame, line, side);
         let seeds = self.seeds(&layer, fold, to_plane(fold.moving), turning);
-        let (moving, out_of_plane) = moving_faces(self, &state, &layer, &seeds, turning);
-        if out_of_plane {
-            return Err(FoldError::AttachedOutOfPlane);
-        }
+        let search = moving_faces(self, state, &layer, &seeds, turning)?;
+        let moving = &search.in_layer;
         if !moving.iter().any(|&m| m) {
             return Err(FoldError::LineMissesSheet(
                 "no face reaches the moving side",
             ));
         }
-        if (0..moving.len()).all(|i| moving[i] && layer.fixed_part[i].is_empty()) {
+        let whole_layer = (0..moving.len()).all(|i| moving[i] && layer.fixed_part(i).is_empty());
+        if whole_layer && layer.stack.len() + search.carried.len() == state.faces.len() {
             return Err(FoldError::LineMissesSheet(
-                "the whole layer lies on the moving side",
+                "the whole paper lies on the moving side",
             ));
         }
         if turning == Turning::Tuck {
-            check_tuck(&layer, &moving, self.tol)?;
+            check_tuck(&layer, moving, self.tol)?;
         }
         let split = (0..moving.len())
-            .filter(|&i| moving[i] && !layer.fixed_part[i].is_empty())
+            .filter(|&i| moving[i] && !layer.fixed_part(i).is_empty())
             .count();
         if state.faces.len() + split > MAX_FACES {
             return Err(FoldError::TooManyFaces(MAX_FACES));
         }
         let hinge = layer_hinge(&layer, angle);
         let report = FoldReport {
-            moved: moving.iter().filter(|&&m| m).count(),
+            moved: moving.iter().filter(|&&m| m).count() + search.carried.len(),
             split,
             angle_deg: angle.to_degrees(),
         };
         let summary = summary(fold.turn, &report);
-        let next = self.apply(state, &layer, &moving, &hinge, turning);
+        // The next state: a copy with room for the new faces (and the face tree for their
+        // cells), so that splitting does not reallocate.
+        let mut faces = Vec::with_capacity(state.faces.len() + split);
+        faces.extend_from_slice(&state.faces);
+        let copy = State {
+            faces,
+            groups: state.groups.clone(),
+        };
+        self.cells.reserve(2 * split);
+        let next = self.apply(copy, &layer, &search, &hinge, turning);
         self.push(name, summary, next);
         Ok(report)
     }
@@ -163,20 +172,20 @@ impl Folding {
 
     /// Stack positions of the seed faces.
     fn seeds(&self, layer: &Layer, fold: &Fold, at: DVec2, turning: Turning) -> Vec<usize> {
-        let candidates = (0..layer.stack.len()).filter(|&i| !layer.moving_part[i].is_empty());
+        let candidates = (0..layer.stack.len()).filter(|&i| !layer.moving_part(i).is_empty());
         match &fold.layers {
             Layers::All => candidates.collect(),
             Layers::Faces(faces) => (0..layer.stack.len())
                 .filter(|&i| faces.contains(&layer.stack[i]))
                 .collect(),
             Layers::Back(n) => candidates
-                .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
+                .filter(|&i| contains_either(layer.moving_part(i), at, self.tol))
                 .nth(n.saturating_sub(1))
                 .into_iter()
                 .collect(),
             Layers::Outer(n) => {
                 let under: Vec<usize> = candidates
-                    .filter(|&i| contains_either(&layer.moving_part[i], at, self.tol))
+                    .filter(|&i| contains_either(layer.moving_part(i), at, self.tol))
                     .collect();
                 let k = n.saturating_sub(1);
                 let from_top = under.len().checked_sub(k + 1).map(|i| under[i]);
@@ -190,18 +199,21 @@ impl Folding {
         }
     }
 
-    /// The state after the fold: faces split and moved, stacks updated.
+    /// The state after the fold: faces split and moved, carried faces moved, stacks updated.
     fn apply(
         &mut self,
         mut state: State,
         layer: &Layer,
-        moving: &[bool],
+        search: &Moving,
         hinge: &Hinge,
         turning: Turning,
     ) -> State {
+        let moving = &search.in_layer;
         let rotation = hinge.motion();
         let step = self.steps.len();
-        // Stack of the folded group after splitting: (face index, moving?) bottom first.
+        let carried = carry(&mut state, &search.carried, rotation);
+        let mut scratch = (Vec::with_capacity(16), Vec::with_capacity(16));
+        // Stack of the folded group after splitting, bottom first.
         // Entries: (face, moving?, stack position before the fold).
         let mut stack: Vec<(usize, bool, usize)> = Vec::with_capacity(layer.stack.len() * 2);
         for (i, &f) in layer.stack.iter().enumerate() {
@@ -209,13 +221,13 @@ impl Folding {
                 stack.push((f, false, i));
                 continue;
             }
-            if layer.fixed_part[i].is_empty() {
+            if layer.fixed_part(i).is_empty() {
                 let t = state.faces[f].transform;
                 state.faces[f].transform = rotation * t;
                 stack.push((f, true, i));
                 continue;
             }
-            let g = self.split(&mut state, f, layer, step, rotation);
+            let g = self.split(&mut state, f, layer, step, rotation, &mut scratch);
             stack.push((f, false, i));
             stack.push((g, true, i));
         }
@@ -226,10 +238,26 @@ impl Folding {
             Turning::Towards(_) => {
                 group.stack = stack.iter().filter(|s| !s.1).map(|s| s.0).collect();
                 let old = (group.origin, group.normal);
-                land(&mut state.groups, old, block, hinge, self.tol);
+                let arrival = hinge.arrival(rotation.transform_vector3(hinge.outward));
+                land(&mut state.groups, old, block, rotation, arrival, self.tol);
             }
         }
+        for (plane, block) in carried {
+            let centre = self.centre(&state, &block);
+            let arrival = hinge.arrival(centre - hinge.point);
+            land(&mut state.groups, plane, block, rotation, arrival, self.tol);
+        }
+        state.groups.retain(|g| !g.stack.is_empty());
         state
+    }
+
+    /// The mean of the corners of `faces`, in space.
+    fn centre(&self, state: &State, faces: &[usize]) -> DVec3 {
+        let corners: Vec<DVec3> = faces
+            .iter()
+            .flat_map(|&f| self.corners(&state.faces[f]))
+            .collect();
+        corners.iter().sum::<DVec3>() / corners.len().max(1) as f64
     }
 
     /// Splits face `f` along the fold line: `f` keeps the stationary part, a new face (returned)
@@ -241,6 +269,7 @@ impl Folding {
         layer: &Layer,
         step: usize,
         rotation: DAffine3,
+        scratch: &mut (Vec<DVec2>, Vec<DVec2>),
     ) -> usize {
         let neighbours = std::mem::take(&mut state.faces[f].neighbours);
         let face = state.faces[f].clone();
@@ -258,13 +287,15 @@ impl Folding {
             .side(inverse.transform_point3(probe).truncate())
             .signum();
         let polygon = self.polygon(&face);
-        let mut fixed = clip(polygon, &sheet_line, -sheet_side, self.tol);
-        let mut moved = clip(polygon, &sheet_line, sheet_side, self.tol);
-        for p in [&mut fixed, &mut moved] {
-            if double_area(p) < 0.0 {
-                p.reverse();
-            }
-        }
+        let (left, right) = (&mut scratch.0, &mut scratch.1);
+        left.clear();
+        right.clear();
+        split_into(polygon, &sheet_line, self.tol, left, right);
+        let (fixed, moved) = if sheet_side > 0.0 {
+            (ccw(right), ccw(left))
+        } else {
+            (ccw(left), ccw(right))
+        };
         let parent = Some(face.cell);
         let fixed_cell = self.new_cell(FaceCell {
             parent,
@@ -280,11 +311,11 @@ impl Folding {
         state.faces.push(LiveFace {
             cell: moved_cell,
             transform: rotation * face.transform,
-            neighbours: Vec::new(),
+            neighbours: Neighbours::new(),
         });
         state.faces[f].cell = fixed_cell;
         // A neighbour keeps, with each child, the part of its shared edge on that child's side.
-        for n in neighbours {
+        for &n in neighbours.iter() {
             let k = n.face;
             state.faces[k].neighbours.retain(|m| m.face != f);
             let (p, q) = n.edge;
@@ -303,13 +334,12 @@ impl Folding {
                 }
             }
         }
-        let cut: Vec<DVec2> = self.cells[fixed_cell.index()]
+        let mut cut = self.cells[fixed_cell.index()]
             .polygon
             .iter()
             .copied()
-            .filter(|&p| sheet_line.side(p).abs() <= self.tol)
-            .collect();
-        if let [p, q, ..] = cut[..] {
+            .filter(|&p| sheet_line.side(p).abs() <= self.tol);
+        if let (Some(p), Some(q)) = (cut.next(), cut.next()) {
             state.faces[f].neighbours.push(Neighbour {
                 face: g,
                 edge: (p, q),
@@ -345,14 +375,39 @@ fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<(DVec2
     (a.distance(b) > tol).then_some((a, b))
 }
 
-/// Whether `p` lies in the convex polygon, whatever its orientation.
-pub(super) fn contains_either(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
-    if double_area(poly) >= 0.0 {
-        contains(poly, p, tol)
+/// The polygon counter-clockwise, as a face-tree ring.
+fn ccw(poly: &[DVec2]) -> Ring {
+    if double_area(poly) < 0.0 {
+        poly.iter().rev().copied().collect()
     } else {
-        let rev: Vec<DVec2> = poly.iter().rev().copied().collect();
-        contains(&rev, p, tol)
+        Ring::from(poly)
     }
+}
+
+/// Moves the carried faces (faces of other groups) by `rotation` and takes them out of their
+/// groups' stacks: returns, per group that lost faces, its plane (origin, normal) before the
+/// fold and the carried faces in its stack order. Emptied groups stay, empty, until the end.
+fn carry(
+    state: &mut State,
+    carried: &[usize],
+    rotation: DAffine3,
+) -> Vec<((DVec3, DVec3), Vec<usize>)> {
+    let mut is_carried = vec![false; state.faces.len()];
+    for &c in carried {
+        is_carried[c] = true;
+        let t = state.faces[c].transform;
+        state.faces[c].transform = rotation * t;
+    }
+    let mut out = Vec::new();
+    for group in &mut state.groups {
+        let (block, kept): (Vec<usize>, Vec<usize>) =
+            group.stack.iter().partition(|&&f| is_carried[f]);
+        if !block.is_empty() {
+            group.stack = kept;
+            out.push(((group.origin, group.normal), block));
+        }
+    }
+    out
 }
 
 /// The turn of the moving side by `angle` radians (positive towards the normal).

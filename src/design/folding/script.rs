@@ -6,7 +6,7 @@
 //! [sheet]                           # exactly one of:
 //! square = 150                      #   side, mm
 //! # rectangle = [210, 297]          #   width and height, mm
-//! # polygon = [[0, 0], [100, 0], [50, 80]]   # convex corners, mm
+//! # polygon = [[0, 0], [100, 0], [50, 80]]   # corners of a simple polygon, mm
 //!
 //! [snap]                            # optional: drag snapping tolerances (§2.3 4)
 //! vertex = 1.0                      # mm, destination onto a vertex
@@ -77,7 +77,7 @@ pub struct SheetSpec {
     pub square: Option<f64>,
     /// Width and height, mm.
     pub rectangle: Option<[f64; 2]>,
-    /// Convex corners, mm.
+    /// Corners of a simple polygon (convex or not), mm.
     pub polygon: Option<Vec<[f64; 2]>>,
 }
 

@@ -9,10 +9,17 @@
 //!   both of theirs;
 //!
 //! repeated until nothing changes; the rest stay (⑤). Overlap tests use bounding boxes first.
+//!
+//! Faces of other planes (other face groups) joined to a moving face by an edge beyond the
+//! fold line are carried along rigidly, and so is every face joined to a carried one (rule ②
+//! across planes: the fold line lies in one plane and cuts no other). A carried face joined
+//! beyond the line to a face of the folded group makes that face move; one joined to the
+//! stationary side holds the paper fast, and the fold is refused. Tuck-ins carry nothing.
 
 use glam::{DVec2, DVec3};
 
-use super::geometry::{Line2, clip, overlaps};
+use super::FoldError;
+use super::geometry::{Line2, overlaps, split_into};
 use super::state::{Folding, State};
 
 /// How the moving faces turn.
@@ -39,10 +46,10 @@ pub(super) struct Layer {
     pub line: Line2,
     /// +1 when the moving side is left of the line, −1 when right.
     pub side: f64,
-    /// Per stack position: the part of the face on the moving side (empty if none).
-    pub moving_part: Vec<Vec<DVec2>>,
-    /// Per stack position: the part on the stationary side (empty if none).
-    pub fixed_part: Vec<Vec<DVec2>>,
+    /// Every face's parts on the moving and the stationary side, one after the other.
+    parts: Vec<DVec2>,
+    /// Per stack position: the ranges of `parts` holding its moving and its stationary part.
+    ranges: Vec<[(u32, u32); 2]>,
     boxes: Vec<(DVec2, DVec2)>,
 }
 
@@ -59,9 +66,11 @@ impl Layer {
         let g = &state.groups[group];
         let (origin, u, v) = frame;
         let tol = folding.tol;
-        let mut moving_part = Vec::with_capacity(g.stack.len());
-        let mut fixed_part = Vec::with_capacity(g.stack.len());
+        let mut parts = Vec::with_capacity(g.stack.len() * 8);
+        let mut ranges = Vec::with_capacity(g.stack.len());
+        let mut boxes = Vec::with_capacity(g.stack.len());
         let mut poly: Vec<DVec2> = Vec::with_capacity(8);
+        let mut right: Vec<DVec2> = Vec::with_capacity(8);
         for &f in &g.stack {
             let face = &state.faces[f];
             poly.clear();
@@ -69,10 +78,22 @@ impl Layer {
                 let q = face.transform.transform_point3(p.extend(0.0)) - origin;
                 DVec2::new(q.dot(u), q.dot(v))
             }));
-            moving_part.push(clip(&poly, &line, side, tol));
-            fixed_part.push(clip(&poly, &line, -side, tol));
+            let start = parts.len();
+            split_into(&poly, &line, tol, &mut parts, &mut right);
+            let middle = parts.len();
+            parts.append(&mut right);
+            let (left, right) = (
+                (start as u32, middle as u32),
+                (middle as u32, parts.len() as u32),
+            );
+            let (moving, fixed) = if side > 0.0 {
+                (left, right)
+            } else {
+                (right, left)
+            };
+            boxes.push(bounds(&parts[moving.0 as usize..moving.1 as usize]));
+            ranges.push([moving, fixed]);
         }
-        let boxes = moving_part.iter().map(|p| bounds(p)).collect();
         Layer {
             group,
             stack: g.stack.clone(),
@@ -82,10 +103,23 @@ impl Layer {
             normal: g.normal,
             line,
             side,
-            moving_part,
-            fixed_part,
+            parts,
+            ranges,
             boxes,
         }
+    }
+
+    /// The part of the face at stack position `i` on the moving side (empty if none), in
+    /// plane coordinates, with the orientation the face has in the plane.
+    pub fn moving_part(&self, i: usize) -> &[DVec2] {
+        let (a, b) = self.ranges[i][0];
+        &self.parts[a as usize..b as usize]
+    }
+
+    /// The part of the face at stack position `i` on the stationary side (empty if none).
+    pub fn fixed_part(&self, i: usize) -> &[DVec2] {
+        let (a, b) = self.ranges[i][1];
+        &self.parts[a as usize..b as usize]
     }
 
     /// A point of space in plane coordinates.
@@ -100,27 +134,21 @@ impl Layer {
         if la.x > hb.x || lb.x > ha.x || la.y > hb.y || lb.y > ha.y {
             return false;
         }
-        overlaps(&self.moving_part[a], &self.moving_part[b], tol)
+        overlaps(self.moving_part(a), self.moving_part(b), tol)
     }
 
-    /// Whether the face at stack position `a` shares `edge` (a sheet segment) with a neighbour
-    /// on the moving side.
-    fn joined_beyond_line(
-        &self,
-        folding: &Folding,
-        state: &State,
-        a: usize,
-        edge: (DVec2, DVec2),
-    ) -> bool {
-        let (p, q) = edge;
-        let t = &state.faces[self.stack[a]].transform;
+    /// The smallest and largest signed distance, positive on the moving side, of the ends of
+    /// `edge` (a sheet segment of face `face`) from the fold line, once placed in the plane.
+    fn edge_sides(&self, state: &State, face: usize, edge: (DVec2, DVec2)) -> (f64, f64) {
+        let t = &state.faces[face].transform;
         let side = |s: DVec2| {
             self.side
                 * self
                     .line
                     .side(self.to_plane(t.transform_point3(s.extend(0.0))))
         };
-        side(p).max(side(q)) > folding.tol
+        let (p, q) = (side(edge.0), side(edge.1));
+        (p.min(q), p.max(q))
     }
 }
 
@@ -132,15 +160,25 @@ fn bounds(poly: &[DVec2]) -> (DVec2, DVec2) {
     )
 }
 
-/// The moving faces, as a flag per stack position, from the seed positions (§4.1 ①–⑤).
-/// Also returns whether a moving face is joined beyond the line to a face of another group.
+/// The result of the search: who moves.
+pub(super) struct Moving {
+    /// Per stack position of the folded group: whether the face (its moving part) turns.
+    pub in_layer: Vec<bool>,
+    /// Faces of other groups carried along rigidly (indices into [`State::faces`]).
+    pub carried: Vec<usize>,
+}
+
+/// The moving faces from the seed positions (§4.1 ①–⑤), and the faces of other planes they
+/// carry along. Errors: a carried face is also joined to the stationary side
+/// ([`FoldError::CarriedFaceHeld`]), or a tuck-in would carry one
+/// ([`FoldError::AttachedOutOfPlane`]).
 pub(super) fn moving_faces(
     folding: &Folding,
     state: &State,
     layer: &Layer,
     seeds: &[usize],
     turning: Turning,
-) -> (Vec<bool>, bool) {
+) -> Result<Moving, FoldError> {
     let n = layer.stack.len();
     let tol = folding.tol;
     let mut pos = vec![usize::MAX; state.faces.len()];
@@ -150,45 +188,83 @@ pub(super) fn moving_faces(
     let mut moving = vec![false; n];
     let mut queue: Vec<usize> = Vec::new();
     for &s in seeds {
-        if !layer.moving_part[s].is_empty() && !moving[s] {
+        if !layer.moving_part(s).is_empty() && !moving[s] {
             moving[s] = true;
             queue.push(s);
         }
     }
-    let every_candidate_moves = (0..n).all(|i| moving[i] || layer.moving_part[i].is_empty());
-    let mut out_of_plane = false;
+    let every_candidate_moves = (0..n).all(|i| moving[i] || layer.moving_part(i).is_empty());
+    let mut unmoved = Unmoved::new(n);
+    for (i, &m) in moving.iter().enumerate() {
+        if m || layer.moving_part(i).is_empty() {
+            unmoved.remove(i);
+        }
+    }
+    let mut is_carried = vec![false; state.faces.len()];
+    let mut carried: Vec<usize> = Vec::new();
+    let mut next_carried = 0;
     loop {
-        while let Some(a) = queue.pop() {
-            // ② edge-connected on the moving side.
-            for n in &state.faces[layer.stack[a]].neighbours {
-                let b = pos[n.face];
-                if b == usize::MAX {
-                    out_of_plane |= layer.joined_beyond_line(folding, state, a, n.edge);
-                    continue;
-                }
-                if every_candidate_moves {
-                    continue;
-                }
-                if !moving[b] && layer.joined_beyond_line(folding, state, a, n.edge) {
-                    moving[b] = true;
-                    queue.push(b);
-                }
-            }
-            // ③ overlapping on the rotation side.
-            if let Turning::Towards(sign) = turning {
-                if every_candidate_moves {
-                    continue;
-                }
-                // Only the faces beyond `a` on the turning side.
-                let beyond = if sign > 0.0 { a + 1..n } else { 0..a };
-                for b in beyond {
-                    if !moving[b]
-                        && !layer.moving_part[b].is_empty()
-                        && layer.moving_overlap(a, b, tol)
-                    {
+        loop {
+            while let Some(a) = queue.pop() {
+                let fa = layer.stack[a];
+                // ② edge-connected on the moving side.
+                for n in &state.faces[fa].neighbours {
+                    let b = pos[n.face];
+                    if b == usize::MAX {
+                        if !is_carried[n.face] && layer.edge_sides(state, fa, n.edge).1 > tol {
+                            is_carried[n.face] = true;
+                            carried.push(n.face);
+                        }
+                        continue;
+                    }
+                    if every_candidate_moves {
+                        continue;
+                    }
+                    if !moving[b] && layer.edge_sides(state, fa, n.edge).1 > tol {
                         moving[b] = true;
+                        unmoved.remove(b);
                         queue.push(b);
                     }
+                }
+                // ③ overlapping on the rotation side: the still unmoved candidates beyond `a`
+                // on the turning side.
+                if let Turning::Towards(sign) = turning {
+                    if every_candidate_moves {
+                        continue;
+                    }
+                    let mut b = unmoved.next(a, sign);
+                    while let Some(c) = b {
+                        if layer.moving_overlap(a, c, tol) {
+                            moving[c] = true;
+                            unmoved.remove(c);
+                            queue.push(c);
+                        }
+                        b = unmoved.next(c, sign);
+                    }
+                }
+            }
+            // Faces of other planes: carried with their neighbours.
+            let Some(&c) = carried.get(next_carried) else {
+                break;
+            };
+            next_carried += 1;
+            for n in &state.faces[c].neighbours {
+                let b = pos[n.face];
+                if b == usize::MAX {
+                    if !is_carried[n.face] {
+                        is_carried[n.face] = true;
+                        carried.push(n.face);
+                    }
+                    continue;
+                }
+                let (lo, hi) = layer.edge_sides(state, n.face, n.edge);
+                if lo < -tol {
+                    return Err(FoldError::CarriedFaceHeld);
+                }
+                if hi > tol && !moving[b] {
+                    moving[b] = true;
+                    unmoved.remove(b);
+                    queue.push(b);
                 }
             }
         }
@@ -202,7 +278,61 @@ pub(super) fn moving_faces(
         }
         queue = added;
     }
-    (moving, out_of_plane)
+    if turning == Turning::Tuck && !carried.is_empty() {
+        return Err(FoldError::AttachedOutOfPlane);
+    }
+    Ok(Moving {
+        in_layer: moving,
+        carried,
+    })
+}
+
+/// The stack positions not (yet) moving, as two skip lists with path compression, so that
+/// rule ③ walks only over candidates (amortised near-constant time per step).
+struct Unmoved {
+    /// `up[i]`: a position ≥ `i` that may be unmoved (`n` = none).
+    up: Vec<usize>,
+    /// `down[i + 1]`: a position ≤ `i` that may be unmoved, plus one (`0` = none).
+    down: Vec<usize>,
+}
+
+impl Unmoved {
+    fn new(n: usize) -> Unmoved {
+        Unmoved {
+            up: (0..=n).collect(),
+            down: (0..=n).collect(),
+        }
+    }
+
+    fn remove(&mut self, i: usize) {
+        self.up[i] = i + 1;
+        self.down[i + 1] = i;
+    }
+
+    /// The nearest unmoved position above `a` (`sign` > 0) or below it.
+    fn next(&mut self, a: usize, sign: f64) -> Option<usize> {
+        if sign > 0.0 {
+            let b = find(&mut self.up, a + 1);
+            (b + 1 < self.up.len()).then_some(b)
+        } else {
+            find(&mut self.down, a).checked_sub(1)
+        }
+    }
+}
+
+/// The root of `i` in the forest `parent` (a root is its own parent), compressing the path.
+fn find(parent: &mut [usize], i: usize) -> usize {
+    let mut root = i;
+    while parent[root] != root {
+        root = parent[root];
+    }
+    let mut j = i;
+    while parent[j] != root {
+        let next = parent[j];
+        parent[j] = root;
+        j = next;
+    }
+    root
 }
 
 /// Rule ④: faces between two moving ones whose moving part overlaps both; returns those added.
@@ -210,7 +340,7 @@ fn between_moving(layer: &Layer, moving: &mut [bool], tol: f64) -> Vec<usize> {
     let n = moving.len();
     let mut added = Vec::new();
     for b in 0..n {
-        if moving[b] || layer.moving_part[b].is_empty() {
+        if moving[b] || layer.moving_part(b).is_empty() {
             continue;
         }
         let below = (0..b).any(|a| moving[a] && layer.moving_overlap(a, b, tol));

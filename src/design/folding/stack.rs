@@ -4,8 +4,7 @@
 use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{double_area, overlaps, rotation_about};
-use super::operation::contains_either;
+use super::geometry::{contains_either, double_area, overlaps, rotation_about};
 use super::search::Layer;
 use super::state::FaceGroup;
 
@@ -23,8 +22,8 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
     let half = ids.len() / 2;
     for i in 0..half {
         let (a, b) = (
-            &layer.moving_part[ids[i]],
-            &layer.moving_part[ids[ids.len() - 1 - i]],
+            layer.moving_part(ids[i]),
+            layer.moving_part(ids[ids.len() - 1 - i]),
         );
         let same = (double_area(a).abs() - double_area(b).abs()).abs() <= tol * 1e3
             && a.iter().all(|&p| contains_either(b, p, tol * 1e3))
@@ -39,7 +38,8 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
     let landing: Vec<Vec<DVec2>> = ids
         .iter()
         .map(|&i| {
-            layer.moving_part[i]
+            layer
+                .moving_part(i)
                 .iter()
                 .map(|&p| layer.line.reflect(p))
                 .collect()
@@ -47,7 +47,7 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
         .collect();
     for b in (lo + 1..hi).filter(|&b| !moving[b]) {
         let covers = |l: &Vec<DVec2>| {
-            [&layer.fixed_part[b], &layer.moving_part[b]]
+            [layer.fixed_part(b), layer.moving_part(b)]
                 .iter()
                 .any(|part| !part.is_empty() && overlaps(l, part, tol))
         };
@@ -96,18 +96,25 @@ impl Hinge {
     pub fn motion(&self) -> DAffine3 {
         rotation_about(self.point, self.axis, self.angle)
     }
+
+    /// The direction a point at `offset` from the hinge point (after the turn) moves in at
+    /// the end of the turn.
+    pub fn arrival(&self, offset: DVec3) -> DVec3 {
+        self.axis.cross(offset) * self.angle.signum()
+    }
 }
 
-/// Puts the turned block of faces (old stack order) into the group whose plane it now lies in,
-/// on the side it arrives from, or into a new group.
+/// Puts a turned block of faces (in their old stack order; `old` is their plane before the
+/// turn `rotation`) into the group whose plane they now lie in, on the side they arrive from
+/// (`arrival`: the direction they move in at the end of the turn), or into a new group.
 pub(super) fn land(
     groups: &mut Vec<FaceGroup>,
     old: (DVec3, DVec3),
     mut block: Vec<usize>,
-    hinge: &Hinge,
+    rotation: DAffine3,
+    arrival: DVec3,
     tol: f64,
 ) {
-    let rotation = hinge.motion();
     let origin = rotation.transform_point3(old.0);
     let normal = rotation.transform_vector3(old.1).normalize();
     let target = groups.iter().position(|g| {
@@ -125,10 +132,7 @@ pub(super) fn land(
     if normal.dot(g.normal) < 0.0 {
         block.reverse();
     }
-    // Arrival side: the velocity of a moving point at the end of the turn.
-    let landed = rotation.transform_vector3(hinge.outward);
-    let velocity = hinge.axis.cross(landed) * hinge.angle.signum();
-    if velocity.dot(g.normal) <= 0.0 {
+    if arrival.dot(g.normal) <= 0.0 {
         g.stack.extend(block);
     } else {
         block.extend(g.stack.iter().copied());

@@ -7,7 +7,9 @@
 use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{Line2, double_area, shared_segment};
+use super::geometry::{double_area, shared_segment};
+use super::sheet::{check_simple, convex_pieces, is_convex};
+use super::small::{Neighbours, Ring};
 use crate::pattern::MAX_COORDINATE;
 
 /// Index of a cell of the face tree ([`Folding::cells`]).
@@ -26,8 +28,9 @@ impl CellId {
 pub struct FaceCell {
     /// The face this one was split from; `None` for the sheet.
     pub parent: Option<CellId>,
-    /// The region on the flat sheet, a convex counter-clockwise polygon in millimetres.
-    pub polygon: Vec<DVec2>,
+    /// The region on the flat sheet, a counter-clockwise polygon in millimetres; convex for
+    /// every cell but a non-convex sheet's root (which is never a current face).
+    pub polygon: Ring,
     /// The step that made the cell (0 for the sheet).
     pub step: usize,
 }
@@ -41,11 +44,11 @@ pub struct LiveFace {
     /// translation only, so the face keeps its shape by construction).
     pub transform: DAffine3,
     /// The faces sharing an edge with it on the sheet, with that edge.
-    pub neighbours: Vec<Neighbour>,
+    pub neighbours: Neighbours,
 }
 
 /// A face sharing an edge with another on the sheet.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Neighbour {
     /// Its index in [`State::faces`].
     pub face: usize,
@@ -105,6 +108,9 @@ pub struct Step {
     pub cells: usize,
 }
 
+/// Largest number of corners of a sheet outline.
+pub const MAX_SHEET_CORNERS: usize = 1_000;
+
 /// Largest number of faces a state may have.
 pub const MAX_FACES: usize = 200_000;
 
@@ -118,12 +124,19 @@ pub struct Folding {
 }
 
 impl Folding {
-    /// A flat sheet in the x-y plane (z = 0, front side facing +z) with the given convex outline
-    /// in millimetres (either orientation). Errors: fewer than 3 corners, non-finite or huge
-    /// coordinates, a non-convex or degenerate outline.
+    /// A flat sheet in the x-y plane (z = 0, front side facing +z) with the given outline in
+    /// millimetres (either orientation): a simple polygon. A convex sheet is one face; a
+    /// non-convex one starts as several convex faces, children of the sheet in the face tree
+    /// (see [`super::sheet`]). Errors: fewer than 3 corners, non-finite or huge coordinates,
+    /// an outline that has no area, repeats a corner or crosses itself.
     pub fn new(outline: &[DVec2]) -> Result<Folding, FoldError> {
         if outline.len() < 3 {
             return Err(FoldError::Sheet("needs at least 3 corners".into()));
+        }
+        if outline.len() > MAX_SHEET_CORNERS {
+            return Err(FoldError::Sheet(format!(
+                "has more than {MAX_SHEET_CORNERS} corners"
+            )));
         }
         if outline
             .iter()
@@ -142,33 +155,63 @@ impl Folding {
             .fold((sheet[0], sheet[0]), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
         let size = (hi - lo).length();
         let tol = 1e-7 * size;
-        check_convex(&sheet, tol)?;
-        let state = State {
-            faces: vec![LiveFace {
-                cell: CellId(0),
+        check_simple(&sheet, tol)?;
+        let mut cells = vec![FaceCell {
+            parent: None,
+            polygon: Ring::from(&sheet[..]),
+            step: 0,
+        }];
+        if !is_convex(&sheet, tol) {
+            for piece in convex_pieces(&sheet, tol)? {
+                cells.push(FaceCell {
+                    parent: Some(CellId(0)),
+                    polygon: piece.iter().map(|&i| sheet[i]).collect(),
+                    step: 0,
+                });
+            }
+        }
+        let leaves = if cells.len() == 1 {
+            0..1
+        } else {
+            1..cells.len()
+        };
+        let mut faces: Vec<LiveFace> = leaves
+            .map(|c| LiveFace {
+                cell: CellId(c as u32),
                 transform: DAffine3::IDENTITY,
-                neighbours: Vec::new(),
-            }],
+                neighbours: Neighbours::new(),
+            })
+            .collect();
+        for a in 0..faces.len() {
+            for b in a + 1..faces.len() {
+                let (pa, pb) = (
+                    &cells[faces[a].cell.index()].polygon,
+                    &cells[faces[b].cell.index()].polygon,
+                );
+                if let Some(edge) = contact(pa, pb, tol) {
+                    faces[a].neighbours.push(Neighbour { face: b, edge });
+                    faces[b].neighbours.push(Neighbour { face: a, edge });
+                }
+            }
+        }
+        let state = State {
             groups: vec![FaceGroup {
                 origin: DVec3::ZERO,
                 normal: DVec3::Z,
-                stack: vec![0],
+                stack: (0..faces.len()).collect(),
             }],
+            faces,
         };
         Ok(Folding {
-            cells: vec![FaceCell {
-                parent: None,
-                polygon: sheet.clone(),
-                step: 0,
-            }],
             sheet,
             tol,
             steps: vec![Step {
                 name: None,
                 summary: "flat sheet".into(),
                 state,
-                cells: 1,
+                cells: cells.len(),
             }],
+            cells,
         })
     }
 
@@ -262,23 +305,4 @@ pub fn contact(a: &[DVec2], b: &[DVec2], tol: f64) -> Option<(DVec2, DVec2)> {
         }
     }
     None
-}
-
-/// Errors unless the counter-clockwise ring is convex with a positive area.
-fn check_convex(ring: &[DVec2], tol: f64) -> Result<(), FoldError> {
-    let n = ring.len();
-    if double_area(ring) <= tol * tol {
-        return Err(FoldError::Sheet("has no area".into()));
-    }
-    for i in 0..n {
-        let Some(edge) = Line2::through(ring[i], ring[(i + 1) % n], tol) else {
-            return Err(FoldError::Sheet(format!("has two equal corners ({i})")));
-        };
-        if edge.side(ring[(i + 2) % n]) < -tol {
-            return Err(FoldError::Sheet(
-                "is not convex (only convex outlines are supported)".into(),
-            ));
-        }
-    }
-    Ok(())
 }
