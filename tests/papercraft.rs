@@ -25,3 +25,6 @@ mod design;
 
 #[path = "papercraft/cylinder.rs"]
 mod cylinder;
+
+#[path = "papercraft/neighbour.rs"]
+mod neighbour;

@@ -74,6 +74,20 @@ pub fn run(args: Args) -> Result<Outcome> {
         reference.triangle_count()
     );
     let made = design.build(&reference).map_err(|e| err(&e))?;
+    for r in &made.auto {
+        for &(q, e, gap) in &r.gaps {
+            let warn = if gap > design.tolerance {
+                " (above the tolerance: the patches cannot meet on one cylinder)"
+            } else {
+                ""
+            };
+            eprintln!(
+                "foldcam: patch {} ({} control points, fit residual {:.2e}) meets patch {q} \
+                 on cut line {e} with a gap of {gap:.2e}{warn}",
+                r.patch, r.control_points, r.fit_residual
+            );
+        }
+    }
     for (s, cp) in made.sheets.iter().enumerate() {
         super::input::save(&sheet_path(&args.output, s), cp, None)?;
         if let Some(svg) = &args.svg {
