@@ -68,9 +68,10 @@ pub fn run(args: Args) -> Result<Outcome> {
     let reference =
         ReferenceMesh::new(&mesh).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
     eprintln!(
-        "foldcam: {} cut lines, {} patches on a mesh of {} triangles",
+        "foldcam: {} cut lines, {} placed and {} generated patches on a mesh of {} triangles",
         design.cut_lines.len(),
         design.patches.len(),
+        design.auto_patches.len(),
         reference.triangle_count()
     );
     let made = design.build(&reference).map_err(|e| err(&e))?;

@@ -77,6 +77,39 @@ fn side_lengths(made: &Made, e: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The two parts glued along cut line `e`: each one's real boundary there lies on the other
+/// patch's surface within the tolerance (the boundary points are on the wall, so they are on
+/// the other's real boundary), and the two glued sides have the same length (longer than
+/// `at_least` mm).
+fn assert_meets_without_gap(design: &Design, made: &Made, e: usize, at_least: f64) {
+    let tol = design.tolerance;
+    let mut users: Vec<(usize, Vec<DVec3>)> = Vec::new();
+    for part in &made.parts {
+        let patch = &made.patches[part.patch];
+        for s in part.sides.iter().filter(|s| s.half_edge / 2 == e) {
+            let pts = (0..=s.len)
+                .map(|k| patch.point_of_flat(part.point(s.start + k) / design.scale))
+                .collect();
+            users.push((part.patch, pts));
+        }
+    }
+    assert_eq!(users.len(), 2, "cut line {e} joins two parts");
+    for (me, other) in [(0, 1), (1, 0)] {
+        let gap = users[me]
+            .1
+            .iter()
+            .map(|&x| distance_to_surface(&made.patches[users[other].0], x))
+            .fold(0.0, f64::max);
+        assert!(gap < tol, "cut line {e}: gap {gap} mm ≥ tolerance {tol}");
+    }
+    let lengths = side_lengths(made, e);
+    assert!(lengths[0] > at_least, "cut line {e}: {lengths:?}");
+    assert!(
+        (lengths[0] - lengths[1]).abs() < tol,
+        "cut line {e}: {lengths:?}"
+    );
+}
+
 #[test]
 fn generated_gores_meet_their_neighbours_without_a_gap_and_close_the_vase() {
     let design = parse_design(&auto_text()).unwrap();
@@ -87,35 +120,9 @@ fn generated_gores_meet_their_neighbours_without_a_gap_and_close_the_vase() {
     assert!(made.parts.iter().all(|p| p.dropped_tabs == 0));
     let tol = design.tolerance;
     // Every shared meridian, including meridian 0 where the last generated gore meets the
-    // placed one: each part's real boundary on it lies on the other patch's surface (the
-    // boundary points are on the wall, so they are on the other's real boundary), and the
-    // two glued sides have the same length.
+    // placed one.
     for e in 0..8 {
-        let mut users: Vec<(usize, Vec<DVec3>)> = Vec::new();
-        for part in &made.parts {
-            let patch = &made.patches[part.patch];
-            for s in part.sides.iter().filter(|s| s.half_edge / 2 == e) {
-                let pts = (0..=s.len)
-                    .map(|k| patch.point_of_flat(part.point(s.start + k) / design.scale))
-                    .collect();
-                users.push((part.patch, pts));
-            }
-        }
-        assert_eq!(users.len(), 2, "meridian {e} joins two gores");
-        for (me, other) in [(0, 1), (1, 0)] {
-            let gap = users[me]
-                .1
-                .iter()
-                .map(|&x| distance_to_surface(&made.patches[users[other].0], x))
-                .fold(0.0, f64::max);
-            assert!(gap < tol, "meridian {e}: gap {gap} mm ≥ tolerance {tol}");
-        }
-        let lengths = side_lengths(&made, e);
-        assert!(lengths[0] > 100.0, "meridian {e}: {lengths:?}");
-        assert!(
-            (lengths[0] - lengths[1]).abs() < tol,
-            "meridian {e}: {lengths:?}"
-        );
+        assert_meets_without_gap(&design, &made, e, 100.0);
     }
     // The reports agree: every gap measured on the wall ribs is below the tolerance.
     assert_eq!(made.auto.len(), 7);
@@ -251,4 +258,24 @@ fn the_fit_reproduces_a_b_spline_and_converges_on_a_circle() {
     // Too many control points, and zero weights, are refused.
     assert!(fit_directrix(&points[..6], &params[..6], &[1.0; 6], 7, 0).is_err());
     assert!(fit_directrix(&points[..6], &params[..6], &[0.0; 6], 5, 0).is_err());
+}
+
+#[test]
+fn the_fish_example_builds_its_generated_gores_meet_and_it_cuts_clean() {
+    let text = std::fs::read_to_string("examples/papercraft/fish.craft.toml").unwrap();
+    let design = parse_design(&text).unwrap();
+    assert_eq!((design.patches.len(), design.auto_patches.len()), (3, 5));
+    let mesh =
+        ReferenceMesh::new(&read_mesh(Path::new("examples/papercraft/fish.obj")).unwrap()).unwrap();
+    let made = design.build(&mesh).unwrap();
+    assert_eq!(made.parts.len(), 8);
+    assert!(made.parts.iter().all(|p| p.dropped_tabs == 0));
+    // Six meridians between the gores (the body is 98 mm long between the caps): the sections
+    // are ellipses, so the gores are not mirror images and only §3.5 makes them meet.
+    for e in 0..6 {
+        assert_meets_without_gap(&design, &made, e, 98.0);
+    }
+    for (s, cp) in made.sheets.iter().enumerate() {
+        assert_cuts_clean_on_paper(&format!("fish sheet {s}"), cp);
+    }
 }

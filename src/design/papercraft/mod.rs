@@ -20,7 +20,14 @@
 //!   sheet (outlines cut, tab roots mountain folds).
 //! - [`design`]: the TOML design file (placed and automatic patches) and the whole chain,
 //!   run by `foldcam papercraft DESIGN -o parts.fold`.
-//! - [`shapes`]: meshes of bodies of revolution for tests and examples.
+//! - [`shapes`]: meshes of bodies of revolution and of elliptic-section bodies (the fish)
+//!   for tests and examples.
+//!
+//! Examples (`examples/papercraft/`): `vase.craft.toml` (eight placed gores),
+//! `vase_auto.craft.toml` (one placed gore, seven generated, closing the ring) and
+//! `fish.craft.toml` (one placed gore, five generated, two placed flat caps that meet the
+//! gores with gaps of a few tenths of a millimetre: the gores cross the cap walls along
+//! curves that no flat or cylindrical cap can follow).
 //!
 //! Not built yet: edge labels drawn on the parts, packing on part shapes.
 

@@ -26,9 +26,9 @@
 //!
 //! - *P_new too short to be trimmed by its other walls*: the thesis suggests adding curve
 //!   data at both ends of the swept boundary. We add points on the end tangents of the swept
-//!   points, [`NeighbourSpec::extend`] beyond each end (the tangent is the chord over the
-//!   last twentieth of the run), before fitting, with weight 1e-3 against the boundary's 1
-//!   so that they steer the curve's ends without pulling it off the boundary.
+//!   points, [`NeighbourSpec::extend`] beyond each end: the swept points are fitted once
+//!   alone, then again with points on that curve's end tangents, weighted 1e-3 against the
+//!   boundary's 1 so that they steer the curve's ends without pulling it off the boundary.
 //! - *P_new meeting more than one existing patch*: [`NeighbourSpec::from`] may list several
 //!   (P_exist, wall) pairs. All their swept points go into one least-squares fit, so P_new
 //!   meets each as closely as one cylinder with rulings m can; where the boundaries are not
@@ -139,9 +139,8 @@ pub fn neighbour_patch<'a>(
         let run = boundary_run(mesh, walls, patch, q, e, Network::is_reversed(h_new), spec)?;
         runs.push(run.into_iter().map(sweep).collect::<Vec<_>>());
     }
-    let (mut points, mut params) = parametrise(&runs);
+    let (points, params) = parametrise(&runs);
     let data = points.len();
-    extend_ends(&mut points, &mut params, &runs[0], spec.extend);
     let counts: Vec<usize> = match spec.control_points {
         Some(n) => vec![n],
         None => {
@@ -151,12 +150,9 @@ pub fn neighbour_patch<'a>(
                 .collect()
         }
     };
-    let weights: Vec<f64> = (0..points.len())
-        .map(|i| if i < data { 1.0 } else { EXTENSION_WEIGHT })
-        .collect();
     let mut best: Option<(super::fit::Fit, usize, f64)> = None;
     for &n in &counts {
-        let fit = fit_directrix(&points, &params, &weights, n, CORRECTIONS)?;
+        let fit = fit_extended(&points, &params, n, spec.extend)?;
         let residual = fit.distances[..data]
             .iter()
             .fold(0.0, |a: f64, &d| a.max(d));
@@ -280,30 +276,52 @@ fn end_tangents(run: &[DVec3]) -> (DVec3, DVec3) {
     )
 }
 
-/// Appends points on the end tangents, `extend` beyond the lowest and highest parameters,
-/// spaced like the first run's points (§5.2.1's first limit).
-fn extend_ends(points: &mut Vec<DVec3>, params: &mut Vec<f64>, first: &[DVec3], extend: f64) {
+/// Fits `n` control points to the swept points alone, then again with points appended on
+/// that curve's end tangents, `extend` beyond its ends and spaced like the data (§5.2.1's
+/// first limit), weighted [`EXTENSION_WEIGHT`].
+fn fit_extended(
+    points: &[DVec3],
+    params: &[f64],
+    n: usize,
+    extend: f64,
+) -> Result<super::fit::Fit, PapercraftError> {
+    let ones = vec![1.0; points.len()];
+    let bare = fit_directrix(points, params, &ones, n, CORRECTIONS)?;
     if extend <= 0.0 {
-        return;
+        return Ok(bare);
     }
-    let (t0, t1) = end_tangents(first);
-    let length: f64 = first.windows(2).map(|w| w[0].distance(w[1])).sum();
-    let spacing = (length / (first.len() - 1) as f64).max(1e-12);
-    let steps = ((extend / spacing).ceil() as usize).clamp(1, 4 * first.len());
-    let (lo, hi) = params.iter().enumerate().fold((0, 0), |(lo, hi), (i, &t)| {
-        (
-            if t < params[lo] { i } else { lo },
-            if t > params[hi] { i } else { hi },
-        )
-    });
-    let (p_lo, t_lo, p_hi, t_hi) = (points[lo], params[lo], points[hi], params[hi]);
-    for k in 1..=steps {
-        let d = extend * k as f64 / steps as f64;
-        points.push(p_lo - d * t0);
-        params.push(t_lo - d);
-        points.push(p_hi + d * t1);
-        params.push(t_hi + d);
+    let curve = &bare.curve;
+    let d = curve.derivative();
+    let end = curve.spans() as f64;
+    let (lo, hi) = params
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &t| {
+            (a.min(t), b.max(t))
+        });
+    let length: f64 = (0..64)
+        .map(|k| {
+            curve
+                .at(end * k as f64 / 64.0)
+                .distance(curve.at(end * (k + 1) as f64 / 64.0))
+        })
+        .sum();
+    // Parameters per unit length, to continue the data's parameters beyond the ends.
+    let rate = (hi - lo) / length.max(1e-300);
+    let steps = ((extend / (length / points.len() as f64)).ceil() as usize).clamp(1, points.len());
+    let (mut all, mut t, mut w) = (points.to_vec(), params.to_vec(), ones);
+    let ends = [
+        (curve.at(0.0), -d.at(0.0).normalize_or_zero(), lo, -rate),
+        (curve.at(end), d.at(end).normalize_or_zero(), hi, rate),
+    ];
+    for (p, dir, t0, sign) in ends {
+        for k in 1..=steps {
+            let s = extend * k as f64 / steps as f64;
+            all.push(p + s * dir);
+            t.push(t0 + sign * s);
+            w.push(EXTENSION_WEIGHT);
+        }
     }
+    fit_directrix(&all, &t, &w, n, CORRECTIONS)
 }
 
 /// The largest distance between where patches `a` and `b` cross the ribs of cut line `e`'s
