@@ -28,3 +28,6 @@ mod cylinder;
 
 #[path = "papercraft/neighbour.rs"]
 mod neighbour;
+
+#[path = "papercraft/labels.rs"]
+mod labels;

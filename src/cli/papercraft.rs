@@ -105,6 +105,12 @@ pub fn run(args: Args) -> Result<Outcome> {
             eprintln!("foldcam: wrote {}", out.display());
         }
     }
+    if !made.unlabelled.is_empty() {
+        eprintln!(
+            "foldcam: no room for the edge labels of cut lines {:?} (lower label_height)",
+            made.unlabelled
+        );
+    }
     let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
     let dropped: usize = made.parts.iter().map(|p| p.dropped_tabs).sum();
     println!(

@@ -8,6 +8,7 @@
 //! scale = 1.0              # millimetres per mesh unit
 //! wall_length = 15.0       # k of §3.4, mesh units
 //! tolerance = 0.05         # real-boundary polyline tolerance, mesh units
+//! label_height = 4.0       # edge-label digits, millimetres (0: no labels)
 //! [sheet]                  # millimetres
 //! width = 210.0
 //! height = 297.0
@@ -37,6 +38,7 @@ use serde::Deserialize;
 use super::bspline::BSpline;
 use super::cut_line::CutLine;
 use super::cylinder::CylinderPatch;
+use super::labels::add_labels;
 use super::layout::{Placement, SheetSpec, pack, sheet_pattern};
 use super::neighbour::{Neighbour, NeighbourSpec, Plane, boundary_gap, neighbour_patch};
 use super::network::Network;
@@ -65,6 +67,9 @@ pub struct Design {
     /// End points closer than this are one network vertex (mesh units).
     #[serde(default = "small")]
     pub vertex_tolerance: f64,
+    /// Height of the edge labels' digits, millimetres (default 4; 0 for none).
+    #[serde(default = "four")]
+    pub label_height: f64,
     /// Samples per cut-line segment for the patch directions n_p.
     #[serde(default = "eight")]
     pub samples: usize,
@@ -216,6 +221,8 @@ pub struct Made {
     pub sheets: Vec<CreasePattern>,
     /// One report per automatic patch.
     pub auto: Vec<AutoReport>,
+    /// Shared cut lines whose label fits on neither or only one of their parts.
+    pub unlabelled: Vec<usize>,
     /// The patches, placed then automatic (mesh units).
     pub patches: Vec<CylinderPatch>,
 }
@@ -316,6 +323,7 @@ impl Design {
             max_length: self.tabs.max_length,
         };
         add_tabs(&mut parts, &network, &style)?;
+        let unlabelled = add_labels(&mut parts, &network, self.label_height);
         let spec = SheetSpec {
             width: self.sheet.width,
             height: self.sheet.height,
@@ -332,6 +340,7 @@ impl Design {
             placements,
             sheets,
             auto,
+            unlabelled,
             patches: built,
         })
     }
