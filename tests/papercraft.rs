@@ -25,3 +25,9 @@ mod design;
 
 #[path = "papercraft/cylinder.rs"]
 mod cylinder;
+
+#[path = "papercraft/neighbour.rs"]
+mod neighbour;
+
+#[path = "papercraft/labels.rs"]
+mod labels;

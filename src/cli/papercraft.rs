@@ -68,12 +68,27 @@ pub fn run(args: Args) -> Result<Outcome> {
     let reference =
         ReferenceMesh::new(&mesh).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
     eprintln!(
-        "foldcam: {} cut lines, {} patches on a mesh of {} triangles",
+        "foldcam: {} cut lines, {} placed and {} generated patches on a mesh of {} triangles",
         design.cut_lines.len(),
         design.patches.len(),
+        design.auto_patches.len(),
         reference.triangle_count()
     );
     let made = design.build(&reference).map_err(|e| err(&e))?;
+    for r in &made.auto {
+        for &(q, e, gap) in &r.gaps {
+            let warn = if gap > design.tolerance {
+                " (above the tolerance: the patches cannot meet on one cylinder)"
+            } else {
+                ""
+            };
+            eprintln!(
+                "foldcam: patch {} ({} control points, fit residual {:.2e}) meets patch {q} \
+                 on cut line {e} with a gap of {gap:.2e}{warn}",
+                r.patch, r.control_points, r.fit_residual
+            );
+        }
+    }
     for (s, cp) in made.sheets.iter().enumerate() {
         super::input::save(&sheet_path(&args.output, s), cp, None)?;
         if let Some(svg) = &args.svg {
@@ -89,6 +104,12 @@ pub fn run(args: Args) -> Result<Outcome> {
             write_atomic(&out, &bytes).map_err(|e| anyhow!("{}: {e}", out.display()))?;
             eprintln!("foldcam: wrote {}", out.display());
         }
+    }
+    if !made.unlabelled.is_empty() {
+        eprintln!(
+            "foldcam: no room for the edge labels of cut lines {:?} (lower label_height)",
+            made.unlabelled
+        );
     }
     let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
     let dropped: usize = made.parts.iter().map(|p| p.dropped_tabs).sum();

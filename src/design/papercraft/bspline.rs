@@ -78,6 +78,35 @@ impl BSpline {
         d[p]
     }
 
+    /// The zero-length directrix of `count` control points (all at the origin), whose
+    /// [`Self::basis`] the least-squares fit uses before the control points are known.
+    pub(crate) fn unknown(count: usize) -> Self {
+        Self::clamped(DEGREE, vec![DVec3::ZERO; count.max(DEGREE + 1)])
+    }
+
+    /// The non-zero basis functions at `u` (clamped to the domain): `(first, values)` with
+    /// `values[j] = N_{first + j}(u)`, `degree + 1` of them, summing to 1 (Cox–de Boor).
+    pub fn basis(&self, u: f64) -> (usize, Vec<f64>) {
+        let p = self.degree;
+        let u = u.clamp(0.0, self.spans() as f64);
+        let span = ((u.floor() as usize).min(self.spans() - 1)) + p;
+        let mut n = vec![0.0; p + 1];
+        let (mut left, mut right) = (vec![0.0; p + 1], vec![0.0; p + 1]);
+        n[0] = 1.0;
+        for j in 1..=p {
+            left[j] = u - self.knots[span + 1 - j];
+            right[j] = self.knots[span + j] - u;
+            let mut saved = 0.0;
+            for r in 0..j {
+                let temp = n[r] / (right[r + 1] + left[j - r]);
+                n[r] = saved + right[r + 1] * temp;
+                saved = left[j - r] * temp;
+            }
+            n[j] = saved;
+        }
+        (span - p, n)
+    }
+
     /// The derivative curve (degree one less; a degree-0 curve is refused by construction
     /// since directrices have degree 4).
     pub fn derivative(&self) -> BSpline {

@@ -1,10 +1,13 @@
 //! A uniform grid over triangles' bounding boxes, for nearest-triangle queries.
 //!
 //! Each cell lists the triangles whose bounding box overlaps it. A query visits rings of
-//! cells around the query's cell (Chebyshev distance r = 0, 1, …) and stops once no unvisited
-//! cell can hold anything closer than the best candidate: a point of a cell at ring ≥ r + 1 is
-//! at least `r · h_min − d_out` away, where `h_min` is the smallest cell side and `d_out` the
-//! distance from the query to the grid box.
+//! cells around the query's cell (Chebyshev distance r = 0, 1, …; only the ring's shell is
+//! enumerated) and stops once no unvisited cell can hold anything closer than the best
+//! candidate: a point of a cell at ring ≥ r + 1 is at least `r · h_min − d_out` away, where
+//! `h_min` is the smallest cell side and `d_out` the distance from the query to the grid box.
+//! Within a ring, a cell whose box is no nearer than the best candidate is skipped, and so is
+//! a triangle whose bounding box is no nearer (which also makes a triangle listed in several
+//! cells cheap to meet again).
 
 use glam::DVec3;
 
@@ -17,6 +20,8 @@ pub(crate) struct TriangleGrid {
     /// `starts[c]..starts[c + 1]` indexes `items` for cell `c`.
     starts: Vec<u32>,
     items: Vec<u32>,
+    /// Each triangle's bounding box.
+    boxes: Vec<(DVec3, DVec3)>,
 }
 
 impl TriangleGrid {
@@ -39,6 +44,7 @@ impl TriangleGrid {
             dims,
             starts: Vec::new(),
             items: Vec::new(),
+            boxes: boxes.to_vec(),
         };
         grid.fill(boxes);
         grid
@@ -90,45 +96,71 @@ impl TriangleGrid {
     }
 
     /// Visits triangles near `p` in rings; `visit(t)` returns the candidate's distance and the
-    /// search stops when no farther ring can beat the best distance seen.
+    /// search stops when no farther ring can beat the best distance seen. Triangles and cells
+    /// whose boxes are no nearer than the best distance so far are not visited.
     pub(crate) fn nearest(&self, p: DVec3, mut visit: impl FnMut(u32) -> f64) {
-        let max = self.origin
-            + self.cell
-                * DVec3::new(
-                    self.dims[0] as f64,
-                    self.dims[1] as f64,
-                    self.dims[2] as f64,
-                );
+        let max = self.origin + self.cell * self.dims_f();
         let d_out = (p - p.clamp(self.origin, max)).length();
         let h_min = self.cell.min_element();
         let c = self.cell_of(p);
         let rings = *self.dims.iter().max().unwrap_or(&1);
         let mut best = f64::INFINITY;
         for r in 0..rings {
-            self.visit_ring(c, r, |t| best = best.min(visit(t)));
+            self.visit_ring(c, r, |cell| {
+                let lo = self.origin
+                    + self.cell * DVec3::new(cell[0] as f64, cell[1] as f64, cell[2] as f64);
+                if box_distance(p, lo, lo + self.cell) >= best {
+                    return;
+                }
+                let i = self.index(cell);
+                let (s, e) = (self.starts[i] as usize, self.starts[i + 1] as usize);
+                for &t in &self.items[s..e] {
+                    let (a, b) = self.boxes[t as usize];
+                    if box_distance(p, a, b) < best {
+                        best = best.min(visit(t));
+                    }
+                }
+            });
             if r as f64 * h_min - d_out >= best {
                 return;
             }
         }
     }
 
-    fn visit_ring(&self, c: [usize; 3], r: usize, mut f: impl FnMut(u32)) {
+    fn dims_f(&self) -> DVec3 {
+        DVec3::new(
+            self.dims[0] as f64,
+            self.dims[1] as f64,
+            self.dims[2] as f64,
+        )
+    }
+
+    /// Calls `f` on every cell at Chebyshev distance exactly `r` from `c` (inside the grid).
+    fn visit_ring(&self, c: [usize; 3], r: usize, mut f: impl FnMut([usize; 3])) {
         let range = |i: usize, d: usize| (i.saturating_sub(r), (i + r).min(d - 1));
         let (x0, x1) = range(c[0], self.dims[0]);
         let (y0, y1) = range(c[1], self.dims[1]);
         let (z0, z1) = range(c[2], self.dims[2]);
         for z in z0..=z1 {
             for y in y0..=y1 {
-                for x in x0..=x1 {
-                    let ring = x.abs_diff(c[0]).max(y.abs_diff(c[1])).max(z.abs_diff(c[2]));
-                    if ring != r {
-                        continue;
+                let on_shell = z.abs_diff(c[2]) == r || y.abs_diff(c[1]) == r;
+                if on_shell {
+                    (x0..=x1).for_each(|x| f([x, y, z]));
+                } else {
+                    // Only the two x faces of the shell can be at distance r.
+                    if c[0] >= r {
+                        f([c[0] - r, y, z]);
                     }
-                    let i = self.index([x, y, z]);
-                    let (s, e) = (self.starts[i] as usize, self.starts[i + 1] as usize);
-                    self.items[s..e].iter().for_each(|&t| f(t));
+                    if r > 0 && c[0] + r < self.dims[0] {
+                        f([c[0] + r, y, z]);
+                    }
                 }
             }
         }
     }
+}
+
+/// Distance from `p` to the box `[lo, hi]` (0 inside).
+fn box_distance(p: DVec3, lo: DVec3, hi: DVec3) -> f64 {
+    (p - p.clamp(lo, hi)).length()
 }

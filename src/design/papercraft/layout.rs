@@ -7,7 +7,8 @@
 //! height. This is a first packing on boxes, not on the parts' shapes.
 //!
 //! The sheet's pattern: outlines and tab edges are cuts (`B`), tab roots mountain folds
-//! (`M`, −90°: the tab turns behind the printed side).
+//! (`M`, −90°: the tab turns behind the printed side), edge labels flat lines (`F`, marked
+//! or skipped as the material says).
 
 use glam::DVec2;
 
@@ -216,6 +217,21 @@ pub fn sheet_pattern(parts: &[Part], placements: &[Placement], sheet: usize) -> 
             cp.add_edge(a, oa, Assignment::Boundary);
             cp.add_edge(oa, ob, Assignment::Boundary);
             cp.add_edge(ob, b, Assignment::Boundary);
+        }
+        for label in &part.labels {
+            let mut at: Vec<(DVec2, crate::pattern::VertexId)> = Vec::new();
+            let mut vertex = |cp: &mut CreasePattern, p: DVec2| match at.iter().find(|v| v.0 == p) {
+                Some(&(_, id)) => id,
+                None => {
+                    let id = cp.add_vertex(pl.apply(p));
+                    at.push((p, id));
+                    id
+                }
+            };
+            for &[a, b] in &label.strokes {
+                let (va, vb) = (vertex(&mut cp, a), vertex(&mut cp, b));
+                cp.add_edge(va, vb, Assignment::Flat);
+            }
         }
     }
     cp

@@ -12,19 +12,35 @@
 //! - [`walls`]: boundary walls, swept vertices v_s = v + k·normalize(Σ n_p) (§3.4).
 //! - [`trim`]: the real boundary of a patch, where it crosses its walls (§3.2 Step 3), as a
 //!   closed polyline in 3D and unrolled, refined to a tolerance.
-//! - [`parts`], [`layout`]: parts with glue tabs, packed on sheets, one crease pattern per
-//!   sheet (outlines cut, tab roots mountain folds).
-//! - [`shapes`]: meshes of bodies of revolution for tests and examples.
+//! - [`neighbour`], [`fit`]: automatic neighbouring patches (§3.5 Steps 1–3): P_exist's
+//!   real boundary on the chosen wall swept along the plane's normal and fitted by least
+//!   squares with a degree-4 B-spline; extended at both ends (§5.2.1's first limit) and
+//!   fitted to several P_exist at once (its second), with the gaps measured.
+//! - [`parts`], [`labels`], [`layout`]: parts with glue tabs and matching edge labels
+//!   (cut-line numbers in stroke digits, flat lines the machine marks or skips), packed on
+//!   sheets, one crease pattern per sheet (outlines cut, tab roots mountain folds).
+//! - [`design`]: the TOML design file (placed and automatic patches) and the whole chain,
+//!   run by `foldcam papercraft DESIGN -o parts.fold`.
+//! - [`shapes`]: meshes of bodies of revolution and of elliptic-section bodies (the fish)
+//!   for tests and examples.
 //!
-//! Not built yet: automatic neighbouring patches (§3.5), edge labels drawn on
-//! the parts, design files and the CLI.
+//! Examples (`examples/papercraft/`): `vase.craft.toml` (eight placed gores),
+//! `vase_auto.craft.toml` (one placed gore, seven generated, closing the ring) and
+//! `fish.craft.toml` (one placed gore, five generated, two placed flat caps that meet the
+//! gores with gaps of a few tenths of a millimetre: the gores cross the cap walls along
+//! curves that no flat or cylindrical cap can follow).
+//!
+//! Not built yet: packing on part shapes (parts are packed by bounding boxes).
 
 pub mod bspline;
 pub mod cut_line;
 pub mod cylinder;
 pub mod design;
+pub mod fit;
 mod grid;
+pub mod labels;
 pub mod layout;
+pub mod neighbour;
 pub mod network;
 pub mod parts;
 pub mod reference;
@@ -86,7 +102,8 @@ pub enum PapercraftError {
     /// A patch does not reach the wall of one of its cut lines, so it cannot be trimmed there.
     #[error(
         "patch {patch} does not reach the wall of cut line {line} near parameter {s:.3} \
-         (extend its directrix or move it closer to the cut line)"
+         (extend its directrix or move it closer to the cut line; for an automatic patch, \
+         raise `extend`)"
     )]
     MissesWall {
         /// Patch index.

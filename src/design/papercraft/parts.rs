@@ -5,7 +5,7 @@
 //! shared by two patch sides gets tabs on exactly one side, the one using half-edge `2e`
 //! (the side with the even half-edge, along the cut line's own points); free boundaries get
 //! none. Both parts know which cut line each side lies on, which is the edge label printed on
-//! both.
+//! both ([`super::labels`] writes it).
 //!
 //! A side is split into pieces no longer than the style's maximum whose points stay within a
 //! quarter of the tab width of their chord; each piece gets a trapezoid tab: the piece itself
@@ -89,6 +89,8 @@ pub struct Part {
     pub tabs: Vec<Tab>,
     /// Tabs left out because even narrowed they overlapped the part.
     pub dropped_tabs: usize,
+    /// Edge labels ([`super::labels`]).
+    pub labels: Vec<super::labels::Label>,
 }
 
 impl Part {
@@ -125,6 +127,7 @@ impl Part {
             sides,
             tabs: Vec::new(),
             dropped_tabs: 0,
+            labels: Vec::new(),
         }
     }
 
