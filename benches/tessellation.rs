@@ -33,17 +33,20 @@ fn bench(c: &mut Criterion) {
             let mut opts = TessellateOptions::with_limits(Limits::from_degrees(fold, 30.0));
             opts.star.tuck.kind = kind;
             opts.star.shrink = shrink;
-            g.bench_function(format!("dome_{faces}_faces_{name}_initial_and_solve"), |b| {
-                b.iter(|| {
-                    let he = disk(&mesh).expect("disk");
-                    let mut init = star_tucks(&he, &opts.star).expect("initial pattern");
-                    assign_folds(&mut init.mesh);
-                    let report =
-                        solve(&mut init.mesh, &opts.solve, |_| {}).expect("valid options");
-                    assert!(report.converged, "{name}: {}", report.summary());
-                    report.iterations
-                })
-            });
+            g.bench_function(
+                format!("dome_{faces}_faces_{name}_initial_and_solve"),
+                |b| {
+                    b.iter(|| {
+                        let he = disk(&mesh).expect("disk");
+                        let mut init = star_tucks(&he, &opts.star).expect("initial pattern");
+                        assign_folds(&mut init.mesh);
+                        let report =
+                            solve(&mut init.mesh, &opts.solve, |_| {}).expect("valid options");
+                        assert!(report.converged, "{name}: {}", report.summary());
+                        report.iterations
+                    })
+                },
+            );
         }
     }
     g.finish();
