@@ -378,12 +378,7 @@ fn digon_layout_solves_the_dome_with_relaxed_limits() {
     assert!(r.max_fold <= limits.max_fold && r.min_vertex_angle >= limits.min_vertex_angle);
     let u = t.unfolded.as_ref().expect("no overlaps");
     assert!(u.max_length_error < 1e-9);
-    let digons = t
-        .mesh
-        .edges
-        .iter()
-        .filter(|e| e.role == EdgeRole::Digon)
-        .count();
+    let digons = edges_with_role(&t.mesh, EdgeRole::Digon);
     let he = half_edges(&example("dome"));
     let interior_edges = he.half_edges().iter().filter(|h| h.twin.is_some()).count() / 2;
     assert_eq!(

@@ -247,12 +247,7 @@ fn truncated_stars_solve_the_examples() {
     // On the saddle and the bell the tucks must open wider (s = 0.6) to keep faces apart.
     for (name, shrink) in [("dome", 0.8), ("saddle", 0.6), ("bell", 0.6)] {
         let t = solve_variation(name, TuckKind::Truncated, shrink, 30.0);
-        let rims = t
-            .mesh
-            .edges
-            .iter()
-            .filter(|e| e.role == EdgeRole::TruncationRim)
-            .count();
+        let rims = edges_with_role(&t.mesh, EdgeRole::TruncationRim);
         assert!(rims >= 3 * 19, "{name}: {rims} n-gon rims");
     }
 }
@@ -314,11 +309,6 @@ fn truncated_dome_cuts_clean_on_stainless() {
         .iter()
         .filter(|e| e.assignment == Assignment::Flat)
         .count();
-    let diagonals = t
-        .mesh
-        .edges
-        .iter()
-        .filter(|e| e.role == EdgeRole::Diagonal)
-        .count();
+    let diagonals = edges_with_role(&t.mesh, EdgeRole::Diagonal);
     assert_eq!(flat, diagonals);
 }

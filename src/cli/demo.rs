@@ -182,6 +182,38 @@ fn compare(a: &CreasePattern, b: &CreasePattern, cp_vocabulary: bool) -> String 
     }
 }
 
+/// A pattern's first machine job on a shipped machine and material: planned (adapted to the
+/// machine), posted as G-code and run on the simulated machine.
+pub(super) struct CheckedJob {
+    /// The G-code.
+    pub gcode: String,
+    /// What the simulated machine found.
+    pub run: sim::SimReport,
+    /// No violations, and every crease and cut covered as planned.
+    pub clean: bool,
+    /// Edges not covered as planned.
+    pub edges_off: usize,
+}
+
+/// Plans `cp` for `machine` and `material` (shipped names) and checks its first job.
+pub(super) fn checked_job(cp: &CreasePattern, machine: &str, material: &str) -> Result<CheckedJob> {
+    let machine = load_machine(machine)?;
+    let material = load_material(material)?;
+    let mut options = PlanOptions::from_material(&material);
+    options.adapt_to_machine(&machine)?;
+    let p = plan(cp, &machine, &material, &options)?;
+    let gcode = post::gcode(&p, &p.jobs[0], &machine)?;
+    let run = sim::run(&gcode, &machine)?;
+    let cov = sim::coverage(&run, cp, &p.jobs[0], &p);
+    let edges_off = cov.failed_edges().count();
+    Ok(CheckedJob {
+        clean: run.is_clean() && cov.passed(),
+        gcode,
+        run,
+        edges_off,
+    })
+}
+
 /// Machine jobs for the first two classics: planned, written, read back by the simulated
 /// machine and checked against the pattern; the toolpath drawn.
 fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
@@ -198,34 +230,28 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
         let Some((_, cp)) = cases.iter().find(|(n, _)| n == name) else {
             continue;
         };
+        let CheckedJob {
+            gcode,
+            run,
+            clean,
+            edges_off,
+        } = checked_job(cp, machine_name, material_name)?;
         let machine = load_machine(machine_name)?;
-        let material = load_material(material_name)?;
-        let mut options = PlanOptions::from_material(&material);
-        options.adapt_to_machine(&machine)?;
-        let p = plan(cp, &machine, &material, &options)?;
-        let job = &p.jobs[0];
-        let gcode = post::gcode(&p, job, &machine)?;
-        let run = sim::run(&gcode, &machine)?;
-        let cov = sim::coverage(&run, cp, job, &p);
         let path = dir.join(format!("{name}.{machine_name}.{ext}"));
         write_atomic(&path, gcode.as_bytes()).with_context(|| path.display().to_string())?;
         let png = dir.join(format!("{name}.{machine_name}.toolpath.png"));
         let image = sim::render_png(&run, &machine, 900).map_err(|e| anyhow::anyhow!("{e}"))?;
         write_atomic(&png, &image).with_context(|| png.display().to_string())?;
-        let verdict = if run.is_clean() && cov.passed() {
+        let verdict = if clean {
             "clean / all edges as planned".to_string()
         } else {
-            format!(
-                "{} violations / {} edges off",
-                run.violation_count,
-                cov.failed_edges().count()
-            )
+            format!("{} violations / {edges_off} edges off", run.violation_count)
         };
         println!(
             "{:<14} {:<17} {:<15} {:>9.0} {:>8} {:>8.0}s  {}",
             name, machine_name, material_name, run.burn_length_mm, run.pierces, run.time_s, verdict
         );
-        if !(run.is_clean() && cov.passed()) {
+        if !clean {
             bail!("{name} on {machine_name}: the simulated machine found problems");
         }
     }
@@ -288,23 +314,13 @@ fn show_card(
         .collect();
     let gif = render_gif(&frames, &view, 100)?;
     write_atomic(&dir.join(format!("{name}.gif")), &gif).context("gif")?;
-    let machine = load_machine("grbl-diode")?;
-    let material = load_material("card-300gsm")?;
-    let p = plan(
-        &cp,
-        &machine,
-        &material,
-        &PlanOptions::from_material(&material),
-    )?;
-    let gcode = post::gcode(&p, &p.jobs[0], &machine)?;
-    let run = sim::run(&gcode, &machine)?;
-    let cov = sim::coverage(&run, &cp, &p.jobs[0], &p);
+    let job = checked_job(&cp, "grbl-diode", "card-300gsm")?;
     write_atomic(
         &dir.join(format!("{name}.grbl-diode.gcode")),
-        gcode.as_bytes(),
+        job.gcode.as_bytes(),
     )
     .context("gcode")?;
-    let clean = run.is_clean() && cov.passed();
+    let clean = job.clean;
     println!(
         "\n{name} (seed 001): {} × {} × {} voxels, pops up; {} creases and cuts; \
          grbl-diode/card-300gsm job {}; {name}.png and .gif show it standing and opening",

@@ -6,11 +6,9 @@ use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
 use foldcam::design::tessellation::{Limits, TessellateOptions, TuckKind, tessellate};
-use foldcam::fab::{PlanOptions, plan};
 use foldcam::formats::{self, write_atomic};
-use foldcam::machine::{load_machine, load_material};
+use foldcam::machine::load_material;
 use foldcam::render::{View3d, render_folded_png};
-use foldcam::{post, sim};
 
 /// Tessellates the bundled dome, writes `tessellation-dome.fold` (pattern and folded form),
 /// its preview and the fiber-laser job into `dir`.
@@ -41,18 +39,10 @@ pub fn dome(dir: &Path, width: u32) -> Result<()> {
     };
     let png = render_folded_png(&u.folded, &view)?;
     write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;
-    let machine = load_machine("linuxcnc-fiber")?;
-    let mut options = PlanOptions::from_material(&material);
-    options.adapt_to_machine(&machine)?;
-    let p = plan(&u.pattern, &machine, &material, &options)?;
-    let mut clean = true;
-    for (k, job) in p.jobs.iter().enumerate() {
-        let gcode = post::gcode(&p, job, &machine)?;
-        let run = sim::run(&gcode, &machine)?;
-        clean &= run.is_clean() && sim::coverage(&run, &u.pattern, job, &p).passed();
-        let path = dir.join(format!("{name}.linuxcnc-fiber.{k}.ngc"));
-        write_atomic(&path, gcode.as_bytes()).with_context(|| path.display().to_string())?;
-    }
+    let job = super::demo::checked_job(&u.pattern, "linuxcnc-fiber", "stainless-0.5")?;
+    let path = dir.join(format!("{name}.linuxcnc-fiber.ngc"));
+    write_atomic(&path, job.gcode.as_bytes()).with_context(|| path.display().to_string())?;
+    let clean = job.clean;
     let r = &t.report.last;
     println!(
         "\n{name} (seed 002): {} faces -> {} triangles with truncated stars, solved in {} \

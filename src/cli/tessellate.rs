@@ -215,22 +215,11 @@ pub fn run(args: Args) -> Result<Outcome> {
             fit.initial, fit.last, fit.accepted
         );
     }
-    if !t.report.converged {
-        println!("nothing written: the solver did not reach every condition");
-        return Ok(Outcome::CheckFailed);
-    }
-    if let Some((a, b)) = t.intersections.first() {
-        println!(
-            "nothing written: the folded form intersects itself ({} face pairs, first: faces {a} \
-             and {b})",
-            t.intersections.len()
-        );
-        return Ok(Outcome::CheckFailed);
-    }
-    let unfolded = match t.unfolded {
-        Ok(u) => u,
-        Err(e) => {
-            println!("nothing written: {e}");
+    let unfolded = match (t.problem(), t.unfolded) {
+        (None, Ok(u)) => u,
+        (problem, unfolded) => {
+            let why = problem.or(unfolded.err().map(|e| e.to_string()));
+            println!("nothing written: {}", why.unwrap_or_default());
             return Ok(Outcome::CheckFailed);
         }
     };

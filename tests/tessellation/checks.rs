@@ -21,6 +21,11 @@ pub fn stainless_limits() -> Limits {
     Limits::from_degrees(m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg)
 }
 
+/// How many edges of `mesh` have `role`.
+pub fn edges_with_role(mesh: &TessMesh, role: EdgeRole) -> usize {
+    mesh.edges.iter().filter(|e| e.role == role).count()
+}
+
 /// The unfolded pattern of `t`: valid, no overlaps (its triangles fill the 3D area once), edge
 /// lengths equal to the folded form's within 1e-9 relative, no face of the folded form through
 /// another, and every fold of its assigned sign within 165°.

@@ -6,7 +6,7 @@
 //!   `f = 2 (sin(ρ'/2) − sin(ρ_target/2)) h_p h_q` and a fold of the wrong sign gets
 //!   `f = 2 (sin(ρ'/2) − sin(m/2)) h_p h_q` (eq. 4: h are relative heights, Fig. 7);
 //! - vertex angles, §5: every angle θ between neighbouring creases ≥ δ_corner (a triangle
-//!   corner, or corners summed across flat diagonals: [`Sectors`]), `θ − (δ_corner + m)` when
+//!   corner, or corners summed across flat diagonals: [`Sectors`](super::sectors::Sectors)), `θ − (δ_corner + m)` when
 //!   violated;
 //! - flat diagonals (polygon faces, the n-gon of a truncated star) stay flat: eq. 3 with
 //!   ρ_limit = 0 as an equality;
@@ -25,7 +25,6 @@ use glam::DVec3;
 use super::boundary;
 use super::geometry::{corner_angle, fold_angle, relative_height};
 use super::model::{EdgeRole, TessMesh};
-use super::sectors::Sectors;
 use super::vertex_penalty;
 use crate::pattern::Assignment;
 
@@ -113,31 +112,26 @@ fn add(entries: &mut Vec<(u32, DVec3)>, v: u32, g: DVec3) {
 /// (n-gon rims, twist folds) take the sign of their fold in the initial pattern
 /// (`mesh.positions`), a valley when it is exactly flat.
 pub fn assign_folds(mesh: &mut TessMesh) {
-    let by_shape: Vec<Option<Assignment>> = mesh
-        .edges
-        .iter()
-        .map(|e| {
-            matches!(e.role, EdgeRole::TruncationRim | EdgeRole::TwistFold).then(|| {
+    for k in 0..mesh.edges.len() {
+        let e = &mesh.edges[k];
+        if !e.interior {
+            continue;
+        }
+        let assignment = match e.role {
+            EdgeRole::Diagonal => Assignment::Flat,
+            EdgeRole::KeyTip => Assignment::Valley,
+            EdgeRole::FaceRim | EdgeRole::Digon | EdgeRole::KeyCorner => Assignment::Mountain,
+            EdgeRole::TruncationRim | EdgeRole::TwistFold => {
                 let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
                 if fold_angle(i, j, a, b).value >= 0.0 {
                     Assignment::Valley
                 } else {
                     Assignment::Mountain
                 }
-            })
-        })
-        .collect();
-    for (e, shaped) in mesh.edges.iter_mut().zip(by_shape) {
-        if !e.interior {
-            continue;
-        }
-        e.assignment = match e.role {
-            EdgeRole::Diagonal => Assignment::Flat,
-            EdgeRole::KeyTip => Assignment::Valley,
-            EdgeRole::FaceRim | EdgeRole::Digon | EdgeRole::KeyCorner => Assignment::Mountain,
-            EdgeRole::TruncationRim | EdgeRole::TwistFold => shaped.unwrap_or(Assignment::Valley),
+            }
             EdgeRole::Boundary => Assignment::Boundary,
         };
+        mesh.edges[k].assignment = assignment;
     }
 }
 
@@ -178,7 +172,7 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
     let mut out = Vec::new();
     let mut boundary_angles = boundary::AngleSums::new();
     let floor = limits.min_vertex_angle + limits.margin;
-    let sectors = Sectors::new(mesh);
+    let sectors = &mesh.sectors;
     let mut sector_angle = vec![0.0; sectors.count];
     for (t, tri) in mesh.triangles.iter().enumerate() {
         for k in 0..3 {
@@ -200,19 +194,12 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
             }
         }
     }
-    out.extend(vertex_angle_rows(
-        mesh,
-        x,
-        &sectors,
-        &sector_angle,
-        limits,
-        floor,
-    ));
+    out.extend(vertex_angle_rows(mesh, x, &sector_angle, limits, floor));
     for e in mesh.edges.iter().filter(|e| e.interior) {
         let sigma = match e.assignment {
             Assignment::Valley => 1.0,
             Assignment::Mountain => -1.0,
-            Assignment::Flat if e.role == EdgeRole::Diagonal => {
+            Assignment::Flat => {
                 out.push(hinge_row(x, mesh.hinge(e), 1.0, 0.0, Family::Flat));
                 continue;
             }
@@ -261,15 +248,15 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
 }
 
 /// §5 vertex-angle rows: `θ − (δ_corner + m)` for every sector (the angle between two
-/// neighbouring creases, see [`Sectors`]) under `δ_corner + m/2`.
+/// neighbouring creases, see [`Sectors`](super::sectors::Sectors)) under `δ_corner + m/2`.
 fn vertex_angle_rows(
     mesh: &TessMesh,
     x: &[DVec3],
-    sectors: &Sectors,
     sector_angle: &[f64],
     limits: &Limits,
     floor: f64,
 ) -> Vec<Row> {
+    let sectors = &mesh.sectors;
     let threshold = limits.min_vertex_angle + 0.5 * limits.margin;
     let mut row_of: Vec<u32> = vec![u32::MAX; sectors.count];
     let mut out: Vec<Row> = Vec::new();
@@ -358,7 +345,7 @@ pub struct Residuals {
     /// Most negative σρ over creases (0 when every crease folds its assigned way), radians.
     pub wrong_sign: f64,
     /// Smallest angle between neighbouring creases (a triangle corner, or corners joined
-    /// across flat diagonals: see [`Sectors`]), radians.
+    /// across flat diagonals: see [`Sectors`](super::sectors::Sectors)), radians.
     pub min_vertex_angle: f64,
     /// Largest |ρ| over the flat diagonals (0 without any), radians.
     pub max_flat: f64,
@@ -396,8 +383,7 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residua
             r.ground = r.ground.max((x[v].z - z).abs());
         }
     }
-    let sectors = Sectors::new(mesh);
-    for angle in sectors.angles(mesh, x) {
+    for angle in mesh.sectors.angles(mesh, x) {
         r.min_vertex_angle = r.min_vertex_angle.min(angle);
     }
     for e in mesh.edges.iter().filter(|e| e.interior) {
@@ -408,7 +394,7 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residua
         };
         let [i, j, a, b] = mesh.hinge(e).map(|v| x[v as usize]);
         let rho = fold_angle(i, j, a, b).value;
-        if e.role == EdgeRole::Diagonal && e.assignment == Assignment::Flat {
+        if e.assignment == Assignment::Flat {
             r.max_flat = r.max_flat.max(rho.abs());
         }
         r.max_fold = r.max_fold.max(rho.abs());

@@ -17,7 +17,7 @@ use glam::DVec3;
 
 use super::TessError;
 use super::constraints;
-use super::min_norm::{min_norm, times};
+use super::min_norm::{Jacobian, min_norm};
 use super::model::TessMesh;
 use super::solver::{SolveOptions, solve};
 
@@ -109,7 +109,8 @@ pub fn fit_surface(
             dx0[t.vertex as usize] = -g;
         }
         let rows = constraints::rows(mesh, x, &solve_opts.limits);
-        let (correction, _) = min_norm(&rows, &times(&rows, &dx0), x.len(), 1e-12);
+        let c = Jacobian::new(&rows, x.len());
+        let (correction, _) = min_norm(&c, &c.times_vec(&dx0), 1e-12);
         let mut trial = mesh.clone();
         for (p, (a, c)) in trial.positions.iter_mut().zip(dx0.iter().zip(&correction)) {
             *p += alpha * (*a - *c); // eq. 9

@@ -48,15 +48,22 @@ impl Jacobian {
         self.offsets.len() - 1
     }
 
+    /// `C dx`.
+    pub(crate) fn times_vec(&self, dx: &[DVec3]) -> Vec<f64> {
+        let mut out = vec![0.0; self.rows()];
+        self.times(dx, &mut out);
+        out
+    }
+
     /// `C dx` into `out`.
-    pub(crate) fn times(&self, dx: &[DVec3], out: &mut [f64]) {
+    fn times(&self, dx: &[DVec3], out: &mut [f64]) {
         for (r, o) in out.iter_mut().enumerate().take(self.rows()) {
             *o = self.row(r).map(|(v, b)| b.dot(dx[v])).sum();
         }
     }
 
     /// `Cᵀ y` into `out` (overwritten).
-    pub(crate) fn transpose_times(&self, y: &[f64], out: &mut [DVec3]) {
+    fn transpose_times(&self, y: &[f64], out: &mut [DVec3]) {
         out.fill(DVec3::ZERO);
         for (r, &yr) in y.iter().enumerate().take(self.rows()) {
             for (v, b) in self.row(r) {
@@ -66,20 +73,11 @@ impl Jacobian {
     }
 }
 
-/// `C dx` for per-vertex blocks `dx`.
-pub(crate) fn times(rows: &[Row], dx: &[DVec3]) -> Vec<f64> {
-    let c = Jacobian::new(rows, dx.len());
-    let mut out = vec![0.0; rows.len()];
-    c.times(dx, &mut out);
-    out
-}
-
-/// The minimum-norm solution `dx = Cᵀ y` of `C dx = g` (that is `C⁺ g`) over `n` vertices,
-/// with the CG stopped at the relative residual `eta` (1e-12 for an exact step). Returns the
-/// step and the CG iteration count.
-pub(crate) fn min_norm(rows: &[Row], g: &[f64], n: usize, eta: f64) -> (Vec<DVec3>, usize) {
-    let c = Jacobian::new(rows, n);
-    let m = rows.len();
+/// The minimum-norm solution `dx = Cᵀ y` of `C dx = g` (that is `C⁺ g`), with the CG
+/// stopped at the relative residual `eta` (1e-12 for an exact step). Returns the step and the
+/// CG iteration count.
+pub(crate) fn min_norm(c: &Jacobian, g: &[f64], eta: f64) -> (Vec<DVec3>, usize) {
+    let m = c.rows();
     let diag: Vec<f64> = (0..m)
         .map(|r| c.row(r).map(|(_, b)| b.length_squared()).sum())
         .collect();
@@ -122,7 +120,7 @@ pub(crate) fn min_norm(rows: &[Row], g: &[f64], n: usize, eta: f64) -> (Vec<DVec
             p[k] = z[k] + beta * p[k];
         }
     }
-    let mut dx = vec![DVec3::ZERO; n];
+    let mut dx = vec![DVec3::ZERO; c.n];
     c.transpose_times(&y, &mut dx);
     (dx, it)
 }

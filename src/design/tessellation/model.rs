@@ -5,6 +5,7 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 
+use super::sectors::Sectors;
 use crate::pattern::Assignment;
 
 /// What an edge of the tessellation is.
@@ -63,6 +64,8 @@ pub struct TessMesh {
     /// Vertices `0..corner_count` are corners of the (shrunk) input faces; the rest belong
     /// to the tucks.
     pub corner_count: usize,
+    /// The corners grouped into the angles between neighbouring creases (topology only).
+    pub sectors: Sectors,
 }
 
 impl TessMesh {
@@ -104,6 +107,7 @@ impl TessMesh {
             interior[e.vertices[0] as usize] = false;
             interior[e.vertices[1] as usize] = false;
         }
+        let sectors = Sectors::new(&triangles, &edges);
         TessMesh {
             positions,
             triangles,
@@ -112,6 +116,7 @@ impl TessMesh {
             key_of_input,
             input_vertex,
             corner_count,
+            sectors,
         }
     }
 

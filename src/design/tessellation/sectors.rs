@@ -6,7 +6,7 @@
 use glam::DVec3;
 
 use super::geometry::corner_angle;
-use super::model::{EdgeRole, TessMesh};
+use super::model::{EdgeRole, TessEdge, TessMesh};
 
 /// Sector id of every triangle corner `3·t + k` (corner `k` of triangle `t`); ids index
 /// [`Sectors::count`] sectors.
@@ -19,16 +19,15 @@ pub struct Sectors {
 }
 
 impl Sectors {
-    /// Groups the corners of `mesh` across its flat diagonals.
-    pub fn new(mesh: &TessMesh) -> Self {
-        let n = 3 * mesh.triangles.len();
+    /// Groups the corners of `triangles` across the flat diagonals among `edges`.
+    pub fn new(triangles: &[[u32; 3]], edges: &[TessEdge]) -> Self {
+        let n = 3 * triangles.len();
         let mut parent: Vec<u32> = (0..n as u32).collect();
         let corner = |t: u32, v: u32| -> usize {
-            let tri = mesh.triangles[t as usize];
+            let tri = triangles[t as usize];
             3 * t as usize + tri.iter().position(|&w| w == v).unwrap_or(0)
         };
-        for e in mesh
-            .edges
+        for e in edges
             .iter()
             .filter(|e| e.interior && e.role == EdgeRole::Diagonal)
         {

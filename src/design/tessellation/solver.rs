@@ -17,7 +17,7 @@ use glam::DVec3;
 
 use super::TessError;
 use super::constraints::{self, Family, Limits, Residuals, Row};
-use super::min_norm::min_norm;
+use super::min_norm::{Jacobian, min_norm};
 use super::model::TessMesh;
 use super::vertex_penalty;
 
@@ -175,16 +175,19 @@ pub fn solve(
         // When the rough step finds no descent, the exact one is tried.
         let norm = g.iter().map(|v| v * v).sum::<f64>().sqrt();
         let eta = norm.clamp(EXACT, 1e-3);
-        let mut found = line_search(mesh, &l, &x, &rows, &g, merit, cap, eta);
+        let c = Jacobian::new(&rows, x.len());
+        let (dx, mut cg_iterations) = min_norm(&c, &g, eta);
+        let mut found = line_search(mesh, &l, &x, &dx, merit, cap);
         if found.is_none() && eta > EXACT {
-            found = line_search(mesh, &l, &x, &rows, &g, merit, cap, EXACT);
+            let (dx, more) = min_norm(&c, &g, EXACT);
+            cg_iterations += more;
+            found = line_search(mesh, &l, &x, &dx, merit, cap);
         }
         let Some(Found {
             x: trial,
             rows: trial_rows,
             merit: m,
             step,
-            cg_iterations,
         }) = found
         else {
             break;
@@ -220,23 +223,18 @@ struct Found {
     rows: Vec<Row>,
     merit: f64,
     step: f64,
-    cg_iterations: usize,
 }
 
-/// The step `−α C⁺g` with the CG stopped at relative residual `eta`, and α by backtracking
-/// from the longest step that moves no vertex farther than `cap`; `None` without descent.
-#[allow(clippy::too_many_arguments)]
+/// The step `−α dx`, with α by backtracking from the longest step that moves no vertex
+/// farther than `cap`; `None` without descent of the merit.
 fn line_search(
     mesh: &TessMesh,
     limits: &Limits,
     x: &[DVec3],
-    rows: &[Row],
-    g: &[f64],
+    dx: &[DVec3],
     merit: f64,
     cap: f64,
-    eta: f64,
 ) -> Option<Found> {
-    let (dx, cg_iterations) = min_norm(rows, g, x.len(), eta);
     let reach = dx.iter().fold(0.0f64, |m, d| m.max(d.length()));
     let mut step = if reach > 0.0 {
         (cap / reach).min(1.0)
@@ -244,7 +242,7 @@ fn line_search(
         1.0
     };
     while step > 1e-6 {
-        let trial: Vec<DVec3> = x.iter().zip(&dx).map(|(p, d)| *p - step * *d).collect();
+        let trial: Vec<DVec3> = x.iter().zip(dx).map(|(p, d)| *p - step * *d).collect();
         let trial_rows = constraints::rows(mesh, &trial, limits);
         let m = merit_of(&trial_rows);
         if m < merit || m == 0.0 {
@@ -253,7 +251,6 @@ fn line_search(
                 rows: trial_rows,
                 merit: m,
                 step,
-                cg_iterations,
             });
         }
         step *= 0.5;
