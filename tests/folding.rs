@@ -722,13 +722,18 @@ fn random_bend_sequences_stay_consistent_and_flat_foldable() {
     assert!(folded >= 60, "{folded} folds made");
 }
 
-fn bounds(f: &Folding) -> (DVec3, DVec3) {
+/// Every corner of every current face, in 3D.
+fn all_corners(f: &Folding) -> Vec<DVec3> {
     f.current()
         .faces
         .iter()
         .flat_map(|face| f.corners(face))
-        .fold(
-            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-            |(lo, hi), p| (lo.min(p), hi.max(p)),
-        )
+        .collect()
+}
+
+fn bounds(f: &Folding) -> (DVec3, DVec3) {
+    all_corners(f).into_iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(p), hi.max(p)),
+    )
 }

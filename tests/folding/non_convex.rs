@@ -70,13 +70,7 @@ fn a_line_crossing_the_l_once_folds_its_arm() {
         .fold(&bend([0.0, 70.0], [40.0, 70.0], [20.0, 90.0]), None)
         .expect("folds the arm");
     assert!(report.split >= 1);
-    let corners: Vec<DVec3> = f
-        .current()
-        .faces
-        .iter()
-        .flat_map(|face| f.corners(face))
-        .collect();
-    let top = corners.iter().map(|c| c.y).fold(f64::MIN, f64::max);
+    let top = super::bounds(&f).1.y;
     assert!((top - 70.0).abs() < 1e-9, "{top}");
     assert_sound(&f, "L, arm folded");
 }
@@ -91,12 +85,7 @@ fn a_line_crossing_the_l_twice_folds_both_tips() {
     assert!(report.moved >= 2, "{report:?}");
     // The tips' corners land mirrored across the line: (100, 40) on (80, 20), (40, 100) on
     // (20, 80); nothing is left beyond it.
-    let corners: Vec<DVec3> = f
-        .current()
-        .faces
-        .iter()
-        .flat_map(|face| f.corners(face))
-        .collect();
+    let corners = super::all_corners(&f);
     for p in [DVec3::new(80.0, 20.0, 0.0), DVec3::new(20.0, 80.0, 0.0)] {
         assert!(corners.iter().any(|c| c.distance(p) < 1e-9), "{p}");
     }

@@ -46,10 +46,8 @@ fn folded_in_half(strip: bool) -> Folding {
 
 /// Every face's x extent in the layer plane.
 fn x_extent(f: &Folding) -> (f64, f64) {
-    let xs = f.current().faces.iter().flat_map(|face| f.corners(face));
-    xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
-        (lo.min(c.x), hi.max(c.x))
-    })
+    let (lo, hi) = super::bounds(f);
+    (lo.x, hi.x)
 }
 
 #[test]

@@ -63,5 +63,5 @@ pub mod state;
 
 pub use error::FoldError;
 pub use operation::{Fold, FoldReport, Layers, Turn};
-pub use small::{Neighbours, Ring, SmallList};
+pub use small::{Neighbours, Ring};
 pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

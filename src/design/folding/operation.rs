@@ -392,6 +392,9 @@ fn carry(
     carried: &[usize],
     rotation: DAffine3,
 ) -> Vec<((DVec3, DVec3), Vec<usize>)> {
+    if carried.is_empty() {
+        return Vec::new();
+    }
     let mut is_carried = vec![false; state.faces.len()];
     for &c in carried {
         is_carried[c] = true;
@@ -400,6 +403,9 @@ fn carry(
     }
     let mut out = Vec::new();
     for group in &mut state.groups {
+        if !group.stack.iter().any(|&f| is_carried[f]) {
+            continue;
+        }
         let (block, kept): (Vec<usize>, Vec<usize>) =
             group.stack.iter().partition(|&&f| is_carried[f]);
         if !block.is_empty() {

@@ -11,6 +11,7 @@ use glam::DVec2;
 
 use super::FoldError;
 use super::geometry::{Line2, double_area};
+use crate::geom::segment::{Crossing, distance_to_point, intersect};
 
 /// Errors unless the counter-clockwise `ring` is a simple polygon with a positive area and
 /// distinct corners.
@@ -126,18 +127,11 @@ fn union(a: &[usize], b: &[usize]) -> Option<Vec<usize>> {
 
 /// Whether the closed segments `a b` and `c d` meet (within `tol`).
 fn segments_touch(a: DVec2, b: DVec2, c: DVec2, d: DVec2, tol: f64) -> bool {
-    let dist = |p: DVec2, s: DVec2, t: DVec2| {
-        let st = t - s;
-        let k = ((p - s).dot(st) / st.length_squared()).clamp(0.0, 1.0);
-        p.distance(s + st * k)
-    };
-    let side = |p: DVec2, s: DVec2, t: DVec2| (t - s).perp_dot(p - s);
-    let crossing = side(c, a, b) * side(d, a, b) < 0.0 && side(a, c, d) * side(b, c, d) < 0.0;
-    crossing
-        || dist(a, c, d) <= tol
-        || dist(b, c, d) <= tol
-        || dist(c, a, b) <= tol
-        || dist(d, a, b) <= tol
+    !matches!(intersect(a, b, c, d, 0.0), Crossing::None)
+        || distance_to_point(c, d, a) <= tol
+        || distance_to_point(c, d, b) <= tol
+        || distance_to_point(a, b, c) <= tol
+        || distance_to_point(a, b, d) <= tol
 }
 
 #[cfg(test)]
