@@ -4,7 +4,7 @@ use foldcam::design::papercraft::design::parse_design;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::mesh::read_mesh;
 
-use crate::support::assert_cuts_clean_on_paper;
+use crate::support::{assert_cuts_clean_on_paper, side_lengths};
 
 fn vase_text() -> String {
     std::fs::read_to_string("examples/papercraft/vase.craft.toml").unwrap()
@@ -21,23 +21,8 @@ fn the_vase_example_builds_cuts_clean_and_its_gores_match() {
     // wall: the two sides glued together have the same length, up to the 1e-4 mm rounding of
     // the design file's coordinates and the two polylines' different refinements (0.05 mm
     // tolerance).
-    let side = |e: usize| -> Vec<f64> {
-        made.parts
-            .iter()
-            .flat_map(|part| {
-                part.sides.iter().filter(|s| s.half_edge / 2 == e).map(|s| {
-                    (0..s.len)
-                        .map(|k| {
-                            part.point(s.start + k)
-                                .distance(part.point(s.start + k + 1))
-                        })
-                        .sum::<f64>()
-                })
-            })
-            .collect()
-    };
     for meridian in 0..8 {
-        let lengths = side(meridian);
+        let lengths = side_lengths(&made, meridian);
         assert_eq!(lengths.len(), 2, "meridian {meridian} joins two gores");
         assert!(
             (lengths[0] - lengths[1]).abs() < 1e-3,

@@ -3,18 +3,16 @@
 use std::path::Path;
 
 use foldcam::design::papercraft::bspline::BSpline;
-use foldcam::design::papercraft::cut_line::CutLine;
 use foldcam::design::papercraft::cylinder::CylinderPatch;
 use foldcam::design::papercraft::design::{Design, Made, parse_design};
 use foldcam::design::papercraft::fit::fit_directrix;
 use foldcam::design::papercraft::neighbour::boundary_gap;
-use foldcam::design::papercraft::network::Network;
 use foldcam::design::papercraft::walls::Walls;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::mesh::read_mesh;
 use glam::DVec3;
 
-use crate::support::{Rng, assert_cuts_clean_on_paper};
+use crate::support::{Rng, assert_cuts_clean_on_paper, side_lengths};
 
 fn auto_text() -> String {
     std::fs::read_to_string("examples/papercraft/vase_auto.craft.toml").unwrap()
@@ -24,19 +22,9 @@ fn vase_mesh() -> ReferenceMesh {
     ReferenceMesh::new(&read_mesh(Path::new("examples/papercraft/vase.obj")).unwrap()).unwrap()
 }
 
-/// The design's walls, rebuilt through the public steps.
+/// The design's walls.
 fn walls_of(design: &Design, mesh: &ReferenceMesh) -> Walls {
-    let lines: Vec<CutLine> = design
-        .cut_lines
-        .iter()
-        .enumerate()
-        .map(|(i, c)| CutLine::new(i, c.points.iter().map(|&p| DVec3::from(p)).collect()).unwrap())
-        .collect();
-    let loops: Vec<Vec<usize>> = (design.patches.iter().map(|p| p.cut_lines.clone()))
-        .chain(design.auto_patches.iter().map(|p| p.cut_lines.clone()))
-        .collect();
-    let network = Network::build(&lines, &loops, design.vertex_tolerance).unwrap();
-    Walls::build(mesh, &lines, &network, design.wall_length, design.samples).unwrap()
+    design.network_and_walls(mesh).unwrap().1
 }
 
 /// Distance from `x` to the cylinder `patch` (closest section point, scan then refine).
@@ -58,23 +46,6 @@ fn distance_to_surface(patch: &CylinderPatch, x: DVec3) -> f64 {
         if off(a) < off(b) { hi = b } else { lo = a }
     }
     off(0.5 * (lo + hi))
-}
-
-/// The glued length of cut line `e` on each part that has it.
-fn side_lengths(made: &Made, e: usize) -> Vec<f64> {
-    made.parts
-        .iter()
-        .flat_map(|part| {
-            part.sides.iter().filter(|s| s.half_edge / 2 == e).map(|s| {
-                (0..s.len)
-                    .map(|k| {
-                        part.point(s.start + k)
-                            .distance(part.point(s.start + k + 1))
-                    })
-                    .sum::<f64>()
-            })
-        })
-        .collect()
 }
 
 /// The two parts glued along cut line `e`: each one's real boundary there lies on the other

@@ -134,3 +134,20 @@ pub fn assert_cuts_clean_on_paper(name: &str, cp: &foldcam::pattern::CreasePatte
     cp.validate().unwrap();
     cuts_clean::assert_cuts_clean_on(name, cp, "grbl-diode", "paper-160gsm");
 }
+
+/// The glued length of cut line `e` on each part that has it.
+pub fn side_lengths(made: &foldcam::design::papercraft::design::Made, e: usize) -> Vec<f64> {
+    made.parts
+        .iter()
+        .flat_map(|part| {
+            part.sides.iter().filter(|s| s.half_edge / 2 == e).map(|s| {
+                (0..s.len)
+                    .map(|k| {
+                        part.point(s.start + k)
+                            .distance(part.point(s.start + k + 1))
+                    })
+                    .sum::<f64>()
+            })
+        })
+        .collect()
+}

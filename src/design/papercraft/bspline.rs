@@ -61,11 +61,16 @@ impl BSpline {
         self.control.len() - self.degree
     }
 
+    /// `u` clamped to the domain, and the knot span holding it (as a knot index).
+    fn span(&self, u: f64) -> (f64, usize) {
+        let u = u.clamp(0.0, self.spans() as f64);
+        (u, (u.floor() as usize).min(self.spans() - 1) + self.degree)
+    }
+
     /// The curve at `u` (clamped to the domain).
     pub fn at(&self, u: f64) -> DVec3 {
         let p = self.degree;
-        let u = u.clamp(0.0, self.spans() as f64);
-        let span = ((u.floor() as usize).min(self.spans() - 1)) + p;
+        let (u, span) = self.span(u);
         let mut d: Vec<DVec3> = (0..=p).map(|j| self.control[span - p + j]).collect();
         for r in 1..=p {
             for j in (r..=p).rev() {
@@ -88,8 +93,7 @@ impl BSpline {
     /// `values[j] = N_{first + j}(u)`, `degree + 1` of them, summing to 1 (Cox–de Boor).
     pub fn basis(&self, u: f64) -> (usize, Vec<f64>) {
         let p = self.degree;
-        let u = u.clamp(0.0, self.spans() as f64);
-        let span = ((u.floor() as usize).min(self.spans() - 1)) + p;
+        let (u, span) = self.span(u);
         let mut n = vec![0.0; p + 1];
         let (mut left, mut right) = (vec![0.0; p + 1], vec![0.0; p + 1]);
         n[0] = 1.0;

@@ -257,8 +257,12 @@ fn points(list: &[[f64; 3]]) -> Result<Vec<DVec3>, PapercraftError> {
 }
 
 impl Design {
-    /// Runs the chain on the reference mesh.
-    pub fn build(&self, mesh: &ReferenceMesh) -> Result<Made, PapercraftError> {
+    /// The first steps of the chain: the cut lines (§3.2 Step 1), their network with the
+    /// placed and automatic patches as faces (§3.3) and the boundary walls (§3.4).
+    pub fn network_and_walls(
+        &self,
+        mesh: &ReferenceMesh,
+    ) -> Result<(Network, Walls), PapercraftError> {
         let lines = self
             .cut_lines
             .iter()
@@ -270,8 +274,15 @@ impl Design {
             .collect();
         let network = Network::build(&lines, &loops, self.vertex_tolerance)?;
         let walls = Walls::build(mesh, &lines, &network, self.wall_length, self.samples)?;
-        let mut parts = Vec::with_capacity(loops.len());
-        let mut built = Vec::with_capacity(loops.len());
+        Ok((network, walls))
+    }
+
+    /// Runs the chain on the reference mesh.
+    pub fn build(&self, mesh: &ReferenceMesh) -> Result<Made, PapercraftError> {
+        let (network, walls) = self.network_and_walls(mesh)?;
+        let patch_count = self.patches.len() + self.auto_patches.len();
+        let mut parts = Vec::with_capacity(patch_count);
+        let mut built = Vec::with_capacity(patch_count);
         for (p, spec) in self.patches.iter().enumerate() {
             let what = format!("patch {p} directrix");
             let ruling = DVec3::from_array(spec.ruling);

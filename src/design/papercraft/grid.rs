@@ -26,9 +26,9 @@ pub(crate) struct TriangleGrid {
 
 impl TriangleGrid {
     /// Bins `boxes` (min, max per triangle) into about `2 · boxes.len()` cells.
-    pub(crate) fn new(boxes: &[(DVec3, DVec3)]) -> Self {
+    pub(crate) fn new(boxes: Vec<(DVec3, DVec3)>) -> Self {
         let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-        for &(a, b) in boxes {
+        for &(a, b) in &boxes {
             lo = lo.min(a);
             hi = hi.max(b);
         }
@@ -37,30 +37,30 @@ impl TriangleGrid {
         let side = (extent.x * extent.y * extent.z / target).cbrt();
         let dim = |e: f64| ((e / side).ceil() as usize).clamp(1, 256);
         let dims = [dim(extent.x), dim(extent.y), dim(extent.z)];
-        let cell = extent / DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64);
         let mut grid = TriangleGrid {
             origin: lo,
-            cell,
+            cell: DVec3::ONE,
             dims,
             starts: Vec::new(),
             items: Vec::new(),
-            boxes: boxes.to_vec(),
+            boxes,
         };
-        grid.fill(boxes);
+        grid.cell = extent / grid.dims_f();
+        grid.fill();
         grid
     }
 
-    fn fill(&mut self, boxes: &[(DVec3, DVec3)]) {
+    fn fill(&mut self) {
         let count = self.dims.iter().product::<usize>();
         let mut counts = vec![0u32; count + 1];
-        self.for_each_cell_of(boxes, |c, _| counts[c + 1] += 1);
+        self.for_each_cell_of(|c, _| counts[c + 1] += 1);
         for c in 0..count {
             counts[c + 1] += counts[c];
         }
         let mut next = counts.clone();
         self.items = vec![0; counts[count] as usize];
         let mut items = std::mem::take(&mut self.items);
-        self.for_each_cell_of(boxes, |c, t| {
+        self.for_each_cell_of(|c, t| {
             items[next[c] as usize] = t;
             next[c] += 1;
         });
@@ -68,8 +68,8 @@ impl TriangleGrid {
         self.starts = counts;
     }
 
-    fn for_each_cell_of(&self, boxes: &[(DVec3, DVec3)], mut f: impl FnMut(usize, u32)) {
-        for (t, &(a, b)) in boxes.iter().enumerate() {
+    fn for_each_cell_of(&self, mut f: impl FnMut(usize, u32)) {
+        for (t, &(a, b)) in self.boxes.iter().enumerate() {
             let (ia, ib) = (self.cell_of(a), self.cell_of(b));
             for z in ia[2]..=ib[2] {
                 for y in ia[1]..=ib[1] {
@@ -107,8 +107,7 @@ impl TriangleGrid {
         let mut best = f64::INFINITY;
         for r in 0..rings {
             self.visit_ring(c, r, |cell| {
-                let lo = self.origin
-                    + self.cell * DVec3::new(cell[0] as f64, cell[1] as f64, cell[2] as f64);
+                let lo = self.origin + self.cell * DVec3::from(cell.map(|i| i as f64));
                 if box_distance(p, lo, lo + self.cell) >= best {
                     return;
                 }
@@ -128,11 +127,7 @@ impl TriangleGrid {
     }
 
     fn dims_f(&self) -> DVec3 {
-        DVec3::new(
-            self.dims[0] as f64,
-            self.dims[1] as f64,
-            self.dims[2] as f64,
-        )
+        DVec3::from(self.dims.map(|d| d as f64))
     }
 
     /// Calls `f` on every cell at Chebyshev distance exactly `r` from `c` (inside the grid).
@@ -151,7 +146,7 @@ impl TriangleGrid {
                     if c[0] >= r {
                         f([c[0] - r, y, z]);
                     }
-                    if r > 0 && c[0] + r < self.dims[0] {
+                    if c[0] + r < self.dims[0] {
                         f([c[0] + r, y, z]);
                     }
                 }

@@ -18,8 +18,7 @@ use glam::DVec2;
 
 use super::network::Network;
 use super::parts::{Part, PartSide};
-use crate::geom::polygon::contains_point;
-use crate::geom::segment::{Crossing, intersect};
+use crate::geom::polygon::{contains_point, segment_crosses_ring};
 
 /// A label on a part.
 #[derive(Clone, Debug, PartialEq)]
@@ -133,19 +132,8 @@ fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64) -> Option<L
         map(-pad, h + pad),
     ];
     let outline = &part.outline;
-    let n = outline.len();
     let inside = frame.iter().all(|&c| contains_point(outline, c))
-        && (0..4).all(|k| {
-            (0..n).all(|i| {
-                intersect(
-                    frame[k],
-                    frame[(k + 1) % 4],
-                    outline[i],
-                    outline[(i + 1) % n],
-                    1e-12,
-                ) == Crossing::None
-            })
-        });
+        && (0..4).all(|k| !segment_crosses_ring(outline, frame[k], frame[(k + 1) % 4]));
     let clear = part
         .labels
         .iter()
@@ -162,9 +150,5 @@ fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64) -> Option<L
 pub fn frames_overlap(a: &[DVec2; 4], b: &[DVec2; 4]) -> bool {
     a.iter().any(|&p| contains_point(b, p))
         || b.iter().any(|&p| contains_point(a, p))
-        || (0..4).any(|i| {
-            (0..4).any(|j| {
-                intersect(a[i], a[(i + 1) % 4], b[j], b[(j + 1) % 4], 1e-12) != Crossing::None
-            })
-        })
+        || (0..4).any(|i| segment_crosses_ring(b, a[i], a[(i + 1) % 4]))
 }

@@ -19,8 +19,7 @@ use glam::DVec2;
 use super::PapercraftError;
 use super::network::Network;
 use super::trim::RealBoundary;
-use crate::geom::polygon::{contains_point, signed_area};
-use crate::geom::segment::{Crossing, intersect};
+use crate::geom::polygon::{contains_point, segment_crosses_ring, signed_area};
 
 /// How glue tabs are shaped (millimetres after scaling, degrees).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -232,10 +231,6 @@ pub fn tab_overlaps_part(part: &Part, tab: &Tab) -> bool {
     if contains_point(&part.outline, oa) || contains_point(&part.outline, ob) {
         return true;
     }
-    let n = part.outline.len();
-    free.iter().any(|&(p, q)| {
-        (0..n).any(|i| {
-            intersect(p, q, part.outline[i], part.outline[(i + 1) % n], 1e-12) != Crossing::None
-        })
-    })
+    free.iter()
+        .any(|&(p, q)| segment_crosses_ring(&part.outline, p, q))
 }

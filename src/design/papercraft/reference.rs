@@ -68,7 +68,7 @@ impl ReferenceMesh {
                 (a.min(b).min(c), a.max(b).max(c))
             })
             .collect();
-        let grid = TriangleGrid::new(&boxes);
+        let grid = TriangleGrid::new(boxes);
         Ok(ReferenceMesh {
             positions,
             triangles,
