@@ -268,10 +268,11 @@ fn twist_folds_solve_the_examples() {
 
 #[test]
 fn twisted_stars_solve_the_examples() {
-    // Each star triangle is split by a twist fold, halving the corners beside it: on the
-    // saddle the 30° crease spacing is not reached (the solve stalls at 1e-4 rad), 20° is.
-    for (name, min_vertex) in [("dome", 30.0), ("bell", 30.0), ("saddle", 20.0)] {
-        solve_variation(name, TuckKind::Twisted, 0.8, min_vertex);
+    // Each star triangle is split by a twist fold, halving the corners beside it; the saddle
+    // reaches the 30° crease spacing only through the solver's continuous-entry step (it
+    // stalled at 1e-4 rad on the jumps of the active set's hysteresis).
+    for name in ["dome", "bell", "saddle"] {
+        solve_variation(name, TuckKind::Twisted, 0.8, 30.0);
     }
 }
 

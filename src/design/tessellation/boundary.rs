@@ -61,8 +61,14 @@ pub fn worst_runs(turn: &[f64]) -> Vec<(usize, usize, f64)> {
 }
 
 /// Eq. 2 rows for the violated runs: `(value, entries)`, given per-vertex angle sums and
-/// their gradients (`angle_rows[v]`: Σθ_v and ∂Σθ_v/∂X blocks) at the boundary vertices.
-pub fn rows(loop_vertices: &[u32], angle_rows: &AngleSums, margin: f64) -> Vec<(f64, Blocks)> {
+/// their gradients (`angle_rows[v]`: Σθ_v and ∂Σθ_v/∂X blocks) at the boundary vertices; a
+/// run enters within `hold · margin` of the limit (see [`Limits::hold`](super::Limits::hold)).
+pub fn rows(
+    loop_vertices: &[u32],
+    angle_rows: &AngleSums,
+    margin: f64,
+    hold: f64,
+) -> Vec<(f64, Blocks)> {
     let turn: Vec<f64> = loop_vertices
         .iter()
         .map(|v| PI - angle_rows.get(v).map_or(0.0, |r| r.0))
@@ -70,7 +76,7 @@ pub fn rows(loop_vertices: &[u32], angle_rows: &AngleSums, margin: f64) -> Vec<(
     let mut out = Vec::new();
     let mut seen = std::collections::HashSet::new();
     for (i, len, sum) in worst_runs(&turn) {
-        if sum + PI >= 0.5 * margin || !seen.insert((i, len)) {
+        if sum + PI >= hold * margin || !seen.insert((i, len)) {
             continue;
         }
         let mut entries: Blocks = Vec::new();

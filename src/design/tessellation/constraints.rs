@@ -15,8 +15,10 @@
 //!
 //! Inequalities are handled as the paper handles eq. 2: a violated one becomes an equality for
 //! that step (an active set). Deviation: each inequality targets a small margin m inside its
-//! limit ([`Limits::margin`]) and stays active within half the margin of it, so the solver
-//! does not chatter on the limit and the result satisfies the limit strictly.
+//! limit ([`Limits::margin`]) and stays active within half the margin of it
+//! ([`Limits::hold`]), so the solver does not chatter on the limit and the result satisfies
+//! the limit strictly. That makes the merit jump where a row enters the set; the solver steps
+//! with `hold = 1` (continuous entry) when no step descends otherwise.
 
 use std::f64::consts::PI;
 
@@ -37,6 +39,9 @@ pub struct Limits {
     pub min_vertex_angle: f64,
     /// Margin m kept inside each limit by the active rows.
     pub margin: f64,
+    /// An inequality enters the active set within `hold · m` of its limit and is then pushed
+    /// to `m` inside it; in (0, 1], 1 makes the row values continuous (default 0.5).
+    pub hold: f64,
     /// Ground contact (§6's design example): when set, every boundary vertex lies on the
     /// horizontal plane at this z (mesh units), one equality row per vertex.
     pub ground_z: Option<f64>,
@@ -51,6 +56,7 @@ impl Limits {
             max_fold: max_fold_deg.to_radians(),
             min_vertex_angle: min_vertex_angle_deg.to_radians(),
             margin: 0.25f64.to_radians(),
+            hold: 0.5,
             ground_z: None,
             vertex_penalty: true,
         }
@@ -210,7 +216,7 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
         }
     }
     let outline = boundary::boundary_loop(mesh);
-    for (value, entries) in boundary::rows(&outline, &boundary_angles, limits.margin) {
+    for (value, entries) in boundary::rows(&outline, &boundary_angles, limits.margin, limits.hold) {
         out.push(Row {
             family: Family::Boundary,
             value,
@@ -257,7 +263,7 @@ fn vertex_angle_rows(
     floor: f64,
 ) -> Vec<Row> {
     let sectors = &mesh.sectors;
-    let threshold = limits.min_vertex_angle + 0.5 * limits.margin;
+    let threshold = limits.min_vertex_angle + limits.hold * limits.margin;
     let mut row_of: Vec<u32> = vec![u32::MAX; sectors.count];
     let mut out: Vec<Row> = Vec::new();
     for (s, &angle) in sector_angle.iter().enumerate() {
@@ -294,9 +300,9 @@ fn vertex_angle_rows(
 fn fold_row(x: &[DVec3], hinge: [u32; 4], sigma: f64, limits: &Limits) -> Option<Row> {
     let [i, j, a, b] = hinge.map(|v| x[v as usize]);
     let r = sigma * fold_angle(i, j, a, b).value;
-    let (family, target) = if r > limits.max_fold - 0.5 * limits.margin {
+    let (family, target) = if r > limits.max_fold - limits.hold * limits.margin {
         (Family::FoldLimit, limits.max_fold - limits.margin)
-    } else if r < 0.5 * limits.margin {
+    } else if r < limits.hold * limits.margin {
         (Family::FoldSign, limits.margin)
     } else {
         return None;

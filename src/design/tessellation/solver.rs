@@ -1,8 +1,8 @@
 //! Generalized Newton–Raphson (§3.3): `X ← X − α C(X)⁺ g(X)`.
 //!
-//! The minimum-norm step `C⁺g = Cᵀ y` with `(C Cᵀ + εI) y = g` is solved by a
-//! Jacobi-preconditioned conjugate gradient over a compressed copy of the sparse rows of
-//! [`constraints::rows`] (`min_norm`; no dense matrix is ever formed). The CG stops at a
+//! The minimum-norm step `C⁺g = Cᵀ y` with `(C Cᵀ + εI) y = g` is solved by a conjugate
+//! gradient over a compressed copy of the sparse rows of [`constraints::rows`], preconditioned
+//! by a sparse Cholesky factor of `C Cᵀ` on large systems (`min_norm`). The CG stops at a
 //! relative residual η = clamp(‖g‖, 1e-12, 1e-3) (an inexact Newton method: rough steps far
 //! from the solution, exact ones near it). The step length α is found by backtracking on
 //! ½‖g‖² over the rows active at the trial point, starting from the longest step that moves
@@ -151,13 +151,16 @@ pub fn solve(
         && l.max_fold <= std::f64::consts::PI
         && l.min_vertex_angle >= 0.0
         && l.min_vertex_angle < std::f64::consts::FRAC_PI_3
-        && l.margin >= 0.0;
+        && l.margin >= 0.0
+        && l.hold > 0.0
+        && l.hold <= 1.0;
     if !valid {
         return Err(TessError::BadParameter(format!(
             "limits out of range: fold angle must be in (0, 180] deg, vertex angle in [0, 60) deg, \
-             got {:.2} and {:.2}",
+             hold in (0, 1], got {:.2}, {:.2} and {}",
             l.max_fold.to_degrees(),
-            l.min_vertex_angle.to_degrees()
+            l.min_vertex_angle.to_degrees(),
+            l.hold
         )));
     }
     let initial = constraints::residuals(mesh, &mesh.positions, l.ground_z);
@@ -182,6 +185,23 @@ pub fn solve(
             let (dx, more) = min_norm(&c, &g, EXACT);
             cg_iterations += more;
             found = line_search(mesh, &l, &x, &dx, merit, cap);
+        }
+        if found.is_none() && l.hold < 1.0 {
+            // The active set's hysteresis makes the merit jump where a row enters it; step
+            // once with every row entering continuously (at its target).
+            let smooth = Limits { hold: 1.0, ..l };
+            let rows = constraints::rows(mesh, &x, &smooth);
+            let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
+            let c = Jacobian::new(&rows, x.len());
+            let (dx, more) = min_norm(&c, &g, EXACT);
+            cg_iterations += more;
+            found = line_search(mesh, &smooth, &x, &dx, merit_of(&rows), cap).map(|f| Found {
+                rows: constraints::rows(mesh, &f.x, &l),
+                ..f
+            });
+            if let Some(f) = found.as_mut() {
+                f.merit = merit_of(&f.rows);
+            }
         }
         let Some(Found {
             x: trial,
