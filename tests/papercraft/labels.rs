@@ -1,26 +1,16 @@
 //! Edge labels: matching on both parts of every shared cut line, inside their parts, and
 //! marked by the machine when the material marks flat lines.
 
-use std::path::Path;
-
-use foldcam::design::papercraft::ReferenceMesh;
-use foldcam::design::papercraft::design::{Made, parse_design};
+use foldcam::design::papercraft::design::Made;
 use foldcam::design::papercraft::labels::frames_overlap;
 use foldcam::fab::{Operation, PlanOptions, plan};
 use foldcam::geom::polygon::contains_point;
 use foldcam::geom::segment::{Crossing, intersect};
 use foldcam::machine::{load_machine, load_material};
-use foldcam::mesh::read_mesh;
 use foldcam::pattern::Assignment;
 use foldcam::{post, sim};
 
-fn build(name: &str) -> Made {
-    let dir = Path::new("examples/papercraft");
-    let text = std::fs::read_to_string(dir.join(format!("{name}.craft.toml"))).unwrap();
-    let design = parse_design(&text).unwrap();
-    let mesh = ReferenceMesh::new(&read_mesh(&dir.join(&design.mesh)).unwrap()).unwrap();
-    design.build(&mesh).unwrap()
-}
+use crate::support::build_example;
 
 fn check_labels(name: &str, made: &Made, shared: usize) {
     let mut labelled = 0;
@@ -78,15 +68,15 @@ fn check_labels(name: &str, made: &Made, shared: usize) {
 #[test]
 fn every_shared_cut_line_is_labelled_alike_on_both_parts_inside_them() {
     // Vase: 8 meridians shared (foot and rim arcs are free). Fish: 18 cut lines, all shared.
-    let vase = build("vase_auto");
+    let vase = build_example("vase_auto");
     check_labels("vase", &vase, 8);
     assert!(vase.unlabelled.is_empty(), "{:?}", vase.unlabelled);
-    check_labels("fish", &build("fish"), 18);
+    check_labels("fish", &build_example("fish"), 18);
 }
 
 #[test]
 fn labels_are_flat_lines_the_machine_marks_when_asked() {
-    let made = build("vase_auto");
+    let made = build_example("vase_auto");
     let strokes: usize = made
         .parts
         .iter()

@@ -16,9 +16,10 @@
 //!   real boundary on the chosen wall swept along the plane's normal and fitted by least
 //!   squares with a degree-4 B-spline; extended at both ends (§5.2.1's first limit) and
 //!   fitted to several P_exist at once (its second), with the gaps measured.
-//! - [`parts`], [`labels`], [`layout`]: parts with glue tabs and matching edge labels
-//!   (cut-line numbers in stroke digits, flat lines the machine marks or skips), packed on
-//!   sheets, one crease pattern per sheet (outlines cut, tab roots mountain folds).
+//! - [`parts`], [`labels`], [`layout`], [`packing`]: parts with glue tabs and matching edge
+//!   labels (cut-line numbers in stroke digits, flat lines the machine marks or skips),
+//!   packed on sheets on their shapes (bottom-left fill over outlines and tabs), one crease
+//!   pattern per sheet (outlines cut, tab roots mountain folds).
 //! - [`design`]: the TOML design file (placed and automatic patches) and the whole chain,
 //!   run by `foldcam papercraft DESIGN -o parts.fold`.
 //! - [`shapes`]: meshes of bodies of revolution and of elliptic-section bodies (the fish)
@@ -29,8 +30,6 @@
 //! `fish.craft.toml` (one placed gore, five generated, two placed flat caps that meet the
 //! gores with gaps of a few tenths of a millimetre: the gores cross the cap walls along
 //! curves that no flat or cylindrical cap can follow).
-//!
-//! Not built yet: packing on part shapes (parts are packed by bounding boxes).
 
 pub mod bspline;
 pub mod cut_line;
@@ -42,6 +41,7 @@ pub mod labels;
 pub mod layout;
 pub mod neighbour;
 pub mod network;
+pub mod packing;
 pub mod parts;
 pub mod reference;
 pub mod shapes;
