@@ -1,7 +1,9 @@
 //! Laying parts out on sheets and turning each sheet into a [`CreasePattern`].
 //!
 //! [`pack`] packs the parts on their shapes, outlines and tabs ([`super::packing`]): parts
-//! interlock where their outlines allow, and are never closer than the gap.
+//! interlock where their outlines allow, and are never closer than the gap. The greedy
+//! packing on shapes is not always the better one, so [`pack`] keeps the packing on boxes
+//! when that one uses less sheet.
 //!
 //! [`pack_boxes`], the first packer, is kept for comparison: each part (with its tabs) is
 //! turned to the angle, in 5° steps over a half turn, that gives the smallest bounding box,
@@ -111,10 +113,16 @@ pub(super) fn best_angle(part: &Part, usable: DVec2) -> Option<f64> {
 }
 
 /// Packs `parts` onto as many sheets as needed, on their shapes
-/// ([`super::packing::pack_shapes`]). Refuses a bad spec or a part larger than the usable
-/// sheet at every angle tried.
+/// ([`super::packing::pack_shapes`]); when the packing on boxes ([`pack_boxes`]) happens to
+/// use fewer sheets, or as many and less sheet area ([`usage`]), that one is returned (both
+/// keep the parts at least the gap apart). Refuses a bad spec or a part larger than the
+/// usable sheet at every angle tried.
 pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
-    super::packing::pack_shapes(parts, spec)
+    let shapes = super::packing::pack_shapes(parts, spec)?;
+    let boxes = pack_boxes(parts, spec)?;
+    let (s, b) = (usage(parts, &shapes, spec), usage(parts, &boxes, spec));
+    let boxes_better = b.sheets < s.sheets || (b.sheets == s.sheets && b.used_area < s.used_area);
+    Ok(if boxes_better { boxes } else { shapes })
 }
 
 /// Packs `parts` on their bounding boxes (the skyline packer described in the module docs),
