@@ -27,9 +27,10 @@
 //!
 //! Examples (`examples/papercraft/`): `vase.craft.toml` (eight placed gores),
 //! `vase_auto.craft.toml` (one placed gore, seven generated, closing the ring) and
-//! `fish.craft.toml` (one placed gore, five generated, two placed flat caps that meet the
-//! gores with gaps of a few tenths of a millimetre: the gores cross the cap walls along
-//! curves that no flat or cylindrical cap can follow).
+//! `fish.craft.toml` (one placed gore, five generated, two placed flat caps; the snout and
+//! tail cut lines are straight chords that every gore contains, so caps and gores meet
+//! within 0.005 mm, where arcs left gaps of up to 1.8 mm that no flat or cylindrical cap
+//! could close).
 
 pub mod bspline;
 pub mod cut_line;
