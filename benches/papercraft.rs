@@ -5,7 +5,8 @@
 //! patches, trimming at 0.05 mm, unrolling, tabs, labels, packing and the sheet patterns; `reference` builds the projection grid; `project` is one closest-point query
 //! (9 mm outside the vase: 207 µs before the grid visited only ring shells and skipped cells
 //! and triangles whose boxes are no nearer than the best so far, 29 µs after, on the shared
-//! 2-core machine).
+//! 2-core machine). `pack_shapes` and `pack_boxes` pack the built parts alone: on their
+//! shapes (four greedy runs on the rayon pool) and on their bounding boxes.
 //! The thesis gives no timings.
 //!
 //! Run with `cargo bench --bench papercraft`.
@@ -13,6 +14,8 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use foldcam::design::papercraft::ReferenceMesh;
 use foldcam::design::papercraft::design::parse_design;
+use foldcam::design::papercraft::layout::{SheetSpec, pack_boxes};
+use foldcam::design::papercraft::packing::pack_shapes;
 use foldcam::mesh::read_mesh;
 use glam::DVec3;
 
@@ -37,6 +40,19 @@ fn bench(c: &mut Criterion) {
         let reference = ReferenceMesh::new(&mesh).expect("usable mesh");
         group.bench_function(format!("{name}/build"), |b| {
             b.iter(|| design.build(&reference).expect("builds"))
+        });
+        let made = design.build(&reference).expect("builds");
+        let spec = SheetSpec {
+            width: design.sheet.width,
+            height: design.sheet.height,
+            margin: design.sheet.margin,
+            gap: design.sheet.gap,
+        };
+        group.bench_function(format!("{name}/pack_shapes"), |b| {
+            b.iter(|| pack_shapes(&made.parts, &spec).expect("packs"))
+        });
+        group.bench_function(format!("{name}/pack_boxes"), |b| {
+            b.iter(|| pack_boxes(&made.parts, &spec).expect("packs"))
         });
     }
     group.bench_function("vase/reference", |b| {

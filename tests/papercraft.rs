@@ -31,3 +31,6 @@ mod neighbour;
 
 #[path = "papercraft/labels.rs"]
 mod labels;
+
+#[path = "papercraft/packing.rs"]
+mod packing;

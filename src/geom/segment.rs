@@ -79,6 +79,80 @@ pub fn distance_to_point(a: DVec2, b: DVec2, p: DVec2) -> f64 {
     a.lerp(b, t).distance(p)
 }
 
+/// Distance between segments `a0–a1` and `b0–b1` (0 when they meet).
+pub fn segment_distance(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> f64 {
+    if intersect(a0, a1, b0, b1, 1e-12) != Crossing::None {
+        return 0.0;
+    }
+    distance_to_point(b0, b1, a0)
+        .min(distance_to_point(b0, b1, a1))
+        .min(distance_to_point(a0, a1, b0))
+        .min(distance_to_point(a0, a1, b1))
+}
+
+/// The translations along x that bring two segments closer than `gap`: the open interval
+/// `(lo, hi)` of every `t` for which segment `a0–a1` moved by `(t, 0)` comes within `gap`
+/// (> 0) of segment `b0–b1`, or `None` when no such `t` exists.
+///
+/// It is exact: `t` is in it iff `(t, 0)` lies in the Minkowski difference `B − A` (a
+/// parallelogram) dilated by `gap`, a convex set whose trace on the x axis is one interval,
+/// bounded where the x axis crosses the capsules round the parallelogram's sides.
+pub fn slide_interval(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2, gap: f64) -> Option<(f64, f64)> {
+    let corners = [b0 - a0, b0 - a1, b1 - a1, b1 - a0];
+    let mut span: Option<(f64, f64)> = None;
+    for k in 0..4 {
+        if let Some((lo, hi)) = capsule_on_x_axis(corners[k], corners[(k + 1) % 4], gap) {
+            span = Some(span.map_or((lo, hi), |(l, h)| (l.min(lo), h.max(hi))));
+        }
+    }
+    span.filter(|(lo, hi)| hi > lo)
+}
+
+/// Where the x axis meets the capsule of radius `r` round segment `p–q`: `(lo, hi)` in x.
+fn capsule_on_x_axis(p: DVec2, q: DVec2, r: f64) -> Option<(f64, f64)> {
+    let disk = |c: DVec2| {
+        (c.y.abs() < r).then(|| {
+            let h = (r * r - c.y * c.y).sqrt();
+            (c.x - h, c.x + h)
+        })
+    };
+    let mut out: Option<(f64, f64)> = None;
+    let mut take = |iv: Option<(f64, f64)>| {
+        if let Some((lo, hi)) = iv {
+            out = Some(out.map_or((lo, hi), |(l, h)| (l.min(lo), h.max(hi))));
+        }
+    };
+    take(disk(p));
+    take(disk(q));
+    let d = q - p;
+    let len = d.length();
+    if len > 0.0 {
+        let u = d / len;
+        // For the point (t, 0): its position along the segment, (t − p.x) u.x − p.y u.y, in
+        // [0, len], and its signed offset, u.x (−p.y) − u.y (t − p.x), in (−r, r).
+        let along = linear_range(u.x, -p.x * u.x - p.y * u.y, 0.0, len);
+        let across = linear_range(-u.y, p.y * -u.x + u.y * p.x, -r, r);
+        if let (Some(a), Some(b)) = (along, across) {
+            let (lo, hi) = (a.0.max(b.0), a.1.min(b.1));
+            if lo <= hi {
+                take(Some((lo, hi)));
+            }
+        }
+    }
+    out
+}
+
+/// The `t` with `lo ≤ alpha t + beta ≤ hi`, as `(from, to)`; unbounded ends are infinite.
+fn linear_range(alpha: f64, beta: f64, lo: f64, hi: f64) -> Option<(f64, f64)> {
+    if alpha == 0.0 {
+        return (lo..=hi)
+            .contains(&beta)
+            .then_some((f64::NEG_INFINITY, f64::INFINITY));
+    }
+    let (x, y) = ((lo - beta) / alpha, (hi - beta) / alpha);
+    Some((x.min(y), x.max(y)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -104,5 +178,45 @@ mod tests {
         assert_eq!(far, Crossing::None);
         let end_to_end = intersect(a.0, a.1, a.1, DVec2::new(5.0, 0.0), 1e-12);
         assert_eq!(end_to_end, Crossing::Point { t: 1.0, u: 0.0 });
+    }
+
+    #[test]
+    fn slide_interval_matches_the_distance_everywhere() {
+        // A fixed-seed LCG for random segments; every t is checked against the distance.
+        let mut state = 7u64;
+        let mut r = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64) * 10.0 - 5.0
+        };
+        for _ in 0..300 {
+            let (a0, a1) = (DVec2::new(r(), r()), DVec2::new(r(), r()));
+            let (b0, b1) = (DVec2::new(r(), r()), DVec2::new(r(), r()));
+            let gap = 0.5 + r().abs() * 0.3;
+            let iv = slide_interval(a0, a1, b0, b1, gap);
+            for k in 0..400 {
+                let t = -20.0 + 40.0 * k as f64 / 400.0;
+                let shift = DVec2::new(t, 0.0);
+                let d = segment_distance(a0 + shift, a1 + shift, b0, b1);
+                let inside = iv.is_some_and(|(lo, hi)| t > lo && t < hi);
+                if (d - gap).abs() > 1e-9 {
+                    assert_eq!(inside, d < gap, "t {t}: distance {d}, interval {iv:?}");
+                }
+            }
+        }
+        // Horizontal segments on one line: touching at both ends of the interval.
+        let iv = slide_interval(
+            DVec2::ZERO,
+            DVec2::X,
+            DVec2::new(5.0, 0.0),
+            DVec2::new(6.0, 0.0),
+            1.0,
+        )
+        .unwrap();
+        assert!(
+            (iv.0 - 3.0).abs() < 1e-12 && (iv.1 - 7.0).abs() < 1e-12,
+            "{iv:?}"
+        );
     }
 }

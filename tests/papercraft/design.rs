@@ -68,8 +68,26 @@ fn the_cli_writes_every_sheet() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("vase.fold");
     let svg = dir.path().join("vase.svg");
+    // On A5 the eight gores need several sheets (on A4 they fit on one).
+    let mesh = std::fs::canonicalize("examples/papercraft/vase.obj").unwrap();
+    let a5 = vase_text()
+        .replacen(
+            "mesh = \"vase.obj\"",
+            &format!("mesh = {:?}", mesh.display().to_string()),
+            1,
+        )
+        .replacen(
+            "width = 210.0\nheight = 297.0",
+            "width = 148.0\nheight = 210.0",
+            1,
+        );
+    assert!(a5.contains("height = 210.0"));
+    let design = dir.path().join("vase.craft.toml");
+    std::fs::write(&design, a5).unwrap();
     let status = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(["papercraft", "examples/papercraft/vase.craft.toml", "-o"])
+        .arg("papercraft")
+        .arg(&design)
+        .arg("-o")
         .arg(&out)
         .arg("--svg")
         .arg(&svg)
@@ -82,9 +100,28 @@ fn the_cli_writes_every_sheet() {
     );
     let stdout = String::from_utf8_lossy(&status.stdout);
     assert!(stdout.contains("8 parts"), "{stdout}");
-    for name in ["vase.fold", "vase-2.fold", "vase.svg", "vase-2.svg"] {
-        assert!(dir.path().join(name).exists(), "{name} missing");
+    let sheets: usize = stdout
+        .split(", ")
+        .find_map(|s| s.strip_suffix(" sheet(s)\n"))
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    assert!(sheets >= 2, "{stdout}");
+    for s in 1..=sheets {
+        let suffix = if s == 1 {
+            String::new()
+        } else {
+            format!("-{s}")
+        };
+        for ext in ["fold", "svg"] {
+            let name = format!("vase{suffix}.{ext}");
+            assert!(dir.path().join(&name).exists(), "{name} missing");
+        }
     }
+    assert!(
+        !dir.path()
+            .join(format!("vase-{}.fold", sheets + 1))
+            .exists()
+    );
     let loaded = foldcam::formats::load(&out).unwrap();
     assert!(
         loaded

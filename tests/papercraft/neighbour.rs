@@ -48,12 +48,10 @@ fn distance_to_surface(patch: &CylinderPatch, x: DVec3) -> f64 {
     off(0.5 * (lo + hi))
 }
 
-/// The two parts glued along cut line `e`: each one's real boundary there lies on the other
-/// patch's surface within the tolerance (the boundary points are on the wall, so they are on
-/// the other's real boundary), and the two glued sides have the same length (longer than
-/// `at_least` mm).
-fn assert_meets_without_gap(design: &Design, made: &Made, e: usize, at_least: f64) {
-    let tol = design.tolerance;
+/// The gap along cut line `e` between the two parts glued there: the largest distance from
+/// a point of either part's real boundary on `e` (mapped back onto its patch in 3D) to the
+/// other patch's surface (mesh units).
+fn gap_on(design: &Design, made: &Made, e: usize) -> f64 {
     let mut users: Vec<(usize, Vec<DVec3>)> = Vec::new();
     for part in &made.parts {
         let patch = &made.patches[part.patch];
@@ -65,14 +63,26 @@ fn assert_meets_without_gap(design: &Design, made: &Made, e: usize, at_least: f6
         }
     }
     assert_eq!(users.len(), 2, "cut line {e} joins two parts");
-    for (me, other) in [(0, 1), (1, 0)] {
-        let gap = users[me]
-            .1
-            .iter()
-            .map(|&x| distance_to_surface(&made.patches[users[other].0], x))
-            .fold(0.0, f64::max);
-        assert!(gap < tol, "cut line {e}: gap {gap} mm ≥ tolerance {tol}");
-    }
+    [(0, 1), (1, 0)]
+        .iter()
+        .map(|&(me, other)| {
+            users[me]
+                .1
+                .iter()
+                .map(|&x| distance_to_surface(&made.patches[users[other].0], x))
+                .fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The two parts glued along cut line `e`: each one's real boundary there lies on the other
+/// patch's surface within the tolerance (the boundary points are on the wall, so they are on
+/// the other's real boundary), and the two glued sides have the same length (longer than
+/// `at_least` mm).
+fn assert_meets_without_gap(design: &Design, made: &Made, e: usize, at_least: f64) {
+    let tol = design.tolerance;
+    let gap = gap_on(design, made, e);
+    assert!(gap < tol, "cut line {e}: gap {gap} mm ≥ tolerance {tol}");
     let lengths = side_lengths(made, e);
     assert!(lengths[0] > at_least, "cut line {e}: {lengths:?}");
     assert!(
@@ -248,5 +258,31 @@ fn the_fish_example_builds_its_generated_gores_meet_and_it_cuts_clean() {
     }
     for (s, cp) in made.sheets.iter().enumerate() {
         assert_cuts_clean_on_paper(&format!("fish sheet {s}"), cp);
+    }
+}
+
+#[test]
+fn the_fish_caps_meet_the_gores_within_the_tolerance() {
+    // The snout (cut lines 6–11) and tail-root (12–17) caps are flat and placed by hand; the
+    // gores contain their end chords, so gores and caps cross the end walls together.
+    let text = std::fs::read_to_string("examples/papercraft/fish.craft.toml").unwrap();
+    let design = parse_design(&text).unwrap();
+    let mesh =
+        ReferenceMesh::new(&read_mesh(Path::new("examples/papercraft/fish.obj")).unwrap()).unwrap();
+    let made = design.build(&mesh).unwrap();
+    let gaps: Vec<f64> = (6..18).map(|e| gap_on(&design, &made, e)).collect();
+    let worst = gaps.iter().fold(0.0, |a: f64, &g| a.max(g));
+    println!("fish caps to gores, cut lines 6–17: gaps {gaps:.4?} mm, largest {worst:.4} mm");
+    assert!(
+        worst < design.tolerance,
+        "largest cap gap {worst} mm ≥ tolerance {}",
+        design.tolerance
+    );
+    for e in 6..18 {
+        let lengths = side_lengths(&made, e);
+        assert!(
+            (lengths[0] - lengths[1]).abs() < design.tolerance,
+            "cut line {e}: {lengths:?}"
+        );
     }
 }

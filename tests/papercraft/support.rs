@@ -151,3 +151,13 @@ pub fn side_lengths(made: &foldcam::design::papercraft::design::Made, e: usize) 
         })
         .collect()
 }
+
+/// Builds the bundled example `examples/papercraft/NAME.craft.toml`.
+pub fn build_example(name: &str) -> foldcam::design::papercraft::design::Made {
+    use foldcam::design::papercraft::{ReferenceMesh, design::parse_design};
+    let dir = std::path::Path::new("examples/papercraft");
+    let text = std::fs::read_to_string(dir.join(format!("{name}.craft.toml"))).unwrap();
+    let design = parse_design(&text).unwrap();
+    let mesh = foldcam::mesh::read_mesh(&dir.join(&design.mesh)).unwrap();
+    design.build(&ReferenceMesh::new(&mesh).unwrap()).unwrap()
+}

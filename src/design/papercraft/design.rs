@@ -38,7 +38,7 @@ use serde::Deserialize;
 use super::bspline::BSpline;
 use super::cut_line::CutLine;
 use super::cylinder::CylinderPatch;
-use super::labels::add_labels;
+use super::labels::{add_labels, make_upright};
 use super::layout::{Placement, SheetSpec, pack, sheet_pattern};
 use super::neighbour::{Neighbour, NeighbourSpec, Plane, boundary_gap, neighbour_patch};
 use super::network::Network;
@@ -213,7 +213,7 @@ pub struct AutoReport {
 /// What [`Design::build`] makes.
 #[derive(Clone, Debug)]
 pub struct Made {
-    /// Parts (one per patch), millimetres.
+    /// Parts (one per patch), millimetres; their labels read upright as placed.
     pub parts: Vec<Part>,
     /// Where each part went.
     pub placements: Vec<Placement>,
@@ -342,6 +342,9 @@ impl Design {
             gap: self.sheet.gap,
         };
         let placements = pack(&parts, &spec)?;
+        for pl in &placements {
+            make_upright(&mut parts[pl.part], pl.angle);
+        }
         let count = placements.iter().map(|p| p.sheet + 1).max().unwrap_or(0);
         let sheets = (0..count)
             .map(|s| sheet_pattern(&parts, &placements, s))

@@ -3,16 +3,21 @@
 //! matching labels on both parts; the thesis's figures show none).
 //!
 //! Each label is the cut-line index in seven-segment stroke digits (drawn for this crate:
-//! a digit is 0.5 h wide and h tall, digits advance by 0.8 h), centred at the side's middle
-//! (half its length), offset inward by 0.5 h from it, its top towards the side. The strokes
+//! a digit is 0.5 h wide and h tall, digits advance by 0.8 h), centred next to the side's
+//! middle (half its length), offset inward by 0.5 h from it, its top towards the side. The strokes
 //! go into the crease pattern as flat (`F`) lines: the material's `flat` operation decides
 //! whether the machine marks them (a pen or a low-power laser pass) or skips them, and the
 //! SVG and PNG previews draw them.
 //!
 //! A label must lie inside its part: every stroke end inside the outline, no stroke
 //! crossing it, and its box clear of the part's other labels. The height is tried at h,
-//! 0.7 h and 0.5 h, and a cut line is labelled only at a height that fits on both of its
-//! parts; [`add_labels`] returns the cut lines left unlabelled.
+//! 0.7 h, 0.5 h and 0.35 h, and at each height the label next to the side's middle, then
+//! at 0.35, 0.65, 0.2 and 0.8 of its length; a cut line is labelled only at a height that
+//! fits on both of its parts; [`add_labels`] returns the cut lines left unlabelled.
+//!
+//! Once the parts are placed, [`make_upright`] turns every label whose text would read
+//! upside down on its sheet by a half turn about its centre (the same box, so it still fits),
+//! so that every baseline's direction on the sheet lies in (−90°, 90°].
 
 use glam::DVec2;
 
@@ -53,14 +58,46 @@ const DIGITS: [u8; 10] = [
 /// Labels every cut line shared by two parts with its index, height `height` mm (> 0;
 /// non-positive or non-finite heights label nothing). Returns the cut lines that got no
 /// label because none fits on both parts.
+///
+/// Lines are labelled in index order at the largest size that fits on both parts; when
+/// some line finds no room, the parts it joins are limited to the next smaller size and
+/// every label is placed again (their larger labels may have taken its room), until every
+/// line fits or nothing is left to shrink.
 pub fn add_labels(parts: &mut [Part], network: &Network, height: f64) -> Vec<usize> {
-    let mut missing = Vec::new();
     if !(height.is_finite() && height > 0.0) {
-        return missing;
+        return Vec::new();
     }
+    // Per part, the index in SIZES of the largest size its labels may take.
+    let mut largest = vec![0usize; parts.len()];
+    loop {
+        parts.iter_mut().for_each(|p| p.labels.clear());
+        let missing = label_pass(parts, network, height, &largest);
+        let mut shrunk = false;
+        for &(_, i, j) in &missing {
+            for k in [i, j] {
+                if largest[k] + 1 < SIZES.len() {
+                    largest[k] += 1;
+                    shrunk = true;
+                }
+            }
+        }
+        if !shrunk {
+            return missing.iter().map(|&(e, _, _)| e).collect();
+        }
+    }
+}
+
+/// One labelling pass, part k's labels no larger than `SIZES[largest[k]]`; returns the
+/// lines left unlabelled with the indices of their two parts.
+fn label_pass(
+    parts: &mut [Part],
+    network: &Network,
+    height: f64,
+    largest: &[usize],
+) -> Vec<(usize, usize, usize)> {
+    let mut missing = Vec::new();
     let hs = network.half_edges();
-    let lines = hs.len() / 2;
-    for e in 0..lines {
+    for e in 0..hs.len() / 2 {
         let (Some(p), Some(q)) = (hs[2 * e].patch, hs[2 * e + 1].patch) else {
             continue;
         };
@@ -74,24 +111,34 @@ pub fn add_labels(parts: &mut [Part], network: &Network, height: f64) -> Vec<usi
             continue;
         };
         let text = e.to_string();
-        let fitted = [1.0, 0.7, 0.5].iter().find_map(|&f| {
-            let a = place(&parts[i], &si, e, &text, f * height)?;
-            let b = place(&parts[j], &sj, e, &text, f * height)?;
-            Some((a, b))
+        let from = largest[i].max(largest[j]);
+        let fitted = SIZES[from..].iter().find_map(|&f| {
+            let fit = |part: &Part, side: &PartSide| {
+                POSITIONS
+                    .iter()
+                    .find_map(|&s| place(part, side, e, &text, f * height, s))
+            };
+            Some((fit(&parts[i], &si)?, fit(&parts[j], &sj)?))
         });
         match fitted {
             Some((a, b)) => {
                 parts[i].labels.push(a);
                 parts[j].labels.push(b);
             }
-            None => missing.push(e),
+            None => missing.push((e, i, j)),
         }
     }
     missing
 }
 
-/// The label `text` of cut line `e` on `side` of `part` at height `h`, if it fits.
-fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64) -> Option<Label> {
+/// Heights tried, as fractions of the design's label height.
+const SIZES: [f64; 4] = [1.0, 0.7, 0.5, 0.35];
+/// Positions tried along a side, as fractions of its length from its start.
+const POSITIONS: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
+
+/// The label `text` of cut line `e` on `side` of `part` at height `h`, next to the point at
+/// fraction `along` of the side's length, if it fits.
+fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64, along: f64) -> Option<Label> {
     let pts: Vec<DVec2> = (0..=side.len).map(|k| part.point(side.start + k)).collect();
     let total: f64 = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
     let at = |s: f64| {
@@ -105,11 +152,12 @@ fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64) -> Option<L
         }
         pts[pts.len() - 1]
     };
-    let t = (at(0.6 * total) - at(0.4 * total)).try_normalize()?;
+    let (from, to) = ((along - 0.1).max(0.0), (along + 0.1).min(1.0));
+    let t = (at(to * total) - at(from * total)).try_normalize()?;
     let up = DVec2::new(t.y, -t.x); // outward: the outline is counter-clockwise
     let right = DVec2::new(up.y, -up.x);
     let width = 0.8 * h * text.len() as f64 - 0.3 * h;
-    let centre = at(0.5 * total) - up * h;
+    let centre = at(along * total) - up * h;
     let origin = centre - right * (0.5 * width) - up * (0.5 * h);
     let map = |x: f64, y: f64| origin + right * x + up * y;
     let mut strokes = Vec::new();
@@ -144,6 +192,36 @@ fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64) -> Option<L
         strokes,
         frame,
     })
+}
+
+/// The direction the text of `label` reads in, in part coordinates (unit length): from the
+/// first corner of its frame to the second.
+pub fn baseline(label: &Label) -> DVec2 {
+    (label.frame[1] - label.frame[0]).normalize_or_zero()
+}
+
+/// Whether a baseline direction on the sheet reads upright: its angle lies in (−90°, 90°].
+pub fn reads_upright(direction: DVec2) -> bool {
+    direction.x > 0.0 || (direction.x == 0.0 && direction.y > 0.0)
+}
+
+/// Turns every label of a part that is placed turned by `angle` (radians counter-clockwise,
+/// as in [`super::layout::Placement`]) so that it reads upright on the sheet
+/// ([`reads_upright`]): a label that would not is turned by a half turn about the centre of
+/// its frame, strokes and frame alike.
+pub fn make_upright(part: &mut Part, angle: f64) {
+    let rot = DVec2::from_angle(angle);
+    for label in &mut part.labels {
+        if reads_upright(rot.rotate(baseline(label))) {
+            continue;
+        }
+        let centre = 0.25 * label.frame.iter().sum::<DVec2>();
+        let turn = |p: DVec2| 2.0 * centre - p;
+        for s in &mut label.strokes {
+            *s = [turn(s[0]), turn(s[1])];
+        }
+        label.frame = label.frame.map(turn);
+    }
 }
 
 /// Whether two convex quadrilaterals overlap (a corner inside the other, or edges cross).

@@ -1,10 +1,17 @@
 //! Laying parts out on sheets and turning each sheet into a [`CreasePattern`].
 //!
-//! Each part (with its tabs) is turned to the angle, in 5° steps over a half turn, that gives
-//! the smallest bounding box, then packed by a skyline bottom-left packer on bounding boxes
-//! enlarged by the gap: the lowest position along the skyline where the box fits, leftmost
-//! on ties; a part that fits nowhere opens a new sheet. Parts go in order of decreasing box
-//! height. This is a first packing on boxes, not on the parts' shapes.
+//! [`pack`] packs the parts on their shapes, outlines and tabs ([`super::packing`]): parts
+//! interlock where their outlines allow, and are never closer than the gap. The greedy
+//! packing on shapes is not always the better one, so [`pack`] keeps the packing on boxes
+//! when that one uses less sheet.
+//!
+//! [`pack_boxes`], the first packer, is kept for comparison: each part (with its tabs) is
+//! turned to the angle, in 5° steps over a half turn, that gives the smallest bounding box,
+//! then packed by a skyline bottom-left packer on bounding boxes enlarged by the gap: the
+//! lowest position along the skyline where the box fits, leftmost on ties; a part that fits
+//! nowhere opens a new sheet. Parts go in order of decreasing box height.
+//!
+//! [`usage`] measures how much sheet a packing uses.
 //!
 //! The sheet's pattern: outlines and tab edges are cuts (`B`), tab roots mountain folds
 //! (`M`, −90°: the tab turns behind the printed side), edge labels flat lines (`F`, marked
@@ -25,7 +32,8 @@ pub struct SheetSpec {
     pub height: f64,
     /// Empty border along every sheet edge.
     pub margin: f64,
-    /// Smallest distance between the boxes of two parts.
+    /// Smallest distance between two parts (their outlines and tabs; between their boxes
+    /// for [`pack_boxes`]).
     pub gap: f64,
 }
 
@@ -64,9 +72,9 @@ fn bounds(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
     )
 }
 
-/// Packs `parts` onto as many sheets as needed. Refuses a bad spec or a part larger than the
-/// usable sheet at every angle tried.
-pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
+/// The usable area of a sheet (inside the margins), millimetres; refuses a spec whose sizes
+/// are not finite and non-negative or whose margins leave no room.
+pub(super) fn usable_size(spec: &SheetSpec) -> Result<DVec2, PapercraftError> {
     let ok = [spec.width, spec.height, spec.margin, spec.gap]
         .iter()
         .all(|v| v.is_finite() && *v >= 0.0)
@@ -77,23 +85,53 @@ pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, Papercra
             "sheet {spec:?}: sizes must be finite, margins leave room"
         )));
     }
-    let usable = DVec2::new(
+    Ok(DVec2::new(
         spec.width - 2.0 * spec.margin,
         spec.height - 2.0 * spec.margin,
-    );
+    ))
+}
+
+/// The angle (radians, in 5° steps over a half turn) at which the part with its tabs has
+/// the smallest bounding box that fits in `usable`, with that box's lower corner and size;
+/// `None` when it fits at no angle tried.
+fn smallest_box(part: &Part, usable: DVec2) -> Option<(f64, DVec2, DVec2)> {
+    let pts = part_points(part);
+    (0..36)
+        .map(|k| {
+            let angle = k as f64 * std::f64::consts::PI / 36.0;
+            let rot = DVec2::from_angle(angle);
+            let (lo, hi) = bounds(pts.iter().map(|&p| rot.rotate(p)));
+            (angle, lo, hi - lo)
+        })
+        .filter(|(_, _, size)| size.x <= usable.x && size.y <= usable.y)
+        .min_by(|a, b| (a.2.x * a.2.y).total_cmp(&(b.2.x * b.2.y)))
+}
+
+/// The angle of [`smallest_box`] alone.
+pub(super) fn best_angle(part: &Part, usable: DVec2) -> Option<f64> {
+    smallest_box(part, usable).map(|b| b.0)
+}
+
+/// Packs `parts` onto as many sheets as needed, on their shapes
+/// ([`super::packing::pack_shapes`]); when the packing on boxes ([`pack_boxes`]) happens to
+/// use fewer sheets, or as many and less sheet area ([`usage`]), that one is returned (both
+/// keep the parts at least the gap apart). Refuses a bad spec or a part larger than the
+/// usable sheet at every angle tried.
+pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
+    let shapes = super::packing::pack_shapes(parts, spec)?;
+    let boxes = pack_boxes(parts, spec)?;
+    let (s, b) = (usage(parts, &shapes, spec), usage(parts, &boxes, spec));
+    let boxes_better = b.sheets < s.sheets || (b.sheets == s.sheets && b.used_area < s.used_area);
+    Ok(if boxes_better { boxes } else { shapes })
+}
+
+/// Packs `parts` on their bounding boxes (the skyline packer described in the module docs),
+/// kept to compare with the packing on shapes. Same refusals as [`pack`].
+pub fn pack_boxes(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
+    let usable = usable_size(spec)?;
     let mut boxed: Vec<(usize, f64, DVec2, DVec2)> = Vec::new();
     for (i, part) in parts.iter().enumerate() {
-        let pts = part_points(part);
-        let best = (0..36)
-            .map(|k| {
-                let angle = k as f64 * std::f64::consts::PI / 36.0;
-                let rot = DVec2::from_angle(angle);
-                let (lo, hi) = bounds(pts.iter().map(|&p| rot.rotate(p)));
-                (angle, lo, hi - lo)
-            })
-            .filter(|(_, _, size)| size.x <= usable.x && size.y <= usable.y)
-            .min_by(|a, b| (a.2.x * a.2.y).total_cmp(&(b.2.x * b.2.y)))
-            .ok_or(PapercraftError::PartTooLarge { part: i })?;
+        let best = smallest_box(part, usable).ok_or(PapercraftError::PartTooLarge { part: i })?;
         boxed.push((i, best.0, best.1, best.2));
     }
     boxed.sort_by(|a, b| b.3.y.total_cmp(&a.3.y));
@@ -125,6 +163,55 @@ pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, Papercra
     }
     out.sort_by_key(|p| p.part);
     Ok(out)
+}
+
+/// How much sheet a packing uses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Usage {
+    /// Sheets used.
+    pub sheets: usize,
+    /// Area of the parts with their tabs, mm².
+    pub parts_area: f64,
+    /// Sheet area used, mm²: on every sheet the full width times the height up to the top of
+    /// its highest part plus the margin (what is left above can be cut off and used).
+    pub used_area: f64,
+}
+
+impl Usage {
+    /// Parts' area over used sheet area (1 would be no waste at all).
+    pub fn ratio(&self) -> f64 {
+        self.parts_area / self.used_area
+    }
+}
+
+/// Measures a packing of `parts` on sheets of `spec` (see [`Usage`]).
+pub fn usage(parts: &[Part], placements: &[Placement], spec: &SheetSpec) -> Usage {
+    let sheets = placements.iter().map(|p| p.sheet + 1).max().unwrap_or(0);
+    let mut top = vec![0.0f64; sheets];
+    let mut parts_area = 0.0;
+    for pl in placements {
+        let part = &parts[pl.part];
+        let y = part_points(part)
+            .iter()
+            .map(|&p| pl.apply(p).y)
+            .fold(f64::NEG_INFINITY, f64::max);
+        top[pl.sheet] = top[pl.sheet].max(y);
+        parts_area += crate::geom::polygon::signed_area(part.outline.iter().copied()).abs()
+            + part
+                .tabs
+                .iter()
+                .map(|t| crate::geom::polygon::signed_area(part.tab_polygon(t)).abs())
+                .sum::<f64>();
+    }
+    let used_area = top
+        .iter()
+        .map(|&y| spec.width * (y + spec.margin).min(spec.height))
+        .sum();
+    Usage {
+        sheets,
+        parts_area,
+        used_area,
+    }
 }
 
 /// A skyline: segments `(x, width, y)` covering `[0, size.x]`.

@@ -16,9 +16,10 @@
 //!   real boundary on the chosen wall swept along the plane's normal and fitted by least
 //!   squares with a degree-4 B-spline; extended at both ends (§5.2.1's first limit) and
 //!   fitted to several P_exist at once (its second), with the gaps measured.
-//! - [`parts`], [`labels`], [`layout`]: parts with glue tabs and matching edge labels
-//!   (cut-line numbers in stroke digits, flat lines the machine marks or skips), packed on
-//!   sheets, one crease pattern per sheet (outlines cut, tab roots mountain folds).
+//! - [`parts`], [`labels`], [`layout`], [`packing`]: parts with glue tabs and matching edge
+//!   labels (cut-line numbers in stroke digits, flat lines the machine marks or skips),
+//!   packed on sheets on their shapes (bottom-left fill over outlines and tabs), one crease
+//!   pattern per sheet (outlines cut, tab roots mountain folds).
 //! - [`design`]: the TOML design file (placed and automatic patches) and the whole chain,
 //!   run by `foldcam papercraft DESIGN -o parts.fold`.
 //! - [`shapes`]: meshes of bodies of revolution and of elliptic-section bodies (the fish)
@@ -26,11 +27,10 @@
 //!
 //! Examples (`examples/papercraft/`): `vase.craft.toml` (eight placed gores),
 //! `vase_auto.craft.toml` (one placed gore, seven generated, closing the ring) and
-//! `fish.craft.toml` (one placed gore, five generated, two placed flat caps that meet the
-//! gores with gaps of a few tenths of a millimetre: the gores cross the cap walls along
-//! curves that no flat or cylindrical cap can follow).
-//!
-//! Not built yet: packing on part shapes (parts are packed by bounding boxes).
+//! `fish.craft.toml` (one placed gore, five generated, two placed flat caps; the snout and
+//! tail cut lines are straight chords that every gore contains, so caps and gores meet
+//! within 0.005 mm, where arcs left gaps of up to 1.8 mm that no flat or cylindrical cap
+//! could close).
 
 pub mod bspline;
 pub mod cut_line;
@@ -42,6 +42,7 @@ pub mod labels;
 pub mod layout;
 pub mod neighbour;
 pub mod network;
+pub mod packing;
 pub mod parts;
 pub mod reference;
 pub mod shapes;
