@@ -58,6 +58,24 @@ impl Placement {
     }
 }
 
+/// Refuses a part with fewer than three outline corners or a coordinate that is not finite.
+pub(super) fn check_parts(parts: &[Part]) -> Result<(), PapercraftError> {
+    for (i, part) in parts.iter().enumerate() {
+        if part.outline.len() < 3 {
+            return Err(PapercraftError::BadParameter(format!(
+                "part {i}: an outline needs at least 3 corners, it has {}",
+                part.outline.len()
+            )));
+        }
+        if !part_points(part).iter().all(|p| p.is_finite()) {
+            return Err(PapercraftError::BadParameter(format!(
+                "part {i}: a coordinate of its outline or tabs is not finite"
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// Every point of a part with its tabs (outline and outer tab corners).
 pub fn part_points(part: &Part) -> Vec<DVec2> {
     let mut pts = part.outline.clone();
@@ -72,17 +90,26 @@ fn bounds(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
     )
 }
 
+/// The largest sheet side accepted, millimetres (the shape packer scans heights in steps of
+/// at most 1 mm).
+pub const MAX_SHEET_MM: f64 = 10_000.0;
+
 /// The usable area of a sheet (inside the margins), millimetres; refuses a spec whose sizes
-/// are not finite and non-negative or whose margins leave no room.
+/// are not finite and non-negative, whose sides exceed [`MAX_SHEET_MM`], whose margins leave
+/// no room or whose gap is wider than the sheet.
 pub(super) fn usable_size(spec: &SheetSpec) -> Result<DVec2, PapercraftError> {
     let ok = [spec.width, spec.height, spec.margin, spec.gap]
         .iter()
         .all(|v| v.is_finite() && *v >= 0.0)
+        && spec.width <= MAX_SHEET_MM
+        && spec.height <= MAX_SHEET_MM
         && spec.width > 2.0 * spec.margin
-        && spec.height > 2.0 * spec.margin;
+        && spec.height > 2.0 * spec.margin
+        && spec.gap < spec.width.max(spec.height);
     if !ok {
         return Err(PapercraftError::BadParameter(format!(
-            "sheet {spec:?}: sizes must be finite, margins leave room"
+            "sheet {spec:?}: sizes must be finite, at most {MAX_SHEET_MM} mm, with margins \
+             that leave room and a gap narrower than the sheet"
         )));
     }
     Ok(DVec2::new(
@@ -129,6 +156,7 @@ pub fn pack(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, Papercra
 /// kept to compare with the packing on shapes. Same refusals as [`pack`].
 pub fn pack_boxes(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
     let usable = usable_size(spec)?;
+    check_parts(parts)?;
     let mut boxed: Vec<(usize, f64, DVec2, DVec2)> = Vec::new();
     for (i, part) in parts.iter().enumerate() {
         let best = smallest_box(part, usable).ok_or(PapercraftError::PartTooLarge { part: i })?;
@@ -178,9 +206,13 @@ pub struct Usage {
 }
 
 impl Usage {
-    /// Parts' area over used sheet area (1 would be no waste at all).
+    /// Parts' area over used sheet area (1 would be no waste at all; 0 for no sheets).
     pub fn ratio(&self) -> f64 {
-        self.parts_area / self.used_area
+        if self.used_area > 0.0 {
+            self.parts_area / self.used_area
+        } else {
+            0.0
+        }
     }
 }
 

@@ -220,7 +220,7 @@ fn factor(c: &Jacobian, shift: f64) -> Option<Llt<usize, f64>> {
     for r in 0..m {
         met.clear();
         for (v, b) in c.row(r) {
-            scatter[v] = b;
+            scatter[v] += b;
             for &q in touching[v].iter().take_while(|&&q| q as usize <= r) {
                 if seen[q as usize] != r as u32 {
                     seen[q as usize] = r as u32;

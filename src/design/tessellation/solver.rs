@@ -10,8 +10,13 @@
 //! solver moves in small steps; without this cap a full first step (for instance onto the
 //! ground plane of §6) can push creases through vertex-adjacent faces, where the eq. 5–7
 //! penalty (a necessary condition that only works from an untangled state) then holds the
-//! solve in a tangled minimum. Convergence: every interior vertex developable within
-//! [`SolveOptions::tolerance`] radians, every flat diagonal flat and every limit satisfied.
+//! solve in a tangled minimum. When neither the rough nor the exact step descends, one step is
+//! taken with every inequality entering the active set continuously ([`Limits::hold`] = 1):
+//! the hysteresis of the active set makes the merit jump where a row enters, which can block
+//! every step near the limits (the twisted saddle stalled so at 1e-4 rad); the next iteration
+//! returns to the hysteresis set, and two such steps never follow each other. Convergence:
+//! every interior vertex developable within [`SolveOptions::tolerance`] radians, every flat
+//! diagonal flat and every limit satisfied.
 
 use glam::DVec3;
 
@@ -170,6 +175,7 @@ pub fn solve(
     let mut rows = constraints::rows(mesh, &x, &l);
     let mut merit = merit_of(&rows);
     let cap = 0.1 * mean_edge(mesh, &x);
+    let mut smoothed = false;
     while iterations < opts.max_iterations && !satisfied(&last, opts) {
         iterations += 1;
         let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
@@ -181,14 +187,16 @@ pub fn solve(
         let c = Jacobian::new(&rows, x.len());
         let (dx, mut cg_iterations) = min_norm(&c, &g, eta);
         let mut found = line_search(mesh, &l, &x, &dx, merit, cap);
+        let mut smoothing = false;
         if found.is_none() && eta > EXACT {
             let (dx, more) = min_norm(&c, &g, EXACT);
             cg_iterations += more;
             found = line_search(mesh, &l, &x, &dx, merit, cap);
         }
-        if found.is_none() && l.hold < 1.0 {
+        if found.is_none() && l.hold < 1.0 && !smoothed {
             // The active set's hysteresis makes the merit jump where a row enters it; step
-            // once with every row entering continuously (at its target).
+            // with every row entering continuously (at its target), not twice in a row.
+            smoothing = true;
             let smooth = Limits { hold: 1.0, ..l };
             let rows = constraints::rows(mesh, &x, &smooth);
             let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
@@ -203,6 +211,7 @@ pub fn solve(
                 f.merit = merit_of(&f.rows);
             }
         }
+        smoothed = found.is_some() && smoothing;
         let Some(Found {
             x: trial,
             rows: trial_rows,

@@ -27,7 +27,7 @@ use shape::{Shape, Turned};
 use sheet::{Scratch, Sheet};
 
 use super::PapercraftError;
-use super::layout::{Placement, SheetSpec, best_angle, usable_size};
+use super::layout::{Placement, SheetSpec, best_angle, check_parts, usable_size};
 use super::parts::Part;
 
 /// Bisection rounds that refine the first feasible height step.
@@ -91,6 +91,7 @@ struct Ready {
 /// keep at least `spec.gap` millimetres apart (at least 1 µm), outlines and tabs included.
 pub fn pack_shapes(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
     let usable = usable_size(spec)?;
+    check_parts(parts)?;
     let gap = spec.gap.max(MIN_GAP) * (1.0 + 1e-9) + 1e-12;
     let cell = (usable.x.max(usable.y) / 300.0).max(0.05);
     let mut ready = Vec::with_capacity(parts.len());

@@ -140,7 +140,8 @@ impl Sheet {
                 cur = cur.max(iv[i].1);
                 i += 1;
             }
-            if cur > x_max {
+            // Edges starting at or beyond free_hi were skipped above: stop there.
+            if cur > free_hi {
                 return None;
             }
             if !self.nested(shape, DVec2::new(cur, y)) {
