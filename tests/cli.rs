@@ -169,6 +169,27 @@ fn demo_runs_end_to_end() {
             assert!(files.contains(&name), "{name} missing from {files:?}");
         }
     }
+    // The design stages: tessellation (seed 002) and paper craft (seed 004), each with its
+    // machine job (the demo fails when the simulated machine finds a problem in one).
+    for name in [
+        "tessellation-dome.fold",
+        "tessellation-dome.linuxcnc-fiber.ngc",
+        "papercraft-vase-1.fold",
+        "papercraft-vase-1.png",
+        "papercraft-vase-1.grbl-diode.gcode",
+    ] {
+        assert!(
+            files.contains(&name.to_string()),
+            "{name} missing from {files:?}"
+        );
+    }
+    let sheet = foldcam::formats::load(&dir.path().join("d/papercraft-vase-1.fold"))
+        .expect("the vase sheet reads back");
+    assert!(
+        sheet.pattern.edges.len() > 100,
+        "{}",
+        sheet.pattern.edges.len()
+    );
 }
 
 /// Malformed inputs: exit 2, the message names the file, no panic, and no output file (nor

@@ -7,6 +7,7 @@ mod check;
 mod convert;
 mod cut;
 mod demo;
+mod demo_papercraft;
 mod demo_tessellation;
 mod fab_args;
 mod fold;
