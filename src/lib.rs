@@ -35,3 +35,5 @@ pub mod pattern;
 pub mod post;
 pub mod render;
 pub mod sim;
+#[cfg(test)]
+mod test_rng;

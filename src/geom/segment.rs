@@ -183,13 +183,8 @@ mod tests {
     #[test]
     fn slide_interval_matches_the_distance_everywhere() {
         // A fixed-seed LCG for random segments; every t is checked against the distance.
-        let mut state = 7u64;
-        let mut r = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((state >> 11) as f64 / (1u64 << 53) as f64) * 10.0 - 5.0
-        };
+        let mut rng = crate::test_rng::TestRng::new(7);
+        let mut r = || rng.unit() * 10.0 - 5.0;
         for _ in 0..300 {
             let (a0, a1) = (DVec2::new(r(), r()), DVec2::new(r(), r()));
             let (b0, b1) = (DVec2::new(r(), r()), DVec2::new(r(), r()));

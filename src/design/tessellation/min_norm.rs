@@ -249,13 +249,8 @@ mod tests {
     /// `m` rows over `n` vertices, each touching 2–5 vertices chosen by a fixed LCG, plus
     /// one long row touching every tenth vertex (like eq. 2's boundary runs).
     fn rows(m: usize, n: usize) -> Vec<Row> {
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 33) as f64 / (1u64 << 31) as f64
-        };
+        let mut rng = crate::test_rng::TestRng::new(0x9e37_79b9_7f4a_7c15);
+        let mut next = || rng.unit();
         let mut out = Vec::new();
         for _ in 0..m {
             let k = 2 + (next() * 4.0) as usize;
@@ -283,6 +278,14 @@ mod tests {
         out
     }
 
+    /// max |C dx − g|.
+    fn max_residual(c: &Jacobian, dx: &[DVec3], g: &[f64]) -> f64 {
+        c.times_vec(dx)
+            .iter()
+            .zip(g)
+            .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()))
+    }
+
     #[test]
     fn cholesky_and_jacobi_give_the_same_minimum_norm_step() {
         let (m, n) = (FACTOR_ROWS + 100, 1200);
@@ -296,11 +299,7 @@ mod tests {
         ));
         // A near-exact preconditioner: a handful of CG iterations, not hundreds.
         assert!(iterations <= 5, "{iterations}");
-        let residual = c
-            .times_vec(&dx)
-            .iter()
-            .zip(&g)
-            .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+        let residual = max_residual(&c, &dx, &g);
         assert!(residual < 1e-8, "{residual}");
         let (diag, eps) = diagonal(&c);
         let jacobi = Preconditioner::Jacobi(diag.iter().map(|d| d + eps).collect());
@@ -323,11 +322,7 @@ mod tests {
             c.preconditioner.get(),
             Some(Preconditioner::Jacobi(_))
         ));
-        let residual = c
-            .times_vec(&dx)
-            .iter()
-            .zip(&g)
-            .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+        let residual = max_residual(&c, &dx, &g);
         assert!(residual < 1e-8, "{residual}");
     }
 }

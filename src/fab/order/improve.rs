@@ -182,13 +182,8 @@ mod tests {
 
     #[test]
     fn never_lengthens_and_keeps_every_visit() {
-        let mut seed = 99u64;
-        let mut next = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 100.0
-        };
+        let mut rng = crate::test_rng::TestRng::new(99);
+        let mut next = move || rng.unit() * 100.0;
         for round in 0..20 {
             let mut tour: Vec<Visit> = (0..200)
                 .map(|i| {

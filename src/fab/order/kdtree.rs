@@ -141,13 +141,8 @@ mod tests {
 
     #[test]
     fn finds_the_nearest_live_point_by_brute_force() {
-        let mut seed = 7u64;
-        let mut next = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 100.0
-        };
+        let mut rng = crate::test_rng::TestRng::new(7);
+        let mut next = move || rng.unit() * 100.0;
         let pts: Vec<DVec2> = (0..300).map(|_| DVec2::new(next(), next())).collect();
         let mut tree = KdTree::new(pts.clone());
         let mut alive = vec![true; pts.len()];

@@ -225,13 +225,8 @@ mod tests {
         // Points jittered around lattice positions that are multiples of the cell size, so
         // many pairs straddle borders; a fixed LCG keeps the case reproducible.
         let tol = 0.01;
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut rand = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::test_rng::TestRng::new(0x2545_f491_4f6c_dd1d);
+        let mut rand = || rng.unit();
         let mut pts = Vec::new();
         for _ in 0..600 {
             let base = DVec2::new((rand() * 6.0).floor(), (rand() * 6.0).floor()) * 0.64;
