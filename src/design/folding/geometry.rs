@@ -44,23 +44,9 @@ pub fn double_area(poly: &[DVec2]) -> f64 {
     (0..n).map(|i| poly[i].perp_dot(poly[(i + 1) % n])).sum()
 }
 
-/// The part of a convex polygon on the side `sign` (+1 left, −1 right) of `line`, vertices
-/// within `tol` of the line snapped onto it; empty when that part is thinner than `tol`.
-pub fn clip(poly: &[DVec2], line: &Line2, sign: f64, tol: f64) -> Vec<DVec2> {
-    let mut out = Vec::with_capacity(poly.len() + 1);
-    clip_into(poly, line, sign, tol, &mut out);
-    out
-}
-
-/// [`clip`], appending the part to `out` (nothing when it is empty).
-pub fn clip_into(poly: &[DVec2], line: &Line2, sign: f64, tol: f64, out: &mut Vec<DVec2>) {
-    with_distances(poly, line, tol, |dist| {
-        emit(poly, dist, line, sign, tol, out)
-    });
-}
-
 /// Both parts of a convex polygon: the one left of `line` appended to `left`, the one right
-/// of it to `right` (as [`clip_into`] with sign +1 and −1, the distances computed once).
+/// of it to `right`. Corners within `tol` of the line are snapped onto it; a part thinner
+/// than `tol` appends nothing.
 pub fn split_into(
     poly: &[DVec2],
     line: &Line2,
@@ -95,7 +81,7 @@ fn with_distances(poly: &[DVec2], line: &Line2, tol: f64, f: impl FnOnce(&[f64])
     f(dist)
 }
 
-/// Appends the part of `poly` where `sign × dist` is not negative (see [`clip`]).
+/// Appends the part of `poly` where `sign × dist` is not negative (see [`split_into`]).
 fn emit(poly: &[DVec2], dist: &[f64], line: &Line2, sign: f64, tol: f64, out: &mut Vec<DVec2>) {
     if dist.iter().all(|&s| sign * s <= tol) {
         return;
@@ -215,7 +201,9 @@ pub fn contains_either(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
     contains_oriented(poly, p, tol, sign)
 }
 
-fn contains_oriented(poly: &[DVec2], p: DVec2, tol: f64, sign: f64) -> bool {
+/// [`contains_either`] with the ring's orientation given: `sign` is +1 for counter-clockwise
+/// (or degenerate), −1 for clockwise.
+pub(super) fn contains_oriented(poly: &[DVec2], p: DVec2, tol: f64, sign: f64) -> bool {
     let n = poly.len();
     (0..n).all(|i| match Line2::through(poly[i], poly[(i + 1) % n], 0.0) {
         Some(edge) => sign * edge.side(p) >= -tol,
@@ -277,18 +265,24 @@ mod tests {
         ]
     }
 
+    /// The parts of `poly` left and right of `line`.
+    fn halves(poly: &[DVec2], line: &Line2) -> (Vec<DVec2>, Vec<DVec2>) {
+        let (mut left, mut right) = (Vec::new(), Vec::new());
+        split_into(poly, line, 1e-9, &mut left, &mut right);
+        (left, right)
+    }
+
     #[test]
     fn a_diagonal_splits_the_square_into_two_halves() {
         let line = Line2::through(DVec2::ZERO, DVec2::ONE, 1e-12).unwrap();
-        let left = clip(&square(), &line, 1.0, 1e-9);
-        let right = clip(&square(), &line, -1.0, 1e-9);
+        let (left, right) = halves(&square(), &line);
         assert_eq!((left.len(), right.len()), (3, 3));
         assert!((double_area(&left) - 1.0).abs() < 1e-12);
         assert!((double_area(&right) - 1.0).abs() < 1e-12);
         // An edge of the square: nothing on its outer side.
         let edge = Line2::through(DVec2::ZERO, DVec2::X, 1e-12).unwrap();
-        assert!(clip(&square(), &edge, -1.0, 1e-9).is_empty());
-        assert_eq!(clip(&square(), &edge, 1.0, 1e-9).len(), 4);
+        assert!(halves(&square(), &edge).1.is_empty());
+        assert_eq!(halves(&square(), &edge).0.len(), 4);
     }
 
     #[test]

@@ -11,7 +11,7 @@ use glam::DVec2;
 
 use super::FoldError;
 use super::geometry::{Line2, double_area};
-use crate::geom::segment::{Crossing, distance_to_point, intersect};
+use crate::geom::segment::segment_distance;
 
 /// Errors unless the counter-clockwise `ring` is a simple polygon with a positive area and
 /// distinct corners.
@@ -30,7 +30,7 @@ pub(super) fn check_simple(ring: &[DVec2], tol: f64) -> Result<(), FoldError> {
             let adjacent = j == i + 1 || (i == 0 && j == n - 1);
             let (a, b) = (ring[i], ring[(i + 1) % n]);
             let (c, d) = (ring[j], ring[(j + 1) % n]);
-            if !adjacent && segments_touch(a, b, c, d, tol) {
+            if !adjacent && segment_distance(a, b, c, d) <= tol {
                 return Err(FoldError::Sheet(format!(
                     "outline crosses or touches itself (sides {i} and {j})"
                 )));
@@ -123,15 +123,6 @@ fn union(a: &[usize], b: &[usize]) -> Option<Vec<usize>> {
         }
     }
     None
-}
-
-/// Whether the closed segments `a b` and `c d` meet (within `tol`).
-fn segments_touch(a: DVec2, b: DVec2, c: DVec2, d: DVec2, tol: f64) -> bool {
-    !matches!(intersect(a, b, c, d, 0.0), Crossing::None)
-        || distance_to_point(c, d, a) <= tol
-        || distance_to_point(c, d, b) <= tol
-        || distance_to_point(a, b, c) <= tol
-        || distance_to_point(a, b, d) <= tol
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 use glam::{DAffine3, DVec2, DVec3};
 
 use super::FoldError;
-use super::geometry::{contains_either, double_area, overlaps, rotation_about};
+use super::geometry::{contains_oriented, double_area, overlaps, rotation_about};
 use super::search::Layer;
 use super::state::FaceGroup;
 
@@ -25,9 +25,13 @@ pub(super) fn check_tuck(layer: &Layer, moving: &[bool], tol: f64) -> Result<(),
             layer.moving_part(ids[i]),
             layer.moving_part(ids[ids.len() - 1 - i]),
         );
-        let same = (double_area(a).abs() - double_area(b).abs()).abs() <= tol * 1e3
-            && a.iter().all(|&p| contains_either(b, p, tol * 1e3))
-            && b.iter().all(|&p| contains_either(a, p, tol * 1e3));
+        let (area_a, area_b) = (double_area(a), double_area(b));
+        let orientation = |area: f64| if area >= 0.0 { 1.0 } else { -1.0 };
+        let same = (area_a.abs() - area_b.abs()).abs() <= tol * 1e3
+            && a.iter()
+                .all(|&p| contains_oriented(b, p, tol * 1e3, orientation(area_b)))
+            && b.iter()
+                .all(|&p| contains_oriented(a, p, tol * 1e3, orientation(area_a)));
         if !same {
             return Err(FoldError::TuckAsymmetric(
                 "the moving parts of mirrored layers differ in shape".into(),

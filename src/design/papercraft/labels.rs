@@ -112,13 +112,14 @@ fn label_pass(
         };
         let text = e.to_string();
         let from = largest[i].max(largest[j]);
+        let (path_i, path_j) = (SidePath::new(&parts[i], &si), SidePath::new(&parts[j], &sj));
         let fitted = SIZES[from..].iter().find_map(|&f| {
-            let fit = |part: &Part, side: &PartSide| {
+            let fit = |part: &Part, path: &SidePath| {
                 POSITIONS
                     .iter()
-                    .find_map(|&s| place(part, side, e, &text, f * height, s))
+                    .find_map(|&s| place(part, path, e, &text, f * height, s))
             };
-            Some((fit(&parts[i], &si)?, fit(&parts[j], &sj)?))
+            Some((fit(&parts[i], &path_i)?, fit(&parts[j], &path_j)?))
         });
         match fitted {
             Some((a, b)) => {
@@ -136,22 +137,38 @@ const SIZES: [f64; 4] = [1.0, 0.7, 0.5, 0.35];
 /// Positions tried along a side, as fractions of its length from its start.
 const POSITIONS: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
 
-/// The label `text` of cut line `e` on `side` of `part` at height `h`, next to the point at
-/// fraction `along` of the side's length, if it fits.
-fn place(part: &Part, side: &PartSide, e: usize, text: &str, h: f64, along: f64) -> Option<Label> {
-    let pts: Vec<DVec2> = (0..=side.len).map(|k| part.point(side.start + k)).collect();
-    let total: f64 = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
-    let at = |s: f64| {
+/// A side of a part as a polyline, with its length (mm), built once for all the label sizes
+/// and positions tried on it.
+struct SidePath {
+    pts: Vec<DVec2>,
+    total: f64,
+}
+
+impl SidePath {
+    fn new(part: &Part, side: &PartSide) -> Self {
+        let pts: Vec<DVec2> = (0..=side.len).map(|k| part.point(side.start + k)).collect();
+        let total = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
+        SidePath { pts, total }
+    }
+
+    /// The point at arc length `s` from the side's start.
+    fn at(&self, s: f64) -> DVec2 {
         let mut left = s;
-        for w in pts.windows(2) {
+        for w in self.pts.windows(2) {
             let l = w[0].distance(w[1]);
             if left <= l && l > 0.0 {
                 return w[0].lerp(w[1], left / l);
             }
             left -= l;
         }
-        pts[pts.len() - 1]
-    };
+        self.pts[self.pts.len() - 1]
+    }
+}
+
+/// The label `text` of cut line `e` on the side `path` of `part` at height `h`, next to the
+/// point at fraction `along` of the side's length, if it fits.
+fn place(part: &Part, path: &SidePath, e: usize, text: &str, h: f64, along: f64) -> Option<Label> {
+    let (at, total) = (|s: f64| path.at(s), path.total);
     let (from, to) = ((along - 0.1).max(0.0), (along + 0.1).min(1.0));
     let t = (at(to * total) - at(from * total)).try_normalize()?;
     let up = DVec2::new(t.y, -t.x); // outward: the outline is counter-clockwise

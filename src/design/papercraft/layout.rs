@@ -83,7 +83,8 @@ pub fn part_points(part: &Part) -> Vec<DVec2> {
     pts
 }
 
-fn bounds(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
+/// The lower and upper corners of the box round `points` (±∞ corners for none), mm.
+pub(super) fn bounds(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
     points.fold(
         (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
         |(lo, hi), p| (lo.min(p), hi.max(p)),
@@ -228,12 +229,7 @@ pub fn usage(parts: &[Part], placements: &[Placement], spec: &SheetSpec) -> Usag
             .map(|&p| pl.apply(p).y)
             .fold(f64::NEG_INFINITY, f64::max);
         top[pl.sheet] = top[pl.sheet].max(y);
-        parts_area += crate::geom::polygon::signed_area(part.outline.iter().copied()).abs()
-            + part
-                .tabs
-                .iter()
-                .map(|t| crate::geom::polygon::signed_area(part.tab_polygon(t)).abs())
-                .sum::<f64>();
+        parts_area += part.area();
     }
     let used_area = top
         .iter()

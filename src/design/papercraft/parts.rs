@@ -135,6 +135,16 @@ impl Part {
         self.outline[i % self.outline.len()]
     }
 
+    /// The area of the outline and its tabs, mm².
+    pub fn area(&self) -> f64 {
+        signed_area(self.outline.iter().copied()).abs()
+            + self
+                .tabs
+                .iter()
+                .map(|t| signed_area(self.tab_polygon(t)).abs())
+                .sum::<f64>()
+    }
+
     /// The tab's polygon: root points, then the outer corners (counter-clockwise).
     pub fn tab_polygon(&self, tab: &Tab) -> Vec<DVec2> {
         let mut poly: Vec<DVec2> = (0..=tab.len).map(|k| self.point(tab.from + k)).collect();

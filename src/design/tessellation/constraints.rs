@@ -238,8 +238,8 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
         }
     }
     if limits.vertex_penalty {
-        for fan in vertex_penalty::fans(mesh) {
-            for c in vertex_penalty::illegal_creases(x, &fan) {
+        for fan in &mesh.fans {
+            for c in vertex_penalty::illegal_creases(x, fan) {
                 out.push(Row {
                     family: Family::VertexPenalty,
                     value: c.penalty,
@@ -370,7 +370,7 @@ pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residua
     let defects = angle_defects(mesh, x);
     let developability = defects.iter().fold(0.0f64, |m, d| m.max(d.abs()));
     let sums = angle_sums(mesh, x);
-    let (illegal_creases, max_penalty) = vertex_penalty::measure(x, &vertex_penalty::fans(mesh));
+    let (illegal_creases, max_penalty) = vertex_penalty::measure(x, &mesh.fans);
     let mut r = Residuals {
         illegal_creases,
         max_penalty,

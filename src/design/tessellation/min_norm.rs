@@ -21,8 +21,9 @@ pub(crate) struct Jacobian {
     vertices: Vec<u32>,
     blocks: Vec<DVec3>,
     n: usize,
-    /// Built at the first solve and reused by later solves with the same rows.
-    preconditioner: OnceCell<Preconditioner>,
+    /// The preconditioner and the Tikhonov ε, built at the first solve and reused by later
+    /// solves with the same rows.
+    preconditioner: OnceCell<(Preconditioner, f64)>,
 }
 
 impl Jacobian {
@@ -89,11 +90,11 @@ impl Jacobian {
 /// stopped at the relative residual `eta` (1e-12 for an exact step). Returns the step and the
 /// CG iteration count.
 pub(crate) fn min_norm(c: &Jacobian, g: &[f64], eta: f64) -> (Vec<DVec3>, usize) {
-    let (diag, eps) = diagonal(c);
-    let pre = c
-        .preconditioner
-        .get_or_init(|| Preconditioner::new(c, &diag, eps));
-    preconditioned_cg(c, g, eta, eps, pre)
+    let (pre, eps) = c.preconditioner.get_or_init(|| {
+        let (diag, eps) = diagonal(c);
+        (Preconditioner::new(c, &diag, eps), eps)
+    });
+    preconditioned_cg(c, g, eta, *eps, pre)
 }
 
 /// The diagonal of `C Cᵀ` and the Tikhonov ε (1e-12 of its largest entry).
@@ -295,7 +296,7 @@ mod tests {
         let (dx, iterations) = min_norm(&c, &g, 1e-12);
         assert!(matches!(
             c.preconditioner.get(),
-            Some(Preconditioner::Cholesky(_))
+            Some((Preconditioner::Cholesky(_), _))
         ));
         // A near-exact preconditioner: a handful of CG iterations, not hundreds.
         assert!(iterations <= 5, "{iterations}");
@@ -320,7 +321,7 @@ mod tests {
         let (dx, _) = min_norm(&c, &g, 1e-12);
         assert!(matches!(
             c.preconditioner.get(),
-            Some(Preconditioner::Jacobi(_))
+            Some((Preconditioner::Jacobi(_), _))
         ));
         let residual = max_residual(&c, &dx, &g);
         assert!(residual < 1e-8, "{residual}");

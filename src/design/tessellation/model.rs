@@ -6,6 +6,7 @@ use std::collections::HashMap;
 use glam::DVec3;
 
 use super::sectors::Sectors;
+use super::vertex_penalty::{self, Fan};
 use crate::pattern::Assignment;
 
 /// What an edge of the tessellation is.
@@ -66,6 +67,8 @@ pub struct TessMesh {
     pub corner_count: usize,
     /// The corners grouped into the angles between neighbouring creases (topology only).
     pub sectors: Sectors,
+    /// The ordered fans checked by the vertex-adjacent penalty, eq. 5–7 (topology only).
+    pub fans: Vec<Fan>,
 }
 
 impl TessMesh {
@@ -108,6 +111,7 @@ impl TessMesh {
             interior[e.vertices[1] as usize] = false;
         }
         let sectors = Sectors::new(&triangles, &edges);
+        let fans = vertex_penalty::fans(&triangles, &interior);
         TessMesh {
             positions,
             triangles,
@@ -117,6 +121,7 @@ impl TessMesh {
             input_vertex,
             corner_count,
             sectors,
+            fans,
         }
     }
 

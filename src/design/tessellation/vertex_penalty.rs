@@ -32,7 +32,6 @@ use std::f64::consts::TAU;
 use glam::DVec3;
 
 use super::geometry::fold_angle;
-use super::model::TessMesh;
 
 /// Folds smaller than this (radians) are not classified.
 pub const FLAT_FOLD: f64 = 1e-6;
@@ -54,17 +53,18 @@ pub struct Fan {
     pub ring: Vec<u32>,
 }
 
-/// The ordered fans of every interior vertex with at least [`MIN_FACES`] triangles.
-pub fn fans(mesh: &TessMesh) -> Vec<Fan> {
-    let mut next: Vec<HashMap<u32, u32>> = vec![HashMap::new(); mesh.positions.len()];
-    for t in &mesh.triangles {
+/// The ordered fans of every interior vertex with at least [`MIN_FACES`] triangles
+/// (topology only: [`TessMesh::fans`](super::model::TessMesh::fans) keeps them for the mesh's lifetime).
+pub fn fans(triangles: &[[u32; 3]], interior: &[bool]) -> Vec<Fan> {
+    let mut next: Vec<HashMap<u32, u32>> = vec![HashMap::new(); interior.len()];
+    for t in triangles {
         for k in 0..3 {
             next[t[k] as usize].insert(t[(k + 1) % 3], t[(k + 2) % 3]);
         }
     }
     let mut out = Vec::new();
     for (v, links) in next.iter().enumerate() {
-        if !mesh.interior[v] || links.len() < MIN_FACES {
+        if !interior[v] || links.len() < MIN_FACES {
             continue;
         }
         let Some(&start) = links.keys().min() else {
@@ -254,6 +254,7 @@ pub fn measure(x: &[DVec3], fans: &[Fan]) -> (usize, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::design::tessellation::model::TessMesh;
 
     /// A six-face fan around the origin; `ring[k]` are the neighbours' positions.
     fn fan_mesh(ring: &[DVec3]) -> TessMesh {
@@ -292,7 +293,7 @@ mod tests {
     #[test]
     fn a_convex_cone_is_legal_and_a_pierced_one_is_not() {
         let mesh = fan_mesh(&cap());
-        let found = fans(&mesh);
+        let found = &mesh.fans;
         assert_eq!(found.len(), 1);
         let legal = creases(&mesh.positions, &found[0]);
         assert_eq!(legal.len(), 6);
@@ -301,21 +302,21 @@ mod tests {
         let mut flipped = cap();
         flipped.reverse();
         let m2 = fan_mesh(&flipped);
-        let c2 = creases(&m2.positions, &fans(&m2)[0]);
+        let c2 = creases(&m2.positions, &m2.fans[0]);
         assert!(c2.iter().all(|c| !c.illegal), "{c2:?}");
 
         let mesh = fan_mesh(&pierced());
-        let fan = &fans(&mesh)[0];
+        let fan = &mesh.fans[0];
         let c = creases(&mesh.positions, fan);
         let bad: Vec<usize> = c.iter().filter(|c| c.illegal).map(|c| c.index).collect();
         assert_eq!(bad, vec![0], "{c:?}");
-        assert_eq!(measure(&mesh.positions, &fans(&mesh)).0, 1);
+        assert_eq!(measure(&mesh.positions, &mesh.fans).0, 1);
     }
 
     #[test]
     fn penalty_gradient_matches_finite_differences() {
         let mesh = fan_mesh(&pierced());
-        let fan = fans(&mesh).remove(0);
+        let fan = mesh.fans[0].clone();
         let x = mesh.positions.clone();
         let base = creases(&x, &fan);
         let h = 1e-6;

@@ -12,6 +12,7 @@
 
 use glam::DVec2;
 
+use crate::design::papercraft::layout::bounds;
 use crate::geom::segment::slide_interval;
 
 /// Marked grid points of a sheet, as runs of columns per grid row.
@@ -95,10 +96,7 @@ impl Occupancy {
     /// Marks the grid points inside a placed shape (its rings, sheet coordinates) or closer
     /// than `gap` to one of its edges.
     pub(super) fn mark(&mut self, edges: &[[DVec2; 2]], rings: &[Vec<DVec2>], gap: f64) {
-        let (lo, hi) = edges.iter().flatten().fold(
-            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-            |(lo, hi), &p| (lo.min(p), hi.max(p)),
-        );
+        let (lo, hi) = bounds(edges.iter().flatten().copied());
         let c = self.cell;
         let first = ((lo.y - gap) / c).floor().max(0.0) as usize;
         let last = (((hi.y + gap) / c).ceil().max(0.0) as usize).min(self.runs.len() - 1);

@@ -4,7 +4,6 @@ use glam::DVec2;
 
 use super::raster::Solid;
 use crate::design::papercraft::parts::Part;
-use crate::geom::polygon::signed_area;
 
 /// A part's shape for packing, in part coordinates: its outline and tab polygons, and the
 /// edges that bound them (outline edges and the tabs' free edges).
@@ -27,11 +26,11 @@ impl Shape {
             let [oa, ob] = tab.outer;
             edges.extend([[a, oa], [oa, ob], [ob, b]]);
         }
-        let area = rings
-            .iter()
-            .map(|r| signed_area(r.iter().copied()).abs())
-            .sum();
-        Shape { rings, edges, area }
+        Shape {
+            rings,
+            edges,
+            area: part.area(),
+        }
     }
 
     /// The shape turned by `angle` and moved so that its bounding box starts at the origin,

@@ -6,6 +6,7 @@ use glam::DVec2;
 use super::raster::Occupancy;
 use super::shape::Turned;
 use super::{REFINE, Rule};
+use crate::design::papercraft::layout::bounds;
 use crate::geom::polygon::contains_point;
 use crate::geom::segment::slide_interval;
 
@@ -64,20 +65,15 @@ impl Sheet {
             .map(|r| r.iter().map(|&p| p + at).collect())
             .collect();
         self.occupancy.mark(&placed, &rings, self.gap);
-        for e in &shape.edges {
-            let (a, b) = (e[0] + at, e[1] + at);
+        for [a, b] in placed {
             let id = self.edges.len() as u32;
             for r in self.rows_of(a.y.min(b.y), a.y.max(b.y)) {
                 self.rows[r].push(id);
             }
             self.edges.push([a, b]);
         }
-        for ring in &shape.rings {
-            let ring: Vec<DVec2> = ring.iter().map(|&p| p + at).collect();
-            let (lo, hi) = ring.iter().fold(
-                (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-                |(lo, hi), &p| (lo.min(p), hi.max(p)),
-            );
+        for ring in rings {
+            let (lo, hi) = bounds(ring.iter().copied());
             self.rings.push((lo, hi, ring));
         }
     }
