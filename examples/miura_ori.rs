@@ -1,7 +1,7 @@
 //! Generates Miura-ori: parallelogram cells, one pleat family straight, the other zigzag, checks it and writes it.
 //!
 //! ```text
-//! cargo run --example miura_ori -- [OUT.fold|OUT.svg|OUT.cp]
+//! cargo run --example miura_ori -- [OUT.fold|OUT.svg|OUT.cp]   (default foldcam-examples/miura_ori.fold)
 //! ```
 
 use foldcam::check::{CheckOptions, check};
@@ -10,9 +10,16 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let out = std::env::args_os()
-        .nth(1)
-        .map_or_else(|| PathBuf::from("miura_ori.fold"), PathBuf::from);
+    let out = std::env::args_os().nth(1).map_or_else(
+        || PathBuf::from("foldcam-examples/miura_ori.fold"),
+        PathBuf::from,
+    );
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty())
+        && let Err(e) = std::fs::create_dir_all(dir)
+    {
+        eprintln!("miura_ori: {}: {e}", dir.display());
+        return ExitCode::from(2);
+    }
     let params = MiuraOri {
         columns: 12,
         rows: 10,

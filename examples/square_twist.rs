@@ -1,7 +1,7 @@
 //! Generates a square twist with a 30° twist angle, checks it and writes it.
 //!
 //! ```text
-//! cargo run --example square_twist -- [OUT.fold|OUT.svg|OUT.cp]
+//! cargo run --example square_twist -- [OUT.fold|OUT.svg|OUT.cp]   (default foldcam-examples/square_twist.fold)
 //! ```
 
 use foldcam::check::{CheckOptions, check};
@@ -10,9 +10,16 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let out = std::env::args_os()
-        .nth(1)
-        .map_or_else(|| PathBuf::from("square_twist.fold"), PathBuf::from);
+    let out = std::env::args_os().nth(1).map_or_else(
+        || PathBuf::from("foldcam-examples/square_twist.fold"),
+        PathBuf::from,
+    );
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty())
+        && let Err(e) = std::fs::create_dir_all(dir)
+    {
+        eprintln!("square_twist: {}: {e}", dir.display());
+        return ExitCode::from(2);
+    }
     let params = SquareTwist {
         twist_deg: 30.0,
         ..SquareTwist::default()

@@ -1,7 +1,7 @@
 //! Generates a 6 × 6 grid of waterbomb bases, checks it and writes it.
 //!
 //! ```text
-//! cargo run --example waterbomb -- [OUT.fold|OUT.svg|OUT.cp]
+//! cargo run --example waterbomb -- [OUT.fold|OUT.svg|OUT.cp]   (default foldcam-examples/waterbomb.fold)
 //! ```
 
 use foldcam::check::{CheckOptions, check};
@@ -10,9 +10,16 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let out = std::env::args_os()
-        .nth(1)
-        .map_or_else(|| PathBuf::from("waterbomb.fold"), PathBuf::from);
+    let out = std::env::args_os().nth(1).map_or_else(
+        || PathBuf::from("foldcam-examples/waterbomb.fold"),
+        PathBuf::from,
+    );
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty())
+        && let Err(e) = std::fs::create_dir_all(dir)
+    {
+        eprintln!("waterbomb: {}: {e}", dir.display());
+        return ExitCode::from(2);
+    }
     let params = Waterbomb {
         columns: 6,
         rows: 6,

@@ -1,7 +1,7 @@
 //! Generates the Yoshimura diamond pattern of a crushed cylinder, checks it and writes it.
 //!
 //! ```text
-//! cargo run --example yoshimura -- [OUT.fold|OUT.svg|OUT.cp]
+//! cargo run --example yoshimura -- [OUT.fold|OUT.svg|OUT.cp]   (default foldcam-examples/yoshimura.fold)
 //! ```
 
 use foldcam::check::{CheckOptions, check};
@@ -10,9 +10,16 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let out = std::env::args_os()
-        .nth(1)
-        .map_or_else(|| PathBuf::from("yoshimura.fold"), PathBuf::from);
+    let out = std::env::args_os().nth(1).map_or_else(
+        || PathBuf::from("foldcam-examples/yoshimura.fold"),
+        PathBuf::from,
+    );
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty())
+        && let Err(e) = std::fs::create_dir_all(dir)
+    {
+        eprintln!("yoshimura: {}: {e}", dir.display());
+        return ExitCode::from(2);
+    }
     let params = Yoshimura::default();
     let pattern = match params.build() {
         Ok(p) => p,

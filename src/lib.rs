@@ -4,7 +4,7 @@
 //! millimetres, edges with FOLD assignments and fold angles). This crate reads and writes it
 //! ([`formats`]: FOLD 1.2, Origami Simulator SVG, ORIPA `.cp`), cleans any line drawing into a
 //! planar graph ([`pattern::planarize()`]), checks it ([`check`]: Kawasaki, Maekawa, vertex and
-//! fold-angle limits) and draws previews ([`render`]). See `src/ARCHITECTURE.md` for the map.
+//! fold-angle limits) and draws previews ([`render`]). See `ARCHITECTURE.md` at the repository root for the map.
 //!
 //! ```
 //! use foldcam::check::{CheckOptions, check};

@@ -1,6 +1,6 @@
-//! Files written by other origami tools (`../shared/testdata`, see its README): every one
-//! imports, and `check` gives the right verdict on the known flat-foldable ones. Skips, saying
-//! so, where the folder is absent.
+//! Files written by other origami tools (`tests/data`, see its README): every one
+//! imports, and `check` gives the right verdict on the known flat-foldable ones. The MIT files
+//! are copied into `tests/data/` (see its README), so these run on a fresh clone.
 
 use std::path::{Path, PathBuf};
 
@@ -9,14 +9,8 @@ use foldcam::formats;
 use foldcam::pattern::vertex_fan::VertexFans;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 
-fn testdata() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: {} is absent", dir.display());
-        None
-    }
+fn testdata() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data")
 }
 
 fn load(dir: &Path, name: &str) -> CreasePattern {
@@ -29,7 +23,7 @@ fn load(dir: &Path, name: &str) -> CreasePattern {
 
 #[test]
 fn every_file_imports_and_validates() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let mut count = 0;
     for sub in ["fold", "svg"] {
         for entry in std::fs::read_dir(dir.join(sub)).expect("listing") {
@@ -50,7 +44,7 @@ fn every_file_imports_and_validates() {
 /// Patterns known to fold flat: every interior vertex passes Kawasaki and Maekawa.
 #[test]
 fn known_flat_foldable_patterns_pass() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let flat = [
         "fold/os-BoxPleatPyramid.fold",
         "fold/os-BoxPleatTessellation.fold",
@@ -80,7 +74,7 @@ fn known_flat_foldable_patterns_pass() {
 /// mountains: 4 and 4 at a degree-8 vertex, which Maekawa forbids (counted here directly).
 #[test]
 fn waterbomb_base_as_assigned_fails_maekawa_at_its_centre() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let cp = load(&dir, "svg/waterbombBase.svg");
     let fans = VertexFans::new(&cp);
     let centre = cp
@@ -107,7 +101,7 @@ fn waterbomb_base_as_assigned_fails_maekawa_at_its_centre() {
 /// difference at the flap vertices: the reported error is that geometry's, not noise.
 #[test]
 fn frog_base_drawing_is_off_by_its_approximated_angle() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let cp = load(&dir, "svg/frogBase.svg");
     let report = check(&cp, &CheckOptions::default());
     assert!(!report.passed());

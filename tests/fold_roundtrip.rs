@@ -168,19 +168,13 @@ proptest! {
 // ---------------------------------------------------------------------------------------
 // Real files
 
-fn testdata() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/fold");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: test data not found at {}", dir.display());
-        None
-    }
+fn testdata() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/fold")
 }
 
 #[test]
 fn every_testdata_file_round_trips() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let mut count = 0;
     for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
         let path = entry.path();

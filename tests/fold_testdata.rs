@@ -1,4 +1,4 @@
-//! Real FOLD files from the FOLD project and Origami Simulator (`../shared/testdata/fold`):
+//! Real FOLD files from the FOLD project and Origami Simulator (`tests/data/fold`, MIT):
 //! they import, 3D folded forms unfold isometrically, flat x–z patterns become 2D.
 
 use std::path::PathBuf;
@@ -7,20 +7,16 @@ use foldcam::formats::fold::read_str;
 use foldcam::pattern::{CreasePattern, FoldedState, Units};
 use serde_json::Value;
 
-fn testdata() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/fold");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: test data not found at {}", dir.display());
-        None
-    }
+fn testdata() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/fold")
 }
 
-fn read(name: &str) -> Option<(String, foldcam::formats::Imported)> {
-    let text = std::fs::read_to_string(testdata()?.join(name)).ok()?;
+/// The file's text and what it imports as; a missing or unreadable file fails the test.
+fn read(name: &str) -> (String, foldcam::formats::Imported) {
+    let path = testdata().join(name);
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let imported = read_str(&text).unwrap_or_else(|e| panic!("{name}: {e}"));
-    Some((text, imported))
+    (text, imported)
 }
 
 /// Number of entries of a top-level array key, read straight from the JSON.
@@ -45,9 +41,9 @@ fn assert_isometric(name: &str, cp: &CreasePattern, folded: &FoldedState, rel: f
 
 #[test]
 fn every_file_imports() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let mut seen = 0;
-    for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+    for entry in std::fs::read_dir(dir).expect("listing").flatten() {
         let path = entry.path();
         if path.extension().is_some_and(|e| e == "fold") {
             let text = std::fs::read_to_string(&path).unwrap_or_default();
@@ -68,9 +64,7 @@ fn folded_forms_unfold_isometrically() {
         "box.fold",
         "diagonal-folded.fold",
     ] {
-        let Some((text, imported)) = read(name) else {
-            return;
-        };
+        let (text, imported) = read(name);
         let folded = imported
             .folded
             .as_ref()
@@ -93,9 +87,7 @@ fn folded_forms_unfold_isometrically() {
 #[test]
 fn unfolded_faces_are_counter_clockwise_and_do_not_overlap() {
     for name in ["squaretwist.fold", "simple.fold", "diagonal-folded.fold"] {
-        let Some((_, imported)) = read(name) else {
-            return;
-        };
+        let (_, imported) = read(name);
         let cp = &imported.pattern;
         let faces = cp
             .faces
@@ -117,11 +109,8 @@ fn unfolded_faces_are_counter_clockwise_and_do_not_overlap() {
 
 #[test]
 fn flat_folded_diagonal_unfolds_to_its_crease_pattern() {
-    let (Some((_, folded)), Some((_, cp))) =
-        (read("diagonal-folded.fold"), read("diagonal-cp.fold"))
-    else {
-        return;
-    };
+    let (_, folded) = read("diagonal-folded.fold");
+    let (_, cp) = read("diagonal-cp.fold");
     // Both files describe the same square: the unfolding must be congruent to the CP (it is
     // placed with face 0, which is not flipped, in place, so equal up to rounding).
     for (a, b) in folded.pattern.vertices.iter().zip(&cp.pattern.vertices) {
@@ -135,9 +124,7 @@ fn flat_folded_diagonal_unfolds_to_its_crease_pattern() {
 #[test]
 fn origami_simulator_patterns_become_flat() {
     for name in ["os-BoxPleatPyramid.fold", "os-BoxPleatTessellation.fold"] {
-        let Some((text, imported)) = read(name) else {
-            return;
-        };
+        let (text, imported) = read(name);
         assert!(imported.folded.is_none(), "{name}");
         let cp = &imported.pattern;
         assert_eq!(cp.vertices.len(), count(&text, "vertices_coords"), "{name}");
@@ -190,9 +177,7 @@ fn origami_simulator_patterns_become_flat() {
 
 #[test]
 fn crease_pattern_file_keeps_its_coordinates_and_extras() {
-    let Some((_, imported)) = read("diagonal-cp.fold") else {
-        return;
-    };
+    let (_, imported) = read("diagonal-cp.fold");
     let cp = &imported.pattern;
     assert_eq!(cp.vertices[2], glam::DVec2::new(1.0, 1.0));
     assert_eq!(cp.edges[4].fold_angle, Some(180.0));

@@ -24,8 +24,8 @@ fn sized(mut cp: CreasePattern, size: f64) -> CreasePattern {
     cp
 }
 
-/// The shared test patterns: the classic generators, the bundled samples and (when present)
-/// files from other tools, including pop-up cards and a cube net with cuts.
+/// The shared test patterns: the classic generators, the bundled samples and files from other
+/// tools.
 fn patterns() -> Vec<(String, CreasePattern)> {
     let mut out: Vec<(String, CreasePattern)> = vec![
         ("miura".into(), MiuraOri::default().build().expect("miura")),
@@ -47,21 +47,15 @@ fn patterns() -> Vec<(String, CreasePattern)> {
         root.join("examples/patterns/flat-vertex.fold"),
         root.join("examples/patterns/preliminary-base.cp"),
     ];
-    let shared = root.join("../shared/testdata");
-    if shared.is_dir() {
-        for name in [
-            "svg/popupSimple.svg",
-            "svg/cubeunwrapping.svg",
-            "svg/squareBase.svg",
-            "svg/mapfold.svg",
-        ] {
-            files.push(shared.join(name));
-        }
-    } else {
-        eprintln!(
-            "skipped the files from other tools: {} is absent",
-            shared.display()
-        );
+    // Files from other tools (Origami Simulator, MIT: see tests/data/README.md), including
+    // pop-up cards and a cube net with cuts.
+    for name in [
+        "popupSimple.svg",
+        "cubeunwrapping.svg",
+        "squareBase.svg",
+        "mapfold.svg",
+    ] {
+        files.push(root.join("tests/data/svg").join(name));
     }
     for f in files {
         let mut cp = foldcam::formats::load(&f)

@@ -16,20 +16,15 @@ use grid::{build, grid_spec};
 /// Millimetres per CSS pixel.
 const MM_PER_PX: f64 = 25.4 / 96.0;
 
-fn testdata() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/svg");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("skipped: {} is absent", dir.display());
-        None
-    }
+/// Origami Simulator's SVGs (MIT), copied into `tests/data/svg`.
+fn testdata() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/svg")
 }
 
-fn read_file(name: &str) -> Option<foldcam::formats::Imported> {
-    let path = testdata()?.join(name);
+fn read_file(name: &str) -> foldcam::formats::Imported {
+    let path = testdata().join(name);
     let text = std::fs::read_to_string(&path).expect("test file is readable");
-    Some(svg::read_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display())))
+    svg::read_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 /// An SVG document 100 mm square with one user unit per millimetre.
@@ -69,7 +64,7 @@ fn has_edge(cp: &CreasePattern, a: DVec2, b: DVec2, tol: f64) -> bool {
 
 #[test]
 fn every_origami_simulator_file_imports() {
-    let Some(dir) = testdata() else { return };
+    let dir = testdata();
     let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
         .expect("testdata is listable")
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -115,9 +110,7 @@ fn every_origami_simulator_file_imports() {
 fn simple_vertex_has_the_hand_counted_edges() {
     // A square outline, a red line across and a red half line down to the centre, a blue half
     // line up from it: the outline splits where the four crease ends touch it.
-    let Some(imported) = read_file("simpleVertex.svg") else {
-        return;
-    };
+    let imported = read_file("simpleVertex.svg");
     let cp = &imported.pattern;
     assert_eq!(count(cp, Assignment::Boundary), 8);
     assert_eq!(count(cp, Assignment::Mountain), 3);
@@ -141,9 +134,7 @@ fn simple_vertex_has_the_hand_counted_edges() {
 #[test]
 fn waterbomb_base_reads_half_opacity_valleys() {
     // Red diagonals at full opacity, blue midlines at opacity 0.5, a 2016 px square outline.
-    let Some(imported) = read_file("waterbombBase.svg") else {
-        return;
-    };
+    let imported = read_file("waterbombBase.svg");
     let cp = &imported.pattern;
     assert_eq!(count(cp, Assignment::Boundary), 8);
     assert_eq!(count(cp, Assignment::Mountain), 4);

@@ -307,7 +307,7 @@ fn cli_reports_the_rigid_simulation() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{stdout}");
     assert!(
-        stdout.contains("rigid folding (§5): reached the target after 20 steps"),
+        stdout.contains("rigid folding: reached the target after 20 steps"),
         "{stdout}"
     );
     let bad = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))

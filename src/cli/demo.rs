@@ -263,8 +263,8 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
     Ok(())
 }
 
-/// The bundled voxel house and building mesh (seed 001): made into cards (the mesh through
-/// §3), checked, unfolded into crease patterns, drawn standing and opening, and cut from card
+/// The bundled voxel house and building mesh (Mitani, Suzuki & Uno 2003): made into cards (the mesh
+/// through the paper's mesh conversion), checked, unfolded into crease patterns, drawn standing and opening, and cut from card
 /// on the diode laser through the simulated machine.
 fn popup_card(dir: &Path, width: u32) -> Result<()> {
     use foldcam::design::popup::voxel::{
@@ -281,7 +281,7 @@ fn popup_card(dir: &Path, width: u32) -> Result<()> {
         .map_err(|e| anyhow::anyhow!("building.obj: {e}"))?;
     building.set_margin_mm(10.0)?;
     println!(
-        "building.obj: {} faces seen from the front; eq. 7 added {} voxels, {} rows became windows, {} thin tops left out",
+        "building.obj: {} faces seen from the front; filling under overhangs added {} voxels, {} rows became windows, {} thin tops left out",
         mesh.faces().len(),
         report.added_cells,
         report.window_rows,
@@ -323,7 +323,7 @@ fn show_card(
     .context("gcode")?;
     let clean = job.clean;
     println!(
-        "\n{name} (seed 001): {} × {} × {} voxels, pops up; {} creases and cuts; \
+        "\n{name} (voxel pop-up, Mitani, Suzuki & Uno 2003): {} × {} × {} voxels, pops up; {} creases and cuts; \
          grbl-diode/card-300gsm job {}; {name}.png and .gif show it standing and opening",
         card.nx(),
         card.ny(),

@@ -1,4 +1,4 @@
-//! The demo's paper-craft stage: the bundled vase (seed 004) built from its design file into
+//! The demo's paper-craft stage: the bundled vase (Ōgaki 2016) built from its design file into
 //! parts with glue tabs, packed on A4, drawn, and cut on the diode laser through the simulated
 //! machine.
 
@@ -39,7 +39,7 @@ pub fn vase(dir: &Path, width: u32) -> Result<()> {
     }
     let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
     println!(
-        "\npapercraft-vase (seed 004): {} gores with {tabs} glue tabs on {} A4 sheet(s), packed \
+        "\npapercraft-vase (paper craft, Ōgaki 2016): {} gores with {tabs} glue tabs on {} A4 sheet(s), packed \
          on their shapes; {machine}/{material} cut {}; papercraft-vase-1.png shows the sheet",
         made.parts.len(),
         made.sheets.len(),

@@ -1,4 +1,4 @@
-//! The demo's tessellation stage: the bundled dome (seed 002) with truncated stars at the
+//! The demo's tessellation stage: the bundled dome (Tachi 2014) with truncated stars at the
 //! 0.5 mm stainless limits, unfolded, drawn, and perforated on the fiber laser through the
 //! simulated machine.
 
@@ -45,7 +45,7 @@ pub fn dome(dir: &Path, width: u32) -> Result<()> {
     let clean = job.clean;
     let r = &t.report.last;
     println!(
-        "\n{name} (seed 002): {} faces -> {} triangles with truncated stars, solved in {} \
+        "\n{name} (tessellation, Tachi 2014): {} faces -> {} triangles with truncated stars, solved in {} \
          iterations (developable to {:.0e} rad, folds <= {:.1} deg, creases >= {:.1} deg apart); \
          linuxcnc-fiber/stainless-0.5 perforation {}; {name}.png shows it folded",
         mesh.faces().len(),

@@ -1,4 +1,4 @@
-//! `foldcam fold SCRIPT -o model.fold`: run a fold script (seed 003) and write the crease
+//! `foldcam fold SCRIPT -o model.fold`: run a fold script (Miyazaki et al. 1992) and write the crease
 //! pattern with one folded frame per step.
 
 use std::path::PathBuf;
@@ -19,7 +19,7 @@ use super::Outcome;
 #[derive(clap::Args)]
 #[command(
     long_about = "Runs a fold script (TOML: a sheet, then bend, fold, tuck and drag steps; see \
-                  examples/folding/README.txt) on the origami simulator of seed 003 (Miyazaki et \
+                  examples/folding/README.txt) on the origami simulator of Miyazaki et al. (1992) (Miyazaki et \
                   al.): faces split by every fold, layer order kept, tuck-ins checked. Writes a \
                   FOLD file whose key frame is the crease pattern (the unfolded fold lines, \
                   mountain/valley from the final state, boundary B) and whose further frames are \

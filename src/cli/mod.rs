@@ -75,7 +75,7 @@ enum Command {
     /// Design pop-up cards (origamic architecture).
     #[command(subcommand)]
     Popup(popup::Command),
-    /// Fold a sheet step by step from a script (seed 003) and write its crease pattern.
+    /// Fold a sheet step by step from a script (Miyazaki et al. 1992) and write its crease pattern.
     Fold(fold::Args),
     /// Make paper-craft parts from developable patches and cut lines on a mesh.
     Papercraft(papercraft::Args),

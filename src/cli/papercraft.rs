@@ -1,5 +1,5 @@
 //! `foldcam papercraft DESIGN -o parts.fold`: paper-craft parts from developable patches
-//! (seed 004).
+//! (Ōgaki 2016).
 
 use std::path::{Path, PathBuf};
 
@@ -15,10 +15,10 @@ use super::Outcome;
 /// Make paper-craft parts from a design file.
 #[derive(clap::Args)]
 #[command(
-    long_about = "Builds paper-craft parts (seed 004, Ōgaki) from a TOML design: cut lines \
+    long_about = "Builds paper-craft parts (Ōgaki 2016, developable patches with user cut lines) from a TOML design: cut lines \
                   traced on a reference mesh, and cylindrical patches given by a degree-4 \
                   B-spline directrix and a ruling direction. Sweeps boundary walls from the \
-                  cut lines (§3.4), trims each patch where it crosses its walls, unrolls it \
+                  cut lines, trims each patch where it crosses its walls, unrolls it \
                   isometrically, adds glue tabs on one side of every shared boundary and packs \
                   the parts onto sheets. Writes one crease pattern per sheet: outlines cut, tab \
                   roots mountain folds. With several sheets, sheet n > 1 goes to NAME-n.EXT.",

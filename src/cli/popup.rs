@@ -1,4 +1,4 @@
-//! `foldcam popup voxel INPUT -o card.fold`: pop-up cards from voxels (seed 001).
+//! `foldcam popup voxel INPUT -o card.fold`: pop-up cards from voxels (Mitani, Suzuki & Uno 2003).
 
 use std::path::PathBuf;
 
@@ -23,14 +23,14 @@ pub enum Command {
 /// Make a pop-up card from voxels.
 #[derive(clap::Args)]
 #[command(
-    long_about = "Builds an origamic-architecture card (seed 001, Mitani et al.) from a voxel \
+    long_about = "Builds an origamic-architecture card (Mitani, Suzuki & Uno, 2003) from a voxel \
                   model: a text front view (see examples/popup/README.txt), a height-map PNG \
                   (grey level = how far a point stands out from the back sheet) or a polygon \
-                  mesh (OBJ or STL) seen from the front. Height maps and meshes go through §3 \
-                  of the paper: bumps smaller than the structuring element are removed, voxels \
-                  are added under overhangs until every slice is a staircase (eq. 7), windows \
+                  mesh (OBJ or STL) seen from the front. Height maps and meshes go through the \
+                  paper's mesh conversion: bumps smaller than the structuring element are removed, voxels \
+                  are added under overhangs until every slice is a staircase, windows \
                   open where they were added and thin top faces are left out, each only where \
-                  the card still pops up. Checks that the card pops up (§2.6: every front face \
+                  the card still pops up. Checks that the card pops up (every front face \
                   held from both the base and the back sheet), writes the crease pattern \
                   (valleys +90°, mountains −90°, cuts) or, with --machine and --material, the \
                   cutting job, and on request a preview of the standing card and a GIF of it \

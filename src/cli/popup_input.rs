@@ -1,5 +1,6 @@
 //! Where a voxel card comes from: the text format, a height-map PNG, or an OBJ/STL mesh put
-//! through §3 of seed 001 (depth from the front, bump removal, eq. 7, windows, thin tops).
+//! through the mesh conversion of Mitani, Suzuki & Uno (2003), section 3 (depth from the front,
+//! bump removal, filling under overhangs (their eq. 7), windows, thin tops).
 
 use std::path::Path;
 
@@ -26,7 +27,7 @@ pub enum Up {
 #[derive(clap::Args)]
 #[command(next_help_heading = "From a mesh or height map")]
 pub struct ModelArgs {
-    /// Mesh: cells along the fold (the paper used 80).
+    /// Mesh: cells along the fold (Mitani, Suzuki & Uno 2003 used 80).
     #[arg(long, value_name = "CELLS", default_value_t = 80)]
     pub resolution: usize,
     /// Mesh: which axis points up.
@@ -55,7 +56,7 @@ pub struct ModelArgs {
     #[arg(long)]
     pub no_windows: bool,
     /// Open a window only where the overhang stands out at least this part of the base
-    /// depth in front of what is below it (0 = wherever voxels were added, as the paper).
+    /// depth in front of what is below it (0 = wherever voxels were added, as Mitani, Suzuki & Uno 2003 do).
     #[arg(long, value_name = "FRACTION", default_value_t = 0.25)]
     pub window_gap: f64,
     /// Leave out top faces at most this many columns wide where the card still pops up
@@ -133,7 +134,7 @@ fn progress(r: &ConvertReport) {
         r.smoothed_cells, r.smoothing_time
     );
     eprintln!(
-        "foldcam: eq. 7 added {} voxels in {} rows; {} of {} candidate rows became windows; {:.1?}",
+        "foldcam: filling under overhangs added {} voxels in {} rows; {} of {} candidate rows became windows; {:.1?}",
         r.added_cells, r.filled_rows, r.window_rows, r.window_candidates, r.constraint_time
     );
     eprintln!(

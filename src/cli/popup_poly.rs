@@ -1,4 +1,4 @@
-//! `foldcam popup poly DESIGN -o card.fold`: pop-up cards from planar polygons (seed 000).
+//! `foldcam popup poly DESIGN -o card.fold`: pop-up cards from planar polygons (Mitani & Suzuki 2004).
 
 use std::path::PathBuf;
 
@@ -11,11 +11,11 @@ use super::Outcome;
 /// Make a pop-up card from a polygon design.
 #[derive(clap::Args)]
 #[command(
-    long_about = "Builds an origamic-architecture card (seed 000, Mitani & Suzuki) by replaying \
+    long_about = "Builds an origamic-architecture card (Mitani & Suzuki, 2004) by replaying \
                   a TOML design (see examples/popup/README-poly.txt): reference planes, \
                   polygons on them, each added as a face or an opening; every new face is cut \
                   out of the older ones so the card stays one sheet. Checks that the card pops \
-                  up (§3.6: every vertical face held from both the base and the back sheet), \
+                  up (every vertical face held from both the base and the back sheet), \
                   writes the crease pattern (valleys +90°, mountains −90°, cuts) and, on \
                   request, a preview of the standing card and a GIF of it opening.\n\nExit \
                   status: 0 written, 1 the card would not pop up (the operation after which it \

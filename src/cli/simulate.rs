@@ -125,7 +125,7 @@ fn summary(job: &std::path::Path, r: &SimReport, coverage: Option<&CoverageRepor
         r.time_s
     );
     for v in r.violations.iter().take(20) {
-        let _ = writeln!(s, "  line {:>6}: {:?}: {}", v.line, v.kind, v.message);
+        let _ = writeln!(s, "  line {:>6}: {}: {}", v.line, v.kind, v.message);
     }
     if r.violation_count > 20 {
         let _ = writeln!(s, "  … and {} more violations", r.violation_count - 20);

@@ -1,4 +1,4 @@
-//! `foldcam tessellate MESH -o shell.fold`: freeform origami tessellations (seed 002).
+//! `foldcam tessellate MESH -o shell.fold`: freeform origami tessellations (Tachi 2014).
 
 use std::path::PathBuf;
 
@@ -17,16 +17,16 @@ use foldcam::render::{PreviewOptions, View3d, preview_png, render_folded_png};
 use super::Outcome;
 use super::args::degrees;
 
-/// Tuck structure (§2.1, §2.2).
+/// Tuck structure (Tachi 2014, sections 2.1 and 2.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Tuck {
-    /// Star tuck (§2.1).
+    /// Star tuck.
     Star,
-    /// Truncated star (§2.2): the key vertex becomes a flat n-gon (--truncation).
+    /// Truncated star: the key vertex becomes a flat n-gon (--truncation).
     Truncated,
-    /// Twisted star (§2.2): a fold in each star triangle (--twist).
+    /// Twisted star: a fold in each star triangle (--twist).
     Twisted,
-    /// Twist fold (§2.2): a twisted star with a flat n-gon (--truncation, --twist).
+    /// Twist fold: a twisted star with a flat n-gon (--truncation, --twist).
     Twist,
 }
 
@@ -45,13 +45,13 @@ pub enum Layout {
 #[derive(clap::Args)]
 #[command(
     long_about = "Turns a disk-like polygon mesh (OBJ or STL, millimetres) into a Resch-like \
-                  origami tessellation (seed 002, Tachi): a tuck behind every vertex (§2.1 star, \
-                  or the §2.2 truncated star, twisted star or twist fold), \
-                  then a generalized Newton-Raphson solve (§3.3) for developability (eq. 1), \
-                  mountain/valley fold ranges with the fold-angle limit (eq. 3, §5) and the \
-                  vertex-angle limit (§5), then the unfolded crease pattern. The output FOLD \
+                  origami tessellation (Tachi 2014, Freeform 3D Origami Tessellations for Fabrication): a tuck behind \
+                  every vertex (a star, or a truncated star, twisted star or twist fold), \
+                  then a generalized Newton-Raphson solve for developability (the angles \
+                  round every vertex sum to 360 deg), mountain/valley fold ranges with the \
+                  fold-angle limit and the vertex-angle limit, then the unfolded crease pattern. The output FOLD \
                   holds the crease pattern (frame 0, mm) and the folded form (frame 1).\n\n\
-                  Limits default to the material's (--material) or to the paper's example \
+                  Limits default to the material's (--material) or to Tachi's stainless-steel example \
                   (fold angle <= 165 deg, vertex angle >= 30 deg).\n\nExit status: 0 written, \
                   1 the solver did not converge, the pattern overlaps or the folded form \
                   intersects itself (nothing is written), \
@@ -95,10 +95,10 @@ pub struct Args {
     #[arg(long, value_parser = degrees)]
     pub min_vertex_angle: Option<f64>,
     /// Ground contact: every boundary vertex on the horizontal plane (z) through the lowest
-    /// one, so the shell stands on a table (§6).
+    /// one, so the shell stands on a table.
     #[arg(long)]
     pub ground: bool,
-    /// Surface fit (§3.4) after solving, with this tangential weight w in [0, 1] (eq. 10).
+    /// Surface fit after solving (Tachi 2014), with this tangential weight w in [0, 1].
     #[arg(long, value_name = "W")]
     pub fit: Option<f64>,
     /// Newton iteration cap.
@@ -113,7 +113,7 @@ pub struct Args {
     /// Image width in pixels for the previews.
     #[arg(long, default_value_t = 800)]
     pub width: u32,
-    /// After solving, simulate rigid folding from flat to the result in STEPS increments (§5).
+    /// After solving, simulate rigid folding from flat to the result in STEPS increments.
     #[arg(long, value_name = "STEPS", num_args = 0..=1, default_missing_value = "100")]
     pub rigid: Option<usize>,
 }
@@ -187,7 +187,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let t = tessellate_shrinking(&mesh, &opts, &shrinks, retry, |it| {
         eprintln!(
             "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \
-             active limits {}, eq. 5-7 rows {}, step {}",
+             active limits {}, corner penalties {}, step {}",
             it.index,
             it.residuals.developability,
             it.residuals.max_fold.to_degrees(),
@@ -199,7 +199,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     })
     .map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
     println!(
-        "{}: {:?} {:?} tucks, shrink {}, {} vertices, {} triangles, {} interior vertices",
+        "{}: {} layout, {} tucks, shrink {}, {} vertices, {} triangles, {} interior vertices",
         args.mesh.display(),
         t.initial.layout,
         opts.star.tuck.kind,
@@ -211,7 +211,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     println!("{}", t.summary());
     if let Some(fit) = &t.fit {
         println!(
-            "surface fit (eq. 9-10): distance {:.4e} -> {:.4e} in {} rounds",
+            "surface fit: distance {:.4e} -> {:.4e} in {} rounds",
             fit.initial, fit.last, fit.accepted
         );
     }

@@ -35,6 +35,24 @@ pub enum ViolationKind {
     ToolLeftOn,
 }
 
+impl std::fmt::Display for ViolationKind {
+    /// Words a machine user knows, e.g. "power out of range".
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::OutOfBed => "outside the bed",
+            Self::LitTravel => "rapid move with the tool on",
+            Self::PowerOutOfRange => "power out of range",
+            Self::FeedTooHigh => "feed above the machine's maximum",
+            Self::MissingFeed => "feed move without a feed rate",
+            Self::UnknownWord => "unknown word",
+            Self::Unsupported => "unsupported command",
+            Self::Malformed => "unreadable line",
+            Self::Checksum => "checksum mismatch",
+            Self::ToolLeftOn => "tool left on at the end",
+        })
+    }
+}
+
 /// One problem, with the 1-based line number it was found on.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Violation {

@@ -83,12 +83,12 @@ impl SolveReport {
     pub fn summary(&self) -> String {
         let deg = |r: f64| r.to_degrees();
         format!(
-            "{} after {} iterations\n  developability (eq. 1): max |2pi - sum theta| = {:.3e} rad \
-             (start {:.3e})\n  fold angles (eq. 3): max |rho| = {:.2} deg, limit {:.2} deg; \
+            "{} after {} iterations\n  developability: max |2pi - sum theta| = {:.3e} rad \
+             (start {:.3e})\n  fold angles: max |rho| = {:.2} deg, limit {:.2} deg; \
              wrong-sign folds: {}\n  vertex angles: min theta = {:.2} deg, limit {:.2} deg\n  \
              flat diagonals: max |rho| = {:.1e} rad\n  \
-             boundary (eq. 2): min turning of a boundary run + pi = {:.2} deg (>= 0)\n  \
-             vertex-adjacent faces (eq. 5-7{}): illegal creases {} (start {}), max penalty {:.2e}",
+             boundary: min turning of a boundary run + pi = {:.2} deg (>= 0)\n  \
+             vertex-adjacent faces (Tachi 2014 corner penalty{}): illegal creases {} (start {}), max penalty {:.2e}",
             if self.converged {
                 "converged"
             } else {

@@ -52,6 +52,17 @@ pub enum TuckLayout {
     Digon,
 }
 
+impl std::fmt::Display for TuckLayout {
+    /// Lower-case names as on the command line (`--layout`).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Auto => "auto",
+            Self::Checkerboard => "checkerboard",
+            Self::Digon => "digon",
+        })
+    }
+}
+
 /// Parameters of the initial pattern.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StarOptions {

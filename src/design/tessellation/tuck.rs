@@ -51,6 +51,18 @@ pub enum TuckKind {
     TwistFold,
 }
 
+impl std::fmt::Display for TuckKind {
+    /// The names used in help text and reports ("twist-fold tucks").
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Star => "star",
+            Self::Truncated => "truncated-star",
+            Self::Twisted => "twisted-star",
+            Self::TwistFold => "twist-fold",
+        })
+    }
+}
+
 impl TuckKind {
     /// Whether the key vertex becomes a flat n-gon.
     pub fn truncated(self) -> bool {

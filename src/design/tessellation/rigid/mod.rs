@@ -151,7 +151,7 @@ impl RigidReport {
             None => "; the target shape has no face intersections".into(),
         };
         format!(
-            "rigid folding (§5): {verdict} after {} steps; final angle error {:.3e} deg, \
+            "rigid folding: {verdict} after {} steps; final angle error {:.3e} deg, \
              max loop-closure residual {:.2e} (final {:.2e}){target}",
             self.steps,
             self.angle_error.to_degrees(),
