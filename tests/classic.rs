@@ -145,10 +145,18 @@ fn square_twist_has_no_unintended_crossings() {
 }
 
 #[test]
-fn million_edge_grid_has_the_promised_size() {
-    // The benchmark's case, at a size that keeps the test quick: 2n(n+1) edges.
-    let cp = grid(100, 1.0).expect("grid");
-    assert_eq!(cp.edges.len(), 2 * 100 * 101);
+fn grids_have_2n_n_plus_1_unit_edges_up_to_the_benchmarks_million() {
+    // n = 707 is the benchmark's grid: 2 · 707 · 708 = 1,001,112 edges.
+    for n in [1usize, 7, 100, 707] {
+        let cp = grid(n, 1.0).expect("grid");
+        assert_eq!(cp.edges.len(), 2 * n * (n + 1), "n = {n}");
+        assert_eq!(cp.vertices.len(), (n + 1) * (n + 1), "n = {n}");
+        let bad = cp.edges.iter().find(|e| {
+            let [a, b] = e.vertices.map(|v| cp.position(v));
+            (a.distance(b) - 1.0).abs() > 1e-12
+        });
+        assert!(bad.is_none(), "n = {n}: an edge is not one cell long");
+    }
 }
 
 #[test]

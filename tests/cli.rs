@@ -54,10 +54,20 @@ fn convert_round_trips_through_every_format() {
             .expect("result loads")
             .pattern;
         assert_eq!(a.edges.len(), b.edges.len(), "edge count through {ext}");
-        let folds = |p: &foldcam::pattern::CreasePattern| {
-            p.edges.iter().filter(|e| e.assignment.is_fold()).count()
-        };
-        assert_eq!(folds(&a), folds(&b), "mountain/valley count through {ext}");
+        // Every edge comes back at the same place with the same assignment (a swapped
+        // mountain/valley or a moved vertex fails here).
+        let (lo, hi) = a.bounds().expect("vertices");
+        let tol = 1e-5 * (hi - lo).max_element();
+        for e in &a.edges {
+            let [p, q] = e.vertices.map(|v| a.position(v));
+            let twin = b.edges.iter().find(|f| {
+                let [r, s] = f.vertices.map(|v| b.position(v));
+                (p.distance(r) <= tol && q.distance(s) <= tol)
+                    || (p.distance(s) <= tol && q.distance(r) <= tol)
+            });
+            let twin = twin.unwrap_or_else(|| panic!("edge {p}-{q} lost through {ext}"));
+            assert_eq!(twin.assignment, e.assignment, "edge {p}-{q} through {ext}");
+        }
     }
 }
 
@@ -610,7 +620,13 @@ fn popup_voxel_card_is_written_previewed_and_cuts_clean() {
         &["popup", "voxel", "bad.voxel.txt", "-o", "bad.fold"],
         dir.path(),
     );
-    assert_ne!(o.status.code(), Some(0), "{}", text(&o.stdout));
+    // Bad input: exit 2 (not a panic's 101), naming the file, the line and the rule broken.
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stdout));
+    let err = text(&o.stderr);
+    assert!(
+        err.contains("bad.voxel.txt: line 6") && err.contains("staircase"),
+        "{err}"
+    );
     assert!(!listing(dir.path()).contains(&"bad.fold".to_string()));
 }
 
@@ -653,7 +669,30 @@ fn popup_voxel_from_a_mesh_cuts_directly_and_saves_its_voxels() {
         dir.path(),
     );
     assert!(o.status.success(), "{}", text(&o.stderr));
-    assert!(text(&o.stdout).contains("60 ×"), "{}", text(&o.stdout));
+    let o = foldcam(
+        &[
+            "popup",
+            "voxel",
+            &mesh,
+            "--resolution",
+            "60",
+            "-o",
+            "direct.fold",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let load = |name: &str| {
+        foldcam::formats::load(&dir.path().join(name))
+            .expect("card loads")
+            .pattern
+    };
+    let (again, direct) = (load("again.fold"), load("direct.fold"));
+    assert_eq!(
+        again.vertices, direct.vertices,
+        "same card from the saved voxels"
+    );
+    assert_eq!(again.edges, direct.edges, "same card from the saved voxels");
     // A broken mesh is refused, naming the file, and nothing is written.
     std::fs::write(
         dir.path().join("bad.obj"),

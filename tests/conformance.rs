@@ -111,7 +111,47 @@ fn frog_base_drawing_is_off_by_its_approximated_angle() {
         .as_ref()
         .expect("an angle");
     assert!((smallest.degrees - 0.4f64.atan().to_degrees()).abs() < 1e-3);
+    // At every vertex reported, the error equals |Σ odd sectors − 180°| computed here from the
+    // drawing itself: crease directions sorted by atan2, sectors between neighbours.
+    let mut checked = 0;
     for f in report.of_kind(FindingKind::Kawasaki) {
-        assert!(f.value > 0.5 && f.value < 3.0, "error {}°", f.value);
+        let v = f.vertex.expect("a vertex");
+        let at = cp.position(v);
+        let mut dirs: Vec<f64> = cp
+            .edges
+            .iter()
+            .filter(|e| e.assignment.may_fold() && e.vertices.contains(&v))
+            .map(|e| {
+                let other = if e.vertices[0] == v {
+                    e.vertices[1]
+                } else {
+                    e.vertices[0]
+                };
+                let d = cp.position(other) - at;
+                d.y.atan2(d.x)
+            })
+            .collect();
+        dirs.sort_by(f64::total_cmp);
+        let n = dirs.len();
+        assert!(n % 2 == 0 && n >= 4, "degree {n}");
+        let odd: f64 = (0..n)
+            .step_by(2)
+            .map(|i| {
+                let next = if i + 1 < n {
+                    dirs[i + 1]
+                } else {
+                    dirs[0] + std::f64::consts::TAU
+                };
+                next - dirs[i]
+            })
+            .sum();
+        let expected = (odd.to_degrees() - 180.0).abs();
+        assert!(
+            (f.value - expected).abs() < 1e-6,
+            "vertex {at}: reported {}°, drawing gives {expected}°",
+            f.value
+        );
+        checked += 1;
     }
+    assert!(checked > 0, "the frog base fails Kawasaki somewhere");
 }

@@ -230,8 +230,22 @@ proptest! {
                 prop_assert!(first.vertices.iter().any(|v| v.distance(p) <= tol), "{} lost", p);
             }
         }
-        let given: Vec<Assignment> = lines.iter().map(|(t, _)| cp::assignment_of(*t)).collect();
-        prop_assert!(first.edges.iter().all(|e| given.contains(&e.assignment)));
+        // Every edge read lies along an input line of its own assignment (its midpoint is on
+        // one), so assignments are neither swapped nor mixed up between lines.
+        for e in &first.edges {
+            let m = first.position(e.vertices[0]).lerp(first.position(e.vertices[1]), 0.5);
+            let on_line_of_kind = lines.iter().any(|(t, c)| {
+                let (a, b) = (DVec2::new(c[0], -c[1]), DVec2::new(c[2], -c[3]));
+                let ab = b - a;
+                let u = if ab.length_squared() > 0.0 {
+                    ((m - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                cp::assignment_of(*t) == e.assignment && m.distance(a + u * ab) <= tol
+            });
+            prop_assert!(on_line_of_kind, "edge at {} ({:?}) is on no input line of its type", m, e.assignment);
+        }
         let second = cp::read_str(&cp::write_string(&first))
             .map_err(|e| TestCaseError::fail(e.to_string()))?
             .pattern;
@@ -240,7 +254,10 @@ proptest! {
 
     #[test]
     fn malformed_text_never_panics(text in "[0-9a-zA-Z .eE+\\-\n\t\r]{0,200}") {
-        let _ = cp::read_str(&text);
+        // Whatever is accepted is a valid pattern.
+        if let Ok(imported) = cp::read_str(&text) {
+            prop_assert!(imported.pattern.validate().is_ok());
+        }
     }
 
     #[test]

@@ -1,6 +1,9 @@
 //! Real FOLD files from the FOLD project and Origami Simulator (`tests/data/fold`, MIT):
 //! they import, 3D folded forms unfold isometrically, flat x–z patterns become 2D.
 
+#[path = "common/overlap.rs"]
+mod overlap;
+
 use std::path::PathBuf;
 
 use foldcam::formats::fold::read_str;
@@ -96,13 +99,17 @@ fn unfolded_faces_are_counter_clockwise_and_do_not_overlap() {
         let area = |f: &foldcam::pattern::Face| {
             foldcam::geom::polygon::signed_area(f.outer.iter().map(|v| cp.vertices[v.index()]))
         };
-        let total: f64 = faces.iter().map(area).sum();
         assert!(faces.iter().all(|f| area(f) > 0.0), "{name}");
-        // No overlap: the faces' areas add up to at most the bounding box.
-        let (lo, hi) = cp.bounds().unwrap_or_default();
+        // No overlap: the union of the faces (by i_overlay) is as large as their areas added up.
+        let rings: Vec<Vec<glam::DVec2>> = faces
+            .iter()
+            .map(|f| f.outer.iter().map(|v| cp.vertices[v.index()]).collect())
+            .collect();
+        let twice = overlap::overlap_area(&rings);
+        let total = overlap::area_sum(&rings);
         assert!(
-            total <= (hi - lo).element_product() * (1.0 + 1e-9),
-            "{name}"
+            twice <= 1e-7 * total,
+            "{name}: {twice:.3e} of {total:.3e} covered twice"
         );
     }
 }

@@ -72,6 +72,48 @@ fn patterns() -> Vec<(String, CreasePattern)> {
         .collect()
 }
 
+/// Read back with the `dxf` crate and roxmltree: one DXF entity per drawn stroke on its
+/// operation's layer, every point on the bed, and as many SVG paths as strokes.
+fn assert_file_outputs_hold_the_job(
+    what: &str,
+    job: &foldcam::fab::Job,
+    dxf: &[u8],
+    svg: &[u8],
+    machine: &MachineProfile,
+) {
+    let drawn = |s: &Vec<DVec2>| s.windows(2).any(|w| w[0].distance(w[1]) > 1e-3);
+    let mut want = std::collections::BTreeMap::<String, usize>::new();
+    for path in &job.paths {
+        *want.entry(path.op.name().to_uppercase()).or_default() +=
+            path.strokes.iter().filter(|s| drawn(s)).count();
+    }
+    want.retain(|_, n| *n > 0);
+    let drawing = ::dxf::Drawing::load(&mut &dxf[..]).expect("readable DXF");
+    let mut got = std::collections::BTreeMap::<String, usize>::new();
+    let (w, h) = (machine.bed.width_mm, machine.bed.height_mm);
+    for e in drawing.entities() {
+        *got.entry(e.common.layer.clone()).or_default() += 1;
+        if let ::dxf::entities::EntityType::LwPolyline(p) = &e.specific {
+            for v in &p.vertices {
+                assert!(
+                    (-1e-6..=w + 1e-6).contains(&v.x) && (-1e-6..=h + 1e-6).contains(&v.y),
+                    "{what}: DXF point ({}, {}) off the bed",
+                    v.x,
+                    v.y
+                );
+            }
+        }
+    }
+    assert_eq!(got, want, "{what}: DXF entities per layer");
+    let text = std::str::from_utf8(svg).expect("UTF-8 SVG");
+    let doc = usvg::roxmltree::Document::parse(text).expect("well-formed SVG");
+    let paths = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("path") || n.has_tag_name("polyline"))
+        .count();
+    assert_eq!(paths, want.values().sum::<usize>(), "{what}: SVG paths");
+}
+
 fn options(machine: &MachineProfile, material: &Material, two_sided: bool) -> PlanOptions {
     let mut o = PlanOptions::from_material(material);
     o.adapt_to_machine(machine)
@@ -82,45 +124,86 @@ fn options(machine: &MachineProfile, material: &Material, two_sided: bool) -> Pl
 
 #[test]
 fn every_shipped_machine_and_material_runs_clean_on_the_shared_patterns() {
+    use rayon::prelude::*;
     let patterns = patterns();
-    let mut jobs = 0;
-    for machine_name in shipped_machines() {
-        let machine = load_machine(machine_name).expect("shipped machine");
-        for material_name in shipped_materials() {
+    let materials = shipped_materials();
+    let combos: Vec<(&str, &str)> = shipped_machines()
+        .into_iter()
+        .flat_map(|m| materials.iter().map(move |x| (m, *x)))
+        .collect();
+    // Every machine × material × pattern in parallel; each returns its G-code job count.
+    let jobs: usize = combos
+        .par_iter()
+        .map(|&(machine_name, material_name)| {
+            let machine = load_machine(machine_name).expect("shipped machine");
             let material = load_material(material_name).expect("shipped material");
-            for (name, cp) in &patterns {
-                let two_sided = name == "miura";
-                let p = plan(
-                    cp,
-                    &machine,
-                    &material,
-                    &options(&machine, &material, two_sided),
-                )
-                .unwrap_or_else(|e| panic!("{name} on {machine_name}/{material_name}: {e}"));
-                for job in &p.jobs {
-                    let what = format!("{name} ({}) on {machine_name}/{material_name}", job.name);
-                    if !machine.emits_gcode() {
-                        let dxf = post::dxf(&p, job, DxfVersion::R2000).expect("DXF");
-                        let svg = post::svg(&p, job, &machine.bed, false).expect("SVG");
-                        assert!(dxf.len() > 1000 && svg.contains("<svg"), "{what}");
-                        continue;
-                    }
-                    let gcode = post::gcode(&p, job, &machine).expect("G-code");
-                    let run = sim::run(&gcode, &machine).expect("readable");
-                    assert!(run.is_clean(), "{what}: {:?}", run.violations.first());
-                    let cov = sim::coverage(&run, cp, job, &p);
-                    assert!(
-                        cov.passed(),
-                        "{what}: {:?}, stray {:?}",
-                        cov.failed_edges().next(),
-                        cov.stray.first()
-                    );
-                    jobs += 1;
-                }
-            }
-        }
-    }
+            patterns
+                .par_iter()
+                .map(|(name, cp)| run_pattern(name, cp, &machine, &material))
+                .sum::<usize>()
+        })
+        .sum();
+    assert_eq!(
+        jobs,
+        expected_gcode_jobs(&patterns),
+        "every G-code machine ran every pattern"
+    );
     assert!(jobs >= 4 * 5 * 6, "ran {jobs} G-code jobs");
+}
+
+/// Plans one pattern on one machine and material and checks every job; the number of G-code
+/// jobs run.
+fn run_pattern(
+    name: &str,
+    cp: &CreasePattern,
+    machine: &MachineProfile,
+    material: &Material,
+) -> usize {
+    let two_sided = name == "miura";
+    let (machine_name, material_name) = (&machine.name, &material.name);
+    let p = plan(
+        cp,
+        machine,
+        material,
+        &options(machine, material, two_sided),
+    )
+    .unwrap_or_else(|e| panic!("{name} on {machine_name}/{material_name}: {e}"));
+    let mut jobs = 0;
+    for job in &p.jobs {
+        let what = format!("{name} ({}) on {machine_name}/{material_name}", job.name);
+        if !machine.emits_gcode() {
+            let dxf = post::dxf(&p, job, DxfVersion::R2000).expect("DXF");
+            let svg = post::svg(&p, job, &machine.bed, false).expect("SVG");
+            assert_file_outputs_hold_the_job(&what, job, &dxf, svg.as_bytes(), machine);
+            continue;
+        }
+        let gcode = post::gcode(&p, job, machine).expect("G-code");
+        let run = sim::run(&gcode, machine).expect("readable");
+        assert!(run.is_clean(), "{what}: {:?}", run.violations.first());
+        let cov = sim::coverage(&run, cp, job, &p);
+        assert!(
+            cov.passed(),
+            "{what}: {:?}, stray {:?}",
+            cov.failed_edges().next(),
+            cov.stray.first()
+        );
+        jobs += 1;
+    }
+    jobs
+}
+
+/// G-code jobs the matrix must run: for every G-code machine and material, one job per pattern
+/// (two for the two-sided Miura-ori).
+fn expected_gcode_jobs(patterns: &[(String, CreasePattern)]) -> usize {
+    let gcode_machines = shipped_machines()
+        .iter()
+        .filter(|m| load_machine(m).expect("shipped").emits_gcode())
+        .count();
+    let per_pair: usize = patterns
+        .iter()
+        .map(|(n, _)| if n == "miura" { 2 } else { 1 })
+        .sum();
+    gcode_machines * shipped_materials().len() * per_pair
 }
 
 /// A random planar pattern on a lattice: creases of every kind and cut lines, with the sheet

@@ -218,6 +218,19 @@ fn square_with_diagonals_and_an_island_has_the_right_faces() {
     assert_eq!(v - e + f, components(&cp) as i64);
 }
 
+/// Distance from `p` to the segment `ab`, by projection (brute force, independent of
+/// `foldcam::geom`).
+fn point_segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let len2 = ab.length_squared();
+    let t = if len2 > 0.0 {
+        ((p - a).dot(ab) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + t * ab)
+}
+
 fn coord() -> impl Strategy<Value = f64> {
     // A coarse lattice makes collinear overlaps, shared end points and T-junctions common.
     prop_oneof![(0i32..8).prop_map(|k| k as f64 * 12.5), 0.0f64..100.0]
@@ -241,6 +254,45 @@ proptest! {
         let r = planarize(&mut cp, &opts(true)).expect("planar");
         cp.validate().expect("planarised pattern is valid");
         assert_planar(&cp, r.tolerance);
+        // Nothing drawn is lost and nothing is invented: every point along an input segment
+        // lies on an output edge carrying the assignment of one of the input segments through
+        // it, and every output edge's midpoint lies on an input segment of its assignment.
+        let input: Vec<(DVec2, DVec2, Assignment)> = segs
+            .iter()
+            .map(|&(a, b, k)| (DVec2::new(a.0, a.1), DVec2::new(b.0, b.1), k))
+            .collect();
+        let near = 1e-6 + 2.0 * r.tolerance;
+        let output: Vec<(DVec2, DVec2, Assignment)> = cp
+            .edges
+            .iter()
+            .map(|e| (cp.position(e.vertices[0]), cp.position(e.vertices[1]), e.assignment))
+            .collect();
+        for &(a, b, _) in input.iter().filter(|(a, b, _)| a.distance(*b) > 4.0 * near) {
+            for t in [0.13, 0.37, 0.61, 0.89] {
+                let p = a.lerp(b, t);
+                let through: Vec<Assignment> = input
+                    .iter()
+                    .filter(|(c, d, _)| point_segment_distance(p, *c, *d) <= near)
+                    .map(|s| s.2)
+                    .collect();
+                let on = output
+                    .iter()
+                    .filter(|(c, d, _)| point_segment_distance(p, *c, *d) <= near)
+                    .collect::<Vec<_>>();
+                prop_assert!(!on.is_empty(), "{p} of input {a}-{b} is on no output edge");
+                prop_assert!(
+                    on.iter().any(|e| through.contains(&e.2)),
+                    "{p}: output {:?}, input {:?}", on.iter().map(|e| e.2).collect::<Vec<_>>(), through
+                );
+            }
+        }
+        for &(c, d, k) in &output {
+            let m = c.lerp(d, 0.5);
+            prop_assert!(
+                input.iter().any(|&(a, b, j)| j == k && point_segment_distance(m, a, b) <= near),
+                "output edge {c}-{d} ({k:?}) lies on no input segment of its assignment"
+            );
+        }
         // Idempotent: a second pass changes nothing.
         let again = planarize(&mut cp.clone(), &opts(true)).expect("planar");
         prop_assert!(again.unchanged(), "second pass changed: {again:?}");

@@ -448,7 +448,18 @@ fn nan_never_reaches_the_output() {
 
     let mut bad = plan(job());
     bad.settings.score.speed_mm_min = f64::INFINITY;
-    assert!(gcode(&bad, &bad.jobs[0], &m).is_err());
+    let err = gcode(&bad, &bad.jobs[0], &m).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            PostError::BadSetting {
+                op: "score",
+                key: "speed_mm_min",
+                ..
+            }
+        ),
+        "{err}"
+    );
 
     let mut bad_machine = machine(Dialect::Grbl);
     bad_machine.resolution_mm = 0.0;
@@ -471,10 +482,25 @@ fn power_out_of_range_and_zero_passes_are_refused() {
     let m = machine(Dialect::Grbl);
     let mut bad = plan(job());
     bad.settings.mark.power = 1.5;
-    assert!(gcode(&bad, &bad.jobs[0], &m).is_err());
+    let err = gcode(&bad, &bad.jobs[0], &m).unwrap_err();
+    assert!(
+        matches!(err, PostError::BadSetting { op: "mark", key: "power", value, .. } if value == 1.5),
+        "{err}"
+    );
     let mut bad = plan(job());
     bad.settings.perforate.passes = 0;
-    assert!(gcode(&bad, &bad.jobs[0], &m).is_err());
+    let err = gcode(&bad, &bad.jobs[0], &m).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            PostError::BadSetting {
+                op: "perforate",
+                key: "passes",
+                ..
+            }
+        ),
+        "{err}"
+    );
 }
 
 #[test]

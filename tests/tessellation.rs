@@ -6,6 +6,8 @@
 mod checks;
 #[path = "common/cuts_clean.rs"]
 mod cuts_clean;
+#[path = "common/overlap.rs"]
+mod overlap;
 #[path = "tessellation/support.rs"]
 mod support;
 
