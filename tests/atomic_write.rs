@@ -21,7 +21,11 @@ fn a_failed_rename_leaves_the_target_and_no_temporary() {
     std::fs::write(target.join("keep.txt"), "OLD").expect("write");
     let err = write_atomic(&target, b"NEW").expect_err("cannot replace a folder");
     assert!(!err.to_string().is_empty());
-    assert_eq!(listing(dir.path()), vec!["out.fold".to_string()], "no temporary left");
+    assert_eq!(
+        listing(dir.path()),
+        vec!["out.fold".to_string()],
+        "no temporary left"
+    );
     assert_eq!(
         std::fs::read_to_string(target.join("keep.txt")).expect("kept"),
         "OLD"

@@ -12,7 +12,9 @@ use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::mesh::read_mesh;
 use glam::DVec3;
 
-use crate::support::{Rng, assert_cuts_clean_on_paper, side_lengths};
+use crate::support::{
+    Rng, assert_cuts_clean_on_paper, build_example, example_design, side_lengths,
+};
 
 fn auto_text() -> String {
     std::fs::read_to_string("examples/papercraft/vase_auto.craft.toml").unwrap()
@@ -243,12 +245,9 @@ fn the_fit_reproduces_a_b_spline_and_converges_on_a_circle() {
 
 #[test]
 fn the_fish_example_builds_its_generated_gores_meet_and_it_cuts_clean() {
-    let text = std::fs::read_to_string("examples/papercraft/fish.craft.toml").unwrap();
-    let design = parse_design(&text).unwrap();
+    let design = example_design("fish");
     assert_eq!((design.patches.len(), design.auto_patches.len()), (3, 5));
-    let mesh =
-        ReferenceMesh::new(&read_mesh(Path::new("examples/papercraft/fish.obj")).unwrap()).unwrap();
-    let made = design.build(&mesh).unwrap();
+    let made = build_example("fish");
     assert_eq!(made.parts.len(), 8);
     assert!(made.parts.iter().all(|p| p.dropped_tabs == 0));
     // Six meridians between the gores (the body is 98 mm long between the caps): the sections
@@ -265,11 +264,8 @@ fn the_fish_example_builds_its_generated_gores_meet_and_it_cuts_clean() {
 fn the_fish_caps_meet_the_gores_within_the_tolerance() {
     // The snout (cut lines 6–11) and tail-root (12–17) caps are flat and placed by hand; the
     // gores contain their end chords, so gores and caps cross the end walls together.
-    let text = std::fs::read_to_string("examples/papercraft/fish.craft.toml").unwrap();
-    let design = parse_design(&text).unwrap();
-    let mesh =
-        ReferenceMesh::new(&read_mesh(Path::new("examples/papercraft/fish.obj")).unwrap()).unwrap();
-    let made = design.build(&mesh).unwrap();
+    let design = example_design("fish");
+    let made = build_example("fish");
     let gaps: Vec<f64> = (6..18).map(|e| gap_on(&design, &made, e)).collect();
     let worst = gaps.iter().fold(0.0, |a: f64, &g| a.max(g));
     println!("fish caps to gores, cut lines 6–17: gaps {gaps:.4?} mm, largest {worst:.4} mm");

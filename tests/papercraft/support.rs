@@ -152,12 +152,33 @@ pub fn side_lengths(made: &foldcam::design::papercraft::design::Made, e: usize) 
         .collect()
 }
 
-/// Builds the bundled example `examples/papercraft/NAME.craft.toml`.
-pub fn build_example(name: &str) -> foldcam::design::papercraft::design::Made {
-    use foldcam::design::papercraft::{ReferenceMesh, design::parse_design};
+/// The bundled example design `examples/papercraft/NAME.craft.toml`, parsed.
+pub fn example_design(name: &str) -> foldcam::design::papercraft::design::Design {
     let dir = std::path::Path::new("examples/papercraft");
     let text = std::fs::read_to_string(dir.join(format!("{name}.craft.toml"))).unwrap();
-    let design = parse_design(&text).unwrap();
-    let mesh = foldcam::mesh::read_mesh(&dir.join(&design.mesh)).unwrap();
-    design.build(&ReferenceMesh::new(&mesh).unwrap()).unwrap()
+    foldcam::design::papercraft::design::parse_design(&text).unwrap()
+}
+
+/// Builds the bundled example `examples/papercraft/NAME.craft.toml` once per test binary
+/// (the fish takes most of a second in a release build) and hands out copies.
+pub fn build_example(name: &str) -> foldcam::design::papercraft::design::Made {
+    use foldcam::design::papercraft::ReferenceMesh;
+    use foldcam::design::papercraft::design::Made;
+    use std::collections::HashMap;
+    use std::sync::{Arc, Mutex, OnceLock};
+    static BUILT: OnceLock<Mutex<HashMap<String, Arc<OnceLock<Made>>>>> = OnceLock::new();
+    let cell = BUILT
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap()
+        .entry(name.to_string())
+        .or_default()
+        .clone();
+    cell.get_or_init(|| {
+        let design = example_design(name);
+        let dir = std::path::Path::new("examples/papercraft");
+        let mesh = foldcam::mesh::read_mesh(&dir.join(&design.mesh)).unwrap();
+        design.build(&ReferenceMesh::new(&mesh).unwrap()).unwrap()
+    })
+    .clone()
 }
