@@ -518,6 +518,10 @@ proptest! {
 
     #[test]
     fn arbitrary_bytes_never_panic(text in "\\PC{0,200}") {
-        let _ = read_str(&text);
+        // Whatever is accepted is a valid pattern; whatever is refused says where.
+        match read_str(&text) {
+            Ok(imported) => prop_assert!(imported.pattern.validate().is_ok()),
+            Err(e) => prop_assert!(!e.message.is_empty()),
+        }
     }
 }

@@ -351,7 +351,13 @@ proptest! {
     #[test]
     fn random_text_never_panics(text in "\\PC{0,400}") {
         for machine in [laser(Dialect::Grbl), laser(Dialect::Marlin), plotter()] {
-            let _ = sim::run(&text, &machine);
+            // A report never points past the text, and counts every violation it lists.
+            if let Ok(r) = sim::run(&text, &machine) {
+                let lines = text.lines().count();
+                prop_assert!(r.lines <= lines);
+                prop_assert!(r.violations.iter().all(|v| (1..=lines.max(1)).contains(&v.line)));
+                prop_assert!(r.violation_count >= r.violations.len());
+            }
         }
     }
 
