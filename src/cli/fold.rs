@@ -9,7 +9,7 @@ use foldcam::design::folding::display::{display_states, sheet_size};
 use foldcam::design::folding::layers::layer_problems;
 use foldcam::design::folding::script::{parse_script, run_script};
 use foldcam::formats::fold::write_string_frames;
-use foldcam::formats::{read_text, write_atomic};
+use foldcam::formats::{OutputSet, read_text};
 use foldcam::render::{View3d, render_folded_rgba, render_gif};
 use image::{ImageFormat, RgbaImage};
 
@@ -63,25 +63,22 @@ pub fn run(args: Args) -> Result<Outcome> {
         ..View3d::with_width(args.width)
     };
     let shown = display_states(&folding, sheet_size(&folding) * 0.004);
-    let mut images = Vec::new();
+    // Every output is made first and written together: a failure leaves all files as they were.
+    let mut outputs = OutputSet::new();
+    outputs.add(
+        &args.output,
+        write_string_frames(&sheet.pattern, &states).into_bytes(),
+    );
     if let Some(png) = &args.png {
-        images.push((
-            png.clone(),
-            step_sheet(&shown, &view).with_context(|| png.display().to_string())?,
-        ));
+        let bytes = step_sheet(&shown, &view).with_context(|| png.display().to_string())?;
+        super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
     if let Some(gif) = &args.gif {
         let bytes =
             render_gif(&shown, &view, 700).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
-        images.push((gif.clone(), bytes));
+        super::input::stage_image(&mut outputs, gif, bytes, "gif")?;
     }
-    let fold = write_string_frames(&sheet.pattern, &states);
-    write_atomic(&args.output, fold.as_bytes())
-        .with_context(|| args.output.display().to_string())?;
-    for (path, bytes) in images {
-        write_atomic(&path, &bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
+    super::input::commit(outputs, &[&args.script])?;
     let problems = layer_problems(&folding, folding.current());
     for p in &problems {
         eprintln!("foldcam: {name}: warning: {p}");

@@ -104,6 +104,64 @@ pub fn save(path: &Path, cp: &CreasePattern, folded: Option<&FoldedState>) -> Re
     Ok(())
 }
 
+/// Adds a pattern file (format from its extension) to `outputs`, written by [`commit`].
+pub fn stage(
+    outputs: &mut formats::OutputSet,
+    path: &Path,
+    cp: &CreasePattern,
+    folded: Option<&FoldedState>,
+) -> Result<()> {
+    outputs.add(path, formats::encode(path, cp, folded)?);
+    Ok(())
+}
+
+/// Adds an image to `outputs`, refusing a file name whose extension is not `ext` (so PNG data
+/// never lands in `x.jpg`).
+pub fn stage_image(
+    outputs: &mut formats::OutputSet,
+    path: &Path,
+    bytes: Vec<u8>,
+    ext: &str,
+) -> Result<()> {
+    let matches = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case(ext));
+    if !matches {
+        anyhow::bail!(
+            "{}: this output is a {} image: name it with the .{ext} extension",
+            path.display(),
+            ext.to_ascii_uppercase()
+        );
+    }
+    outputs.add(path, bytes);
+    Ok(())
+}
+
+/// Writes every staged output, or none of them when one fails; refuses an output that is one
+/// of `inputs` (it would be overwritten before it is read again). Names each file written.
+pub fn commit(outputs: formats::OutputSet, inputs: &[&Path]) -> Result<()> {
+    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    };
+    for out in outputs.paths() {
+        if let Some(input) = inputs.iter().find(|i| same(out, i)) {
+            anyhow::bail!(
+                "{}: the output would overwrite the input {}: choose another name",
+                out.display(),
+                input.display()
+            );
+        }
+    }
+    let written: Vec<std::path::PathBuf> = outputs.paths().map(Path::to_path_buf).collect();
+    outputs.commit()?;
+    for path in written {
+        eprintln!("foldcam: wrote {}", path.display());
+    }
+    Ok(())
+}
+
 /// The unit label of a pattern for messages.
 pub fn unit_label(units: Units) -> &'static str {
     match units {

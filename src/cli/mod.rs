@@ -87,6 +87,12 @@ enum Command {
 
 /// Parses the command line, runs the subcommand and returns its exit code.
 pub fn run() -> ExitCode {
+    // A run stopped by Ctrl-C or SIGTERM leaves no temporary files behind and writes nothing.
+    let _ = ctrlc::set_handler(|| {
+        foldcam::formats::remove_pending_temporaries();
+        eprintln!("foldcam: interrupted; nothing more was written");
+        std::process::exit(130);
+    });
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Convert(a) => convert::run(a),

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, anyhow};
 use foldcam::design::papercraft::ReferenceMesh;
 use foldcam::design::papercraft::design::parse_design;
-use foldcam::formats::{read_text, write_atomic};
+use foldcam::formats::{OutputSet, read_text};
 use foldcam::mesh::read_mesh;
 use foldcam::render::{PreviewOptions, preview_png};
 
@@ -89,10 +89,12 @@ pub fn run(args: Args) -> Result<Outcome> {
             );
         }
     }
+    // Every sheet's files are made first and written together: all of them, or none.
+    let mut outputs = OutputSet::new();
     for (s, cp) in made.sheets.iter().enumerate() {
-        super::input::save(&sheet_path(&args.output, s), cp, None)?;
+        super::input::stage(&mut outputs, &sheet_path(&args.output, s), cp, None)?;
         if let Some(svg) = &args.svg {
-            super::input::save(&sheet_path(svg, s), cp, None)?;
+            super::input::stage(&mut outputs, &sheet_path(svg, s), cp, None)?;
         }
         if let Some(png) = &args.png {
             let options = PreviewOptions {
@@ -100,11 +102,10 @@ pub fn run(args: Args) -> Result<Outcome> {
                 ..PreviewOptions::default()
             };
             let bytes = preview_png(cp, &options, &[]).map_err(|e| err(&e))?;
-            let out = sheet_path(png, s);
-            write_atomic(&out, &bytes).map_err(|e| anyhow!("{}: {e}", out.display()))?;
-            eprintln!("foldcam: wrote {}", out.display());
+            super::input::stage_image(&mut outputs, &sheet_path(png, s), bytes, "png")?;
         }
     }
+    super::input::commit(outputs, &[&args.design])?;
     if !made.unlabelled.is_empty() {
         eprintln!(
             "foldcam: no room for the edge labels of cut lines {:?} (lower label_height)",

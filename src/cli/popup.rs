@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, anyhow};
 use clap::Subcommand;
 use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, format_voxel_card};
-use foldcam::formats::write_atomic;
+use foldcam::formats::OutputSet;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
@@ -100,9 +100,18 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         return Ok(Outcome::CheckFailed);
     }
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
-    let images = card_previews(args.png.as_ref(), args.gif.as_ref(), args.width, |angle| {
-        fold_card(&card, &cp, angle).state
-    })?;
+    // The pattern, pictures and voxel model are written together: all of them, or none.
+    let mut outputs = OutputSet::new();
+    card_previews(
+        &mut outputs,
+        args.png.as_ref(),
+        args.gif.as_ref(),
+        args.width,
+        |angle| fold_card(&card, &cp, angle).state,
+    )?;
+    if let Some(path) = &args.save_voxels {
+        outputs.add(path, format_voxel_card(&card).into_bytes());
+    }
     match (&args.machine, &args.material) {
         (Some(machine), Some(material)) => {
             let (machine, material, options) = args.fab.resolve(machine, material)?;
@@ -110,16 +119,9 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
                 .with_context(|| args.input.display().to_string())?;
             super::cut::write_jobs(&args.output, &plan, &machine, args.r12, args.dasharray)?;
         }
-        _ => super::input::save(&args.output, &cp, None)?,
+        _ => super::input::stage(&mut outputs, &args.output, &cp, None)?,
     }
-    let mut files = images;
-    if let Some(path) = &args.save_voxels {
-        files.push((path.clone(), format_voxel_card(&card).into_bytes()));
-    }
-    for (path, bytes) in files {
-        write_atomic(&path, &bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
+    super::input::commit(outputs, &[&args.input])?;
     let (w, h) = card.sheet_mm();
     println!(
         "{}: {} × {} × {} cells of {:.3} mm, sheet {w:.1} × {h:.1} mm, pops up",
@@ -136,11 +138,12 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
 /// before anything is written. `fold(angle)` gives the card's folded state at an opening angle
 /// in degrees. Shared by the voxel and polygon cards.
 pub fn card_previews(
+    outputs: &mut OutputSet,
     png: Option<&PathBuf>,
     gif: Option<&PathBuf>,
     width: u32,
     fold: impl Fn(f64) -> foldcam::pattern::FoldedState,
-) -> Result<Vec<(PathBuf, Vec<u8>)>> {
+) -> Result<()> {
     // The card's base runs towards +y (the paper's axes) and the renderer's azimuth 0 looks
     // from −y: look from the front-left, above, at the front of the pop-up.
     let view = View3d {
@@ -148,11 +151,10 @@ pub fn card_previews(
         elevation_deg: 28.0,
         ..View3d::with_width(width)
     };
-    let mut images = Vec::new();
     if let Some(png) = png {
         let bytes =
             render_folded_png(&fold(90.0), &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        images.push((png.clone(), bytes));
+        super::input::stage_image(outputs, png, bytes, "png")?;
     }
     if let Some(gif) = gif {
         eprintln!("foldcam: rendering 25 frames");
@@ -161,7 +163,7 @@ pub fn card_previews(
             .collect();
         let bytes =
             render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
-        images.push((gif.clone(), bytes));
+        super::input::stage_image(outputs, gif, bytes, "gif")?;
     }
-    Ok(images)
+    Ok(())
 }

@@ -2,9 +2,9 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, anyhow};
+use anyhow::{Result, anyhow};
 use foldcam::design::popup::polygon::{Replay, crease_pattern, fold_card, parse_design};
-use foldcam::formats::{read_text, write_atomic};
+use foldcam::formats::{OutputSet, read_text};
 
 use super::Outcome;
 
@@ -56,15 +56,17 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
     }
     let card = replay.card;
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    let images =
-        super::popup::card_previews(args.png.as_ref(), args.gif.as_ref(), args.width, |angle| {
-            fold_card(&card, &cp, angle).state
-        })?;
-    super::input::save(&args.output, &cp, None)?;
-    for (path, bytes) in images {
-        write_atomic(&path, &bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
+    // The pattern and its pictures are written together: all of them, or none.
+    let mut outputs = OutputSet::new();
+    super::popup::card_previews(
+        &mut outputs,
+        args.png.as_ref(),
+        args.gif.as_ref(),
+        args.width,
+        |angle| fold_card(&card, &cp, angle).state,
+    )?;
+    super::input::stage(&mut outputs, &args.output, &cp, None)?;
+    super::input::commit(outputs, &[path])?;
     let (w, d, h) = card.size_mm();
     let faces = card
         .faces()

@@ -2,14 +2,14 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
 use foldcam::design::tessellation::{
     FitOptions, Limits, SHRINK_LADDER, StarOptions, TessellateOptions, Tessellation, TuckKind,
     TuckLayout, TuckShape, tessellate_shrinking,
 };
-use foldcam::formats::write_atomic;
+use foldcam::formats::OutputSet;
 use foldcam::machine::load_material;
 use foldcam::mesh::read_mesh;
 use foldcam::render::{PreviewOptions, View3d, preview_png, render_folded_png};
@@ -241,7 +241,14 @@ pub fn run(args: Args) -> Result<Outcome> {
         )?;
         println!("{}", report.summary());
     }
-    super::input::save(&args.output, &unfolded.pattern, Some(&unfolded.folded))?;
+    // The pattern and its pictures are written together: all of them, or none.
+    let mut outputs = OutputSet::new();
+    super::input::stage(
+        &mut outputs,
+        &args.output,
+        &unfolded.pattern,
+        Some(&unfolded.folded),
+    )?;
     if let Some(png) = &args.png {
         let view = View3d {
             azimuth_deg: 30.0,
@@ -250,8 +257,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         };
         let bytes = render_folded_png(&unfolded.folded, &view)
             .map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
-        eprintln!("foldcam: wrote {}", png.display());
+        super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
     if let Some(png) = &args.cp_png {
         let bytes = preview_png(
@@ -260,8 +266,8 @@ pub fn run(args: Args) -> Result<Outcome> {
             &[],
         )
         .map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
-        eprintln!("foldcam: wrote {}", png.display());
+        super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
+    super::input::commit(outputs, &[&args.mesh])?;
     Ok(Outcome::Done)
 }

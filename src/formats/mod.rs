@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions, planarize};
 
-pub use atomic::write_atomic;
+pub use atomic::{OutputError, OutputSet, remove_pending_temporaries, write_atomic};
 
 /// Largest input file read, in bytes (256 MiB): larger inputs are refused with an error rather
 /// than exhausting memory.
@@ -220,15 +220,25 @@ pub fn load(path: &Path) -> Result<Imported, FormatError> {
     Ok(imported)
 }
 
+/// The bytes [`save`] would write to `path` (format from its extension), for writing several
+/// outputs together through an [`OutputSet`].
+pub fn encode(
+    path: &Path,
+    pattern: &CreasePattern,
+    folded: Option<&FoldedState>,
+) -> Result<Vec<u8>, FormatError> {
+    let format = format_of(path)?;
+    Ok(render(format, pattern, folded).into_bytes())
+}
+
 /// Writes a pattern to a file atomically, the format chosen by extension.
 pub fn save(
     path: &Path,
     pattern: &CreasePattern,
     folded: Option<&FoldedState>,
 ) -> Result<(), FormatError> {
-    let format = format_of(path)?;
-    let text = render(format, pattern, folded);
-    write_atomic(path, text.as_bytes()).map_err(|source| FormatError::Io {
+    let bytes = encode(path, pattern, folded)?;
+    write_atomic(path, &bytes).map_err(|source| FormatError::Io {
         path: path.to_path_buf(),
         source,
     })
