@@ -30,15 +30,19 @@ pub struct ClassicError {
     pub expected: &'static str,
 }
 
-/// Checks that `value` is finite and positive.
+/// Longest length a generator takes, in millimetres (1 km): beyond it coordinates leave the
+/// range every reader accepts, and cleaning the drawing would never end.
+pub const MAX_LENGTH_MM: f64 = 1.0e6;
+
+/// Checks that a length is finite, positive and at most [`MAX_LENGTH_MM`].
 fn positive(parameter: &'static str, value: f64) -> Result<f64, ClassicError> {
-    if value.is_finite() && value > 0.0 {
+    if value.is_finite() && value > 0.0 && value <= MAX_LENGTH_MM {
         Ok(value)
     } else {
         Err(ClassicError {
             parameter,
             value,
-            expected: "must be a finite number greater than 0",
+            expected: "must be a length greater than 0 and at most 1,000,000 mm",
         })
     }
 }
