@@ -74,6 +74,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
     if let Some(gif) = &args.gif {
+        check_picture_size(shown.len(), view.width, "animation")?;
         let bytes =
             render_gif(&shown, &view, 700).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
         super::input::stage_image(&mut outputs, gif, bytes, "gif")?;
@@ -96,7 +97,28 @@ pub fn run(args: Args) -> Result<Outcome> {
 }
 
 /// One picture per step in a grid of up to four columns, as PNG bytes.
+/// Most pixels a step sheet or an animation may hold in all (64 megapixels, 256 MB of RGBA):
+/// each step is drawn at `--width` pixels square, so a long script needs a smaller width.
+const MAX_PICTURE_PIXELS: u64 = 64_000_000;
+
+/// Refuses pictures of `panels` steps at `width` pixels square beyond [`MAX_PICTURE_PIXELS`],
+/// naming the width that would fit.
+fn check_picture_size(panels: usize, width: u32, what: &str) -> Result<()> {
+    let panels = panels.max(1) as u64;
+    let total = panels * u64::from(width) * u64::from(width);
+    if total > MAX_PICTURE_PIXELS {
+        let fits = ((MAX_PICTURE_PIXELS / panels) as f64).sqrt().floor();
+        anyhow::bail!(
+            "--width {width}: the {what} of {panels} steps would hold {:.0} megapixels, over the              limit of {}; use --width {fits} or less",
+            total as f64 / 1e6,
+            MAX_PICTURE_PIXELS / 1_000_000
+        );
+    }
+    Ok(())
+}
+
 fn step_sheet(states: &[foldcam::pattern::FoldedState], view: &View3d) -> Result<Vec<u8>> {
+    check_picture_size(states.len(), view.width, "step sheet")?;
     let view = View3d {
         height: Some(view.width),
         ..view.clone()
