@@ -40,6 +40,7 @@ pub fn plan(
     cp.require_millimetres()?;
     let (paths, remarks) = geometry::toolpaths_with_warnings(cp, opts)?;
     let mut plan = plan_toolpaths(cp, paths, machine, material, opts)?;
+    plan.warnings.extend(opts.notes.iter().cloned());
     plan.warnings.extend(remarks);
     Ok(plan)
 }

@@ -15,6 +15,8 @@
 //! refused with a [`ProfileError`] naming the file, the dotted key, the value found and the
 //! line. The accepted ranges are listed in `machines/README.md`.
 
+pub mod commands;
+pub mod control;
 mod fields;
 mod load;
 mod locate;
@@ -28,6 +30,7 @@ mod shipped;
 pub use load::{
     load_machine, load_material, parse_machine, parse_material, shipped_machines, shipped_materials,
 };
+pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };

@@ -59,6 +59,10 @@ pub trait Flavour {
     fn comment(&self, text: &str) -> String {
         format!("; {}", one_line(text))
     }
+    /// What the firmware must be set to for this program, for the header comment.
+    fn expectation(&self) -> Option<&'static str> {
+        None
+    }
     /// Whether burns use the `S` (power) word.
     fn uses_power(&self) -> bool;
     /// Lines after the preamble, before the first move.
@@ -107,8 +111,27 @@ pub fn flavour(machine: &MachineProfile) -> Result<Box<dyn Flavour>, PostError> 
         (Dialect::Plotter, _) | (_, true) => Box::new(plotter::Pen::new(machine)),
         (Dialect::Grbl, false) => Box::new(grbl::GrblLaser::new(machine.laser_mode)),
         (Dialect::Marlin, false) => Box::new(marlin::MarlinLaser::new(machine.laser_mode)),
-        (Dialect::LinuxCnc, false) => Box::new(linuxcnc::LinuxCncLaser),
+        (Dialect::LinuxCnc, false) => Box::new(linuxcnc::LinuxCncLaser::new(
+            machine.control.laser_output,
+            machine.control.output_number,
+        )),
     })
+}
+
+/// A command line compared loosely: comments and blanks removed, upper case.
+pub fn normalize(line: &str) -> String {
+    let mut out = String::new();
+    let mut depth = 0;
+    for c in line.chars() {
+        match c {
+            ';' if depth == 0 => break,
+            '(' => depth += 1,
+            ')' if depth > 0 => depth -= 1,
+            _ if depth == 0 && !c.is_whitespace() => out.push(c.to_ascii_uppercase()),
+            _ => {}
+        }
+    }
+    out
 }
 
 /// `text` on one line: control characters become spaces.
