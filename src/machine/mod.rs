@@ -28,7 +28,7 @@ mod read_material;
 mod shipped;
 
 pub use load::{
-    load_machine, load_material, parse_machine, parse_material, shipped_machines, shipped_materials,
+    CatalogueEntry, ProfileKind, load_machine, profile_catalogue, load_material, parse_machine, parse_material, shipped_machines, shipped_materials,
 };
 pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use material::{
