@@ -28,7 +28,10 @@ fn list_names_every_shipped_profile_with_its_description() {
                 .lines()
                 .find(|l| l.split_whitespace().next() == Some(name))
                 .unwrap_or_else(|| panic!("{name} missing from {text}"));
-            assert!(line.contains(&description) && line.contains(".toml"), "{line}");
+            assert!(
+                line.contains(&description) && line.contains(".toml"),
+                "{line}"
+            );
         }
     }
 }
@@ -48,7 +51,14 @@ fn a_closed_pipe_ends_the_program_quietly() {
     };
     run(&["generate", "miura", "-o", fold.to_str().expect("path")]);
     run(&[
-        "cut", "miura.fold", "-m", "grbl-diode", "-x", "card-300gsm", "-o", "miura.gcode",
+        "cut",
+        "miura.fold",
+        "-m",
+        "grbl-diode",
+        "-x",
+        "card-300gsm",
+        "-o",
+        "miura.gcode",
     ]);
     assert!(job.is_file());
     // The report (about 68 kB with coverage) is larger than a pipe's buffer, and the reading
@@ -73,5 +83,9 @@ fn a_closed_pipe_ends_the_program_quietly() {
     drop(child.stdout.take());
     let out = child.wait_with_output().expect("waits");
     assert_eq!(out.status.code(), Some(0));
-    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }

@@ -26,9 +26,18 @@ fn sized(mut cp: CreasePattern, size: f64) -> CreasePattern {
 fn examples() -> Vec<(String, CreasePattern)> {
     let mut out: Vec<(String, CreasePattern)> = vec![
         ("miura".into(), MiuraOri::default().build().expect("miura")),
-        ("twist".into(), SquareTwist::default().build().expect("twist")),
-        ("waterbomb".into(), Waterbomb::default().build().expect("wb")),
-        ("yoshimura".into(), Yoshimura::default().build().expect("yo")),
+        (
+            "twist".into(),
+            SquareTwist::default().build().expect("twist"),
+        ),
+        (
+            "waterbomb".into(),
+            Waterbomb::default().build().expect("wb"),
+        ),
+        (
+            "yoshimura".into(),
+            Yoshimura::default().build().expect("yo"),
+        ),
     ];
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/patterns");
     for name in ["flat-vertex.fold", "preliminary-base.cp"] {
@@ -47,7 +56,10 @@ fn material_for(machine: &MachineProfile) -> Vec<Material> {
     } else {
         &["card-300gsm", "paper-160gsm"]
     };
-    names.iter().map(|n| load_material(n).expect("shipped")).collect()
+    names
+        .iter()
+        .map(|n| load_material(n).expect("shipped"))
+        .collect()
 }
 
 fn planned(cp: &CreasePattern, machine: &MachineProfile, material: &Material) -> FabPlan {
@@ -63,7 +75,12 @@ fn simulated(p: &FabPlan, machine: &MachineProfile) -> (f64, Vec<String>) {
     for job in &p.jobs {
         let text = post::gcode(p, job, machine).expect("G-code");
         let run = sim::run(&text, machine).expect("readable");
-        assert!(run.is_clean(), "{}: {:?}", machine.name, run.violations.first());
+        assert!(
+            run.is_clean(),
+            "{}: {:?}",
+            machine.name,
+            run.violations.first()
+        );
         total += run.time_s;
         texts.push(text);
     }
@@ -193,7 +210,11 @@ fn headers_state_what_the_firmware_must_be_set_to() {
     let cp = SquareTwist::default().build().expect("twist");
     for (name, expect) in [("grbl-diode", "$32=1"), ("grbl-pen-plotter", "$32=0")] {
         let machine = load_machine(name).expect("shipped");
-        let p = planned(&cp, &machine, &load_material("card-300gsm").expect("shipped"));
+        let p = planned(
+            &cp,
+            &machine,
+            &load_material("card-300gsm").expect("shipped"),
+        );
         let (_, texts) = simulated(&p, &machine);
         let comment = texts[0]
             .lines()
@@ -207,7 +228,11 @@ fn headers_state_what_the_firmware_must_be_set_to() {
 fn plotters_draw_mountains_and_valleys_on_separate_layers_with_a_pause() {
     let cp = MiuraOri::default().build().expect("miura");
     let machine = load_machine("grbl-pen-plotter").expect("shipped");
-    let p = planned(&cp, &machine, &load_material("card-300gsm").expect("shipped"));
+    let p = planned(
+        &cp,
+        &machine,
+        &load_material("card-300gsm").expect("shipped"),
+    );
     assert!(p.warnings.iter().any(|w| w.contains("is a plotter")));
     let svg = post::svg(&p, &p.jobs[0], &machine.bed, false).expect("SVG");
     let layers = svg.matches("inkscape:groupmode=\"layer\"").count();
@@ -237,4 +262,36 @@ fn plotters_draw_mountains_and_valleys_on_separate_layers_with_a_pause() {
         .map(|t| t.strokes.len())
         .sum();
     assert!(perforate_strokes > 0 && run.pierces > perforate_strokes);
+}
+
+#[test]
+fn perforation_bridges_are_the_material_left_after_the_kerf() {
+    use foldcam::fab::{Operation, geometry};
+    use foldcam::pattern::Assignment;
+    use glam::DVec2;
+    let mut cp = CreasePattern::new();
+    cp.add_segment(DVec2::ZERO, DVec2::new(200.0, 0.0), Assignment::Valley);
+    let material = load_material("paper-160gsm").expect("shipped");
+    let mut o = PlanOptions::from_material(&material);
+    o.mapping.valley = Some(Operation::Perforate);
+    let asked = o.perforation;
+    let kerf = o.kerf_mm;
+    assert!(kerf > 0.05);
+    // Mean gap between the toolpath dashes, mm.
+    let mean_gap = |o: &PlanOptions| {
+        let paths = geometry::toolpaths(&cp, o).expect("toolpaths");
+        let dashes = &paths[0].strokes;
+        let gaps: Vec<f64> = dashes
+            .windows(2)
+            .map(|w| w[0][1].distance(w[1][0]))
+            .collect();
+        gaps.iter().sum::<f64>() / gaps.len() as f64
+    };
+    // The layout stretches the period a little to fit whole dashes on the crease.
+    let slack = 0.05 * asked.bridge_mm;
+    let web = mean_gap(&o) - kerf;
+    assert!((web - asked.bridge_mm).abs() < slack, "web {web}");
+    o.kerf_offset = false;
+    let raw = mean_gap(&o);
+    assert!((raw - asked.bridge_mm).abs() < slack, "gap {raw}");
 }

@@ -76,7 +76,8 @@ pub struct FabArgs {
     /// Perforation dash length, mm.
     #[arg(long, value_name = "MM", value_parser = positive)]
     pub dash: Option<f64>,
-    /// Perforation bridge (uncut) length, mm.
+    /// Perforation bridge: the material left between dashes, mm (the kerf is taken into
+    /// account unless --no-kerf-offset).
     #[arg(long, value_name = "MM", value_parser = positive, conflicts_with = "duty")]
     pub bridge: Option<f64>,
     /// Perforation duty cycle instead of a bridge length: the cut share of each dash period,

@@ -145,10 +145,16 @@ mod tests {
             y_flipped: false,
         };
         let m = MachineProfile::generic_laser(Dialect::Marlin, bed);
-        let lines: Vec<String> = ["G0 X10 Y5 (park)", "g4 p250", "M5 ; off", "G1 X20 F600", "G21"]
-            .iter()
-            .map(|s| s.to_string())
-            .collect();
+        let lines: Vec<String> = [
+            "G0 X10 Y5 (park)",
+            "g4 p250",
+            "M5 ; off",
+            "G1 X20 F600",
+            "G21",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
         let e = effects(&lines, DVec2::ZERO, &m);
         assert_eq!(
             e,

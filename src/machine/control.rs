@@ -117,8 +117,8 @@ impl MachineProfile {
                 dwell_s: self.pen_delay_s,
             };
         }
-        let stops = self.dialect == Dialect::LinuxCnc
-            && self.control.laser_output == LaserOutput::Spindle;
+        let stops =
+            self.dialect == Dialect::LinuxCnc && self.control.laser_output == LaserOutput::Spindle;
         SwitchCost {
             stops,
             dwell_s: 0.0,

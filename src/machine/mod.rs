@@ -27,10 +27,11 @@ mod read_machine;
 mod read_material;
 mod shipped;
 
-pub use load::{
-    CatalogueEntry, ProfileKind, load_machine, profile_catalogue, load_material, parse_machine, parse_material, shipped_machines, shipped_materials,
-};
 pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
+pub use load::{
+    CatalogueEntry, ProfileKind, load_machine, load_material, parse_machine, parse_material,
+    profile_catalogue, shipped_machines, shipped_materials,
+};
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };

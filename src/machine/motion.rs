@@ -256,7 +256,9 @@ impl Timeline {
 
     /// Brings the machine to rest; returns the seconds of the run since the last stop.
     pub fn stop(&mut self) -> f64 {
-        let t = move_times(self.run_start, &self.run, &self.kin).iter().sum();
+        let t = move_times(self.run_start, &self.run, &self.kin)
+            .iter()
+            .sum();
         self.run.clear();
         self.run_start = self.at;
         t

@@ -23,8 +23,8 @@
 use toml::Table;
 
 use super::ProfileError;
-use super::fields::Fields;
 use super::control::{AirAssist, LaserOutput, MachineControl};
+use super::fields::Fields;
 use super::profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
 };
@@ -218,9 +218,7 @@ fn read_control(
                 let op = crate::fab::Operation::from_name(name).ok_or_else(|| {
                     f.error(
                         &format!("air_assist_operations[{j}]"),
-                        format!(
-                            "got \"{name}\"; expected mark, score, perforate, cut or plot"
-                        ),
+                        format!("got \"{name}\"; expected mark, score, perforate, cut or plot"),
                     )
                 })?;
                 operations.push(op);

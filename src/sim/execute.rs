@@ -340,7 +340,10 @@ impl<'a> Machine<'a> {
             };
             let range = self.profile.power;
             if !(range.min..=range.max).contains(&q) && q != 0.0 {
-                let msg = format!("power Q{q} is outside the range {} to {}", range.min, range.max);
+                let msg = format!(
+                    "power Q{q} is outside the range {} to {}",
+                    range.min, range.max
+                );
                 self.report.flag(line, ViolationKind::PowerOutOfRange, msg);
             }
             q.clamp(0.0, range.max)

@@ -159,7 +159,8 @@ impl Program<'_> {
             if self.layers > 0 && machine.pauses_between_layers() {
                 let note = format!("change the pen for layer {}, then resume", path.op.name());
                 self.lines.push(self.flavour.comment(&note));
-                self.lines.extend(machine.control.pen_change.iter().cloned());
+                self.lines
+                    .extend(machine.control.pen_change.iter().cloned());
             }
             self.lines.push(self.flavour.comment(path.op.name()));
             let air = machine.air_for(path.op);
