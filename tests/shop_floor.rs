@@ -295,3 +295,127 @@ fn perforation_bridges_are_the_material_left_after_the_kerf() {
     let raw = mean_gap(&o);
     assert!((raw - asked.bridge_mm).abs() < slack, "gap {raw}");
 }
+
+#[test]
+fn lightburn_projects_parse_back_with_one_layer_per_operation_and_the_material_values() {
+    use foldcam::fab::Operation;
+    let cp = MiuraOri::default().build().expect("miura");
+    for machine_name in ["lightburn", "grbl-diode"] {
+        let machine = load_machine(machine_name).expect("shipped");
+        let material = load_material("paper-160gsm").expect("shipped");
+        let p = planned(&cp, &machine, &material);
+        let job = &p.jobs[0];
+        let xml = post::lbrn2(&p, job, &machine).expect("lbrn2");
+        let doc = roxmltree::Document::parse(&xml).expect("well-formed XML");
+        let root = doc.root_element();
+        assert_eq!(root.tag_name().name(), "LightBurnProject");
+        let value = |n: roxmltree::Node, key: &str| -> String {
+            n.children()
+                .find(|c| c.has_tag_name(key))
+                .and_then(|c| c.attribute("Value"))
+                .unwrap_or_else(|| panic!("{key} missing"))
+                .to_string()
+        };
+        let num = |n: roxmltree::Node, key: &str| -> f64 { value(n, key).parse().expect("number") };
+        let settings: Vec<_> = root
+            .children()
+            .filter(|c| c.has_tag_name("CutSetting"))
+            .collect();
+        let mut ops: Vec<Operation> = job.paths.iter().map(|t| t.op).collect();
+        ops.sort();
+        ops.dedup();
+        assert_eq!(settings.len(), ops.len(), "{machine_name}");
+        let (kerf, asked) = (material.kerf_mm, material.perforation);
+        for cs in &settings {
+            let op = Operation::from_name(&value(*cs, "name")).expect("an operation");
+            assert!(ops.contains(&op));
+            let s = material.settings.get(op);
+            let speed = s.speed_mm_min.min(machine.max_feed_mm_min) / 60.0;
+            assert!((num(*cs, "speed") - speed).abs() < 1e-3, "{op:?} speed");
+            assert!((num(*cs, "maxPower") - 100.0 * s.power).abs() < 1e-3);
+            assert_eq!(num(*cs, "numPasses"), f64::from(s.passes));
+            let index = value(*cs, "index");
+            let shapes = root
+                .children()
+                .filter(|c| c.has_tag_name("Shape") && c.attribute("CutIndex") == Some(&index))
+                .count();
+            let paths = job.paths.iter().filter(|t| t.op == op);
+            let want: usize = if op == Operation::Perforate {
+                paths.count()
+            } else {
+                paths.map(|t| t.strokes.len()).sum()
+            };
+            assert_eq!(shapes, want, "{op:?} shapes");
+            if op == Operation::Perforate {
+                assert_eq!(value(*cs, "perforate"), "1");
+                // Toolpath dash and gap: the material's, one kerf shorter and longer, within
+                // the layout's stretch to whole dashes.
+                let dash = num(*cs, "perfLen");
+                let gap = num(*cs, "perfSkip");
+                assert!(
+                    (dash - (asked.cut_mm - kerf)).abs() < 0.1 * asked.cut_mm,
+                    "{dash}"
+                );
+                assert!(
+                    (gap - (asked.bridge_mm + kerf)).abs() < 0.1 * asked.bridge_mm,
+                    "{gap}"
+                );
+            }
+        }
+        // Every vertex lies on the bed.
+        for shape in root.children().filter(|c| c.has_tag_name("Shape")) {
+            let verts = shape
+                .children()
+                .find(|c| c.has_tag_name("VertList"))
+                .and_then(|c| c.text())
+                .expect("VertList");
+            for v in verts.split('V').filter(|v| !v.is_empty()) {
+                let xy: Vec<f64> = v.split(' ').map(|t| t.parse().expect("number")).collect();
+                assert!(xy[0] >= 0.0 && xy[0] <= machine.bed.width_mm);
+                assert!(xy[1] >= 0.0 && xy[1] <= machine.bed.height_mm);
+            }
+        }
+    }
+}
+
+#[test]
+fn origin_centre_and_offset_move_the_job_on_the_bed() {
+    use foldcam::fab::placement::Placement;
+    use glam::DVec2;
+    let cp = SquareTwist::default().build().expect("twist");
+    let machine = load_machine("grbl-diode").expect("shipped");
+    let material = load_material("card-300gsm").expect("shipped");
+    let bounds = |p: &FabPlan| {
+        let pts = p.jobs[0].paths.iter().flat_map(|t| &t.strokes).flatten();
+        pts.fold((DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)), |(lo, hi), &q| {
+            (lo.min(q), hi.max(q))
+        })
+    };
+    let with = |placement: Placement| {
+        let mut o = PlanOptions::from_material(&material);
+        o.placement = placement;
+        plan(&cp, &machine, &material, &o)
+    };
+    let corner = bounds(&with(Placement::default()).expect("plans"));
+    let centred = bounds(&with(Placement {
+        centre: true,
+        offset_mm: DVec2::ZERO,
+    })
+    .expect("plans"));
+    let middle = (centred.0 + centred.1) / 2.0;
+    let bed = DVec2::new(machine.bed.width_mm, machine.bed.height_mm);
+    assert!((middle - bed / 2.0).length() < 1e-6, "{middle}");
+    assert!(((centred.1 - centred.0) - (corner.1 - corner.0)).length() < 1e-9);
+    let shift = DVec2::new(12.5, 30.0);
+    let shifted = bounds(&with(Placement {
+        centre: false,
+        offset_mm: shift,
+    })
+    .expect("plans"));
+    assert!((shifted.0 - corner.0 - shift).length() < 1e-9);
+    let off = with(Placement {
+        centre: false,
+        offset_mm: DVec2::new(-50.0, 0.0),
+    });
+    assert!(off.is_err());
+}

@@ -191,6 +191,8 @@ pub struct PlanOptions {
     pub optimize: bool,
     /// What [`PlanOptions::adapt_to_machine`] changed, for the plan's warnings.
     pub notes: Vec<String>,
+    /// Corner or centre of the bed, and an offset.
+    pub placement: placement::Placement,
 }
 
 impl PlanOptions {
@@ -208,6 +210,7 @@ impl PlanOptions {
             margin_mm: 5.0,
             optimize: true,
             notes: Vec::new(),
+            placement: placement::Placement::default(),
         }
     }
 }

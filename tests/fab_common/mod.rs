@@ -32,6 +32,7 @@ pub fn options() -> PlanOptions {
         margin_mm: 5.0,
         optimize: true,
         notes: Vec::new(),
+        placement: Default::default(),
     }
 }
 
