@@ -387,9 +387,10 @@ fn origin_centre_and_offset_move_the_job_on_the_bed() {
     let material = load_material("card-300gsm").expect("shipped");
     let bounds = |p: &FabPlan| {
         let pts = p.jobs[0].paths.iter().flat_map(|t| &t.strokes).flatten();
-        pts.fold((DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)), |(lo, hi), &q| {
-            (lo.min(q), hi.max(q))
-        })
+        pts.fold(
+            (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)),
+            |(lo, hi), &q| (lo.min(q), hi.max(q)),
+        )
     };
     let with = |placement: Placement| {
         let mut o = PlanOptions::from_material(&material);
@@ -397,21 +398,25 @@ fn origin_centre_and_offset_move_the_job_on_the_bed() {
         plan(&cp, &machine, &material, &o)
     };
     let corner = bounds(&with(Placement::default()).expect("plans"));
-    let centred = bounds(&with(Placement {
-        centre: true,
-        offset_mm: DVec2::ZERO,
-    })
-    .expect("plans"));
+    let centred = bounds(
+        &with(Placement {
+            centre: true,
+            offset_mm: DVec2::ZERO,
+        })
+        .expect("plans"),
+    );
     let middle = (centred.0 + centred.1) / 2.0;
     let bed = DVec2::new(machine.bed.width_mm, machine.bed.height_mm);
     assert!((middle - bed / 2.0).length() < 1e-6, "{middle}");
     assert!(((centred.1 - centred.0) - (corner.1 - corner.0)).length() < 1e-9);
     let shift = DVec2::new(12.5, 30.0);
-    let shifted = bounds(&with(Placement {
-        centre: false,
-        offset_mm: shift,
-    })
-    .expect("plans"));
+    let shifted = bounds(
+        &with(Placement {
+            centre: false,
+            offset_mm: shift,
+        })
+        .expect("plans"),
+    );
     assert!((shifted.0 - corner.0 - shift).length() < 1e-9);
     let off = with(Placement {
         centre: false,

@@ -81,7 +81,7 @@ pub fn place(extent: (DVec2, DVec2), bed: &Bed, margin_mm: f64) -> Result<DAffin
 }
 
 /// Where the job goes on the bed (`--origin`, `--offset`).
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize)]
 pub struct Placement {
     /// Centre the sheet on the bed instead of putting it in the origin corner.
     pub centre: bool,
