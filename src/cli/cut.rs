@@ -17,6 +17,7 @@ enum Output {
     Gcode,
     Dxf,
     Svg,
+    Lbrn2,
 }
 
 fn output_kind(path: &Path) -> Result<Output> {
@@ -29,8 +30,9 @@ fn output_kind(path: &Path) -> Result<Output> {
         "gcode" | "nc" | "ngc" | "gc" => Output::Gcode,
         "dxf" => Output::Dxf,
         "svg" => Output::Svg,
+        "lbrn2" => Output::Lbrn2,
         _ => bail!(
-            "{}: unknown job type (expected .gcode, .nc, .ngc, .dxf or .svg)",
+            "{}: unknown job type (expected .gcode, .nc, .ngc, .dxf, .svg or .lbrn2)",
             path.display()
         ),
     })
@@ -51,7 +53,8 @@ fn output_kind(path: &Path) -> Result<Output> {
 pub struct Args {
     #[command(flatten)]
     pub request: PlanRequest,
-    /// Job file: .gcode/.nc/.ngc (G-code), .dxf or .svg; written atomically.
+    /// Job file: .gcode/.nc/.ngc (G-code), .dxf, .svg or .lbrn2 (LightBurn project, one
+    /// layer per operation with the material's settings); written atomically.
     #[arg(short, long)]
     pub output: PathBuf,
     /// Write DXF R12 (LINE/POLYLINE) instead of R2000.
@@ -80,6 +83,17 @@ pub fn write_jobs(
     dasharray: bool,
 ) -> Result<()> {
     let kind = output_kind(output)?;
+    if dasharray && kind != Output::Svg {
+        eprintln!("warning: --dasharray applies to SVG output only: ignored");
+    }
+    let perforates = p
+        .jobs
+        .iter()
+        .flat_map(|j| &j.paths)
+        .any(|t| t.op == foldcam::fab::Operation::Perforate);
+    if dasharray && kind == Output::Svg && !perforates {
+        eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
+    }
     let paths = job_paths(output, p);
     let mut files = Vec::new();
     for (job, path) in p.jobs.iter().zip(&paths) {
@@ -127,6 +141,7 @@ fn render(
             post::dxf(p, job, version)?
         }
         Output::Svg => post::svg(p, job, &m.bed, dasharray)?.into_bytes(),
+        Output::Lbrn2 => post::lbrn2(p, job, m)?.into_bytes(),
     })
 }
 

@@ -76,7 +76,8 @@ pub struct FabArgs {
     /// Perforation dash length, mm.
     #[arg(long, value_name = "MM", value_parser = positive)]
     pub dash: Option<f64>,
-    /// Perforation bridge (uncut) length, mm.
+    /// Perforation bridge: the material left between dashes, mm (the kerf is taken into
+    /// account unless --no-kerf-offset).
     #[arg(long, value_name = "MM", value_parser = positive, conflicts_with = "duty")]
     pub bridge: Option<f64>,
     /// Perforation duty cycle instead of a bridge length: the cut share of each dash period,
@@ -117,6 +118,36 @@ pub struct FabArgs {
     /// Keep the pattern's order (no travel optimisation).
     #[arg(long)]
     pub no_optimize: bool,
+    /// Where the job goes: the bed's origin corner (the margin away from it) or its centre.
+    #[arg(long, value_enum, default_value_t = OriginArg::Corner)]
+    pub origin: OriginArg,
+    /// Shift the job by X,Y mm (x right, y towards the back of the bed) after placing it.
+    #[arg(long, value_name = "X,Y", value_parser = offset, allow_hyphen_values = true)]
+    pub offset: Option<glam::DVec2>,
+}
+
+/// `--origin`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OriginArg {
+    /// The bed's origin corner (where the machine homes), the margin away from it.
+    Corner,
+    /// The centre of the bed.
+    Centre,
+}
+
+/// Parses `X,Y` in millimetres.
+fn offset(s: &str) -> Result<glam::DVec2, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let bad = || format!("{s}: expected X,Y in mm, e.g. 10,-5");
+    if parts.len() != 2 {
+        return Err(bad());
+    }
+    let x: f64 = parts[0].parse().map_err(|_| bad())?;
+    let y: f64 = parts[1].parse().map_err(|_| bad())?;
+    if !(x.is_finite() && y.is_finite() && x.abs() <= 1e5 && y.abs() <= 1e5) {
+        return Err(format!("{s}: offsets must be finite and within ±100000 mm"));
+    }
+    Ok(glam::DVec2::new(x, y))
 }
 
 impl FabArgs {
@@ -167,6 +198,10 @@ impl FabArgs {
         }
         o.margin_mm = self.margin;
         o.optimize = !self.no_optimize;
+        o.placement = foldcam::fab::placement::Placement {
+            centre: self.origin == OriginArg::Centre,
+            offset_mm: self.offset.unwrap_or(glam::DVec2::ZERO),
+        };
         Ok((machine, material, o))
     }
 }

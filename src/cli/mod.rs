@@ -13,7 +13,9 @@ mod fab_args;
 mod fold;
 mod generate;
 mod input;
+mod list;
 mod papercraft;
+mod pipe;
 mod plan;
 mod popup;
 mod popup_input;
@@ -83,10 +85,13 @@ enum Command {
     Demo(demo::Args),
     /// Make a freeform origami tessellation (star tucks) from an OBJ/STL mesh.
     Tessellate(tessellate::Args),
+    /// List the shipped machine or material profiles.
+    List(list::Args),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
 pub fn run() -> ExitCode {
+    pipe::quiet_on_broken_pipe();
     // A run stopped by Ctrl-C or SIGTERM leaves no temporary files behind and writes nothing.
     let _ = ctrlc::set_handler(|| {
         foldcam::formats::remove_pending_temporaries();
@@ -107,6 +112,7 @@ pub fn run() -> ExitCode {
         Command::Demo(a) => demo::run(a),
         Command::Tessellate(a) => tessellate::run(a),
         Command::Fold(a) => fold::run(a),
+        Command::List(a) => list::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

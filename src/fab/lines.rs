@@ -89,7 +89,14 @@ impl<'a> LineContext<'a> {
                 self.end_clearance(last, chain.edges[chain.edges.len() - 1], opts),
             ]
         };
-        let fit = layout(length, clear, &opts.perforation).map_err(|why| {
+        // Bridges are material left: the toolpath layout takes the kerf into account when
+        // contours are kerf-compensated too.
+        let perf = if opts.kerf_offset {
+            opts.perforation.for_kerf(opts.kerf_mm)
+        } else {
+            opts.perforation
+        };
+        let fit = layout(length, clear, &perf).map_err(|why| {
             let names = edge_names(&chain.edges);
             match why {
                 NoDashes::TooShort { end_mm, .. } => format!(

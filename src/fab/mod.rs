@@ -21,6 +21,7 @@ pub mod plan;
 pub mod sides;
 pub mod stats;
 pub mod tabs;
+pub mod timing;
 
 pub use plan::plan;
 
@@ -188,6 +189,10 @@ pub struct PlanOptions {
     pub margin_mm: f64,
     /// Order toolpaths to shorten travel (off: pattern order, for comparisons).
     pub optimize: bool,
+    /// What [`PlanOptions::adapt_to_machine`] changed, for the plan's warnings.
+    pub notes: Vec<String>,
+    /// Corner or centre of the bed, and an offset.
+    pub placement: placement::Placement,
 }
 
 impl PlanOptions {
@@ -204,34 +209,56 @@ impl PlanOptions {
             lead_in_mm: None,
             margin_mm: 5.0,
             optimize: true,
+            notes: Vec::new(),
+            placement: placement::Placement::default(),
         }
     }
 }
 
 impl PlanOptions {
-    /// Fits the operation mapping to `machine`: a pen plotter draws every line a laser would
-    /// burn (perforate and score mean nothing to a pen; marks stay marks), and any other
-    /// machine must support every operation the mapping uses.
+    /// Fits the operation mapping to `machine`. A pen plotter draws what a laser would burn:
+    /// scores and cuts become plots, marks stay marks (a second pen), perforations stay
+    /// perforations (drawn as dashes); when mountains and valleys would share one operation,
+    /// valleys become marks so they come out as a layer of their own (separate SVG layers, a
+    /// pen-change pause between them in G-code). Every change is noted in
+    /// [`PlanOptions::notes`]. Any other machine must support every operation the mapping
+    /// uses.
     pub fn adapt_to_machine(
         &mut self,
         machine: &crate::machine::MachineProfile,
     ) -> Result<(), FabError> {
-        let m = &mut self.mapping;
-        let slots = [
-            &mut m.mountain,
-            &mut m.valley,
-            &mut m.unassigned,
-            &mut m.flat,
-            &mut m.boundary,
-        ];
         let plotter = machine.kind == crate::machine::MachineKind::Plotter;
+        let m = &mut self.mapping;
+        let mut changed: Vec<String> = Vec::new();
         let mut unsupported: Vec<&'static str> = Vec::new();
-        for op in slots.into_iter().flatten() {
-            if plotter && *op != Operation::Mark {
+        for (name, slot) in [
+            ("mountain", &mut m.mountain),
+            ("valley", &mut m.valley),
+            ("unassigned", &mut m.unassigned),
+            ("flat", &mut m.flat),
+            ("boundary", &mut m.boundary),
+        ] {
+            let Some(op) = slot else { continue };
+            if plotter && matches!(*op, Operation::Score | Operation::Cut) {
+                changed.push(format!("{name} {} drawn as plot", op.name()));
                 *op = Operation::Plot;
             } else if !machine.supports(*op) && !unsupported.contains(&op.name()) {
                 unsupported.push(op.name());
             }
+        }
+        if plotter && m.mountain.is_some() && m.valley == m.mountain {
+            changed.push("valleys drawn as mark, a layer of their own".into());
+            m.valley = Some(Operation::Mark);
+            if m.unassigned == m.mountain {
+                m.unassigned = Some(Operation::Mark);
+            }
+        }
+        if !changed.is_empty() {
+            self.notes.push(format!(
+                "{} is a plotter: {}",
+                machine.name,
+                changed.join(", ")
+            ));
         }
         if unsupported.is_empty() {
             Ok(())

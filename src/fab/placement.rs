@@ -80,6 +80,61 @@ pub fn place(extent: (DVec2, DVec2), bed: &Bed, margin_mm: f64) -> Result<DAffin
     Ok(bed_to_machine(bed) * to_bed)
 }
 
+/// Where the job goes on the bed (`--origin`, `--offset`).
+#[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize)]
+pub struct Placement {
+    /// Centre the sheet on the bed instead of putting it in the origin corner.
+    pub centre: bool,
+    /// Shift after placing, mm, in the bed view (x right, y towards the back).
+    pub offset_mm: DVec2,
+}
+
+/// [`place`] with a [`Placement`]: the sheet (extent plus margin) in the origin corner or
+/// centred on the bed, then shifted by the offset. Fails with [`FabError::DoesNotFit`] when
+/// the sheet is larger than the bed, and with [`FabError::Geometry`] when the offset pushes
+/// it off the bed (naming how far).
+pub fn place_with(
+    extent: (DVec2, DVec2),
+    bed: &Bed,
+    margin_mm: f64,
+    placement: Placement,
+) -> Result<DAffine2, FabError> {
+    let corner = place(extent, bed, margin_mm)?;
+    if !placement.centre && placement.offset_mm == DVec2::ZERO {
+        return Ok(corner);
+    }
+    let margin = if margin_mm.is_finite() {
+        margin_mm.max(0.0)
+    } else {
+        0.0
+    };
+    let size = (extent.1 - extent.0).max(DVec2::ZERO);
+    let sheet = size + DVec2::splat(2.0 * margin);
+    let bed_size = DVec2::new(bed.width_mm, bed.height_mm);
+    // The sheet's lower-left corner in the bed view.
+    let mut at = if placement.centre {
+        (bed_size - sheet) / 2.0
+    } else {
+        let to_bed = bed_to_machine(bed).inverse() * corner;
+        to_bed.transform_point2(extent.0) - DVec2::splat(margin)
+    };
+    at += placement.offset_mm;
+    let slack = FIT_SLACK * bed_size.max_element().max(1.0);
+    let low = at.min_element() < -slack;
+    let high = (at + sheet - bed_size).max_element() > slack;
+    if low || high || !at.is_finite() {
+        return Err(FabError::Geometry {
+            step: "placement",
+            message: format!(
+                "the {:.1} × {:.1} mm sheet placed at ({:.1}, {:.1}) mm leaves the {} × {} mm bed",
+                sheet.x, sheet.y, at.x, at.y, bed.width_mm, bed.height_mm
+            ),
+        });
+    }
+    let to_bed = DAffine2::from_translation(at + DVec2::splat(margin) - extent.0);
+    Ok(bed_to_machine(bed) * to_bed)
+}
+
 /// Applies `t` to every point of `paths`.
 pub fn transform_paths(paths: &mut [Toolpath], t: &DAffine2) {
     for p in paths

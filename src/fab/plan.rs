@@ -17,7 +17,7 @@
 
 use glam::{DAffine2, DVec2};
 
-use super::placement::{bounds_of, place, transform_paths, union};
+use super::placement::{bounds_of, place_with, transform_paths, union};
 use super::sides::{mirror, registration_marks, split};
 use super::stats::plan_stats;
 use super::{FabError, FabPlan, Job, PlanOptions, Side, Toolpath, geometry, order};
@@ -40,6 +40,7 @@ pub fn plan(
     cp.require_millimetres()?;
     let (paths, remarks) = geometry::toolpaths_with_warnings(cp, opts)?;
     let mut plan = plan_toolpaths(cp, paths, machine, material, opts)?;
+    plan.warnings.extend(opts.notes.iter().cloned());
     plan.warnings.extend(remarks);
     Ok(plan)
 }
@@ -83,7 +84,7 @@ fn one_sided_job(
     opts: &PlanOptions,
 ) -> Result<(Vec<Job>, f64), FabError> {
     let extent = content_extent(cp, &paths)?;
-    let to_machine = place(extent, bed, opts.margin_mm)?;
+    let to_machine = place_with(extent, bed, opts.margin_mm, opts.placement)?;
     let (job, naive) = make_job("front", Side::Front, to_machine, paths, opts);
     Ok((vec![job], naive))
 }
@@ -99,7 +100,7 @@ fn two_sided_jobs(
     let extent = content_extent(cp, &paths)?;
     let marks = registration_marks(extent);
     let sheet = union(Some(extent), bounds_of(&marks)).unwrap_or(extent);
-    let to_machine = place(sheet, bed, opts.margin_mm)?;
+    let to_machine = place_with(sheet, bed, opts.margin_mm, opts.placement)?;
     let flipped = to_machine * mirror((sheet.0.x + sheet.1.x) / 2.0);
     let (front, back) = split(cp, paths);
     if back.is_empty() {

@@ -9,15 +9,16 @@
 //! through before anything that depends on it.
 //!
 //! # Time
-//! Each job is turned into moves (a rapid to each stroke's first point, then the burns at the
-//! operation's speed from the material settings) and timed with
-//! [`crate::machine::motion::job_time`] from the machine origin; jobs add up. O(points).
+//! Each job is timed by [`super::timing::job_time`] (the program the G-code writer makes of
+//! it, on the motion model of the simulated machine) from the machine origin; jobs add up.
+//! [`moves`] lists the bare moves (stroke by stroke, open strokes alternating direction)
+//! without the stops a dialect makes.
 
 use glam::DVec2;
 
 use super::order::{SAME_POINT_MM, travel_mm};
 use super::{Job, Operation, PlanStats, Toolpath};
-use crate::machine::motion::{Move, job_time};
+use crate::machine::motion::Move;
 use crate::machine::{MachineProfile, SettingsByOperation};
 
 /// Length of a polyline, mm.
@@ -89,7 +90,7 @@ pub fn plan_stats(
         naive_travel_mm,
         time_s: jobs
             .iter()
-            .map(|j| job_time(DVec2::ZERO, &moves(&j.paths, settings), machine))
+            .map(|j| super::timing::job_time(j, settings, machine))
             .sum(),
     }
 }

@@ -201,3 +201,54 @@ mod tests {
         assert!(is_path(r"C:\profiles\x"));
     }
 }
+
+/// Machine or material profiles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProfileKind {
+    /// `machines/NAME.toml`.
+    Machine,
+    /// `machines/materials/NAME.toml`.
+    Material,
+}
+
+/// One shipped profile: its name, description and the file it was embedded from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CatalogueEntry {
+    /// The name to give `--machine` or `--material`.
+    pub name: String,
+    /// The profile's one-line description.
+    pub description: String,
+    /// Where it comes from, e.g. `shipped: machines/grbl-diode.toml`.
+    pub source: String,
+}
+
+/// The shipped profiles of `kind`, sorted by name, each read and checked.
+///
+/// # Errors
+/// A [`ProfileError`] if a shipped profile does not read (a build defect).
+pub fn profile_catalogue(kind: ProfileKind) -> Result<Vec<CatalogueEntry>, ProfileError> {
+    match kind {
+        ProfileKind::Machine => shipped_machines()
+            .into_iter()
+            .map(|name| {
+                let m = load_machine(name)?;
+                Ok(CatalogueEntry {
+                    name: name.to_string(),
+                    description: m.description,
+                    source: format!("shipped: machines/{name}.toml"),
+                })
+            })
+            .collect(),
+        ProfileKind::Material => shipped_materials()
+            .into_iter()
+            .map(|name| {
+                let m = load_material(name)?;
+                Ok(CatalogueEntry {
+                    name: name.to_string(),
+                    description: m.description,
+                    source: format!("shipped: machines/materials/{name}.toml"),
+                })
+            })
+            .collect(),
+    }
+}

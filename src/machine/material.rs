@@ -68,6 +68,34 @@ pub struct Perforation {
     pub vertex_clearance_mm: f64,
 }
 
+/// Shortest toolpath dash kept when the kerf is taken off, as a share of the asked dash.
+const MIN_TOOLPATH_DASH_SHARE: f64 = 0.1;
+
+impl Perforation {
+    /// The layout in toolpath terms for a beam `kerf_mm` wide. Each dash burns kerf/2 past
+    /// both ends of its toolpath, so for the material to keep the asked bridges (and webs)
+    /// the toolpath dashes are one kerf shorter and the bridges one kerf longer, the period
+    /// unchanged; the dash keeps at least a tenth of its length (a kerf wider than that
+    /// leaves shorter bridges, as the beam allows no better). Vertex clearances are measured
+    /// where the lines meet and stay as they are.
+    pub fn for_kerf(&self, kerf_mm: f64) -> Perforation {
+        let kerf = if kerf_mm.is_finite() {
+            kerf_mm.max(0.0)
+        } else {
+            0.0
+        };
+        let shrink = kerf.min(self.cut_mm * (1.0 - MIN_TOOLPATH_DASH_SHARE));
+        Perforation {
+            cut_mm: self.cut_mm - shrink,
+            bridge_mm: self.bridge_mm + shrink,
+            min_dash_mm: (self.min_dash_mm - shrink)
+                .max(self.min_dash_mm.min(self.cut_mm - shrink) * MIN_TOOLPATH_DASH_SHARE),
+            min_web_mm: self.min_web_mm + shrink,
+            vertex_clearance_mm: self.vertex_clearance_mm,
+        }
+    }
+}
+
 /// Which operation each assignment gets.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct OperationMapping {

@@ -15,6 +15,8 @@
 //! refused with a [`ProfileError`] naming the file, the dotted key, the value found and the
 //! line. The accepted ranges are listed in `machines/README.md`.
 
+pub mod commands;
+pub mod control;
 mod fields;
 mod load;
 mod locate;
@@ -25,8 +27,10 @@ mod read_machine;
 mod read_material;
 mod shipped;
 
+pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use load::{
-    load_machine, load_material, parse_machine, parse_material, shipped_machines, shipped_materials,
+    CatalogueEntry, ProfileKind, load_machine, load_material, parse_machine, parse_material,
+    profile_catalogue, shipped_machines, shipped_materials,
 };
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,

@@ -220,3 +220,47 @@ fn plan_entries(blocks: &[Block], accel: f64) -> Vec<f64> {
     }
     b.iter().map(|x| x.entry).collect()
 }
+
+/// Moves timed in runs between stops: what a controller does when some commands (a spindle
+/// word, a dwell, a pause) wait for motion to finish. The simulated machine and the plan's
+/// estimate both time their moves through this.
+#[derive(Clone, Debug)]
+pub struct Timeline {
+    kin: Kinematics,
+    run: Vec<Move>,
+    run_start: DVec2,
+    at: DVec2,
+}
+
+impl Timeline {
+    /// At rest at `start`.
+    pub fn new(kin: Kinematics, start: DVec2) -> Self {
+        Timeline {
+            kin,
+            run: Vec::new(),
+            run_start: start,
+            at: start,
+        }
+    }
+
+    /// Where the last move ends, mm.
+    pub fn at(&self) -> DVec2 {
+        self.at
+    }
+
+    /// Adds a move to the current run.
+    pub fn push(&mut self, m: Move) {
+        self.run.push(m);
+        self.at = m.to;
+    }
+
+    /// Brings the machine to rest; returns the seconds of the run since the last stop.
+    pub fn stop(&mut self) -> f64 {
+        let t = move_times(self.run_start, &self.run, &self.kin)
+            .iter()
+            .sum();
+        self.run.clear();
+        self.run_start = self.at;
+        t
+    }
+}

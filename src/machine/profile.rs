@@ -13,6 +13,7 @@
 use glam::{DAffine2, DVec2};
 use serde::Serialize;
 
+use super::control::MachineControl;
 use crate::fab::Operation;
 
 /// What the machine does to the sheet.
@@ -133,6 +134,8 @@ pub struct MachineProfile {
     pub preamble: Vec<String>,
     /// Lines written after the job.
     pub postamble: Vec<String>,
+    /// Beam switching, air assist and pen changes ([`MachineControl`]).
+    pub control: MachineControl,
 }
 
 /// Slack when testing whether a point lies on the bed, mm (absorbs rounding in transforms).
@@ -327,6 +330,7 @@ impl MachineProfile {
             pen_delay_s: 0.0,
             preamble: Vec::new(),
             postamble: Vec::new(),
+            control: MachineControl::default(),
         }
     }
 
@@ -357,11 +361,14 @@ impl MachineProfile {
     }
 
     /// True when this kind of machine can carry out `op`: a laser marks, scores, perforates
-    /// and cuts; a plotter plots (and marks); a drag knife scores, perforates and cuts.
+    /// and cuts; a plotter plots, marks (a second pen) and perforates (draws
+    /// the dashes); a drag knife scores, perforates and cuts.
     pub fn supports(&self, op: Operation) -> bool {
         match self.kind {
             MachineKind::Laser => op != Operation::Plot,
-            MachineKind::Plotter => matches!(op, Operation::Plot | Operation::Mark),
+            MachineKind::Plotter => {
+                matches!(op, Operation::Plot | Operation::Mark | Operation::Perforate)
+            }
             MachineKind::DragKnife => {
                 matches!(op, Operation::Score | Operation::Perforate | Operation::Cut)
             }

@@ -23,6 +23,7 @@
 use toml::Table;
 
 use super::ProfileError;
+use super::control::{AirAssist, LaserOutput, MachineControl};
 use super::fields::Fields;
 use super::profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
@@ -61,6 +62,7 @@ pub(crate) fn machine_from_table(
     let (pen_up, pen_down, pen_delay_s) = read_pen(&mut f, needs_pen)?;
     let preamble = f.lines("preamble")?;
     let postamble = f.lines("postamble")?;
+    let control = read_control(&mut f, kind, dialect)?;
     f.finish()?;
     Ok(MachineProfile {
         name: name.to_string(),
@@ -81,6 +83,7 @@ pub(crate) fn machine_from_table(
         pen_delay_s,
         preamble,
         postamble,
+        control,
     })
 }
 
@@ -181,4 +184,64 @@ fn read_pen(f: &mut Fields, required: bool) -> Result<Pen, ProfileError> {
     let delay = t.number("delay_s", 0.0, 10.0, "s")?;
     t.finish()?;
     Ok((up, down, delay))
+}
+
+/// Highest LinuxCNC motion I/O number (`num_dio`/`num_aio` go up to 64).
+const MAX_OUTPUT_NUMBER: i64 = 63;
+
+/// The optional shop-floor keys: `laser_output` and `output_number` (LinuxCNC lasers only),
+/// `air_assist` (`M7` or `M8`) with `air_assist_operations`, `pen_change` (plotters).
+fn read_control(
+    f: &mut Fields,
+    kind: MachineKind,
+    dialect: Dialect,
+) -> Result<MachineControl, ProfileError> {
+    let mut control = MachineControl::default();
+    let linuxcnc_laser = kind == MachineKind::Laser && dialect == Dialect::LinuxCnc;
+    for key in ["laser_output", "output_number"] {
+        if f.has(key) && !linuxcnc_laser {
+            return Err(f.error(key, "applies only to a laser with dialect \"linuxcnc\""));
+        }
+    }
+    if let Some(i) = f.opt_choice("laser_output", &LaserOutput::ALL.map(LaserOutput::name))? {
+        control.laser_output = LaserOutput::ALL[i];
+    }
+    if f.has("output_number") {
+        control.output_number = f.integer("output_number", 0, MAX_OUTPUT_NUMBER)? as u32;
+    }
+    let air = f.opt_choice("air_assist", &["M7", "M8"])?;
+    let ops = f.lines("air_assist_operations")?;
+    match air {
+        Some(i) => {
+            let mut operations = Vec::new();
+            for (j, name) in ops.iter().enumerate() {
+                let op = crate::fab::Operation::from_name(name).ok_or_else(|| {
+                    f.error(
+                        &format!("air_assist_operations[{j}]"),
+                        format!("got \"{name}\"; expected mark, score, perforate, cut or plot"),
+                    )
+                })?;
+                operations.push(op);
+            }
+            if operations.is_empty() {
+                let message = "missing or empty; name the operations that run with air assist";
+                return Err(f.error("air_assist_operations", message));
+            }
+            control.air_assist = Some(AirAssist {
+                on: ["M7", "M8"][i],
+                operations,
+            });
+        }
+        None if !ops.is_empty() => {
+            return Err(f.error("air_assist_operations", "given without air_assist"));
+        }
+        None => {}
+    }
+    if f.has("pen_change") {
+        if kind != MachineKind::Plotter {
+            return Err(f.error("pen_change", "applies only to a plotter"));
+        }
+        control.pen_change = f.lines("pen_change")?;
+    }
+    Ok(control)
 }

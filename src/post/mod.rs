@@ -16,6 +16,7 @@
 mod check;
 mod dxf;
 pub mod gcode;
+pub mod lbrn;
 mod number;
 mod style;
 mod svg;
@@ -115,6 +116,17 @@ pub fn gcode(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
 pub fn dxf(_plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
     check::job(job)?;
     dxf::write(job, version)
+}
+
+/// LightBurn project (`.lbrn2`) of one job: one layer per operation with the material's
+/// speed, power, passes and (for perforation) LightBurn's perforation settings; see
+/// [`lbrn`](mod@lbrn) for the format and the LightBurn version followed.
+///
+/// # Errors
+/// [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
+pub fn lbrn2(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
+    check::job(job)?;
+    lbrn::write(plan, job, machine)
 }
 
 /// SVG of one job on `bed`, one Inkscape layer per operation; `dasharray` draws perforations

@@ -9,10 +9,13 @@
 //! (`G10 G43 G53 G55`–`G59.3 G92`), inverse-time feed `G93`. Any other G code is unknown.
 //!
 //! Recognised M codes: `M3 M4 M5` (laser), `M2 M30` (end), `M0 M1` (pause), `M7 M8 M9`
-//! (coolant, i.e. air assist: no effect), and on Marlin `M400` (wait), `M18 M84` (motors off)
-//! and `M106 M107` (fan: its `S` is the fan speed, not laser power).
+//! (coolant, i.e. air assist: a stop, no other effect), on LinuxCNC the motion outputs
+//! `M62 M63` (digital, synchronised with motion), `M64 M65` (digital, immediate), `M67`
+//! (analog, synchronised) and `M68` (analog, immediate), and on Marlin `M400` (wait),
+//! `M18 M84` (motors off) and `M106 M107` (fan: its `S` is the fan speed, not laser power).
 //!
-//! Letters: `N` (ignored), `G M X Y Z F S P`. Any other letter is unknown. A letter given twice
+//! Letters: `N` (ignored), `G M X Y Z F S P`, and on LinuxCNC `E Q` (output number and
+//! value of `M67`/`M68`). Any other letter is unknown. A letter given twice
 //! (other than G and M), or two codes of one modal group, is malformed.
 
 use super::parse::Word;
@@ -41,6 +44,14 @@ pub(crate) struct Block {
     pub end: bool,
     /// A code that makes the machine wait for motion to finish (`M0 M1 M400`).
     pub sync: bool,
+    /// LinuxCNC motion output: `Some(62)` … `Some(68)`.
+    pub output: Option<u32>,
+    /// `M7`/`M8`/`M9` present (air assist: waits for motion).
+    pub coolant: bool,
+    /// E word (LinuxCNC analog output number).
+    pub e: Option<f64>,
+    /// Q word (LinuxCNC analog output value).
+    pub q: Option<f64>,
     /// `M106`/`M107` present: `S` is a fan speed.
     pub fan: bool,
     /// `G64` present (`P` is a tolerance).
@@ -89,6 +100,8 @@ pub(crate) fn decode(words: &[Word], dialect: Dialect) -> Result<Block, BlockErr
             // Marlin's `M3/M4 … I1` turns on inline laser power (power follows each move's
             // `S`), which is how this simulator models every laser already.
             'I' if dialect == Dialect::Marlin => {}
+            'E' if dialect == Dialect::LinuxCnc => set(&mut b.e, w)?,
+            'Q' if dialect == Dialect::LinuxCnc => set(&mut b.q, w)?,
             other => {
                 return Err(error(
                     ViolationKind::UnknownWord,
@@ -171,7 +184,10 @@ fn m_code(b: &mut Block, c: Code, dialect: Dialect) -> Result<(), BlockError> {
         30 | 40 | 50 => once(&mut b.spindle, c / 10, "laser")?,
         20 | 300 => b.end = true,
         0 | 10 => b.sync = true,
-        70 | 80 | 90 => {}
+        70 | 80 | 90 => b.coolant = true,
+        620 | 630 | 640 | 650 | 670 | 680 if dialect == Dialect::LinuxCnc => {
+            once(&mut b.output, c / 10, "motion output")?;
+        }
         4000 if marlin => b.sync = true,
         180 | 840 if marlin => {}
         1060 | 1070 if marlin => b.fan = true,

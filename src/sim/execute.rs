@@ -11,8 +11,8 @@ use glam::DVec2;
 
 use super::block::Block;
 use super::report::{Burn, SimReport, Travel, ViolationKind};
-use crate::machine::motion::{Kinematics, Move, move_times};
-use crate::machine::{Dialect, DwellUnit, MachineKind, MachineProfile};
+use crate::machine::motion::{Kinematics, Move, Timeline};
+use crate::machine::{Dialect, DwellUnit, LaserOutput, MachineProfile};
 
 const MM_PER_INCH: f64 = 25.4;
 
@@ -27,7 +27,6 @@ enum Laser {
 /// The simulated machine.
 pub(crate) struct Machine<'a> {
     profile: &'a MachineProfile,
-    kin: Kinematics,
     /// Pen tool (plotter, drag knife) rather than laser.
     pen_tool: bool,
     pos: DVec2,
@@ -40,9 +39,14 @@ pub(crate) struct Machine<'a> {
     pen_down: bool,
     /// The tool burned at the end of the last event (for counting pierces).
     lit: bool,
-    /// Moves since the last stop, and where they start.
-    run: Vec<Move>,
-    run_start: DVec2,
+    /// LinuxCNC motion outputs: the profile's digital output and analog value (`S` units).
+    digital_out: bool,
+    analog_out: f64,
+    /// Synchronised output changes waiting for the next move (`M62`/`M63`, `M67`).
+    pending_digital: Option<bool>,
+    pending_analog: Option<f64>,
+    /// Moves since the last stop.
+    timeline: Timeline,
     /// `M2`/`M30` seen.
     pub ended: bool,
     /// What was found so far.
@@ -54,8 +58,7 @@ impl<'a> Machine<'a> {
     pub fn new(profile: &'a MachineProfile) -> Self {
         Machine {
             profile,
-            kin: Kinematics::of(profile),
-            pen_tool: profile.kind != MachineKind::Laser || profile.dialect == Dialect::Plotter,
+            pen_tool: profile.pen_tool(),
             pos: DVec2::ZERO,
             inches: false,
             relative: false,
@@ -65,8 +68,11 @@ impl<'a> Machine<'a> {
             laser: Laser::Off,
             pen_down: false,
             lit: false,
-            run: Vec::new(),
-            run_start: DVec2::ZERO,
+            digital_out: false,
+            analog_out: 0.0,
+            pending_digital: None,
+            pending_analog: None,
+            timeline: Timeline::new(Kinematics::of(profile), DVec2::ZERO),
             ended: false,
             report: SimReport::new(&profile.name, profile.dialect, profile.power),
         }
@@ -91,9 +97,15 @@ impl<'a> Machine<'a> {
         if let Some(m) = b.spindle {
             self.set_laser(m);
         }
+        if b.coolant {
+            self.stop();
+        }
+        if let Some(m) = b.output {
+            self.set_output(line, m, b);
+        }
         if b.dwell {
             self.dwell(line, b);
-        } else if b.p.is_some() && !b.blend && !b.fan {
+        } else if b.p.is_some() && !b.blend && !b.fan && b.output.is_none() {
             let msg = "P without G4 or G64 has no meaning here";
             self.report.flag(line, ViolationKind::UnknownWord, msg);
         }
@@ -132,10 +144,7 @@ impl<'a> Machine<'a> {
 
     /// Brings the machine to rest: times the moves since the last stop.
     pub fn stop(&mut self) {
-        let times = move_times(self.run_start, &self.run, &self.kin);
-        self.report.time_s += times.iter().sum::<f64>();
-        self.run.clear();
-        self.run_start = self.pos;
+        self.report.time_s += self.timeline.stop();
     }
 
     fn marlin(&self) -> bool {
@@ -195,7 +204,8 @@ impl<'a> Machine<'a> {
         if self.pen_tool {
             return self.pen_down;
         }
-        let on = self.laser != Laser::Off && self.power > self.profile.power.min;
+        let spindle = self.laser != Laser::Off && self.power > self.profile.power.min;
+        let on = spindle || self.output_on();
         // GRBL's laser mode blanks the output during G0; Marlin and LinuxCNC do not.
         on && !(rapid && self.profile.dialect == Dialect::Grbl)
     }
@@ -270,8 +280,9 @@ impl<'a> Machine<'a> {
                 self.profile.max_feed_mm_min
             }
         };
+        self.apply_pending();
         self.record(line, to, rapid, feed);
-        self.run.push(Move {
+        self.timeline.push(Move {
             to,
             feed_mm_min: feed,
             rapid,
@@ -292,7 +303,7 @@ impl<'a> Machine<'a> {
             if !self.lit {
                 self.report.pierces += 1;
             }
-            let power = if self.pen_tool { 0.0 } else { self.power };
+            let power = self.beam_power();
             let feed_mm_min = feed;
             let burn = Burn {
                 line,
@@ -306,6 +317,99 @@ impl<'a> Machine<'a> {
             self.report.add_travel(Travel { line, from, to });
         }
         self.lit = burning;
+    }
+
+    /// A LinuxCNC motion output word (`M62`–`M68`). Only the profile's output number
+    /// (`output_number`, of the kind `laser_output` names) drives the beam; the others are
+    /// read and ignored. Immediate forms (`M64 M65 M68`) wait for motion; synchronised ones
+    /// (`M62 M63 M67`) change at the start of the next move.
+    fn set_output(&mut self, line: usize, m: u32, b: &super::block::Block) {
+        let ours = f64::from(self.profile.control.output_number);
+        let number = if matches!(m, 67 | 68) { b.e } else { b.p };
+        let Some(number) = number else {
+            let letter = if matches!(m, 67 | 68) { 'E' } else { 'P' };
+            let msg = format!("M{m} needs {letter}, the output number");
+            self.report.flag(line, ViolationKind::Malformed, msg);
+            return;
+        };
+        let value = if matches!(m, 67 | 68) {
+            let Some(q) = b.q else {
+                let msg = format!("M{m} needs Q, the output value");
+                self.report.flag(line, ViolationKind::Malformed, msg);
+                return;
+            };
+            let range = self.profile.power;
+            if !(range.min..=range.max).contains(&q) && q != 0.0 {
+                let msg = format!(
+                    "power Q{q} is outside the range {} to {}",
+                    range.min, range.max
+                );
+                self.report.flag(line, ViolationKind::PowerOutOfRange, msg);
+            }
+            q.clamp(0.0, range.max)
+        } else {
+            0.0
+        };
+        if number != ours {
+            return;
+        }
+        match m {
+            62 | 63 => self.pending_digital = Some(m == 62),
+            64 | 65 => {
+                self.stop();
+                self.pending_digital = None;
+                self.digital_out = m == 64;
+            }
+            67 => self.pending_analog = Some(value),
+            _ => {
+                self.stop();
+                self.pending_analog = None;
+                self.analog_out = value;
+            }
+        }
+        if !self.tool_on(false) {
+            self.lit = false;
+        }
+    }
+
+    /// Synchronised output changes take effect as the next move starts.
+    fn apply_pending(&mut self) {
+        if let Some(d) = self.pending_digital.take() {
+            self.digital_out = d;
+        }
+        if let Some(a) = self.pending_analog.take() {
+            self.analog_out = a;
+        }
+        if !self.tool_on(false) {
+            self.lit = false;
+        }
+    }
+
+    /// The beam is on through the profile's LinuxCNC motion output.
+    fn output_on(&self) -> bool {
+        if self.profile.dialect != Dialect::LinuxCnc {
+            return false;
+        }
+        match self.profile.control.laser_output {
+            LaserOutput::Spindle => false,
+            LaserOutput::Digital => self.digital_out,
+            LaserOutput::Analog => self.analog_out > self.profile.power.min,
+        }
+    }
+
+    /// The power a burn carries: 0 for a pen, the analog output or full power (a digital
+    /// gate) for a LinuxCNC motion output, else `S`.
+    fn beam_power(&self) -> f64 {
+        if self.pen_tool {
+            0.0
+        } else if self.output_on() {
+            match self.profile.control.laser_output {
+                LaserOutput::Analog => self.analog_out,
+                _ => self.profile.power.max,
+            }
+        } else {
+            self.power
+        }
     }
 
     fn flag_lit_travel(&mut self, line: usize) {

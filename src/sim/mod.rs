@@ -26,7 +26,12 @@
 //!   (`lit_dwell_s`), except GRBL `M4`, whose power follows speed and is zero at rest.
 //! - **Time** is the acceleration model of [`crate::machine::motion`], over runs of moves
 //!   separated by stops: a dwell, a change of laser state (`M3 M4 M5`), a pen command, `M0 M1
-//!   M400`, a `$` command, the end. `S` changes inline do not stop.
+//!   M400`, coolant (`M7 M8 M9`), LinuxCNC's immediate outputs (`M64 M65 M68`), a `$`
+//!   command, the end. `S` changes inline and LinuxCNC's synchronised outputs (`M62 M63 M67`,
+//!   applied at the start of the next move) do not stop.
+//! - **LinuxCNC motion outputs.** The profile's `laser_output` and `output_number` say which
+//!   output carries the beam: a digital one is on or off (burns at full power), an analog one
+//!   carries the power in `S` units (on above the power minimum).
 //! - **Violations** (each with its line): a move ending outside the bed `[0, w] × [0, h]`
 //!   (half the resolution of slack), lit travel, `S` outside the profile's power range, a feed
 //!   above the maximum, a feed move before any `F`, unknown words and codes, unsupported

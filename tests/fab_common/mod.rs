@@ -31,6 +31,8 @@ pub fn options() -> PlanOptions {
         lead_in_mm: None,
         margin_mm: 5.0,
         optimize: true,
+        notes: Vec::new(),
+        placement: Default::default(),
     }
 }
 

@@ -77,7 +77,7 @@ fn wrong_types_are_refused_with_the_value() {
         "bed.y_flipped",
         &["true or false", "\"no\""],
     );
-    let text = machine_edit("preamble = [\"G21\"", "preamble = [21");
+    let text = machine_edit("preamble = [\"G94\"", "preamble = [21");
     assert_error(
         parse_machine(&text, SOURCE),
         "preamble[0]",

@@ -17,6 +17,12 @@ impl GrblLaser {
 }
 
 impl Flavour for GrblLaser {
+    fn expectation(&self) -> Option<&'static str> {
+        Some(
+            "expects GRBL laser mode $32=1 (G0 blanks the beam, S changes without stopping); \
+             S scales between $31 and $30",
+        )
+    }
     fn uses_power(&self) -> bool {
         true
     }

@@ -1,10 +1,24 @@
-//! LinuxCNC (rs274ngc): `M3 S…` before and `M5` after every stroke, parenthesised comments.
+//! LinuxCNC (rs274ngc): the beam switched through the spindle (`M3 S…`/`M5`, an exact stop
+//! at every switch) or through motion-synchronised outputs (`M62`/`M63 P<n>` digital,
+//! `M67 E<n> Q<power>` analog) that change at the start of the next move without stopping.
+//! Parenthesised comments.
 
 use super::{Flavour, one_line};
+use crate::machine::LaserOutput;
 
-/// A LinuxCNC laser switched through the spindle.
+/// A LinuxCNC laser.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct LinuxCncLaser;
+pub struct LinuxCncLaser {
+    output: LaserOutput,
+    number: u32,
+}
+
+impl LinuxCncLaser {
+    /// A laser switched by `output` number `number` (`P` or `E`; unused for the spindle).
+    pub fn new(output: LaserOutput, number: u32) -> Self {
+        LinuxCncLaser { output, number }
+    }
+}
 
 /// `text` as a LinuxCNC comment: parentheses cannot nest, so inner ones become brackets.
 pub fn paren_comment(text: &str) -> String {
@@ -16,25 +30,68 @@ impl Flavour for LinuxCncLaser {
     fn comment(&self, text: &str) -> String {
         paren_comment(text)
     }
+    fn expectation(&self) -> Option<&'static str> {
+        match self.output {
+            LaserOutput::Spindle => Some(
+                "beam on the spindle output: LinuxCNC stops motion at every M3/M5, \
+                 set laser_output to digital or analog to switch without stopping",
+            ),
+            LaserOutput::Digital => Some(
+                "beam gated by motion.digital-out-NN [M62/M63, synchronised to motion], \
+                 power is set on the source",
+            ),
+            LaserOutput::Analog => Some(
+                "beam power on motion.analog-out-NN [M67, synchronised to motion], \
+                 in S units, zero is off",
+            ),
+        }
+    }
     fn uses_power(&self) -> bool {
-        true
+        self.output != LaserOutput::Digital
     }
     fn start(&self) -> Vec<String> {
-        vec!["M5".into()]
+        vec![self.off_now()]
     }
     fn tool_on(&self, s: &str) -> Vec<String> {
-        vec![format!("M3 S{s}")]
+        let n = self.number;
+        vec![match self.output {
+            LaserOutput::Spindle => format!("M3 S{s}"),
+            LaserOutput::Digital => format!("M62 P{n}"),
+            LaserOutput::Analog => format!("M67 E{n} Q{s}"),
+        }]
     }
     fn burn_word(&self, _s: &str) -> Option<String> {
         None
     }
     fn tool_off(&self) -> Vec<String> {
-        vec!["M5".into()]
+        let n = self.number;
+        vec![match self.output {
+            LaserOutput::Spindle => "M5".to_string(),
+            LaserOutput::Digital => format!("M63 P{n}"),
+            LaserOutput::Analog => format!("M67 E{n} Q0"),
+        }]
     }
     fn finish(&self) -> Vec<String> {
-        Vec::new()
+        // A synchronised off takes effect at the next move; none follows the last stroke, so
+        // the immediate form (which waits for motion to finish) makes sure.
+        match self.output {
+            LaserOutput::Spindle => Vec::new(),
+            _ => vec![self.off_now()],
+        }
     }
     fn program_end(&self) -> Option<&str> {
         Some("M2")
+    }
+}
+
+impl LinuxCncLaser {
+    /// The output off at once (after motion finishes): `M5`, `M65 P<n>` or `M68 E<n> Q0`.
+    fn off_now(&self) -> String {
+        let n = self.number;
+        match self.output {
+            LaserOutput::Spindle => "M5".to_string(),
+            LaserOutput::Digital => format!("M65 P{n}"),
+            LaserOutput::Analog => format!("M68 E{n} Q0"),
+        }
     }
 }

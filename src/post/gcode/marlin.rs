@@ -24,6 +24,9 @@ impl MarlinLaser {
 }
 
 impl Flavour for MarlinLaser {
+    fn expectation(&self) -> Option<&'static str> {
+        Some("expects Marlin with LASER_FEATURE, LASER_POWER_INLINE and LASER_MOVE_POWER")
+    }
     fn uses_power(&self) -> bool {
         self.inline.uses_power()
     }

@@ -1,9 +1,14 @@
 //! G-code writers: GRBL, Marlin, LinuxCNC and pen plotters.
 //!
-//! Every program is millimetres (`G21`) and absolute (`G90`); the dialect's arming line (laser
-//! at zero power, or pen up) follows, then the machine's preamble, then one comment per group of toolpaths of one operation
-//! (`; cut`, or `(cut)` on LinuxCNC), the toolpaths, the tool made safe, the postamble and the
-//! dialect's program end. Travel is `G0`, burns are `G1`.
+//! Every program opens with a title comment and a comment saying what the firmware must be set
+//! to (GRBL laser mode `$32=1`, a plotter's `$32=0`, Marlin's build options, LinuxCNC's
+//! output), then millimetres (`G21`) and absolute (`G90`) once, the dialect's arming line (laser
+//! at zero power, or pen up), then the machine's preamble without the lines already written,
+//! then one comment per group of toolpaths of one operation (`; cut`, or `(cut)` on LinuxCNC)
+//! with the air-assist word when it changes (`M7`/`M8`/`M9`, see
+//! [`crate::machine::MachineControl`]) and, on a plotter, the pen-change lines (`M0`) between
+//! groups; the toolpaths, the tool made safe, air off, the postamble without the lines already
+//! written, and the dialect's program end, once. Travel is `G0`, burns are `G1`.
 //!
 //! **Numbers.** Coordinates are rounded to the machine's `resolution_mm` and printed exactly
 //! (see `number`): no float noise, no `-0`, no exponents. Moves that round to zero length are
@@ -31,9 +36,12 @@
 //!   `LASER_MOVE_POWER`, Marlin 2.0.8 or later). Marlin's `G0` shares the modal feed with
 //!   `G1` unless built with `VARIABLE_G0_FEEDRATE`, so travel writes `F<travel feed>` and the
 //!   next burn its own `F` again. `M5` at the end; Marlin has no `M2`.
-//! - LinuxCNC ([`linuxcnc`]): no laser mode, and the spindle output stays on through `G0`, so
-//!   each stroke is framed `M3 S<power>` … `M5`. Motion stops there anyway (the tool must be
-//!   off for the travel that follows). Comments use parentheses; `M2` ends the program; no `%`
+//! - LinuxCNC ([`linuxcnc`]): no laser mode; the profile's `laser_output` frames each stroke
+//!   with `M3 S<power>` … `M5` (the spindle: LinuxCNC stops motion at each, so every dash is
+//!   an exact stop), `M62 P<n>` … `M63 P<n>` (a digital output) or `M67 E<n> Q<power>` …
+//!   `M67 E<n> Q0` (an analog output); the motion outputs are synchronised: they change at the
+//!   start of the next move, without stopping. The immediate `M65`/`M68` turn the output off
+//!   at the start and the end. Comments use parentheses; `M2` ends the program; no `%`
 //!   framing. `M3` is used for both laser modes (`M4` is reverse rotation on LinuxCNC).
 //! - Pen plotters ([`plotter`]), chosen by the `Plotter` dialect or by a machine that is not a
 //!   laser: the profile's `pen_up` lines before every travel (and at the start and end), its
@@ -58,6 +66,10 @@ pub trait Flavour {
     /// A comment line holding `text`.
     fn comment(&self, text: &str) -> String {
         format!("; {}", one_line(text))
+    }
+    /// What the firmware must be set to for this program, for the header comment.
+    fn expectation(&self) -> Option<&'static str> {
+        None
     }
     /// Whether burns use the `S` (power) word.
     fn uses_power(&self) -> bool;
@@ -107,8 +119,27 @@ pub fn flavour(machine: &MachineProfile) -> Result<Box<dyn Flavour>, PostError> 
         (Dialect::Plotter, _) | (_, true) => Box::new(plotter::Pen::new(machine)),
         (Dialect::Grbl, false) => Box::new(grbl::GrblLaser::new(machine.laser_mode)),
         (Dialect::Marlin, false) => Box::new(marlin::MarlinLaser::new(machine.laser_mode)),
-        (Dialect::LinuxCnc, false) => Box::new(linuxcnc::LinuxCncLaser),
+        (Dialect::LinuxCnc, false) => Box::new(linuxcnc::LinuxCncLaser::new(
+            machine.control.laser_output,
+            machine.control.output_number,
+        )),
     })
+}
+
+/// A command line compared loosely: comments and blanks removed, upper case.
+pub fn normalize(line: &str) -> String {
+    let mut out = String::new();
+    let mut depth = 0;
+    for c in line.chars() {
+        match c {
+            ';' if depth == 0 => break,
+            '(' => depth += 1,
+            ')' if depth > 0 => depth -= 1,
+            _ if depth == 0 && !c.is_whitespace() => out.push(c.to_ascii_uppercase()),
+            _ => {}
+        }
+    }
+    out
 }
 
 /// `text` on one line: control characters become spaces.

@@ -11,6 +11,7 @@ pub struct Pen {
     up: Vec<String>,
     down: Vec<String>,
     parenthesised: bool,
+    grbl_style: bool,
     travel_feed: bool,
     end: Option<&'static str>,
 }
@@ -25,6 +26,7 @@ impl Pen {
             up: with_dwell(&machine.pen_up),
             down: with_dwell(&machine.pen_down),
             parenthesised: machine.dialect == Dialect::LinuxCnc,
+            grbl_style: matches!(machine.dialect, Dialect::Plotter | Dialect::Grbl),
             travel_feed: machine.dialect == Dialect::Marlin,
             end: (machine.dialect != Dialect::Marlin).then_some("M2"),
         }
@@ -47,6 +49,12 @@ impl Flavour for Pen {
         } else {
             format!("; {}", super::one_line(text))
         }
+    }
+    fn expectation(&self) -> Option<&'static str> {
+        self.grbl_style.then_some(
+            "expects GRBL laser mode off, $32=0: in laser mode G0 blanks the spindle output \
+             that drives the pen",
+        )
     }
     fn uses_power(&self) -> bool {
         false

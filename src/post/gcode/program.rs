@@ -7,6 +7,20 @@ use super::super::number::{Grid, fixed};
 use super::Flavour;
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
 use crate::machine::MachineProfile;
+use crate::machine::control::AIR_OFF;
+
+/// Units and distance mode, written once at the top of every program.
+const HEADER: [&str; 2] = ["G21", "G90"];
+
+/// `lines` without those equal to one of `written` (case, blanks and comments aside).
+fn without(lines: &[String], written: &[String]) -> Vec<String> {
+    let done: Vec<String> = written.iter().map(|l| super::normalize(l)).collect();
+    lines
+        .iter()
+        .filter(|l| !done.contains(&super::normalize(l)))
+        .cloned()
+        .collect()
+}
 
 /// Decimals of printed feeds and powers.
 const WORD_DECIMALS: usize = 3;
@@ -24,6 +38,10 @@ struct Program<'a> {
     burned: usize,
     /// ` F…` for travel moves, when the dialect needs it.
     travel_feed: String,
+    /// Air assist is on.
+    air: bool,
+    /// Operation groups written so far.
+    layers: usize,
 }
 
 /// Feed written on travel moves when the dialect shares `G0`'s feed with `G1`.
@@ -61,11 +79,14 @@ pub fn write(
         } else {
             String::new()
         },
+        air: false,
+        layers: 0,
     };
     p.header(job, machine);
     let mut group = None;
     for path in &job.paths {
-        p.toolpath(path, &burn(plan, path.op, machine), &mut group);
+        let burn = burn(plan, path.op, machine);
+        p.toolpath(path, &burn, machine, &mut group);
     }
     if p.burned == 0 {
         return Err(PostError::EmptyJob {
@@ -78,7 +99,7 @@ pub fn write(
 
 /// Feed and power of `op` on `machine`.
 fn burn(plan: &FabPlan, op: Operation, machine: &MachineProfile) -> Burn {
-    let s = plan.settings.get(op);
+    let s = machine.settings_for(&plan.settings, op);
     let feed = s.speed_mm_min.min(machine.max_feed_mm_min);
     let power = machine.power.min + s.power * (machine.power.max - machine.power.min);
     Burn {
@@ -89,33 +110,70 @@ fn burn(plan: &FabPlan, op: Operation, machine: &MachineProfile) -> Burn {
 }
 
 impl Program<'_> {
-    /// Title comment, units, absolute mode, arming (laser at zero or pen up), preamble.
+    /// Title comment, what the firmware must be set to, units, absolute mode, arming (laser
+    /// at zero or pen up), then the profile's preamble without the lines already written.
     fn header(&mut self, job: &Job, machine: &MachineProfile) {
         let title = format!("foldcam: job {} for machine {}", job.name, machine.name);
         self.lines.push(self.flavour.comment(&title));
-        self.lines.extend(["G21".to_string(), "G90".to_string()]);
-        self.lines.extend(self.flavour.start());
-        self.lines.extend(machine.preamble.iter().cloned());
+        if let Some(note) = self.flavour.expectation() {
+            self.lines.push(self.flavour.comment(note));
+        }
+        let mut written: Vec<String> = HEADER.iter().map(|s| s.to_string()).collect();
+        written.extend(self.flavour.start());
+        self.lines.extend(written.iter().cloned());
+        let preamble = without(&machine.preamble, &written);
+        self.lines.extend(preamble);
     }
 
-    /// Tool safe, postamble, program end.
+    /// Tool safe, air off, the profile's postamble without the lines already written, and
+    /// the program end (once, last).
     fn trailer(&mut self, machine: &MachineProfile) {
-        self.lines.extend(self.flavour.finish());
-        self.lines.extend(machine.postamble.iter().cloned());
-        if let Some(end) = self.flavour.program_end() {
+        let mut written = self.flavour.finish();
+        if self.air {
+            written.push(AIR_OFF.to_string());
+        }
+        self.lines.extend(written.iter().cloned());
+        written.extend(self.flavour.tool_off());
+        let end = self.flavour.program_end();
+        written.extend(end.map(str::to_string));
+        self.lines.extend(without(&machine.postamble, &written));
+        if let Some(end) = end {
             self.lines.push(end.to_string());
         }
     }
 
-    /// All passes of one toolpath, after its group comment when the operation changes.
-    fn toolpath(&mut self, path: &Toolpath, burn: &Burn, group: &mut Option<Operation>) {
+    /// All passes of one toolpath, after its group comment when the operation changes (and,
+    /// between groups, the air switched and a plotter's pen-change pause).
+    fn toolpath(
+        &mut self,
+        path: &Toolpath,
+        burn: &Burn,
+        machine: &MachineProfile,
+        group: &mut Option<Operation>,
+    ) {
         let strokes: Vec<_> = path.strokes.iter().filter_map(|s| self.snap(s)).collect();
         if strokes.is_empty() {
             return;
         }
         if *group != Some(path.op) {
+            if self.layers > 0 && machine.pauses_between_layers() {
+                let note = format!("change the pen for layer {}, then resume", path.op.name());
+                self.lines.push(self.flavour.comment(&note));
+                self.lines
+                    .extend(machine.control.pen_change.iter().cloned());
+            }
             self.lines.push(self.flavour.comment(path.op.name()));
+            let air = machine.air_for(path.op);
+            if air != self.air {
+                let word = match (&machine.control.air_assist, air) {
+                    (Some(a), true) => a.on,
+                    _ => AIR_OFF,
+                };
+                self.lines.push(word.to_string());
+                self.air = air;
+            }
             *group = Some(path.op);
+            self.layers += 1;
         }
         for _ in 0..burn.passes {
             for stroke in &strokes {

@@ -1,0 +1,130 @@
+//! How long a job takes on its machine: the plan's estimate, with the motion model the
+//! simulated machine uses ([`crate::machine::motion`]) over the program the G-code writer
+//! makes of the job.
+//!
+//! The job is walked in the writer's order: the arming (pen up and its delay on a plotter),
+//! the profile's preamble, then per toolpath and pass every stroke — a rapid to its start
+//! unless the tool is already there, the tool switched on, the burns at the operation's feed
+//! (capped at the machine's maximum), the tool switched off — with, between operations, the
+//! air assist switched and a plotter's pen-change pause; then the postamble. What switching
+//! costs comes from the profile ([`MachineProfile::switch_cost`]): pens stop and wait their
+//! delay, LinuxCNC's spindle words stop, GRBL's and Marlin's inline power and LinuxCNC's
+//! synchronised outputs do not. Coolant words (air assist) and pauses stop. The profile's
+//! own lines are read with [`crate::machine::commands::effects`].
+//!
+//! Not counted: the operator's time at a pause, spindle or source start-up delays. Cost
+//! O(points).
+
+use glam::DVec2;
+
+use super::{Job, Operation};
+use crate::machine::commands::{Effect, effects};
+use crate::machine::motion::{Kinematics, Move, Timeline};
+use crate::machine::{MachineProfile, SettingsByOperation};
+
+/// Seconds to run `job` on `machine` with `settings`, from rest at the machine origin.
+pub fn job_time(job: &Job, settings: &SettingsByOperation, machine: &MachineProfile) -> f64 {
+    let mut clock = Clock {
+        timeline: Timeline::new(Kinematics::of(machine), DVec2::ZERO),
+        seconds: 0.0,
+        machine,
+    };
+    let cost = machine.switch_cost();
+    let pen = machine.pen_tool();
+    let same = machine.resolution_mm / 2.0;
+    // Arming: the laser at zero (a stop) or the pen up with its delay.
+    clock.switch(pen, &machine.pen_up, cost.dwell_s, true);
+    clock.lines(&machine.preamble);
+    let mut group: Option<Operation> = None;
+    let mut air = false;
+    for path in &job.paths {
+        let strokes: Vec<&Vec<DVec2>> = path
+            .strokes
+            .iter()
+            .filter(|s| s.windows(2).any(|w| w[0].distance(w[1]) > same))
+            .collect();
+        if strokes.is_empty() {
+            continue;
+        }
+        if group != Some(path.op) {
+            if group.is_some() && machine.pauses_between_layers() {
+                clock.lines(&machine.control.pen_change);
+            }
+            if machine.air_for(path.op) != air {
+                air = !air;
+                clock.stop();
+            }
+            group = Some(path.op);
+        }
+        let s = machine.settings_for(settings, path.op);
+        for _ in 0..s.passes {
+            for stroke in &strokes {
+                if clock.timeline.at().distance(stroke[0]) > same {
+                    clock.go(stroke[0], true, 0.0);
+                }
+                clock.switch(pen, &machine.pen_down, cost.dwell_s, cost.stops);
+                for &p in &stroke[1..] {
+                    clock.go(p, false, s.speed_mm_min);
+                }
+                clock.switch(pen, &machine.pen_up, cost.dwell_s, cost.stops);
+            }
+        }
+    }
+    clock.stop();
+    clock.lines(&machine.postamble);
+    clock.stop();
+    clock.seconds
+}
+
+/// A timeline with the seconds of its finished runs and dwells.
+struct Clock<'a> {
+    timeline: Timeline,
+    seconds: f64,
+    machine: &'a MachineProfile,
+}
+
+impl Clock<'_> {
+    fn stop(&mut self) {
+        self.seconds += self.timeline.stop();
+    }
+
+    fn dwell(&mut self, s: f64) {
+        self.stop();
+        self.seconds += s;
+    }
+
+    fn go(&mut self, to: DVec2, rapid: bool, feed_mm_min: f64) {
+        self.timeline.push(Move {
+            to,
+            feed_mm_min,
+            rapid,
+        });
+    }
+
+    /// A tool switch: a pen's command lines and delay, or a laser's stop when `stops`.
+    fn switch(&mut self, pen: bool, pen_lines: &[String], delay_s: f64, stops: bool) {
+        if pen {
+            self.lines(pen_lines);
+            if delay_s > 0.0 {
+                self.dwell(delay_s);
+            }
+        } else if stops {
+            self.stop();
+        }
+    }
+
+    /// The profile's command lines.
+    fn lines(&mut self, lines: &[String]) {
+        for e in effects(lines, self.timeline.at(), self.machine) {
+            match e {
+                Effect::Move {
+                    to,
+                    rapid,
+                    feed_mm_min,
+                } => self.go(to, rapid, feed_mm_min),
+                Effect::Dwell(s) => self.dwell(s),
+                Effect::Stop => self.stop(),
+            }
+        }
+    }
+}

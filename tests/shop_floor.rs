@@ -1,0 +1,426 @@
+//! Ready for the shop floor: plan's time against the simulated machine reading the written
+//! file, LinuxCNC lasers without spindle words, one preamble and one end per job, plotter
+//! layers with a pen-change pause, air assist, the firmware expectations in the header.
+
+use std::path::PathBuf;
+
+use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
+use foldcam::fab::{FabPlan, PlanOptions, plan};
+use foldcam::machine::{
+    LaserOutput, MachineProfile, Material, load_machine, load_material, shipped_machines,
+};
+use foldcam::pattern::{CreasePattern, PlanarizeOptions, planarize};
+use foldcam::post;
+use foldcam::sim;
+
+/// Largest relative difference between plan's time and the simulated machine's.
+const TIME_TOLERANCE: f64 = 0.02;
+
+fn sized(mut cp: CreasePattern, size: f64) -> CreasePattern {
+    let (lo, hi) = cp.bounds().expect("vertices");
+    cp.scale_to_mm(size / (hi - lo).max_element());
+    cp
+}
+
+/// The classic generators at their defaults and the bundled example patterns (sized 120 mm).
+fn examples() -> Vec<(String, CreasePattern)> {
+    let mut out: Vec<(String, CreasePattern)> = vec![
+        ("miura".into(), MiuraOri::default().build().expect("miura")),
+        (
+            "twist".into(),
+            SquareTwist::default().build().expect("twist"),
+        ),
+        (
+            "waterbomb".into(),
+            Waterbomb::default().build().expect("wb"),
+        ),
+        (
+            "yoshimura".into(),
+            Yoshimura::default().build().expect("yo"),
+        ),
+    ];
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/patterns");
+    for name in ["flat-vertex.fold", "preliminary-base.cp"] {
+        let mut cp = foldcam::formats::load(&root.join(name))
+            .unwrap_or_else(|e| panic!("{e}"))
+            .pattern;
+        planarize(&mut cp, &PlanarizeOptions::default()).expect("planarises");
+        out.push((name.into(), sized(cp, 120.0)));
+    }
+    out
+}
+
+fn material_for(machine: &MachineProfile) -> Vec<Material> {
+    let names: &[&str] = if machine.dialect == foldcam::machine::Dialect::LinuxCnc {
+        &["stainless-0.5"]
+    } else {
+        &["card-300gsm", "paper-160gsm"]
+    };
+    names
+        .iter()
+        .map(|n| load_material(n).expect("shipped"))
+        .collect()
+}
+
+fn planned(cp: &CreasePattern, machine: &MachineProfile, material: &Material) -> FabPlan {
+    let mut o = PlanOptions::from_material(material);
+    o.adapt_to_machine(machine).expect("adapts");
+    plan(cp, machine, material, &o).expect("plans")
+}
+
+/// Every job of `p` written and run on the simulated machine: total seconds, and the texts.
+fn simulated(p: &FabPlan, machine: &MachineProfile) -> (f64, Vec<String>) {
+    let mut total = 0.0;
+    let mut texts = Vec::new();
+    for job in &p.jobs {
+        let text = post::gcode(p, job, machine).expect("G-code");
+        let run = sim::run(&text, machine).expect("readable");
+        assert!(
+            run.is_clean(),
+            "{}: {:?}",
+            machine.name,
+            run.violations.first()
+        );
+        total += run.time_s;
+        texts.push(text);
+    }
+    (total, texts)
+}
+
+#[test]
+fn plan_time_is_within_two_percent_of_the_simulated_machine_everywhere() {
+    let mut checked = 0;
+    for name in shipped_machines() {
+        let machine = load_machine(name).expect("shipped");
+        if !machine.emits_gcode() {
+            continue;
+        }
+        for material in material_for(&machine) {
+            for (pattern, cp) in examples() {
+                let p = planned(&cp, &machine, &material);
+                let (sim_s, _) = simulated(&p, &machine);
+                let plan_s = p.stats.time_s;
+                let diff = (plan_s - sim_s).abs() / sim_s;
+                assert!(
+                    diff <= TIME_TOLERANCE,
+                    "{name}/{}/{pattern}: plan {plan_s:.2} s, simulated {sim_s:.2} s",
+                    material.name
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 3 * 2 * 6 + 6, "checked {checked}");
+}
+
+fn normalized(text: &str) -> Vec<String> {
+    text.lines()
+        .map(foldcam::post::gcode::normalize)
+        .filter(|l| !l.is_empty())
+        .collect()
+}
+
+#[test]
+fn linuxcnc_perforations_run_on_synchronised_outputs_without_spindle_words() {
+    let cp = MiuraOri::default().build().expect("miura");
+    let analog = load_machine("linuxcnc-fiber").expect("shipped");
+    assert_eq!(analog.control.laser_output, LaserOutput::Analog);
+    let material = load_material("stainless-0.5").expect("shipped");
+    let p = planned(&cp, &analog, &material);
+    let (analog_s, texts) = simulated(&p, &analog);
+    let lines = normalized(&texts[0]);
+    let spindle_words = lines
+        .iter()
+        .filter(|l| l.starts_with("M3") || l.starts_with("M5"))
+        .count();
+    assert_eq!(spindle_words, 0);
+    // One synchronised power-on per perforation dash and cut stroke (passes included).
+    let strokes: usize = p.jobs[0]
+        .paths
+        .iter()
+        .map(|t| t.strokes.len() * p.settings.get(t.op).passes as usize)
+        .sum();
+    let on = lines
+        .iter()
+        .filter(|l| l.starts_with("M67E0Q") && *l != "M67E0Q0")
+        .count();
+    assert_eq!(on, strokes);
+    // The same job switched through the spindle stops at every dash: the simulated machine
+    // must take markedly longer (LinuxCNC 2.9 measured +43% on a Miura-ori).
+    let spindle = MachineProfile {
+        control: foldcam::machine::MachineControl {
+            laser_output: LaserOutput::Spindle,
+            ..analog.control.clone()
+        },
+        ..analog.clone()
+    };
+    let (spindle_s, spindle_texts) = simulated(&p, &spindle);
+    assert!(normalized(&spindle_texts[0]).iter().any(|l| l == "M5"));
+    assert!(spindle_s > 1.3 * analog_s, "{spindle_s} vs {analog_s}");
+    // A digital gate burns the same lengths as the analog output.
+    let digital = MachineProfile {
+        control: foldcam::machine::MachineControl {
+            laser_output: LaserOutput::Digital,
+            ..analog.control.clone()
+        },
+        ..analog.clone()
+    };
+    let a = sim::run(&texts[0], &analog).expect("readable");
+    let text = post::gcode(&p, &p.jobs[0], &digital).expect("G-code");
+    assert!(normalized(&text).iter().any(|l| l == "M62P0"));
+    let d = sim::run(&text, &digital).expect("readable");
+    assert!(d.is_clean());
+    assert_eq!(d.pierces, a.pierces);
+    assert!((d.burn_length_mm - a.burn_length_mm).abs() < 1e-6);
+    // Assist gas on for the cuts and perforations, off at the end.
+    assert!(lines.contains(&"M8".to_string()));
+    let m9 = lines.iter().rposition(|l| l == "M9").expect("air off");
+    assert!(lines.iter().rposition(|l| l == "M8").expect("air on") < m9);
+}
+
+#[test]
+fn every_job_has_one_preamble_and_one_end() {
+    let cp = SquareTwist::default().build().expect("twist");
+    for name in shipped_machines() {
+        let machine = load_machine(name).expect("shipped");
+        if !machine.emits_gcode() {
+            continue;
+        }
+        let material = &material_for(&machine)[0];
+        let p = planned(&cp, &machine, material);
+        let (_, texts) = simulated(&p, &machine);
+        let lines = normalized(&texts[0]);
+        let count = |w: &str| lines.iter().filter(|l| *l == w).count();
+        assert_eq!((count("G21"), count("G90")), (1, 1), "{name}");
+        let end = machine.dialect != foldcam::machine::Dialect::Marlin;
+        assert_eq!(count("M2"), usize::from(end), "{name}");
+        if end {
+            assert_eq!(lines.last().map(String::as_str), Some("M2"), "{name}");
+        }
+        let tail: Vec<_> = lines.iter().rev().take(4).collect();
+        assert!(
+            tail.windows(2).all(|w| w[0] != w[1]),
+            "{name}: repeated lines at the end {tail:?}"
+        );
+    }
+}
+
+#[test]
+fn headers_state_what_the_firmware_must_be_set_to() {
+    let cp = SquareTwist::default().build().expect("twist");
+    for (name, expect) in [("grbl-diode", "$32=1"), ("grbl-pen-plotter", "$32=0")] {
+        let machine = load_machine(name).expect("shipped");
+        let p = planned(
+            &cp,
+            &machine,
+            &load_material("card-300gsm").expect("shipped"),
+        );
+        let (_, texts) = simulated(&p, &machine);
+        let comment = texts[0]
+            .lines()
+            .take(3)
+            .find(|l| l.starts_with(';') && l.contains(expect));
+        assert!(comment.is_some(), "{name}: no {expect} in the header");
+    }
+}
+
+#[test]
+fn plotters_draw_mountains_and_valleys_on_separate_layers_with_a_pause() {
+    let cp = MiuraOri::default().build().expect("miura");
+    let machine = load_machine("grbl-pen-plotter").expect("shipped");
+    let p = planned(
+        &cp,
+        &machine,
+        &load_material("card-300gsm").expect("shipped"),
+    );
+    assert!(p.warnings.iter().any(|w| w.contains("is a plotter")));
+    let svg = post::svg(&p, &p.jobs[0], &machine.bed, false).expect("SVG");
+    let layers = svg.matches("inkscape:groupmode=\"layer\"").count();
+    assert_eq!(layers, 2);
+    let (_, texts) = simulated(&p, &machine);
+    let lines = normalized(&texts[0]);
+    let groups = texts[0]
+        .lines()
+        .filter(|l| matches!(*l, "; plot" | "; mark"))
+        .count();
+    assert_eq!(groups, 2);
+    assert_eq!(lines.iter().filter(|l| *l == "M0").count(), groups - 1);
+    // Asked-for dashed valleys stay dashes on a plotter (pen down per dash).
+    let material = load_material("card-300gsm").expect("shipped");
+    let mut o = PlanOptions::from_material(&material);
+    o.mapping.valley = Some(foldcam::fab::Operation::Perforate);
+    o.adapt_to_machine(&machine).expect("adapts");
+    let dashed = plan(&cp, &machine, &material, &o).expect("plans");
+    let svg = post::svg(&dashed, &dashed.jobs[0], &machine.bed, true).expect("SVG");
+    assert!(svg.contains("inkscape:label=\"perforate\"") && svg.contains("stroke-dasharray"));
+    let (_, texts) = simulated(&dashed, &machine);
+    let run = sim::run(&texts[0], &machine).expect("readable");
+    let perforate_strokes: usize = dashed.jobs[0]
+        .paths
+        .iter()
+        .filter(|t| t.op == foldcam::fab::Operation::Perforate)
+        .map(|t| t.strokes.len())
+        .sum();
+    assert!(perforate_strokes > 0 && run.pierces > perforate_strokes);
+}
+
+#[test]
+fn perforation_bridges_are_the_material_left_after_the_kerf() {
+    use foldcam::fab::{Operation, geometry};
+    use foldcam::pattern::Assignment;
+    use glam::DVec2;
+    let mut cp = CreasePattern::new();
+    cp.add_segment(DVec2::ZERO, DVec2::new(200.0, 0.0), Assignment::Valley);
+    let material = load_material("paper-160gsm").expect("shipped");
+    let mut o = PlanOptions::from_material(&material);
+    o.mapping.valley = Some(Operation::Perforate);
+    let asked = o.perforation;
+    let kerf = o.kerf_mm;
+    assert!(kerf > 0.05);
+    // Mean gap between the toolpath dashes, mm.
+    let mean_gap = |o: &PlanOptions| {
+        let paths = geometry::toolpaths(&cp, o).expect("toolpaths");
+        let dashes = &paths[0].strokes;
+        let gaps: Vec<f64> = dashes
+            .windows(2)
+            .map(|w| w[0][1].distance(w[1][0]))
+            .collect();
+        gaps.iter().sum::<f64>() / gaps.len() as f64
+    };
+    // The layout stretches the period a little to fit whole dashes on the crease.
+    let slack = 0.05 * asked.bridge_mm;
+    let web = mean_gap(&o) - kerf;
+    assert!((web - asked.bridge_mm).abs() < slack, "web {web}");
+    o.kerf_offset = false;
+    let raw = mean_gap(&o);
+    assert!((raw - asked.bridge_mm).abs() < slack, "gap {raw}");
+}
+
+#[test]
+fn lightburn_projects_parse_back_with_one_layer_per_operation_and_the_material_values() {
+    use foldcam::fab::Operation;
+    let cp = MiuraOri::default().build().expect("miura");
+    for machine_name in ["lightburn", "grbl-diode"] {
+        let machine = load_machine(machine_name).expect("shipped");
+        let material = load_material("paper-160gsm").expect("shipped");
+        let p = planned(&cp, &machine, &material);
+        let job = &p.jobs[0];
+        let xml = post::lbrn2(&p, job, &machine).expect("lbrn2");
+        let doc = roxmltree::Document::parse(&xml).expect("well-formed XML");
+        let root = doc.root_element();
+        assert_eq!(root.tag_name().name(), "LightBurnProject");
+        let value = |n: roxmltree::Node, key: &str| -> String {
+            n.children()
+                .find(|c| c.has_tag_name(key))
+                .and_then(|c| c.attribute("Value"))
+                .unwrap_or_else(|| panic!("{key} missing"))
+                .to_string()
+        };
+        let num = |n: roxmltree::Node, key: &str| -> f64 { value(n, key).parse().expect("number") };
+        let settings: Vec<_> = root
+            .children()
+            .filter(|c| c.has_tag_name("CutSetting"))
+            .collect();
+        let mut ops: Vec<Operation> = job.paths.iter().map(|t| t.op).collect();
+        ops.sort();
+        ops.dedup();
+        assert_eq!(settings.len(), ops.len(), "{machine_name}");
+        let (kerf, asked) = (material.kerf_mm, material.perforation);
+        for cs in &settings {
+            let op = Operation::from_name(&value(*cs, "name")).expect("an operation");
+            assert!(ops.contains(&op));
+            let s = material.settings.get(op);
+            let speed = s.speed_mm_min.min(machine.max_feed_mm_min) / 60.0;
+            assert!((num(*cs, "speed") - speed).abs() < 1e-3, "{op:?} speed");
+            assert!((num(*cs, "maxPower") - 100.0 * s.power).abs() < 1e-3);
+            assert_eq!(num(*cs, "numPasses"), f64::from(s.passes));
+            let index = value(*cs, "index");
+            let shapes = root
+                .children()
+                .filter(|c| c.has_tag_name("Shape") && c.attribute("CutIndex") == Some(&index))
+                .count();
+            let paths = job.paths.iter().filter(|t| t.op == op);
+            let want: usize = if op == Operation::Perforate {
+                paths.count()
+            } else {
+                paths.map(|t| t.strokes.len()).sum()
+            };
+            assert_eq!(shapes, want, "{op:?} shapes");
+            if op == Operation::Perforate {
+                assert_eq!(value(*cs, "perforate"), "1");
+                // Toolpath dash and gap: the material's, one kerf shorter and longer, within
+                // the layout's stretch to whole dashes.
+                let dash = num(*cs, "perfLen");
+                let gap = num(*cs, "perfSkip");
+                assert!(
+                    (dash - (asked.cut_mm - kerf)).abs() < 0.1 * asked.cut_mm,
+                    "{dash}"
+                );
+                assert!(
+                    (gap - (asked.bridge_mm + kerf)).abs() < 0.1 * asked.bridge_mm,
+                    "{gap}"
+                );
+            }
+        }
+        // Every vertex lies on the bed.
+        for shape in root.children().filter(|c| c.has_tag_name("Shape")) {
+            let verts = shape
+                .children()
+                .find(|c| c.has_tag_name("VertList"))
+                .and_then(|c| c.text())
+                .expect("VertList");
+            for v in verts.split('V').filter(|v| !v.is_empty()) {
+                let xy: Vec<f64> = v.split(' ').map(|t| t.parse().expect("number")).collect();
+                assert!(xy[0] >= 0.0 && xy[0] <= machine.bed.width_mm);
+                assert!(xy[1] >= 0.0 && xy[1] <= machine.bed.height_mm);
+            }
+        }
+    }
+}
+
+#[test]
+fn origin_centre_and_offset_move_the_job_on_the_bed() {
+    use foldcam::fab::placement::Placement;
+    use glam::DVec2;
+    let cp = SquareTwist::default().build().expect("twist");
+    let machine = load_machine("grbl-diode").expect("shipped");
+    let material = load_material("card-300gsm").expect("shipped");
+    let bounds = |p: &FabPlan| {
+        let pts = p.jobs[0].paths.iter().flat_map(|t| &t.strokes).flatten();
+        pts.fold(
+            (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)),
+            |(lo, hi), &q| (lo.min(q), hi.max(q)),
+        )
+    };
+    let with = |placement: Placement| {
+        let mut o = PlanOptions::from_material(&material);
+        o.placement = placement;
+        plan(&cp, &machine, &material, &o)
+    };
+    let corner = bounds(&with(Placement::default()).expect("plans"));
+    let centred = bounds(
+        &with(Placement {
+            centre: true,
+            offset_mm: DVec2::ZERO,
+        })
+        .expect("plans"),
+    );
+    let middle = (centred.0 + centred.1) / 2.0;
+    let bed = DVec2::new(machine.bed.width_mm, machine.bed.height_mm);
+    assert!((middle - bed / 2.0).length() < 1e-6, "{middle}");
+    assert!(((centred.1 - centred.0) - (corner.1 - corner.0)).length() < 1e-9);
+    let shift = DVec2::new(12.5, 30.0);
+    let shifted = bounds(
+        &with(Placement {
+            centre: false,
+            offset_mm: shift,
+        })
+        .expect("plans"),
+    );
+    assert!((shifted.0 - corner.0 - shift).length() < 1e-9);
+    let off = with(Placement {
+        centre: false,
+        offset_mm: DVec2::new(-50.0, 0.0),
+    });
+    assert!(off.is_err());
+}
