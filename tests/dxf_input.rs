@@ -82,10 +82,7 @@ fn square_lwpolyline(layer: &str, colour: Option<u8>) -> Entity {
 fn square_polyline(layer: &str, colour: Option<u8>) -> Entity {
     let mut p = Polyline::default();
     for (x, y) in [(0.0, 0.0), (100.0, 0.0), (100.0, 100.0), (0.0, 100.0)] {
-        p.add_vertex(
-            &mut Drawing::new(),
-            Vertex::new(Point::new(x, y, 0.0)),
-        );
+        p.add_vertex(&mut Drawing::new(), Vertex::new(Point::new(x, y, 0.0)));
     }
     p.set_is_closed(true);
     entity(layer, colour, EntityType::Polyline(p))
@@ -154,7 +151,12 @@ fn bylayer_colours_true_colours_and_layer_names_take_precedence() {
     assert_eq!(n(cp, Assignment::Boundary), 4);
     assert_eq!(n(cp, Assignment::Mountain), 2);
     assert_eq!(n(cp, Assignment::Valley), 2);
-    assert!(imported.warnings.iter().any(|w| w.contains("read by colour")));
+    assert!(
+        imported
+            .warnings
+            .iter()
+            .any(|w| w.contains("read by colour"))
+    );
 }
 
 #[test]
@@ -169,7 +171,9 @@ fn arcs_circles_bulges_and_inserted_blocks() {
         name: "FLAP".into(),
         ..Default::default()
     };
-    block.entities.push(line("0", None, (0.0, 0.0), (10.0, 0.0)));
+    block
+        .entities
+        .push(line("0", None, (0.0, 0.0), (10.0, 0.0)));
     d.add_block(block);
     let mut insert = Insert {
         name: "FLAP".into(),
@@ -197,7 +201,11 @@ fn arcs_circles_bulges_and_inserted_blocks() {
     let cp = read(&d).pattern;
     let has = |p: DVec2| cp.vertices.iter().any(|q| q.distance(p) < 1e-9);
     assert!(has(DVec2::new(25.0, 20.0)) && has(DVec2::new(25.0, 0.0)));
-    let ms: Vec<_> = cp.edge_ids().filter(|&e| cp.edges[e.index()].assignment == Assignment::Mountain).map(|e| cp.segment(e)).collect();
+    let ms: Vec<_> = cp
+        .edge_ids()
+        .filter(|&e| cp.edges[e.index()].assignment == Assignment::Mountain)
+        .map(|e| cp.segment(e))
+        .collect();
     assert_eq!(n(&cp, Assignment::Mountain), 3, "{ms:?}");
     // The insert splits the bottom side once more.
     assert_eq!(n(&cp, Assignment::Boundary), 7);
@@ -205,7 +213,11 @@ fn arcs_circles_bulges_and_inserted_blocks() {
     let chords = |r: f64, sweep: f64| (sweep / (2.0 * (1.0 - 0.01 / r).acos())).ceil() as usize;
     assert_eq!(n(&cp, Assignment::Cut), chords(5.0, 2.0 * PI));
     assert_eq!(n(&cp, Assignment::Flat), chords(10.0, PI / 2.0));
-    for v in cp.vertices.iter().filter(|p| p.distance(DVec2::new(75.0, 35.0)) < 6.0) {
+    for v in cp
+        .vertices
+        .iter()
+        .filter(|p| p.distance(DVec2::new(75.0, 35.0)) < 6.0)
+    {
         assert!((v.distance(DVec2::new(75.0, 35.0)) - 5.0).abs() < 1e-9);
     }
 }
@@ -241,9 +253,14 @@ fn bad_input_names_the_file_and_entity() {
         None,
         EntityType::Circle(Circle::new(Point::new(0.0, 0.0, 0.0), -1.0)),
     ));
-    let err = formats::dxf::read_str(&text(&d)).err().map(|e| e.to_string());
+    let err = formats::dxf::read_str(&text(&d))
+        .err()
+        .map(|e| e.to_string());
     let err = err.unwrap_or_default();
-    assert!(err.contains("CIRCLE") && err.contains("CUT") && err.contains("radius"), "{err}");
+    assert!(
+        err.contains("CIRCLE") && err.contains("CUT") && err.contains("radius"),
+        "{err}"
+    );
     let err = formats::dxf::read_str("0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n")
         .err()
         .map(|e| e.to_string())
@@ -252,7 +269,10 @@ fn bad_input_names_the_file_and_entity() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let path = dir.path().join("garbage.dxf");
     std::fs::write(&path, "this is not a drawing\n").unwrap_or_else(|e| panic!("{e}"));
-    let err = formats::load(&path).err().map(|e| e.to_string()).unwrap_or_default();
+    let err = formats::load(&path)
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
     assert!(err.contains("garbage.dxf"), "{err}");
 }
 
@@ -262,9 +282,12 @@ fn bad_input_names_the_file_and_entity() {
 #[test]
 fn our_machine_dxf_reads_back() {
     let plan = post_common::plan(post_common::job());
-    for version in [foldcam::post::DxfVersion::R2000, foldcam::post::DxfVersion::R12] {
-        let bytes = foldcam::post::dxf(&plan, &plan.jobs[0], version)
-            .unwrap_or_else(|e| panic!("{e}"));
+    for version in [
+        foldcam::post::DxfVersion::R2000,
+        foldcam::post::DxfVersion::R12,
+    ] {
+        let bytes =
+            foldcam::post::dxf(&plan, &plan.jobs[0], version).unwrap_or_else(|e| panic!("{e}"));
         let text = String::from_utf8(bytes).unwrap_or_else(|e| panic!("{e}"));
         let cp = formats::dxf::read_str(&text)
             .unwrap_or_else(|e| panic!("{e}"))

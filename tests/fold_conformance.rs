@@ -41,7 +41,10 @@ fn conformance_faults(text: &str) -> Vec<String> {
     let index = |v: &Value| v.as_u64().map(|i| i as usize).filter(|&i| i < nv);
     let mut pairs: Vec<(usize, usize)> = Vec::new();
     for (i, e) in edges.iter().enumerate() {
-        match e.as_array().map(|a| a.iter().map(index).collect::<Vec<_>>()) {
+        match e
+            .as_array()
+            .map(|a| a.iter().map(index).collect::<Vec<_>>())
+        {
             Some(v) if v.len() == 2 && v.iter().all(Option::is_some) => {
                 let (a, b) = (v[0].unwrap_or(0), v[1].unwrap_or(0));
                 if a == b {
@@ -85,7 +88,11 @@ fn conformance_faults(text: &str) -> Vec<String> {
     }
     let xy = |i: usize| {
         let c = coords[i].as_array();
-        let n = |k: usize| c.and_then(|c| c.get(k)).and_then(Value::as_f64).unwrap_or(0.0);
+        let n = |k: usize| {
+            c.and_then(|c| c.get(k))
+                .and_then(Value::as_f64)
+                .unwrap_or(0.0)
+        };
         DVec2::new(n(0), n(1))
     };
     let mut sides: HashMap<(usize, usize), usize> = HashMap::new();
@@ -142,7 +149,9 @@ fn assert_conforms(name: &str, text: &str) {
 }
 
 fn generated() -> Vec<(&'static str, CreasePattern)> {
-    let ok = |r: Result<CreasePattern, _>| r.unwrap_or_else(|e: foldcam::design::classic::ClassicError| panic!("{e}"));
+    let ok = |r: Result<CreasePattern, _>| {
+        r.unwrap_or_else(|e: foldcam::design::classic::ClassicError| panic!("{e}"))
+    };
     vec![
         ("miura", ok(MiuraOri::default().build())),
         ("square twist", ok(SquareTwist::default().build())),
@@ -178,7 +187,10 @@ fn generated_patterns_cut_on_card_without_the_fold_angle_warning() {
         );
         // The angle is not hidden: a sheet that cannot fold that far still says so.
         let warnings = foldcam::fab::plan::design_limit_warnings(&cp, &stainless);
-        assert!(warnings.iter().any(|w| w.contains("fold further")), "{name}");
+        assert!(
+            warnings.iter().any(|w| w.contains("fold further")),
+            "{name}"
+        );
     }
 }
 
@@ -204,19 +216,28 @@ fn a_drawing_without_faces_is_written_with_faces() {
     // Four triangles around the crossing, counted independently of the writer.
     assert_eq!(back.pattern.faces.map(|f| f.len()), Some(4));
     // A planar pattern without faces keeps its numbering.
-    let ortho = MiuraOri::default().build().unwrap_or_else(|e| panic!("{e}"));
+    let ortho = MiuraOri::default()
+        .build()
+        .unwrap_or_else(|e| panic!("{e}"));
     let mut bare = ortho.clone();
     bare.faces = None;
     let text = formats::fold::write_string(&bare, None);
     let back = formats::fold::read_str(&text).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(back.pattern.vertices, ortho.vertices);
-    assert_eq!(back.pattern.faces.map(|f| f.len()), ortho.faces.map(|f| f.len()));
+    assert_eq!(
+        back.pattern.faces.map(|f| f.len()),
+        ortho.faces.map(|f| f.len())
+    );
 }
 
 #[test]
 fn shipped_examples_convert_to_conforming_fold() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/patterns");
-    for name in ["broken-vertex.fold", "flat-vertex.fold", "preliminary-base.cp"] {
+    for name in [
+        "broken-vertex.fold",
+        "flat-vertex.fold",
+        "preliminary-base.cp",
+    ] {
         let imported = formats::load(&dir.join(name)).unwrap_or_else(|e| panic!("{e}"));
         assert_conforms(name, &formats::fold::write_string(&imported.pattern, None));
     }

@@ -72,8 +72,8 @@ fn rabbit_ear_files_read_with_their_assignments() {
     assert_eq!(cp.edges.len(), 10);
     // The crane with every assignment: one path per assignment, with its class, its
     // data-assignment and its palette colour agreeing; gold is join.
-    let imported = formats::load(&dir.join("crane-cp-all-assignments.svg"))
-        .unwrap_or_else(|e| panic!("{e}"));
+    let imported =
+        formats::load(&dir.join("crane-cp-all-assignments.svg")).unwrap_or_else(|e| panic!("{e}"));
     let off_palette = |w: &Vec<String>| w.iter().any(|w| w.contains("not in the crease palette"));
     assert!(!off_palette(&imported.warnings), "{:?}", imported.warnings);
     for a in Assignment::ALL {
@@ -159,14 +159,10 @@ fn the_crane_reads_with_its_ends_joined() {
     assert!(imported.notes.iter().any(|n| n.contains("snap tolerance")));
     // Maekawa holds at every interior vertex once the ends meet (it failed at 33 before).
     let report = foldcam::check::check(cp, &foldcam::check::CheckOptions::default());
-    let maekawa = report
-        .of_kind(foldcam::check::FindingKind::Maekawa)
-        .count();
+    let maekawa = report.of_kind(foldcam::check::FindingKind::Maekawa).count();
     assert_eq!(maekawa, 0);
-    let before = foldcam::check::check(
-        &unsnapped.pattern,
-        &foldcam::check::CheckOptions::default(),
-    );
+    let before =
+        foldcam::check::check(&unsnapped.pattern, &foldcam::check::CheckOptions::default());
     assert!(before.findings.len() > report.findings.len());
     // Assignments as drawn: the crane's colours are red, blue, black and yellow only.
     for a in [Assignment::Cut, Assignment::Unassigned, Assignment::Join] {

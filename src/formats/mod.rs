@@ -21,6 +21,9 @@ use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions,
 pub use atomic::write_atomic;
 pub use options::{DashedAs, ReadOptions};
 
+/// Most rounds of snapping (joining ends, merging junctions, planarising) on one drawing.
+const SNAP_ROUNDS: usize = 3;
+
 /// Largest input file read, in bytes (256 MiB): larger inputs are refused with an error rather
 /// than exhausting memory.
 pub const MAX_INPUT_BYTES: u64 = 256 * 1024 * 1024;
@@ -175,9 +178,10 @@ pub fn read_text(path: &Path) -> Result<String, FormatError> {
 /// The common end of the line-drawing readers (SVG, DXF, `.cp`): planarise the collected
 /// segments (merging within `tolerance`, default when `None`), note merged duplicates ("N
 /// line(s) `verb` over others were merged"), then, with a snapping tolerance `snap` larger
-/// than that (see [`snap`]), join line ends within it and planarise again with it (merging
-/// vertices and splitting lines within `snap`, as Origami Simulator's importer does within
-/// its tolerance), noting the tolerance and what it changed; validate, and wrap up.
+/// than that (see [`snap`]), join line ends and merge junctions within it (as Origami
+/// Simulator's importer merges vertices within its tolerance, but leaving the points of
+/// chains such as flattened curves in place) and planarise again, noting the tolerance and
+/// what it changed; validate, and wrap up.
 pub(crate) fn finish_drawing(
     mut pattern: CreasePattern,
     tolerance: Option<f64>,
@@ -199,21 +203,25 @@ pub(crate) fn finish_drawing(
     }
     let mut notes = Vec::new();
     if let Some(snap) = snap.filter(|&s| s > report.tolerance) {
-        let joined = snap::snap_ends(&mut pattern, snap);
-        let options = PlanarizeOptions {
-            tolerance: Some(snap),
-            faces: false,
-        };
-        let merged = planarize(&mut pattern, &options)
-            .map_err(|e| ParseError::new("file", e.to_string()))?;
+        let (mut joined, mut merged) = (0, 0);
+        // Joining can leave new short stubs where lines were split; a second round finds them.
+        for _ in 0..SNAP_ROUNDS {
+            let ends = snap::snap_ends(&mut pattern, snap);
+            let junctions = snap::snap_junctions(&mut pattern, snap);
+            if ends + junctions == 0 {
+                break;
+            }
+            (joined, merged) = (joined + ends, merged + junctions);
+            planarize(&mut pattern, &options)
+                .map_err(|e| ParseError::new("file", e.to_string()))?;
+        }
         let unit = match pattern.units {
             crate::pattern::Units::Millimetres => "mm",
             crate::pattern::Units::Unitless => "units",
         };
         notes.push(format!(
             "snap tolerance {snap:.4} {unit} (--snap): {joined} line end(s) joined to the line \
-             or corner they stopped short of, {} vertices merged, {} lines split at a vertex",
-            merged.merged_vertices, merged.splits
+             or corner they stopped short of, {merged} junction(s) merged with a neighbour"
         ));
     }
     pattern

@@ -38,9 +38,9 @@ pub fn is_dash_dot(dashes: &[f64]) -> bool {
         dashes.to_vec()
     };
     let on: Vec<f64> = cycle.iter().step_by(2).copied().collect();
-    let (lo, hi) = on
-        .iter()
-        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &d| (lo.min(d), hi.max(d)));
+    let (lo, hi) = on.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), &d| {
+        (lo.min(d), hi.max(d))
+    });
     on.len() >= 2 && hi > DASH_DOT_RATIO * lo
 }
 

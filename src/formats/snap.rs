@@ -6,10 +6,12 @@
 //! theorems. Origami Simulator's importer merges vertices within a tolerance of 3 px for the
 //! same reason.
 //!
-//! The readers ([`super::finish_drawing`]) first move line ends ([`snap_ends`]), then
-//! planarise with the snapping tolerance, which also merges vertices closer than it (several
-//! lines meant to meet at one point that cross a little apart) and splits a line where a
-//! vertex lies within it.
+//! The readers ([`super::finish_drawing`]) first move line ends ([`snap_ends`]), then merge
+//! junctions closer than the tolerance ([`snap_junctions`]: several lines meant to meet at
+//! one point that cross a little apart), then planarise again at the fine tolerance. Points
+//! inside a chain (a vertex with two edges of one assignment, such as the chords of a
+//! flattened curve, which may lie closer together than the snapping tolerance) never move,
+//! so curves keep their shape.
 //!
 //! [`snap_ends`] works on a planarised pattern and moves only *line ends*: vertices with a
 //! single edge. Each end within `tolerance` of another vertex is merged into the nearest such
@@ -20,6 +22,8 @@
 //!
 //! Cost: O(E log E) to sort the edges' boxes plus O(k) distance tests per end, k the edges
 //! whose box (grown by the tolerance) spans the end's x.
+
+use std::collections::HashMap;
 
 use glam::DVec2;
 
@@ -38,10 +42,11 @@ pub fn default_snap(cp: &CreasePattern) -> f64 {
 }
 
 /// Moves every line end (a vertex with exactly one edge) that lies within `tolerance` of
-/// another vertex or of an edge not its own onto it (see the module docs); returns how many
-/// ends moved. The caller planarises afterwards to merge and split at the moved ends.
+/// another vertex or of an edge not its own onto it (see the module docs), and trims stubs
+/// shorter than `tolerance` that overshoot a junction (moving the end onto the junction);
+/// returns how many ends moved. The caller planarises afterwards to merge and split at the moved ends.
 pub fn snap_ends(cp: &mut CreasePattern, tolerance: f64) -> usize {
-    if !(tolerance > 0.0) {
+    if tolerance.is_nan() || tolerance <= 0.0 {
         return 0;
     }
     let incident = cp.vertex_edges();
@@ -56,8 +61,78 @@ pub fn snap_ends(cp: &mut CreasePattern, tolerance: f64) -> usize {
     let mut moved = 0;
     for v in ends {
         let own = incident[v.index()][0];
-        if let Some(target) = index.nearest(cp, v, own, tolerance) {
+        let other = cp.edges[own.index()].other(v);
+        // An overshoot: a stub shorter than the tolerance past a junction is trimmed.
+        let overshoot = (incident[other.index()].len() >= 3 && cp.edge_length(own) <= tolerance)
+            .then(|| cp.position(other));
+        if let Some(target) = overshoot.or_else(|| index.nearest(cp, v, own, tolerance)) {
             cp.vertices[v.index()] = target;
+            moved += 1;
+        }
+    }
+    moved
+}
+
+/// Merges junctions (vertices that are not inside a chain: one, three or more edges, or two
+/// of different assignments) lying within `tolerance` of each other: every vertex of a cluster
+/// moves to the position of its vertex with the most edges. Returns how many vertices moved;
+/// the caller planarises afterwards to merge them.
+pub fn snap_junctions(cp: &mut CreasePattern, tolerance: f64) -> usize {
+    if tolerance.is_nan() || tolerance <= 0.0 {
+        return 0;
+    }
+    let incident = cp.vertex_edges();
+    let junction = |v: usize| match incident[v].as_slice() {
+        [a, b] => cp.edges[a.index()].assignment != cp.edges[b.index()].assignment,
+        list => !list.is_empty(),
+    };
+    let cell = |p: DVec2| {
+        (
+            (p.x / tolerance).floor() as i64,
+            (p.y / tolerance).floor() as i64,
+        )
+    };
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let candidates: Vec<usize> = (0..cp.vertices.len()).filter(|&v| junction(v)).collect();
+    for &v in &candidates {
+        grid.entry(cell(cp.vertices[v])).or_default().push(v);
+    }
+    let mut parent: Vec<usize> = (0..cp.vertices.len()).collect();
+    fn root(parent: &mut [usize], mut v: usize) -> usize {
+        while parent[v] != v {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        v
+    }
+    for &v in &candidates {
+        let p = cp.vertices[v];
+        let (cx, cy) = cell(p);
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for &w in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], Vec::as_slice) {
+                    if w > v && p.distance(cp.vertices[w]) <= tolerance {
+                        let (a, b) = (root(&mut parent, v), root(&mut parent, w));
+                        parent[a.max(b)] = a.min(b);
+                    }
+                }
+            }
+        }
+    }
+    // The target of each cluster: its member with the most edges (the first on ties).
+    let mut target: HashMap<usize, usize> = HashMap::new();
+    for &v in &candidates {
+        let r = root(&mut parent, v);
+        let best = target.entry(r).or_insert(v);
+        if incident[v].len() > incident[*best].len() {
+            *best = v;
+        }
+    }
+    let mut moved = 0;
+    for &v in &candidates {
+        let to = cp.vertices[target[&root(&mut parent, v)]];
+        if cp.vertices[v] != to {
+            cp.vertices[v] = to;
             moved += 1;
         }
     }
@@ -138,8 +213,16 @@ mod tests {
     fn a_short_end_joins_the_line_it_was_drawn_to() {
         // A T whose stem stops 0.05 short of the bar.
         let mut cp = CreasePattern::new();
-        cp.add_segment(DVec2::new(0.0, 0.0), DVec2::new(10.0, 0.0), Assignment::Valley);
-        cp.add_segment(DVec2::new(5.0, 0.05), DVec2::new(5.0, 5.0), Assignment::Mountain);
+        cp.add_segment(
+            DVec2::new(0.0, 0.0),
+            DVec2::new(10.0, 0.0),
+            Assignment::Valley,
+        );
+        cp.add_segment(
+            DVec2::new(5.0, 0.05),
+            DVec2::new(5.0, 5.0),
+            Assignment::Mountain,
+        );
         clean(&mut cp);
         assert_eq!(cp.vertices.len(), 4);
         assert_eq!(snap_ends(&mut cp, 0.1), 1);
@@ -153,7 +236,11 @@ mod tests {
         let mut cp = CreasePattern::new();
         cp.add_segment(DVec2::ZERO, DVec2::new(10.0, 0.0), Assignment::Boundary);
         cp.add_segment(DVec2::ZERO, DVec2::new(0.0, 10.0), Assignment::Boundary);
-        cp.add_segment(DVec2::new(0.03, 0.02), DVec2::new(5.0, 5.0), Assignment::Valley);
+        cp.add_segment(
+            DVec2::new(0.03, 0.02),
+            DVec2::new(5.0, 5.0),
+            Assignment::Valley,
+        );
         clean(&mut cp);
         assert_eq!(snap_ends(&mut cp, 0.1), 1);
         clean(&mut cp);
@@ -162,10 +249,49 @@ mod tests {
     }
 
     #[test]
+    fn junctions_merge_but_chain_points_stay() {
+        // Three lines meant to meet at the origin cross pairwise a little apart, and an arc
+        // of chords 0.05 apart passes nearby.
+        let mut cp = CreasePattern::new();
+        cp.add_segment(
+            DVec2::new(-5.0, 0.0),
+            DVec2::new(5.0, 0.0),
+            Assignment::Valley,
+        );
+        cp.add_segment(
+            DVec2::new(0.02, -5.0),
+            DVec2::new(0.02, 5.0),
+            Assignment::Mountain,
+        );
+        cp.add_segment(
+            DVec2::new(-5.0, -5.03),
+            DVec2::new(5.0, 4.97),
+            Assignment::Mountain,
+        );
+        let chain: Vec<DVec2> = (0..=20)
+            .map(|i| DVec2::new(3.0 + 0.05 * f64::from(i), -3.0))
+            .collect();
+        for w in chain.windows(2) {
+            cp.add_segment(w[0], w[1], Assignment::Flat);
+        }
+        clean(&mut cp);
+        let before = cp.vertices.len();
+        assert!(snap_junctions(&mut cp, 0.1) >= 2);
+        clean(&mut cp);
+        // The three crossings became one vertex; the 21 chain points are all still there.
+        assert_eq!(cp.vertices.len(), before - 2);
+        assert!(chain.iter().all(|p| cp.vertices.contains(p)));
+    }
+
+    #[test]
     fn ends_farther_than_the_tolerance_stay() {
         let mut cp = CreasePattern::new();
         cp.add_segment(DVec2::ZERO, DVec2::new(10.0, 0.0), Assignment::Valley);
-        cp.add_segment(DVec2::new(5.0, 0.5), DVec2::new(5.0, 5.0), Assignment::Valley);
+        cp.add_segment(
+            DVec2::new(5.0, 0.5),
+            DVec2::new(5.0, 5.0),
+            Assignment::Valley,
+        );
         clean(&mut cp);
         assert_eq!(snap_ends(&mut cp, 0.1), 0);
         assert_eq!(snap_ends(&mut cp, 0.0), 0);

@@ -69,9 +69,12 @@ fn miura_plans_on_every_bed_one_and_two_sided() {
                 assert!(s.time_s > 0.0);
                 // The Miura-ori's creases carry the generators' 170°, within the card's 175°:
                 // no design limit is exceeded.
-                assert!(cp.edges.iter().filter(|e| e.assignment.is_fold()).all(|e| e
-                    .fold_angle
-                    .is_some_and(|a| a.abs() <= 175.0)));
+                assert!(
+                    cp.edges
+                        .iter()
+                        .filter(|e| e.assignment.is_fold())
+                        .all(|e| e.fold_angle.is_some_and(|a| a.abs() <= 175.0))
+                );
                 assert!(plan.warnings.is_empty(), "{:?}", plan.warnings);
             }
         }

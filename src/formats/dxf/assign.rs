@@ -93,7 +93,7 @@ pub fn aci_rgb(index: u8) -> Rgb {
             let hue = f64::from(index / 10 - 1) * 15.0;
             let shade = index % 10;
             let value = [1.0, 0.65, 0.5, 0.3, 0.15][usize::from(shade / 2)];
-            let saturation = if shade % 2 == 0 { 1.0 } else { 0.5 };
+            let saturation = if shade.is_multiple_of(2) { 1.0 } else { 0.5 };
             hsv(hue, saturation, value)
         }
     }

@@ -134,11 +134,11 @@ impl Nurbs<'_> {
                 n + self.degree + 1
             ));
         }
-        if self.knots.windows(2).any(|w| !(w[0] <= w[1])) {
+        if self.knots.iter().any(|k| !k.is_finite()) || self.knots.windows(2).any(|w| w[0] > w[1]) {
             return Err("the knots are not non-decreasing numbers".into());
         }
         if !self.weights.is_empty()
-            && (self.weights.len() != n || self.weights.iter().any(|w| !(*w > 0.0)))
+            && (self.weights.len() != n || self.weights.iter().any(|w| w.is_nan() || *w <= 0.0))
         {
             return Err("the weights are not one positive number per control point".into());
         }
@@ -246,7 +246,11 @@ mod tests {
 
     #[test]
     fn a_rational_quadratic_spline_draws_a_quarter_circle() {
-        let control = [DVec2::new(1.0, 0.0), DVec2::new(1.0, 1.0), DVec2::new(0.0, 1.0)];
+        let control = [
+            DVec2::new(1.0, 0.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(0.0, 1.0),
+        ];
         let w = std::f64::consts::FRAC_1_SQRT_2;
         let curve = Nurbs {
             degree: 2,

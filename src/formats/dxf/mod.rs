@@ -38,11 +38,11 @@ pub const CHORD_TOLERANCE_MM: f64 = 0.01;
 /// Deepest nesting of block references followed.
 pub const MAX_NESTING: usize = 16;
 
+/// Most copies one `INSERT` array (columns × rows) makes.
+pub const MAX_ARRAY_COPIES: usize = 100_000;
+
 /// Most edges read from one file.
 pub const MAX_SEGMENTS: usize = super::svg::MAX_SEGMENTS;
-
-/// Merge tolerance relative to the drawing's size, as for SVG.
-const MERGE_TOLERANCE: f64 = super::svg::MERGE_TOLERANCE;
 
 /// Reads a DXF file's bytes as text (other code pages than UTF-8 only touch names and text,
 /// which are replaced character by character), refusing files over [`MAX_INPUT_BYTES`].
@@ -119,10 +119,10 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
     super::finish_drawing(pattern, Some(tolerance), Some(snap), "drawn", warnings)
 }
 
-/// Merge tolerance: [`MERGE_TOLERANCE`] of the larger of the diagonal and the largest
-/// coordinate magnitude.
+/// Merge tolerance, as for SVG: [`super::svg::MERGE_TOLERANCE`] of the larger of the
+/// diagonal and the largest coordinate magnitude.
 fn merge_tolerance(cp: &CreasePattern) -> f64 {
-    super::svg::merge_tolerance(cp).max(MERGE_TOLERANCE * 1e-7)
+    super::svg::merge_tolerance(cp)
 }
 
 /// The pattern's units and the factor from drawing units to them.
@@ -181,7 +181,10 @@ impl<'a> Reader<'a> {
         let at = |message: String| ParseError::new(place(entity), message);
         let normal_z = normal(entity);
         if normal_z.is_some_and(|z| z.abs() < 1.0 - 1e-9) {
-            *self.skipped.entry("entities not in the xy plane").or_default() += 1;
+            *self
+                .skipped
+                .entry("entities not in the xy plane")
+                .or_default() += 1;
             return Ok(());
         }
         // AutoCAD's arbitrary-axis rule: an extrusion of −z mirrors the entity's x.
@@ -197,7 +200,10 @@ impl<'a> Reader<'a> {
             EntityType::Insert(insert) => return self.insert(entity, insert, ctx),
             EntityType::Line(l) => {
                 let a = self.assignment(entity, ctx);
-                self.chain(&[t.transform_point2(xy(&l.p1)), t.transform_point2(xy(&l.p2))], a)
+                self.chain(
+                    &[t.transform_point2(xy(&l.p1)), t.transform_point2(xy(&l.p2))],
+                    a,
+                )
             }
             EntityType::LwPolyline(p) => {
                 let points: Vec<(DVec2, f64)> = p
@@ -228,7 +234,13 @@ impl<'a> Reader<'a> {
             }
             EntityType::Circle(c) => {
                 check_radius(c.radius).map_err(at)?;
-                let pts = curves::arc(xy(&c.center), c.radius, 0.0, std::f64::consts::TAU, self.tol);
+                let pts = curves::arc(
+                    xy(&c.center),
+                    c.radius,
+                    0.0,
+                    std::f64::consts::TAU,
+                    self.tol,
+                );
                 self.curve(entity, ctx, wcs, &pts)
             }
             EntityType::Ellipse(e) => {
@@ -357,9 +369,20 @@ impl<'a> Reader<'a> {
         let base = DVec2::new(insert.location.x, insert.location.y);
         let origin = DVec2::new(block.base_point.x, block.base_point.y);
         let layer = own_layer(entity, ctx);
-        let colour = own_colour(entity, ctx).or(ctx.colour);
+        let colour = own_colour(entity).or(ctx.colour);
         let columns = insert.column_count.max(1);
         let rows = insert.row_count.max(1);
+        let copies = usize::from(columns.unsigned_abs()) * usize::from(rows.unsigned_abs());
+        if copies > MAX_ARRAY_COPIES {
+            return Err(ParseError::new(
+                place(entity),
+                format!(
+                    "an array of {columns} × {rows} copies of block \"{}\", more than the \
+                     {MAX_ARRAY_COPIES} read",
+                    insert.name
+                ),
+            ));
+        }
         for r in 0..rows {
             for c in 0..columns {
                 let offset = DVec2::new(
@@ -392,7 +415,7 @@ impl<'a> Reader<'a> {
             return a;
         }
         *self.by_colour.entry(layer.to_string()).or_default() += 1;
-        let colour = match own_colour(entity, ctx) {
+        let colour = match own_colour(entity) {
             Some(c) => Some(c),
             None if entity.common.color.is_by_block() => ctx.colour,
             None => self
@@ -412,7 +435,9 @@ impl<'a> Reader<'a> {
     fn warnings(&self) -> Vec<String> {
         let mut out = Vec::new();
         for (kind, n) in &self.skipped {
-            out.push(format!("{n} {kind} were ignored (creases are lines and curves)"));
+            out.push(format!(
+                "{n} {kind} were ignored (creases are lines and curves)"
+            ));
         }
         for (name, n) in &self.missing_blocks {
             out.push(format!(
@@ -451,7 +476,7 @@ fn own_layer<'a>(entity: &'a Entity, ctx: &Context<'a>) -> &'a str {
 }
 
 /// The entity's own colour: true colour, else an index; `None` for `BYLAYER`/`BYBLOCK`.
-fn own_colour(entity: &Entity, _ctx: &Context) -> Option<Colour> {
+fn own_colour(entity: &Entity) -> Option<Colour> {
     let c = &entity.common;
     if c.color_24_bit > 0 {
         return Some(Colour::True(c.color_24_bit as u32 & 0xff_ffff));
@@ -478,7 +503,9 @@ fn check_radius(r: f64) -> Result<(), String> {
     if r.is_finite() && r > 0.0 && r <= MAX_COORDINATE {
         Ok(())
     } else {
-        Err(format!("radius {r}: expected a positive number up to {MAX_COORDINATE:e}"))
+        Err(format!(
+            "radius {r}: expected a positive number up to {MAX_COORDINATE:e}"
+        ))
     }
 }
 
@@ -493,7 +520,10 @@ fn spline_points(s: &dxf::entities::Spline, tol: f64) -> Result<Vec<DVec2>, Stri
     }
     let control: Vec<DVec2> = s.control_points.iter().map(xy).collect();
     let degree = usize::try_from(s.degree_of_curve).map_err(|_| {
-        format!("degree {}: expected a positive whole number", s.degree_of_curve)
+        format!(
+            "degree {}: expected a positive whole number",
+            s.degree_of_curve
+        )
     })?;
     let curve = curves::Nurbs {
         degree,

@@ -149,7 +149,10 @@ mod tests {
         let gold = nearest(Rgb(0xff, 0xd7, 0x00));
         assert!(gold.exact);
         assert_eq!(gold.assignment, Assignment::Join);
-        assert_eq!(nearest(Rgb(0xdc, 0x14, 0x3c)).assignment, Assignment::Mountain);
+        assert_eq!(
+            nearest(Rgb(0xdc, 0x14, 0x3c)).assignment,
+            Assignment::Mountain
+        );
     }
 
     #[test]

@@ -59,8 +59,8 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
     let rewritten_doc;
     let source = match &scan.text {
         Some(rewritten) => {
-            rewritten_doc = roxmltree::Document::parse_with_options(rewritten, parsing())
-                .map_err(xml_error)?;
+            rewritten_doc =
+                roxmltree::Document::parse_with_options(rewritten, parsing()).map_err(xml_error)?;
             &rewritten_doc
         }
         None => &doc,
