@@ -65,7 +65,8 @@ pub fn snap_ends(cp: &mut CreasePattern, tolerance: f64) -> usize {
         // An overshoot: a stub shorter than the tolerance past a junction is trimmed.
         let overshoot = (incident[other.index()].len() >= 3 && cp.edge_length(own) <= tolerance)
             .then(|| cp.position(other));
-        if let Some(target) = overshoot.or_else(|| index.nearest(cp, v, own, tolerance)) {
+        if let Some(target) = overshoot.or_else(|| index.nearest(cp, &incident, v, own, tolerance))
+        {
             cp.vertices[v.index()] = target;
             moved += 1;
         }
@@ -159,11 +160,21 @@ impl EdgeIndex {
         EdgeIndex { boxes }
     }
 
-    /// The point the end `v` (whose edge is `own`) snaps to: the nearest other vertex within
-    /// `tolerance`, else the nearest point of another edge within `tolerance`.
-    fn nearest(&self, cp: &CreasePattern, v: VertexId, own: EdgeId, tol: f64) -> Option<DVec2> {
+    /// The point the end `v` (whose edge is `own`) snaps to: the nearest vertex within
+    /// `tolerance` where lines meet (not another end, which may itself move), else the
+    /// nearest point of another edge, else the nearest other end. `incident` lists each
+    /// vertex's edges.
+    fn nearest(
+        &self,
+        cp: &CreasePattern,
+        incident: &[Vec<EdgeId>],
+        v: VertexId,
+        own: EdgeId,
+        tol: f64,
+    ) -> Option<DVec2> {
         let p = cp.position(v);
         let mut best_vertex: Option<(f64, DVec2)> = None;
+        let mut best_end: Option<(f64, DVec2)> = None;
         let mut best_edge: Option<(f64, DVec2)> = None;
         let upto = self.boxes.partition_point(|b| b.0 <= p.x);
         for &(_, hi, e) in &self.boxes[..upto] {
@@ -175,10 +186,15 @@ impl EdgeIndex {
                 continue;
             }
             let (a, b) = cp.segment(e);
-            for q in [a, b] {
-                let d = p.distance(q);
-                if d <= tol && best_vertex.is_none_or(|(bd, _)| d < bd) {
-                    best_vertex = Some((d, q));
+            for w in edge.vertices {
+                let (q, d) = (cp.position(w), p.distance(cp.position(w)));
+                let best = if incident[w.index()].len() == 1 {
+                    &mut best_end
+                } else {
+                    &mut best_vertex
+                };
+                if d <= tol && best.is_none_or(|(bd, _)| d < bd) {
+                    *best = Some((d, q));
                 }
             }
             let d = distance_to_point(a, b, p);
@@ -186,7 +202,7 @@ impl EdgeIndex {
                 best_edge = Some((d, project(a, b, p)));
             }
         }
-        best_vertex.or(best_edge).map(|(_, q)| q)
+        best_vertex.or(best_edge).or(best_end).map(|(_, q)| q)
     }
 }
 
