@@ -9,13 +9,13 @@ use super::Outcome;
 use super::args::ScaleArgs;
 use super::input;
 
-/// Convert between FOLD, SVG and ORIPA .cp.
+/// Convert between FOLD, SVG and ORIPA .cp (and read DXF).
 #[derive(clap::Args)]
 #[command(after_help = "Examples:\n  foldcam convert bird.cp bird.fold\n  \
     foldcam convert bird.fold bird.svg --size 150\n  foldcam convert drawing.svg clean.fold --planarize\n  \
     foldcam convert animation.fold frame3.svg --frame 3")]
 pub struct Args {
-    /// Input file (.fold, .svg or .cp).
+    /// Input file (.fold, .svg, .cp or .dxf).
     pub input: PathBuf,
     #[command(flatten)]
     pub frame: input::FrameArg,
@@ -34,13 +34,15 @@ pub struct Args {
 
 /// Runs the conversion.
 pub fn run(args: Args) -> Result<Outcome> {
-    formats::Format::from_path(&args.output).ok_or_else(|| {
-        anyhow::anyhow!(
-            "{}: unknown output type (expected one of {})",
-            args.output.display(),
-            formats::Format::EXTENSIONS
-        )
-    })?;
+    formats::Format::from_path(&args.output)
+        .filter(|f| f.writable())
+        .ok_or_else(|| {
+            anyhow::anyhow!(
+                "{}: unknown output type (expected one of {})",
+                args.output.display(),
+                formats::Format::WRITABLE
+            )
+        })?;
     let mut imported = input::load(&args.input, &args.frame)?;
     if args.planarize {
         input::clean(&args.input, &mut imported, args.tolerance, true)?;

@@ -53,6 +53,10 @@ pub struct Args {
     /// Square-twist angle in degrees (0 to 45).
     #[arg(long)]
     pub twist: Option<f64>,
+    /// Target fold angle of the mountain and valley creases in degrees (0 to 180), written to
+    /// FOLD's edges_foldAngle and to SVG stroke opacity.
+    #[arg(long, value_parser = super::args::degrees, default_value_t = foldcam::design::classic::FOLD_ANGLE_DEG)]
+    pub fold_angle: f64,
 }
 
 /// Builds the pattern the arguments describe.
@@ -102,7 +106,8 @@ pub fn build(args: &Args) -> Result<CreasePattern> {
 
 /// Generates and writes the pattern.
 pub fn run(args: Args) -> Result<Outcome> {
-    let cp = build(&args)?;
+    let mut cp = build(&args)?;
+    foldcam::design::classic::set_fold_angles(&mut cp, args.fold_angle);
     super::input::save(&args.output, &cp, None)?;
     Ok(Outcome::Done)
 }

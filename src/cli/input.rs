@@ -8,20 +8,47 @@ use foldcam::pattern::{
     CreasePattern, FoldedState, PlanarizeOptions, PlanarizeReport, Units, planarize,
 };
 
-/// Choosing a frame of a FOLD file.
+/// Choosing a frame of a FOLD file, and how drawings (SVG, DXF) are read.
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct FrameArg {
     /// Read frame N of a FOLD file (0 is the key frame; later frames come from file_frames,
     /// with frame_inherit resolved).
     #[arg(long, value_name = "N")]
     pub frame: Option<usize>,
+    /// SVG and DXF input: join line ends that stop within this distance (mm) of a line or
+    /// corner; default 1/1000 of the drawing's diagonal, 0 turns it off.
+    #[arg(long, value_name = "MM", value_parser = non_negative)]
+    pub snap: Option<f64>,
+    /// SVG input: what dashed lines mean in a drawing of one colour (auto: dashes valley,
+    /// dash-dot mountain; or valley, mountain, cut, flat, unassigned, boundary).
+    #[arg(long, value_name = "MEANING", default_value = "auto")]
+    pub dashed: formats::DashedAs,
+}
+
+impl FrameArg {
+    /// The reading options these arguments give.
+    pub fn read_options(&self) -> formats::ReadOptions {
+        formats::ReadOptions {
+            snap: self.snap,
+            dashed: self.dashed,
+        }
+    }
+}
+
+fn non_negative(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("{s} must be a finite number of at least 0"))
+    }
 }
 
 /// Reads `path` (frame `frame.frame` for FOLD files), prints the reader's warnings to stderr,
 /// and returns the import.
 pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
     let imported = match frame.frame {
-        None | Some(0) => formats::load(path)?,
+        None | Some(0) => formats::load_with(path, &frame.read_options())?,
         Some(n) => load_frame(path, n)?,
     };
     if imported.pattern.edges.is_empty() {
@@ -33,6 +60,9 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
     }
     for w in &imported.warnings {
         eprintln!("foldcam: warning: {}: {w}", path.display());
+    }
+    for n in &imported.notes {
+        eprintln!("foldcam: {}: {n}", path.display());
     }
     Ok(imported)
 }

@@ -104,7 +104,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     if !zero_length.is_empty() {
         warnings.push(zero_length_warning(&zero_length));
     }
-    super::finish_drawing(pattern, None, "lying", warnings)
+    super::finish_drawing(pattern, None, None, "lying", warnings)
 }
 
 /// One text line: `None` when blank, else the assignment and the two end points (y up).

@@ -1,4 +1,5 @@
-//! Reading and writing crease patterns: FOLD 1.2, Origami-Simulator SVG, ORIPA `.cp`.
+//! Reading and writing crease patterns: FOLD 1.2, Origami-Simulator SVG, ORIPA `.cp`; DXF
+//! drawings are read.
 //!
 //! Each format module parses from text into an [`Imported`] pattern, or renders a pattern to
 //! text, without touching the file system; [`load`] and [`save`] add file access, pick the
@@ -7,7 +8,10 @@
 
 pub mod atomic;
 pub mod cp;
+pub mod dxf;
 pub mod fold;
+pub mod options;
+pub mod snap;
 pub mod svg;
 
 use std::path::{Path, PathBuf};
@@ -15,6 +19,10 @@ use std::path::{Path, PathBuf};
 use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions, planarize};
 
 pub use atomic::{OutputError, OutputSet, remove_pending_temporaries, write_atomic};
+pub use options::{DashedAs, ReadOptions};
+
+/// Most rounds of snapping (joining ends, merging junctions, planarising) on one drawing.
+const SNAP_ROUNDS: usize = 3;
 
 /// Largest input file read, in bytes (256 MiB): larger inputs are refused with an error rather
 /// than exhausting memory.
@@ -29,6 +37,8 @@ pub enum Format {
     Svg,
     /// ORIPA line list (`.cp`).
     Cp,
+    /// AutoCAD drawing exchange (`.dxf`, R12 and R2000 or later); read only.
+    Dxf,
 }
 
 impl Format {
@@ -39,12 +49,21 @@ impl Format {
             "fold" | "json" => Some(Format::Fold),
             "svg" => Some(Format::Svg),
             "cp" => Some(Format::Cp),
+            "dxf" => Some(Format::Dxf),
             _ => None,
         }
     }
 
     /// Extensions accepted, for help and error text.
-    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp";
+    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp, .dxf (read only)";
+
+    /// Extensions that can be written.
+    pub const WRITABLE: &'static str = ".fold, .svg, .cp";
+
+    /// True for formats [`save`] can write.
+    pub fn writable(self) -> bool {
+        self != Format::Dxf
+    }
 }
 
 /// A pattern read from a file, with what the reader had to say about it.
@@ -56,6 +75,9 @@ pub struct Imported {
     pub folded: Option<FoldedState>,
     /// Non-fatal remarks (off-palette colours, ignored elements, flattened 3D input, …).
     pub warnings: Vec<String>,
+    /// What the reader decided that the user should know, without anything being wrong (the
+    /// snapping tolerance used and how many line ends it joined).
+    pub notes: Vec<String>,
 }
 
 /// A problem in a file's content, located without the file name (which [`load`] adds).
@@ -153,12 +175,17 @@ pub fn read_text(path: &Path) -> Result<String, FormatError> {
     })
 }
 
-/// The common end of the line-drawing readers (SVG, `.cp`): planarise the collected segments
-/// (merging within `tolerance`, default when `None`), note merged duplicates ("N line(s)
-/// `verb` over others were merged"), validate, and wrap up.
+/// The common end of the line-drawing readers (SVG, DXF, `.cp`): planarise the collected
+/// segments (merging within `tolerance`, default when `None`), note merged duplicates ("N
+/// line(s) `verb` over others were merged"), then, with a snapping tolerance `snap` larger
+/// than that (see [`snap`]), join line ends and merge junctions within it (as Origami
+/// Simulator's importer merges vertices within its tolerance, but leaving the points of
+/// chains such as flattened curves in place) and planarise again, noting the tolerance and
+/// what it changed; validate, and wrap up.
 pub(crate) fn finish_drawing(
     mut pattern: CreasePattern,
     tolerance: Option<f64>,
+    snap: Option<f64>,
     verb: &str,
     mut warnings: Vec<String>,
 ) -> Result<Imported, ParseError> {
@@ -174,6 +201,29 @@ pub(crate) fn finish_drawing(
             report.duplicates_removed
         ));
     }
+    let mut notes = Vec::new();
+    if let Some(snap) = snap.filter(|&s| s > report.tolerance) {
+        let (mut joined, mut merged) = (0, 0);
+        // Joining can leave new short stubs where lines were split; a second round finds them.
+        for _ in 0..SNAP_ROUNDS {
+            let ends = snap::snap_ends(&mut pattern, snap);
+            let junctions = snap::snap_junctions(&mut pattern, snap);
+            if ends + junctions == 0 {
+                break;
+            }
+            (joined, merged) = (joined + ends, merged + junctions);
+            planarize(&mut pattern, &options)
+                .map_err(|e| ParseError::new("file", e.to_string()))?;
+        }
+        let unit = match pattern.units {
+            crate::pattern::Units::Millimetres => "mm",
+            crate::pattern::Units::Unitless => "units",
+        };
+        notes.push(format!(
+            "snap tolerance {snap:.4} {unit} (--snap): {joined} line end(s) joined to the line \
+             or corner they stopped short of, {merged} junction(s) merged with a neighbour"
+        ));
+    }
     pattern
         .validate()
         .map_err(|e| ParseError::new("file", e.to_string()))?;
@@ -181,32 +231,54 @@ pub(crate) fn finish_drawing(
         pattern,
         folded: None,
         warnings,
+        notes,
     })
 }
 
-/// Parses text in the given format.
+/// Parses text in the given format with the default [`ReadOptions`].
 pub fn parse(format: Format, text: &str) -> Result<Imported, ParseError> {
+    parse_with(format, text, &ReadOptions::default())
+}
+
+/// Parses text in the given format; `options` apply to drawings (SVG, DXF).
+pub fn parse_with(
+    format: Format,
+    text: &str,
+    options: &ReadOptions,
+) -> Result<Imported, ParseError> {
     match format {
         Format::Fold => fold::read_str(text),
-        Format::Svg => svg::read_str(text),
+        Format::Svg => svg::read_str_with(text, options),
         Format::Cp => cp::read_str(text),
+        Format::Dxf => dxf::read_str_with(text, options),
     }
 }
 
 /// Renders a pattern (and its folded state, where the format can hold one) as text.
+///
+/// DXF is read only: asking for it renders nothing ([`save`] refuses it first).
 pub fn render(format: Format, pattern: &CreasePattern, folded: Option<&FoldedState>) -> String {
     match format {
         Format::Fold => fold::write_string(pattern, folded),
         Format::Svg => svg::write_string(pattern),
         Format::Cp => cp::write_string(pattern),
+        Format::Dxf => String::new(),
     }
 }
 
 /// Reads a pattern from a file, the format chosen by extension; validates it.
 pub fn load(path: &Path) -> Result<Imported, FormatError> {
+    load_with(path, &ReadOptions::default())
+}
+
+/// [`load`] with options for drawings (SVG, DXF).
+pub fn load_with(path: &Path, options: &ReadOptions) -> Result<Imported, FormatError> {
     let format = format_of(path)?;
-    let text = read_text(path)?;
-    let imported = parse(format, &text).map_err(|source| FormatError::Parse {
+    let text = match format {
+        Format::Dxf => dxf::read_text_lossy(path)?,
+        _ => read_text(path)?,
+    };
+    let imported = parse_with(format, &text, options).map_err(|source| FormatError::Parse {
         path: path.to_path_buf(),
         source,
     })?;
@@ -228,6 +300,12 @@ pub fn encode(
     folded: Option<&FoldedState>,
 ) -> Result<Vec<u8>, FormatError> {
     let format = format_of(path)?;
+    if !format.writable() {
+        return Err(FormatError::UnknownFormat {
+            path: path.to_path_buf(),
+            expected: Format::WRITABLE,
+        });
+    }
     Ok(render(format, pattern, folded).into_bytes())
 }
 

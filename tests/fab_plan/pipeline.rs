@@ -67,12 +67,15 @@ fn miura_plans_on_every_bed_one_and_two_sided() {
                 let s = &plan.stats;
                 assert!(s.travel_mm < s.naive_travel_mm, "{s:?}");
                 assert!(s.time_s > 0.0);
-                // The Miura-ori stores no fold angles: every crease counts as folded flat,
-                // beyond the card's 175°. No other limit is exceeded.
-                let creases = cp.edges.iter().filter(|e| e.assignment.is_fold()).count();
-                let want = format!("{creases} edges fold further than 175°");
-                assert_eq!(plan.warnings.len(), 1, "{:?}", plan.warnings);
-                assert!(plan.warnings[0].starts_with(&want), "{:?}", plan.warnings);
+                // The Miura-ori's creases carry the generators' 170°, within the card's 175°:
+                // no design limit is exceeded.
+                assert!(
+                    cp.edges
+                        .iter()
+                        .filter(|e| e.assignment.is_fold())
+                        .all(|e| e.fold_angle.is_some_and(|a| a.abs() <= 175.0))
+                );
+                assert!(plan.warnings.is_empty(), "{:?}", plan.warnings);
             }
         }
     }

@@ -3,8 +3,10 @@
 //!
 //! All lengths are millimetres; every generator returns a pattern whose interior vertices
 //! satisfy Kawasaki's and Maekawa's theorems (tests check this with [`crate::check`]) with the
-//! sheet outline as boundary edges and faces computed. Invalid parameters give a
-//! [`ClassicError`] naming the parameter.
+//! sheet outline as boundary edges and faces computed. Every mountain and valley crease
+//! carries the target fold angle [`FOLD_ANGLE_DEG`] (set in one place, [`set_fold_angles`]),
+//! so FOLD viewers fold it and the material checks have a number to test. Invalid parameters
+//! give a [`ClassicError`] naming the parameter.
 
 mod miura;
 mod square_twist;
@@ -16,7 +18,7 @@ pub use square_twist::SquareTwist;
 pub use waterbomb::{Waterbomb, waterbomb_base};
 pub use yoshimura::Yoshimura;
 
-use crate::pattern::{CreasePattern, PlanarizeOptions, planarize};
+use crate::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 
 /// A generator parameter out of range.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -60,6 +62,31 @@ fn count(parameter: &'static str, value: usize, max: usize) -> Result<usize, Cla
     }
 }
 
+/// Target fold angle of the generated mountain and valley creases, in degrees: folded nearly
+/// flat. A real sheet does not fold to a full 180° (its thickness and spring-back leave a few
+/// degrees), and 170° lies within the largest fold angle of card and paper (175°, 180°), so
+/// a generated pattern cut on them raises no fold-angle warning; thick sheets that allow less
+/// (0.5 mm stainless: 165°) still warn.
+pub const FOLD_ANGLE_DEG: f64 = 170.0;
+
+/// Sets every mountain crease to −`degrees` and every valley crease to +`degrees` (FOLD's
+/// sign), flat lines to 0; other edges keep theirs. `degrees` is clamped to [0, 180].
+pub fn set_fold_angles(cp: &mut CreasePattern, degrees: f64) {
+    let d = if degrees.is_finite() {
+        degrees.clamp(0.0, 180.0)
+    } else {
+        180.0
+    };
+    for e in &mut cp.edges {
+        e.fold_angle = match e.assignment {
+            Assignment::Mountain => Some(-d),
+            Assignment::Valley => Some(d),
+            Assignment::Flat => Some(0.0),
+            _ => e.fold_angle,
+        };
+    }
+}
+
 /// Cleans a generated drawing (merging shared vertices, splitting outline edges where creases
 /// end on them) and traces its faces.
 fn finish(mut cp: CreasePattern, title: String) -> Result<CreasePattern, ClassicError> {
@@ -74,5 +101,6 @@ fn finish(mut cp: CreasePattern, title: String) -> Result<CreasePattern, Classic
         value: cp.edges.len() as f64,
         expected: "too many edges to clean: use fewer cells",
     })?;
+    set_fold_angles(&mut cp, FOLD_ANGLE_DEG);
     Ok(cp)
 }

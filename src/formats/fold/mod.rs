@@ -36,8 +36,8 @@
 //! (`file_title` etc., or `frame_title` when the file level already holds another title),
 //! the pattern as the key frame (`frame_classes: ["creasePattern"]` unless the input gave
 //! classes), coordinates in mm (`frame_unit: "mm"`) or `"unit"`, the derived keys recomputed
-//! from the model, then the extras. Fold angles: when any edge has one, `edges_foldAngle`
-//! holds every edge, an edge without an angle getting its assignment's flat-folded angle
+//! from the model, then the extras. Faces: always (see [`faces`]), so Origami Simulator
+//! opens every file. Fold angles: `edges_foldAngle` holds every edge, an edge without an angle getting its assignment's flat-folded angle
 //! (V +180, M −180, others 0) and its index listed in [`UNKNOWN_ANGLE_KEY`], so reading back
 //! restores "unknown" exactly and readers unaware of the key see a sensible full fold.
 //! Faces with holes: `faces_vertices` holds the outer cycle, [`HOLES_KEY`] the holes. A folded
@@ -46,6 +46,7 @@
 //! round trip reproduces every coordinate bit for bit.
 
 mod derived;
+pub mod faces;
 mod frames;
 mod json;
 mod plane;

@@ -141,6 +141,7 @@ fn as_pattern(raw: RawFrame, vertices: Vec<DVec2>, warnings: Vec<String>) -> Imp
         pattern,
         folded: None,
         warnings,
+        notes: Vec::new(),
     }
 }
 

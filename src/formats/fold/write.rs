@@ -20,7 +20,11 @@ use crate::pattern::{CreasePattern, Edge, Face, FaceId, FoldedState, Metadata};
 /// differ from the pattern's. If the pattern's extras already hold a `file_frames`, the
 /// folded frame replaces the first entry of that same shape (a folded state written earlier,
 /// so that read → write round trips do not pile up copies) or is appended.
+///
+/// A pattern without faces gets them ([`super::faces::with_faces`]): traced when it is
+/// planar, else planarised first (unless a folded state is written with it).
 pub fn write_string(pattern: &CreasePattern, folded: Option<&FoldedState>) -> String {
+    let pattern = &*super::faces::with_faces(pattern, folded.is_none());
     let mut root = Map::new();
     write_file_keys(&mut root, &pattern.meta);
     write_frame(&mut root, pattern);
@@ -34,6 +38,7 @@ pub fn write_string(pattern: &CreasePattern, folded: Option<&FoldedState>) -> St
 /// frame and each state a `file_frames` entry shaped as by [`write_string`], in order (any
 /// `file_frames` kept from an input are replaced).
 pub fn write_string_frames(pattern: &CreasePattern, folded: &[FoldedState]) -> String {
+    let pattern = &*super::faces::with_faces(pattern, false);
     let mut root = Map::new();
     write_file_keys(&mut root, &pattern.meta);
     write_frame(&mut root, pattern);
@@ -119,8 +124,10 @@ fn extend_new<'a>(
     }
 }
 
-/// `edges_vertices`, `edges_assignment`, and `edges_foldAngle` (with the unknown-angle list)
-/// when any edge has an angle.
+/// `edges_vertices`, `edges_assignment`, and `edges_foldAngle` for every edge (with the
+/// unknown-angle list): FOLD 1.2 gives every assignment an angle (valley positive, mountain
+/// negative, zero for flat, unassigned and boundary), and Origami Simulator takes the target
+/// angles from this key.
 fn write_edges(frame: &mut Map<String, Value>, edges: &[Edge]) {
     let ends = edges
         .iter()
@@ -130,7 +137,7 @@ fn write_edges(frame: &mut Map<String, Value>, edges: &[Edge]) {
         .iter()
         .map(|e| Value::from(e.assignment.letter().to_string()));
     frame.insert("edges_assignment".into(), Value::Array(letters.collect()));
-    if edges.iter().all(|e| e.fold_angle.is_none()) {
+    if edges.is_empty() {
         return;
     }
     let angles = edges.iter().map(|e| {

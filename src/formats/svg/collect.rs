@@ -8,16 +8,22 @@
 //! most [`CURVE_TOLERANCE_MM`] deviation. Elements without a stroke, stroked with a gradient or
 //! pattern, and images are skipped and counted for the warnings.
 //!
+//! An element with a declared meaning ([`super::meaning`], found by id) takes its assignment
+//! from it instead of its colour. Dashed elements read by colour are remembered: when every
+//! element read by colour has the same colour (a single-colour drawing), the dashed ones are
+//! folds, assigned by [`DashedAs`] ([`Collector::apply_dashes`]).
+//!
 //! Precision: usvg stores coordinates, transforms and opacities as `f32`, so coordinates carry
 //! a relative error of about 1e-7 of their magnitude and fold angles about 1e-5 degrees.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use glam::{DAffine2, DVec2};
 
 use super::flatten;
+use super::meaning::Meaning;
 use super::palette::{self, Match, Rgb};
-use crate::formats::ParseError;
+use crate::formats::{DashedAs, ParseError};
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Largest chord deviation allowed when flattening curves, in millimetres.
@@ -52,6 +58,20 @@ pub struct Collector {
     curves: usize,
     chords: usize,
     off_palette: BTreeMap<Rgb, OffPalette>,
+    meanings: HashMap<String, Meaning>,
+    /// Elements whose assignment came from a declared meaning.
+    declared: usize,
+    /// Stroke colours of the elements read by colour.
+    colours: BTreeSet<Rgb>,
+    /// Dashed elements read by colour: their edges, dash pattern and opacity.
+    dashed: Vec<DashedRun>,
+}
+
+/// The edges of one dashed element read by colour.
+struct DashedRun {
+    edges: std::ops::Range<usize>,
+    dashes: Vec<f64>,
+    opacity: f64,
 }
 
 /// The style of one stroked element.
@@ -77,7 +97,48 @@ impl Collector {
             curves: 0,
             chords: 0,
             off_palette: BTreeMap::new(),
+            meanings: HashMap::new(),
+            declared: 0,
+            colours: BTreeSet::new(),
+            dashed: Vec::new(),
         }
+    }
+
+    /// The same collector reading the meanings declared in the XML (by element id).
+    pub fn with_meanings(mut self, meanings: HashMap<String, Meaning>) -> Self {
+        self.meanings = meanings;
+        self
+    }
+
+    /// Elements whose assignment came from `data-assignment` or a class name.
+    pub fn declared(&self) -> usize {
+        self.declared
+    }
+
+    /// In a single-colour drawing (every element read by colour has the same stroke colour),
+    /// reassigns the dashed elements by `rule`; returns how many were reassigned and the
+    /// assignment counts as a note, if any.
+    pub fn apply_dashes(&mut self, rule: DashedAs) -> Option<String> {
+        if self.colours.len() != 1 || self.dashed.is_empty() {
+            return None;
+        }
+        let mut counts: BTreeMap<&'static str, usize> = BTreeMap::new();
+        for run in &self.dashed {
+            let assignment = rule.assignment(&run.dashes);
+            *counts.entry(assignment.name()).or_default() += 1;
+            let angle = palette::fold_angle(assignment, run.opacity);
+            for edge in &mut self.pattern.edges[run.edges.clone()] {
+                edge.assignment = assignment;
+                edge.fold_angle = angle;
+            }
+        }
+        let counts: Vec<String> = counts.iter().map(|(a, n)| format!("{n} {a}")).collect();
+        Some(format!(
+            "single-colour drawing: its {} dashed line(s) are folds ({}; --dashed {rule}), its \
+             solid lines read by colour",
+            self.dashed.len(),
+            counts.join(", ")
+        ))
     }
 
     /// Collects every path below `group`, whose accumulated opacity is `opacity`.
@@ -103,18 +164,41 @@ impl Collector {
             self.non_colour += 1;
             return Ok(());
         };
-        let matched = palette::nearest(Rgb(c.red, c.green, c.blue));
-        if !matched.exact {
-            self.note_off_palette(Rgb(c.red, c.green, c.blue), matched, path.id());
-        }
         let alpha = opacity * f64::from(stroke.opacity().get());
+        let transform = self.to_pattern * affine(path.abs_transform());
+        if let Some(meaning) = self.meanings.get(path.id()).copied() {
+            self.declared += 1;
+            let style = Style {
+                assignment: meaning.assignment,
+                fold_angle: meaning
+                    .fold_angle
+                    .or_else(|| palette::fold_angle(meaning.assignment, alpha)),
+            };
+            return self
+                .segments(path, transform, style)
+                .map_err(|message| ParseError::new(self.place(path), message));
+        }
+        let colour = Rgb(c.red, c.green, c.blue);
+        let matched = palette::nearest(colour);
+        if !matched.exact {
+            self.note_off_palette(colour, matched, path.id());
+        }
+        self.colours.insert(colour);
         let style = Style {
             assignment: matched.assignment,
             fold_angle: palette::fold_angle(matched.assignment, alpha),
         };
-        let transform = self.to_pattern * affine(path.abs_transform());
+        let first = self.pattern.edges.len();
         self.segments(path, transform, style)
-            .map_err(|message| ParseError::new(self.place(path), message))
+            .map_err(|message| ParseError::new(self.place(path), message))?;
+        if let Some(dashes) = stroke.dasharray().filter(|d| d.iter().any(|&x| x > 0.0)) {
+            self.dashed.push(DashedRun {
+                edges: first..self.pattern.edges.len(),
+                dashes: dashes.iter().map(|&x| f64::from(x)).collect(),
+                opacity: alpha,
+            });
+        }
+        Ok(())
     }
 
     fn note_off_palette(&mut self, colour: Rgb, matched: Match, id: &str) {

@@ -1,9 +1,16 @@
 //! Crease-pattern SVG in Origami Simulator's colour convention.
 //!
-//! **Reading** ([`read_str`]) uses usvg, so any SVG a browser draws is understood: paths,
-//! lines, polylines, polygons, rectangles (and circles and ellipses, flattened), groups,
-//! `<use>`, CSS, nested transforms and units. Each stroked element becomes edges:
-//! - the stroke colour picks the assignment by [`palette`]: red mountain, blue valley, black
+//! **Reading** ([`read_str`], [`read_str_with`]) uses usvg, so any SVG a browser draws is
+//! understood: paths, lines, polylines, polygons, rectangles (and circles and ellipses,
+//! flattened), groups, `<use>`, CSS, nested transforms and units. Each stroked element becomes
+//! edges:
+//! - a declared meaning wins over colour: `data-assignment` (Rabbit Ear), then class names
+//!   (`mountain`, `valley`, `boundary`, `cut`, `flat`/`mark`, …; see [`meaning`]), with
+//!   `data-foldAngle` as the fold angle; such elements are read even without a stroke;
+//! - in a drawing whose lines (read by colour) all have one colour, a dashed line
+//!   (`stroke-dasharray`) is a fold: by default plain dashes are valley and dash-dot mountain
+//!   folds (the origami diagram convention), or as [`crate::formats::DashedAs`] says;
+//! - otherwise the stroke colour picks the assignment by [`palette`]: red mountain, blue valley, black
 //!   boundary, green cut, yellow flat (facet), magenta unassigned; another colour maps to the
 //!   nearest of these in RGB, with one warning per distinct colour;
 //! - stroke opacity × the opacity of enclosing groups × 180° is the fold angle of mountain
@@ -15,7 +22,9 @@
 //!
 //! The result is in millimetres with y up (see [`frame`] for the units and the origin), then
 //! planarised so shared endpoints merge and crossings split, with a tolerance of
-//! [`MERGE_TOLERANCE`] of the drawing's size (drawing programs round coordinates).
+//! [`MERGE_TOLERANCE`] of the drawing's size (drawing programs round coordinates); then line
+//! ends that stop short of a line or corner by less than the snapping tolerance are joined to
+//! it ([`crate::formats::snap`]).
 //!
 //! **Writing** ([`write_string`]) produces what Origami Simulator opens: one `<line>` per edge,
 //! all direct children of the root (Origami Simulator ignores grouped elements), in the exact
@@ -33,10 +42,11 @@
 mod collect;
 pub mod flatten;
 pub mod frame;
+pub mod meaning;
 pub mod palette;
 mod read;
 pub mod write;
 
 pub use collect::{CURVE_TOLERANCE_MM, MAX_SEGMENTS};
-pub use read::{MERGE_TOLERANCE, merge_tolerance, read_str};
+pub use read::{MERGE_TOLERANCE, merge_tolerance, read_str, read_str_with};
 pub use write::write_string;

@@ -12,6 +12,11 @@
 //! | yellow | `#ffff00` | facet / flat (`F`) |
 //! | magenta | `#ff00ff` | unassigned, "undriven" (`U`) |
 //!
+//! Rabbit Ear's palette is known too and read exactly (no warning): crimson `#dc143c`
+//! mountain, royal blue `#4169e1` valley, black boundary, lime green `#32cd32` cut, light grey
+//! `#d3d3d3` flat, orchid `#da70d6` unassigned, and gold `#ffd700` **join** (Rabbit Ear draws
+//! `J` edges gold; by nearest colour they would read as flat).
+//!
 //! Any other colour is matched to the nearest palette colour by Euclidean distance in 8-bit
 //! RGB (ties go to the earlier row above); the reader warns about each such colour. The stroke
 //! opacity of a mountain or valley line is the fraction of a full fold: opacity × 180° is the
@@ -46,6 +51,17 @@ pub const PALETTE: [(Rgb, Assignment); 6] = [
     (Rgb(0xff, 0x00, 0xff), Assignment::Unassigned),
 ];
 
+/// Rabbit Ear's crease colours (its SVG exports name them with CSS colour keywords), read as
+/// exact matches.
+pub const RABBIT_EAR: [(Rgb, Assignment); 6] = [
+    (Rgb(0xdc, 0x14, 0x3c), Assignment::Mountain),
+    (Rgb(0x41, 0x69, 0xe1), Assignment::Valley),
+    (Rgb(0x32, 0xcd, 0x32), Assignment::Cut),
+    (Rgb(0xd3, 0xd3, 0xd3), Assignment::Flat),
+    (Rgb(0xda, 0x70, 0xd6), Assignment::Unassigned),
+    (Rgb(0xff, 0xd7, 0x00), Assignment::Join),
+];
+
 /// The result of matching a stroke colour against the palette.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Match {
@@ -59,6 +75,13 @@ pub struct Match {
 
 /// The palette entry nearest to `colour`.
 pub fn nearest(colour: Rgb) -> Match {
+    if let Some(&(palette, assignment)) = RABBIT_EAR.iter().find(|(c, _)| *c == colour) {
+        return Match {
+            assignment,
+            palette,
+            exact: true,
+        };
+    }
     let mut best = PALETTE[0];
     for entry in PALETTE {
         if entry.0.distance2(colour) < best.0.distance2(colour) {
@@ -119,6 +142,17 @@ mod tests {
             assert_eq!(m.assignment, a);
             assert_eq!(colour_of(a), c);
         }
+    }
+
+    #[test]
+    fn rabbit_ear_colours_are_exact_and_gold_is_join() {
+        let gold = nearest(Rgb(0xff, 0xd7, 0x00));
+        assert!(gold.exact);
+        assert_eq!(gold.assignment, Assignment::Join);
+        assert_eq!(
+            nearest(Rgb(0xdc, 0x14, 0x3c)).assignment,
+            Assignment::Mountain
+        );
     }
 
     #[test]

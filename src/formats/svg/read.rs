@@ -4,8 +4,8 @@
 use usvg::roxmltree;
 
 use super::collect::Collector;
-use super::frame;
-use crate::formats::{Imported, ParseError};
+use super::{frame, meaning};
+use crate::formats::{Imported, ParseError, ReadOptions, snap};
 use crate::pattern::CreasePattern;
 
 /// Merge tolerance relative to the drawing's size (1e-5: 2 µm on a 200 mm sheet).
@@ -20,10 +20,19 @@ pub const MERGE_TOLERANCE: f64 = 1e-5;
 /// The SVG namespace.
 const SVG_NS: &str = "http://www.w3.org/2000/svg";
 
-/// Parses an SVG crease pattern drawn in Origami Simulator's colours.
+/// Parses an SVG crease pattern with the default [`ReadOptions`] (see [`read_str_with`]).
+pub fn read_str(text: &str) -> Result<Imported, ParseError> {
+    read_str_with(text, &ReadOptions::default())
+}
+
+/// Parses an SVG crease pattern: declared meanings first (`data-assignment`, class names; see
+/// [`super::meaning`]), then Origami Simulator's colours, with dashed lines in a
+/// single-colour drawing read as folds by `options.dashed`.
 ///
 /// The pattern comes back in millimetres with y pointing up, planarised (coincident endpoints
-/// merged, crossings split, duplicates removed), its title and description taken from the
+/// merged, crossings split, duplicates removed), line ends within the snapping tolerance
+/// joined (`options.snap`, default [`crate::formats::snap::SNAP_RELATIVE`] of the diagonal;
+/// the tolerance used is in [`Imported::notes`]), its title and description taken from the
 /// root's `<title>` and `<desc>`. Warnings name off-palette colours, ignored elements and
 /// flattened curves.
 ///
@@ -32,7 +41,7 @@ const SVG_NS: &str = "http://www.w3.org/2000/svg";
 /// SVG usvg refuses (no valid size, too many elements), coordinates beyond
 /// [`crate::pattern::MAX_COORDINATE`], more than [`super::MAX_SEGMENTS`] segments, or
 /// no stroked line at all.
-pub fn read_str(text: &str) -> Result<Imported, ParseError> {
+pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, ParseError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
         return Err(ParseError::new(
@@ -40,27 +49,50 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
             "the file is empty, not an SVG document",
         ));
     }
-    let options = roxmltree::ParsingOptions {
+    let parsing = || roxmltree::ParsingOptions {
         allow_dtd: true,
         ..Default::default()
     };
-    let doc = roxmltree::Document::parse_with_options(text, options).map_err(xml_error)?;
+    let doc = roxmltree::Document::parse_with_options(text, parsing()).map_err(xml_error)?;
     check_root(doc.root_element())?;
-    let tree = usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(usvg_error)?;
+    let scan = meaning::scan(&doc, text);
+    let rewritten_doc;
+    let source = match &scan.text {
+        Some(rewritten) => {
+            rewritten_doc =
+                roxmltree::Document::parse_with_options(rewritten, parsing()).map_err(xml_error)?;
+            &rewritten_doc
+        }
+        None => &doc,
+    };
+    let tree = usvg::Tree::from_xmltree(source, &usvg::Options::default()).map_err(usvg_error)?;
     let size = tree.size();
     let canvas = (f64::from(size.width()), f64::from(size.height()));
-    let mut collector = Collector::new(frame::canvas_to_pattern(doc.root_element(), canvas));
+    let mut collector = Collector::new(frame::canvas_to_pattern(doc.root_element(), canvas))
+        .with_meanings(scan.by_id);
     collector.group(tree.root(), 1.0)?;
     if collector.is_empty() {
         return Err(ParseError::new("file", collector.empty_message()));
     }
+    let dash_note = collector.apply_dashes(options.dashed);
     let mut warnings = collector.warnings();
     warnings.extend(text_warning(&doc));
+    let declared = collector.declared();
     let mut pattern = collector.pattern;
     pattern.meta.title = child_text(doc.root_element(), "title");
     pattern.meta.description = child_text(doc.root_element(), "desc");
     let tolerance = merge_tolerance(&pattern);
-    super::super::finish_drawing(pattern, Some(tolerance), "drawn", warnings)
+    let snap = options.snap.unwrap_or_else(|| snap::default_snap(&pattern));
+    let mut imported =
+        super::super::finish_drawing(pattern, Some(tolerance), Some(snap), "drawn", warnings)?;
+    if declared > 0 {
+        imported.notes.push(format!(
+            "{declared} element(s) read by their data-assignment or class name rather than \
+             their colour"
+        ));
+    }
+    imported.notes.extend(dash_note);
+    Ok(imported)
 }
 
 /// Distance below which endpoints merge (and a point splits a line it touches), in

@@ -1,0 +1,175 @@
+//! Reading other tools' SVG conventions: Rabbit Ear's `data-assignment` and class names and
+//! palette, dashed folds in single-colour drawings (Blender Paper Model style), and line ends
+//! snapped in Origami Simulator's crane.
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+use foldcam::formats::{self, DashedAs, ReadOptions};
+use foldcam::pattern::{Assignment, CreasePattern};
+
+fn counts(cp: &CreasePattern) -> HashMap<Assignment, usize> {
+    let mut out = HashMap::new();
+    for e in &cp.edges {
+        *out.entry(e.assignment).or_default() += 1;
+    }
+    out
+}
+
+fn n(cp: &CreasePattern, a: Assignment) -> usize {
+    counts(cp).get(&a).copied().unwrap_or(0)
+}
+
+fn data(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data")
+        .join(name)
+}
+
+fn read(text: &str, options: &ReadOptions) -> formats::Imported {
+    formats::svg::read_str_with(text, options).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Rabbit Ear marks lines with `data-assignment` only (no stroke) or class names; the hand-made
+/// file (see tests/data/README.md) has a square outline, two diagonals (valley, and mountain
+/// at −90°), a mountain from the top edge's middle to the centre (class on the group), a flat
+/// line from the left edge's middle to the centre, and a gold line classed `cut`.
+#[test]
+fn data_assignment_and_class_names_win_over_colour() {
+    let imported = formats::load(&data("rabbit-ear-style.svg")).unwrap_or_else(|e| panic!("{e}"));
+    let cp = &imported.pattern;
+    // Split where lines end on the outline (top, left and bottom middles): 4 + 3 outline
+    // pieces; the diagonals split at the centre; the rest one edge each.
+    assert_eq!(n(cp, Assignment::Boundary), 7);
+    assert_eq!(n(cp, Assignment::Valley), 2);
+    assert_eq!(n(cp, Assignment::Mountain), 3);
+    assert_eq!(n(cp, Assignment::Flat), 1);
+    assert_eq!(n(cp, Assignment::Cut), 1);
+    assert_eq!(n(cp, Assignment::Join), 0);
+    let mut mountain_angles: Vec<i64> = cp
+        .edges
+        .iter()
+        .filter(|e| e.assignment == Assignment::Mountain)
+        .map(|e| e.fold_angle.unwrap_or(f64::NAN).round() as i64)
+        .collect();
+    mountain_angles.sort_unstable();
+    assert_eq!(mountain_angles, vec![-180, -90, -90]);
+    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+}
+
+#[test]
+#[ignore = "needs ../shared"]
+fn rabbit_ear_files_read_with_their_assignments() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/rabbit-ear");
+    // backslash-10: a unit square (B), a flat diagonal and a valley line, marked only by
+    // data-assignment and without any stroke.
+    let cp = formats::load(&dir.join("backslash-10.svg"))
+        .unwrap_or_else(|e| panic!("{e}"))
+        .pattern;
+    assert_eq!(n(&cp, Assignment::Valley), 2);
+    assert_eq!(n(&cp, Assignment::Flat), 2);
+    assert_eq!(n(&cp, Assignment::Boundary), 6);
+    assert_eq!(cp.edges.len(), 10);
+    // The crane with every assignment: one path per assignment, with its class, its
+    // data-assignment and its palette colour agreeing; gold is join.
+    let imported =
+        formats::load(&dir.join("crane-cp-all-assignments.svg")).unwrap_or_else(|e| panic!("{e}"));
+    let off_palette = |w: &Vec<String>| w.iter().any(|w| w.contains("not in the crease palette"));
+    assert!(!off_palette(&imported.warnings), "{:?}", imported.warnings);
+    for a in Assignment::ALL {
+        assert!(n(&imported.pattern, a) > 0, "no {a:?}");
+    }
+    // fish.svg names classes, with Rabbit Ear's light grey for flat lines.
+    let imported = formats::load(&dir.join("fish.svg")).unwrap_or_else(|e| panic!("{e}"));
+    assert!(!off_palette(&imported.warnings), "{:?}", imported.warnings);
+    assert!(n(&imported.pattern, Assignment::Flat) > 0);
+}
+
+/// A paper-craft style drawing in one colour: the outline solid, folds dashed (plain dashes
+/// and dash-dot), as Blender Paper Model and most laser exports draw them.
+fn single_colour(colour: &str) -> String {
+    let line = |x1: f64, y1: f64, x2: f64, y2: f64, dash: &str| {
+        format!(
+            "<line x1=\"{x1}\" y1=\"{y1}\" x2=\"{x2}\" y2=\"{y2}\" stroke=\"{colour}\" \
+             stroke-width=\"0.2\"{dash}/>"
+        )
+    };
+    let plain = " stroke-dasharray=\"2 1\"";
+    let dash_dot = " stroke-dasharray=\"4,1,0.5,1\"";
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100mm\" height=\"60mm\" \
+         viewBox=\"0 0 100 60\"><path d=\"M0 0H100V60H0Z\" fill=\"none\" stroke=\"{colour}\" \
+         stroke-width=\"0.2\"/>{}{}{}</svg>",
+        line(25.0, 0.0, 25.0, 60.0, plain),
+        line(50.0, 0.0, 50.0, 60.0, dash_dot),
+        line(75.0, 0.0, 75.0, 60.0, plain)
+    )
+}
+
+#[test]
+fn dashed_lines_in_a_single_colour_drawing_are_folds() {
+    let text = single_colour("#333333");
+    let cp = read(&text, &ReadOptions::default()).pattern;
+    // Three folds across a 100 × 60 sheet: the outline splits into 4 + 2 × 3 pieces.
+    assert_eq!(n(&cp, Assignment::Valley), 2);
+    assert_eq!(n(&cp, Assignment::Mountain), 1);
+    assert_eq!(n(&cp, Assignment::Boundary), 10);
+    assert_eq!(cp.edges.len(), 13);
+    // Configurable: every dashed line a cut.
+    let options = ReadOptions {
+        dashed: DashedAs::Fixed(Assignment::Cut),
+        ..ReadOptions::default()
+    };
+    let cp = read(&text, &options).pattern;
+    assert_eq!(n(&cp, Assignment::Cut), 3);
+    assert_eq!(n(&cp, Assignment::Valley) + n(&cp, Assignment::Mountain), 0);
+}
+
+#[test]
+fn dashes_do_not_override_colours_in_a_coloured_drawing() {
+    // Red and blue lines (Origami Simulator colours) with dashes: read by colour.
+    let text = single_colour("#ff0000").replacen(
+        "x1=\"50\" y1=\"0\" x2=\"50\" y2=\"60\" stroke=\"#ff0000\"",
+        "x1=\"50\" y1=\"0\" x2=\"50\" y2=\"60\" stroke=\"#0000ff\"",
+        1,
+    );
+    let cp = read(&text, &ReadOptions::default()).pattern;
+    assert_eq!(n(&cp, Assignment::Valley), 1);
+    assert_eq!(n(&cp, Assignment::Mountain), 2 + 6 + 4);
+}
+
+/// Origami Simulator's crane (MIT; tests/data/README.md): its line ends miss the lines they
+/// were drawn to by up to about 0.2 mm.
+#[test]
+fn the_crane_reads_with_its_ends_joined() {
+    let path = data("traditionalCrane.svg");
+    let unsnapped = formats::load_with(
+        &path,
+        &ReadOptions {
+            snap: Some(0.0),
+            ..ReadOptions::default()
+        },
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let imported = formats::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let cp = &imported.pattern;
+    // Without snapping, creases dangle; with it, no vertex has a single edge.
+    assert!(dangling(&unsnapped.pattern) > 0);
+    assert_eq!(dangling(cp), 0);
+    assert!(imported.notes.iter().any(|n| n.contains("snap tolerance")));
+    // Maekawa holds at every interior vertex once the ends meet (it failed at 33 before).
+    let report = foldcam::check::check(cp, &foldcam::check::CheckOptions::default());
+    let maekawa = report.of_kind(foldcam::check::FindingKind::Maekawa).count();
+    assert_eq!(maekawa, 0);
+    let before =
+        foldcam::check::check(&unsnapped.pattern, &foldcam::check::CheckOptions::default());
+    assert!(before.findings.len() > report.findings.len());
+    // Assignments as drawn: the crane's colours are red, blue, black and yellow only.
+    for a in [Assignment::Cut, Assignment::Unassigned, Assignment::Join] {
+        assert_eq!(n(cp, a), 0);
+    }
+}
+
+fn dangling(cp: &CreasePattern) -> usize {
+    cp.vertex_edges().iter().filter(|e| e.len() == 1).count()
+}
