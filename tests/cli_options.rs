@@ -470,3 +470,136 @@ fn four_lines_fixture_has_one_line_of_each_kind() {
     assert_eq!(length(Assignment::Flat), 100.0);
     assert!((length(Assignment::Unassigned) - 3125f64.sqrt()).abs() < 1e-12);
 }
+
+// ---------------------------------------------------------------------------------------
+// convert
+
+#[test]
+fn convert_planarize_splits_crossings_and_tolerance_merges_close_vertices() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    // A square with two crossing creases, one of which starts 0.05 mm above a corner, on the
+    // left side; vertex 5 repeats corner 2 and is unused. No faces.
+    let fold = r#"{"file_spec":1.2,"frame_unit":"mm",
+      "vertices_coords":[[0,0],[100,0],[100,100],[0,100],[0,0.05],[100,100.0]],
+      "edges_vertices":[[0,1],[1,2],[2,3],[3,0],[4,2],[1,3]],
+      "edges_assignment":["B","B","B","B","M","V"]}"#;
+    std::fs::write(dir.path().join("x.fold"), fold).expect("write");
+    // (distinct end points, lines) of the written ORIPA file, read as plain text.
+    let lines = |out: &str, extra: &[&str]| {
+        let mut args = vec!["convert", "x.fold", out];
+        args.extend_from_slice(extra);
+        let o = foldcam(&args, dir.path());
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let text = std::fs::read_to_string(dir.path().join(out)).expect("written");
+        let mut points = std::collections::BTreeSet::new();
+        let mut count = 0;
+        for line in text.lines().filter(|l| !l.trim().is_empty()) {
+            let v: Vec<f64> = line
+                .split_whitespace()
+                .skip(1)
+                .map(|t| t.parse().expect("number"))
+                .collect();
+            points.insert(((v[0] * 1e6).round() as i64, (v[1] * 1e6).round() as i64));
+            points.insert(((v[2] * 1e6).round() as i64, (v[3] * 1e6).round() as i64));
+            count += 1;
+        }
+        (points.len(), count)
+    };
+    // As drawn: the six lines and their five distinct ends.
+    assert_eq!(lines("a.cp", &[]), (5, 6));
+    // Cleaned: the diagonals split at their crossing (+2 lines, +1 point) and the left side
+    // split where the mountain starts on it (+1 line).
+    assert_eq!(lines("b.cp", &["--planarize"]), (6, 9));
+    // A tolerance above 0.05 mm merges that start into the corner: the side stays whole.
+    assert_eq!(
+        lines("c.cp", &["--planarize", "--tolerance", "0.1"]),
+        (5, 8)
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// tessellate
+
+fn tessellate(extra: &[&str], mesh: &str, dir: &Path) -> (String, foldcam::formats::Imported) {
+    let mesh = data(&format!("examples/tessellation/{mesh}.obj"));
+    let mut args = vec!["tessellate", &mesh, "-o", "t.fold", "-x", "stainless-0.5"];
+    args.extend_from_slice(extra);
+    let o = foldcam(&args, dir);
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(
+        o.status.success(),
+        "{args:?}: {stdout}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let imported = foldcam::formats::load(&dir.join("t.fold")).expect("tessellation loads");
+    (stdout, imported)
+}
+
+#[test]
+fn tessellate_layout_and_shrink_reach_the_pattern() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (out, checker) = tessellate(
+        &["--layout", "checkerboard", "--shrink", "0.7"],
+        "dome",
+        dir.path(),
+    );
+    assert!(
+        out.contains("checkerboard layout") && out.contains("shrink 0.7"),
+        "{out}"
+    );
+    let (out, digon) = tessellate(
+        &[
+            "--layout",
+            "digon",
+            "--max-fold-angle",
+            "178",
+            "--min-vertex-angle",
+            "15",
+        ],
+        "dome",
+        dir.path(),
+    );
+    assert!(out.contains("digon layout"), "{out}");
+    // A digon on every interior edge makes a different pattern from the checkerboard.
+    assert_ne!(checker.pattern.edges.len(), digon.pattern.edges.len());
+}
+
+#[test]
+fn tessellate_ground_puts_the_boundary_on_one_plane_and_fit_reduces_the_distance() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let boundary_z_spread = |imported: &foldcam::formats::Imported| {
+        let folded = imported.folded.as_ref().expect("folded frame");
+        let z: Vec<f64> = imported
+            .pattern
+            .edges
+            .iter()
+            .filter(|e| e.assignment == Assignment::Boundary)
+            .flat_map(|e| e.vertices)
+            .map(|v| folded.positions[v.index()].z)
+            .collect();
+        let lo = z.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = z.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        hi - lo
+    };
+    let (_, free) = tessellate(&["--shrink", "0.8"], "saddle", dir.path());
+    assert!(
+        boundary_z_spread(&free) > 1.0,
+        "the saddle's rim is not flat"
+    );
+    let (_, grounded) = tessellate(&["--shrink", "0.8", "--ground"], "saddle", dir.path());
+    assert!(
+        boundary_z_spread(&grounded) < 1e-6,
+        "{}",
+        boundary_z_spread(&grounded)
+    );
+    let (out, _) = tessellate(&["--shrink", "0.8", "--fit", "0.5"], "saddle", dir.path());
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("surface fit"))
+        .unwrap_or_else(|| panic!("no surface-fit line: {out}"));
+    let numbers: Vec<f64> = line
+        .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e' || c == '-'))
+        .filter_map(|t| t.parse().ok())
+        .collect();
+    assert!(numbers.len() >= 2 && numbers[1] < numbers[0], "{line}");
+}
