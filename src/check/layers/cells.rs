@@ -88,19 +88,72 @@ impl BoxGrid {
     }
 }
 
-/// Builds the arrangement of `folded` (the folded form of `cp`); `tol` is the merge distance.
-pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, tol: f64) -> Arrangement {
-    let segments = folded_segments(cp, folded);
-    let mut sheet = CreasePattern::new();
+/// Halvings of the merge distance tried, from 1/8 of the shortest edge down.
+const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=50;
+
+/// How many successive halvings must give the same numbers of points and segments.
+const STABLE_REPEATS: usize = 3;
+
+/// The folded edges cut into a planar graph, and the merge distance chosen for it.
+///
+/// Like Flat-Folder, the distance is the shortest folded edge divided by 2^i for i = 3, 4, …,
+/// halved until the numbers of points and segments stay the same [`STABLE_REPEATS`] times;
+/// the largest distance of that stable run is used. Coordinates written to single precision
+/// by other tools then still meet where they should, and fine details are not merged away.
+/// `floor` is the smallest distance tried.
+fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePattern, f64)> {
+    let mut raw = CreasePattern::new();
     for s in segments.iter().flatten() {
-        sheet.add_segment(s[0], s[1], Assignment::Boundary);
+        raw.add_segment(s[0], s[1], Assignment::Boundary);
     }
-    let options = PlanarizeOptions {
-        tolerance: Some(tol),
-        faces: false,
+    let shortest = segments
+        .iter()
+        .flatten()
+        .map(|[a, b]| a.distance(*b))
+        .filter(|&d| d > 0.0)
+        .fold(f64::MAX, f64::min);
+    if shortest == f64::MAX {
+        return None;
+    }
+    let mut run: Vec<(CreasePattern, f64)> = Vec::new();
+    let mut last = (usize::MAX, usize::MAX);
+    let mut fallback = None;
+    for i in TOLERANCE_STEPS {
+        let tol = shortest / 2f64.powi(i);
+        if tol < floor {
+            break;
+        }
+        let mut sheet = raw.clone();
+        let options = PlanarizeOptions {
+            tolerance: Some(tol),
+            faces: false,
+        };
+        if planarize(&mut sheet, &options).is_err() {
+            continue;
+        }
+        let counts = (sheet.vertices.len(), sheet.edges.len());
+        if counts != last {
+            run.clear();
+            last = counts;
+        }
+        run.push((sheet, tol));
+        if run.len() >= STABLE_REPEATS {
+            return run.into_iter().next();
+        }
+        fallback = run.first().map(|(s, t)| (s.clone(), *t));
+    }
+    fallback
+}
+
+/// Builds the arrangement of `folded` (the folded form of `cp`); `floor` is the smallest merge
+/// distance tried (see [`planar_sheet`]). Returns the arrangement and the distance used.
+pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrangement, f64) {
+    let segments = folded_segments(cp, folded);
+    let Some((sheet, tol)) = planar_sheet(&segments, floor) else {
+        return (Arrangement::default(), floor);
     };
-    if planarize(&mut sheet, &options).is_err() || sheet.edges.is_empty() {
-        return Arrangement::default();
+    if sheet.edges.is_empty() {
+        return (Arrangement::default(), tol);
     }
     let traced = find_faces(&sheet);
     let face_boxes: Vec<(DVec2, DVec2)> = folded.faces.iter().map(|f| f.bounds).collect();
@@ -147,8 +200,11 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, tol: f64) -> Arrangemen
             .iter()
             .copied()
             .filter(|&i| {
-                segments[i as usize]
-                    .is_some_and(|[p, q]| crate::geom::segment::distance_to_point(p, q, mid) <= tol)
+                segments[i as usize].is_some_and(|[p, q]| {
+                    [ends[0], mid, ends[1]]
+                        .iter()
+                        .all(|&x| crate::geom::segment::distance_to_point(p, q, x) <= tol)
+                })
             })
             .collect();
         along.sort_unstable();
@@ -157,7 +213,7 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, tol: f64) -> Arrangemen
         arr.segment_ends.push(ends);
         arr.segment_edges.push(along);
     }
-    arr
+    (arr, tol)
 }
 
 /// The folded segment of every edge that borders a face (`None` for edges on no face).

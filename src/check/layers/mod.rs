@@ -27,6 +27,7 @@ pub mod constraints;
 mod decimal;
 pub mod folded;
 pub mod search;
+mod verdict;
 
 use glam::DVec2;
 use serde::Serialize;
@@ -37,15 +38,30 @@ use constraints::{Kind, Place, System};
 pub use decimal::BigCount;
 use folded::FoldedFaces;
 use search::{Count, Engine};
+pub use verdict::{LayerCheck, check_layers};
 
-/// Distance, relative to the pattern's bounding-box diagonal, within which two placements of a
-/// vertex agree and folded points merge in the arrangement.
-pub const RELATIVE_TOLERANCE: f64 = 1e-7;
+/// The smallest merge distance of the arrangement, relative to the pattern's bounding-box
+/// diagonal (the distance itself adapts to the pattern, see [`cells::arrange`]).
+pub const RELATIVE_TOLERANCE: f64 = 1e-10;
 
-/// How many merge tolerances apart two folded placements of one vertex may lie: the files of
-/// other tools often hold coordinates to single precision, and reflections add up their
-/// error.
-pub const VERTEX_AGREEMENT: f64 = 1000.0;
+/// How far apart two folded placements of one vertex may lie, as a share of the shortest
+/// edge: files of other tools often hold coordinates to single precision, reflections add up
+/// their error, and the arrangement merges points closer than an eighth of the shortest edge
+/// at most (as Flat-Folder does).
+pub const VERTEX_AGREEMENT: f64 = 1.0 / 8.0;
+
+fn vertex_agreement(cp: &CreasePattern) -> f64 {
+    let shortest = cp
+        .edge_ids()
+        .map(|e| cp.edge_length(e))
+        .filter(|&d| d > 0.0)
+        .fold(f64::MAX, f64::min);
+    if shortest == f64::MAX {
+        0.0
+    } else {
+        shortest * VERTEX_AGREEMENT
+    }
+}
 
 /// Options of the layer solver.
 #[derive(Clone, Debug, PartialEq)]
@@ -53,7 +69,7 @@ pub struct LayerOptions {
     /// Stop counting a component at this many states (its count is then a lower bound and the
     /// report says `exact: false`); `None` counts everything.
     pub max_states: Option<u64>,
-    /// Merge tolerance relative to the bounding-box diagonal.
+    /// Smallest merge distance relative to the bounding-box diagonal.
     pub relative_tolerance: f64,
 }
 
@@ -207,8 +223,8 @@ impl LayerSolver {
             traced = copy;
             &traced
         };
-        let folded = folded::fold_faces(cp, tol * VERTEX_AGREEMENT)?;
-        let arr = cells::arrange(cp, &folded, tol);
+        let folded = folded::fold_faces(cp, vertex_agreement(cp).max(tol))?;
+        let (arr, _) = cells::arrange(cp, &folded, tol);
         let sys = constraints::build(cp, &folded, &arr)?;
         let mut solver = LayerSolver {
             report: LayerReport {
