@@ -20,6 +20,8 @@ pub struct Arrangement {
     pub cell_faces: Vec<Vec<u32>>,
     /// An interior point of each cell (folded coordinates).
     pub cell_points: Vec<DVec2>,
+    /// Each cell's outline and holes (folded coordinates).
+    pub cell_rings: Vec<Vec<Vec<DVec2>>>,
     /// Segments: the cells on the left and right (from `ends[0]` to `ends[1]`).
     pub segment_cells: Vec<[Option<u32>; 2]>,
     /// Segment end points (folded coordinates).
@@ -174,6 +176,7 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrange
         covering.sort_unstable();
         arr.cell_faces.push(covering);
         arr.cell_points.push(p);
+        arr.cell_rings.push(rings);
     }
     let mut side_of = std::collections::HashMap::new();
     for (c, cell) in traced.faces.iter().enumerate() {

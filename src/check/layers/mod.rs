@@ -33,7 +33,7 @@ use glam::DVec2;
 use serde::Serialize;
 
 use crate::pattern::faces::find_faces;
-use crate::pattern::{CreasePattern, EdgeId, FaceId, VertexId};
+use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState, VertexId};
 use constraints::{Kind, Place, System};
 pub use decimal::BigCount;
 use folded::FoldedFaces;
@@ -191,6 +191,28 @@ impl LayerReport {
     }
 }
 
+/// One cell of a [`TopView`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct TopCell {
+    /// Outline and holes, folded coordinates.
+    pub rings: Vec<Vec<DVec2>>,
+    /// The face seen from above.
+    pub top: FaceId,
+    /// True when that face shows its back side.
+    pub top_flipped: bool,
+    /// Number of layers in the cell.
+    pub layers: usize,
+}
+
+/// A folded state seen from above (+z): what to draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TopView {
+    /// The cells covered by paper.
+    pub cells: Vec<TopCell>,
+    /// Segments of the arrangement, with `true` on the folded outline (paper on one side).
+    pub segments: Vec<([DVec2; 2], bool)>,
+}
+
 /// The solved layer problem of one pattern: folded form, constraints, counts, and the states
 /// themselves on demand.
 pub struct LayerSolver {
@@ -316,29 +338,7 @@ impl LayerSolver {
     /// when `f` lies on the side of `g`'s normal. `None` when there is no state `k`, or the
     /// counts are not exact.
     pub fn face_orders(&self, k: u128) -> Option<Vec<(FaceId, FaceId, i8)>> {
-        if !self.report.foldable() || self.counts.iter().any(|c| !c.exact) {
-            return None;
-        }
-        let mut rest = k;
-        let mut digits = Vec::with_capacity(self.counts.len());
-        for c in &self.counts {
-            digits.push(rest % c.states);
-            rest /= c.states;
-        }
-        if rest != 0 {
-            return None;
-        }
-        let mut engine = Engine::new(&self.sys);
-        for (v, &x) in self.base.iter().enumerate() {
-            if x != -1 {
-                engine.set_literal(((v as u32) << 1) | (1 - x as u32));
-            }
-        }
-        engine.propagate().ok()?;
-        for (comp, &d) in self.components.iter().zip(&digits) {
-            engine.count(comp, None, Some(d));
-        }
-        Some(self.orders_of(&engine.value))
+        self.state_values(k).map(|v| self.orders_of(&v))
     }
 
     /// True when `orders` (FOLD `faceOrders` on this solver's faces) can be completed to a
@@ -376,6 +376,87 @@ impl LayerSolver {
             .components()
             .iter()
             .all(|comp| engine.count(comp, Some(1), None).states >= 1)
+    }
+
+    /// Values of every variable in state `k` (see [`LayerSolver::face_orders`]).
+    fn state_values(&self, k: u128) -> Option<Vec<i8>> {
+        if !self.report.foldable() || self.counts.iter().any(|c| !c.exact) {
+            return None;
+        }
+        let mut rest = k;
+        let mut digits = Vec::with_capacity(self.counts.len());
+        for c in &self.counts {
+            digits.push(rest % c.states);
+            rest /= c.states;
+        }
+        if rest != 0 {
+            return None;
+        }
+        let mut engine = Engine::new(&self.sys);
+        for (v, &x) in self.base.iter().enumerate() {
+            if x != -1 {
+                engine.set_literal(((v as u32) << 1) | (1 - x as u32));
+            }
+        }
+        engine.propagate().ok()?;
+        for (comp, &d) in self.components.iter().zip(&digits) {
+            engine.count(comp, None, Some(d));
+        }
+        Some(engine.value)
+    }
+
+    /// The folded state number `k` of `cp` (the pattern this solver was built from, with its
+    /// faces): vertices at their folded places (z = 0), the pattern's edges and faces, and
+    /// `faceOrders`. `None` as for [`LayerSolver::face_orders`].
+    pub fn folded_state(&self, cp: &CreasePattern, k: u128) -> Option<FoldedState> {
+        let orders = self.face_orders(k)?;
+        Some(FoldedState {
+            positions: self.folded.vertices.iter().map(|p| p.extend(0.0)).collect(),
+            edges: cp.edges.clone(),
+            faces: cp.faces.clone(),
+            face_orders: orders,
+        })
+    }
+
+    /// The top view of state `k`: every cell with the face seen from above and its number of
+    /// layers. `None` as for [`LayerSolver::face_orders`].
+    pub fn top_view(&self, k: u128) -> Option<TopView> {
+        let value = self.state_values(k)?;
+        let above = |a: u32, b: u32| -> bool {
+            match self.sys.var(a, b) {
+                Some(v) => (value[v as usize] == 1) == (a < b),
+                None => false,
+            }
+        };
+        let cells = self
+            .arr
+            .cell_faces
+            .iter()
+            .zip(&self.arr.cell_rings)
+            .filter(|(faces, _)| !faces.is_empty())
+            .map(|(faces, rings)| {
+                let top = faces[1..]
+                    .iter()
+                    .fold(faces[0], |t, &g| if above(g, t) { g } else { t });
+                TopCell {
+                    rings: rings.clone(),
+                    top: FaceId(top),
+                    top_flipped: self.folded.faces[top as usize].flipped,
+                    layers: faces.len(),
+                }
+            })
+            .collect();
+        let edges = self
+            .arr
+            .segment_ends
+            .iter()
+            .zip(&self.arr.segment_cells)
+            .map(|(&ends, &cells)| (ends, cells.iter().flatten().count() < 2))
+            .collect();
+        Some(TopView {
+            cells,
+            segments: edges,
+        })
     }
 
     fn orders_of(&self, value: &[i8]) -> Vec<(FaceId, FaceId, i8)> {
