@@ -1,4 +1,5 @@
-//! Reading and writing crease patterns: FOLD 1.2, Origami-Simulator SVG, ORIPA `.cp`.
+//! Reading and writing crease patterns: FOLD 1.2, Origami-Simulator SVG, ORIPA `.cp` and
+//! `.opx`.
 //!
 //! Each format module parses from text into an [`Imported`] pattern, or renders a pattern to
 //! text, without touching the file system; [`load`] and [`save`] add file access, pick the
@@ -8,6 +9,7 @@
 pub mod atomic;
 pub mod cp;
 pub mod fold;
+pub mod opx;
 pub mod svg;
 
 use std::path::{Path, PathBuf};
@@ -29,6 +31,8 @@ pub enum Format {
     Svg,
     /// ORIPA line list (`.cp`).
     Cp,
+    /// ORIPA's XML document (`.opx`).
+    Opx,
 }
 
 impl Format {
@@ -39,12 +43,13 @@ impl Format {
             "fold" | "json" => Some(Format::Fold),
             "svg" => Some(Format::Svg),
             "cp" => Some(Format::Cp),
+            "opx" => Some(Format::Opx),
             _ => None,
         }
     }
 
     /// Extensions accepted, for help and error text.
-    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp";
+    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp, .opx";
 }
 
 /// A pattern read from a file, with what the reader had to say about it.
@@ -190,6 +195,7 @@ pub fn parse(format: Format, text: &str) -> Result<Imported, ParseError> {
         Format::Fold => fold::read_str(text),
         Format::Svg => svg::read_str(text),
         Format::Cp => cp::read_str(text),
+        Format::Opx => opx::read_str(text),
     }
 }
 
@@ -199,6 +205,7 @@ pub fn render(format: Format, pattern: &CreasePattern, folded: Option<&FoldedSta
         Format::Fold => fold::write_string(pattern, folded),
         Format::Svg => svg::write_string(pattern),
         Format::Cp => cp::write_string(pattern),
+        Format::Opx => opx::write_string(pattern),
     }
 }
 
