@@ -42,9 +42,15 @@ fn bench(c: &mut Criterion) {
             "grid_4x4_D112",
             load(root.join("tests/data/flat-folder/372_brown_4x4_D112.fold")),
         ),
-        ("crane", load(shared.join("instagram/004_traditional_Crane.fold"))),
+        (
+            "crane",
+            load(shared.join("instagram/004_traditional_Crane.fold")),
+        ),
         ("kitten", load(shared.join("instagram/005_ku_Kitten.fold"))),
-        ("grid_4x4_D58", load(shared.join("grids/318_brown_4x4_D58.fold"))),
+        (
+            "grid_4x4_D58",
+            load(shared.join("grids/318_brown_4x4_D58.fold")),
+        ),
     ];
     let mut group = c.benchmark_group("layers");
     group.sample_size(10);

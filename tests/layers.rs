@@ -42,7 +42,9 @@ fn has_state(cp: &CreasePattern) -> bool {
         max_states: Some(1),
         ..LayerOptions::default()
     };
-    solve_layers(cp, &options).expect("layer problem").foldable()
+    solve_layers(cp, &options)
+        .expect("layer problem")
+        .foldable()
 }
 
 fn locally_flat(cp: &CreasePattern) -> bool {
@@ -55,8 +57,15 @@ fn locally_flat(cp: &CreasePattern) -> bool {
 /// A unit square folded in half along x = 0.5 with the given assignment.
 fn folded_once(a: Assignment) -> CreasePattern {
     let mut cp = CreasePattern::new();
-    let p = [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (1.0, 1.0), (0.5, 1.0), (0.0, 1.0)]
-        .map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
+    let p = [
+        (0.0, 0.0),
+        (0.5, 0.0),
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.5, 1.0),
+        (0.0, 1.0),
+    ]
+    .map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
     for i in 0..6 {
         cp.add_edge(p[i], p[(i + 1) % 6], Assignment::Boundary);
     }
@@ -69,11 +78,27 @@ fn zigzag(a: Assignment, b: Assignment) -> CreasePattern {
     let mut cp = CreasePattern::new();
     for x in 0..3 {
         let x = f64::from(x);
-        cp.add_segment(DVec2::new(x, 0.0), DVec2::new(x + 1.0, 0.0), Assignment::Boundary);
-        cp.add_segment(DVec2::new(x, 1.0), DVec2::new(x + 1.0, 1.0), Assignment::Boundary);
+        cp.add_segment(
+            DVec2::new(x, 0.0),
+            DVec2::new(x + 1.0, 0.0),
+            Assignment::Boundary,
+        );
+        cp.add_segment(
+            DVec2::new(x, 1.0),
+            DVec2::new(x + 1.0, 1.0),
+            Assignment::Boundary,
+        );
     }
-    cp.add_segment(DVec2::new(0.0, 0.0), DVec2::new(0.0, 1.0), Assignment::Boundary);
-    cp.add_segment(DVec2::new(3.0, 0.0), DVec2::new(3.0, 1.0), Assignment::Boundary);
+    cp.add_segment(
+        DVec2::new(0.0, 0.0),
+        DVec2::new(0.0, 1.0),
+        Assignment::Boundary,
+    );
+    cp.add_segment(
+        DVec2::new(3.0, 0.0),
+        DVec2::new(3.0, 1.0),
+        Assignment::Boundary,
+    );
     cp.add_segment(DVec2::new(1.0, 0.0), DVec2::new(1.0, 1.0), a);
     cp.add_segment(DVec2::new(2.0, 0.0), DVec2::new(2.0, 1.0), b);
     clean(cp)
@@ -97,10 +122,19 @@ fn three_panel_strip_counts_match_the_stackings_by_hand() {
     // 0 < 1 < 2: one stack), a valley puts it below panel 1, either under panel 0 or
     // between 0 and 1 (two stacks); unassigned leaves three places for panel 2. Both
     // unassigned: all 3! = 6 stacks.
-    assert_eq!(states(&zigzag(Assignment::Valley, Assignment::Mountain)), "1");
+    assert_eq!(
+        states(&zigzag(Assignment::Valley, Assignment::Mountain)),
+        "1"
+    );
     assert_eq!(states(&zigzag(Assignment::Valley, Assignment::Valley)), "2");
-    assert_eq!(states(&zigzag(Assignment::Valley, Assignment::Unassigned)), "3");
-    assert_eq!(states(&zigzag(Assignment::Unassigned, Assignment::Unassigned)), "6");
+    assert_eq!(
+        states(&zigzag(Assignment::Valley, Assignment::Unassigned)),
+        "3"
+    );
+    assert_eq!(
+        states(&zigzag(Assignment::Unassigned, Assignment::Unassigned)),
+        "6"
+    );
 }
 
 #[test]
@@ -117,14 +151,25 @@ fn faces_named_when_no_order_exists() {
     assert!(c.faces.len() >= 2);
     let faces = cp.faces.as_ref().expect("faces");
     for (f, p) in c.faces.iter().zip(&c.positions) {
-        let ring: Vec<DVec2> = faces[f.index()].outer.iter().map(|&v| cp.position(v)).collect();
-        let (lo, hi) = ring.iter().fold((ring[0], ring[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)));
-        assert!(p.cmpge(lo - 1e-6).all() && p.cmple(hi + 1e-6).all(), "{f} at {p}");
+        let ring: Vec<DVec2> = faces[f.index()]
+            .outer
+            .iter()
+            .map(|&v| cp.position(v))
+            .collect();
+        let (lo, hi) = ring
+            .iter()
+            .fold((ring[0], ring[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)));
+        assert!(
+            p.cmpge(lo - 1e-6).all() && p.cmple(hi + 1e-6).all(),
+            "{f} at {p}"
+        );
     }
 }
 
 fn copied(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/flat-folder").join(name)
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/flat-folder")
+        .join(name)
 }
 
 #[test]
@@ -157,7 +202,10 @@ fn a_state_and_its_face_orders_are_admitted_and_a_flipped_pair_is_not() {
     let forced = orders
         .iter()
         .position(|&(f, g, _)| {
-            let (fv, gv) = (&cp.faces.as_ref().expect("faces")[f.index()], &cp.faces.as_ref().expect("faces")[g.index()]);
+            let (fv, gv) = (
+                &cp.faces.as_ref().expect("faces")[f.index()],
+                &cp.faces.as_ref().expect("faces")[g.index()],
+            );
             fv.outer.iter().filter(|v| gv.outer.contains(v)).count() >= 2
         })
         .expect("two neighbouring faces overlap");
@@ -185,7 +233,12 @@ fn the_cap_makes_the_count_inexact() {
     };
     let report = solve_layers(&cp, &options).expect("layer problem");
     assert!(!report.exact);
-    assert!(report.component_states.iter().any(|c| !c.exact && c.states == "2"));
+    assert!(
+        report
+            .component_states
+            .iter()
+            .any(|c| !c.exact && c.states == "2")
+    );
 }
 
 #[test]
@@ -215,7 +268,7 @@ fn generated_patterns_have_a_layer_order() {
         ("waterbomb", Waterbomb::default().build()),
         ("yoshimura", Yoshimura::default().build()),
     ];
-    for (columns, rows, shear) in [(2, 2, 0.0), (5, 3, 10.0), (4, 6, 25.0)] {
+    for (columns, rows, shear) in [(2, 2, 0.0), (5, 3, 3.0), (4, 6, 6.0)] {
         patterns.push((
             "miura",
             MiuraOri {
@@ -245,6 +298,7 @@ fn generated_patterns_have_a_layer_order() {
             .build(),
         ));
     }
+    let mut checked = 0;
     for (name, cp) in patterns {
         let cp = clean(cp.expect("valid parameters"));
         if !locally_flat(&cp) {
@@ -252,7 +306,12 @@ fn generated_patterns_have_a_layer_order() {
             continue;
         }
         assert!(has_state(&cp), "{name}");
+        checked += 1;
     }
+    assert!(
+        checked >= 4,
+        "only {checked} generated patterns fold flat locally"
+    );
 }
 
 #[test]
@@ -289,7 +348,10 @@ fn fold_scripts_end_in_a_state_the_solver_admits() {
         let Some(last) = step_states(&folding, &sheet).pop() else {
             continue;
         };
-        let flat = last.positions.iter().all(|p| (p.z - last.positions[0].z).abs() < 1e-6);
+        let flat = last
+            .positions
+            .iter()
+            .all(|p| (p.z - last.positions[0].z).abs() < 1e-6);
         let all_flat_folds = sheet.pattern.edges.iter().all(|e| {
             e.fold_angle
                 .is_none_or(|a| a.abs() < 1e-6 || (a.abs() - 180.0).abs() < 1e-6)
@@ -298,7 +360,10 @@ fn fold_scripts_end_in_a_state_the_solver_admits() {
             continue;
         }
         let cp = clean(sheet.pattern.clone());
-        assert_eq!(cp.faces.as_ref().map(Vec::len), sheet.pattern.faces.as_ref().map(Vec::len));
+        assert_eq!(
+            cp.faces.as_ref().map(Vec::len),
+            sheet.pattern.faces.as_ref().map(Vec::len)
+        );
         let solver = LayerSolver::new(&cp, &LayerOptions::default()).expect("layer problem");
         assert_ne!(solver.report().states, "0", "{}", path.display());
         assert!(solver.admits(&last.face_orders), "{}", path.display());
@@ -317,7 +382,12 @@ fn rows(dir: &Path, csv: &str) -> Vec<(String, usize, bool, String, f64)> {
     let text = std::fs::read_to_string(dir.join(csv)).expect("csv");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
-    let col = |n: &str| header.iter().position(|h| h.eq_ignore_ascii_case(n)).expect(n);
+    let col = |n: &str| {
+        header
+            .iter()
+            .position(|h| h.eq_ignore_ascii_case(n))
+            .expect(n)
+    };
     let (num, faces, limited, states, setup, solve) = (
         col("number"),
         col("faces"),
@@ -335,17 +405,22 @@ fn rows(dir: &Path, csv: &str) -> Vec<(String, usize, bool, String, f64)> {
                 c[faces].parse().unwrap_or(usize::MAX),
                 c[limited] == "no limit",
                 c[states].to_string(),
-                c[setup].parse::<f64>().unwrap_or(f64::MAX) + c[solve].parse::<f64>().unwrap_or(0.0),
+                c[setup].parse::<f64>().unwrap_or(f64::MAX)
+                    + c[solve].parse::<f64>().unwrap_or(0.0),
             )
         })
         .collect()
 }
 
 fn file_numbered(dir: &Path, number: &str) -> Option<PathBuf> {
-    std::fs::read_dir(dir).ok()?.flatten().map(|e| e.path()).find(|p| {
-        p.file_name()
-            .is_some_and(|n| n.to_string_lossy().starts_with(&format!("{number}_")))
-    })
+    std::fs::read_dir(dir)
+        .ok()?
+        .flatten()
+        .map(|e| e.path())
+        .find(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with(&format!("{number}_")))
+        })
 }
 
 /// Patterns with few faces and a small Flat-Folder time: the subset that stays well under two
@@ -357,7 +432,10 @@ fn flat_folder_counts_match_on_small_patterns() {
         panic!("../shared/testdata/flat-folder is absent");
     };
     let mut compared = 0;
-    for (csv, sub, max_faces) in [("grids_data.csv", "grids", 120), ("instagram_data.csv", "instagram", 90)] {
+    for (csv, sub, max_faces) in [
+        ("grids_data.csv", "grids", 120),
+        ("instagram_data.csv", "instagram", 90),
+    ] {
         for (number, faces, exact, expected, seconds) in rows(&dir, csv) {
             if !exact || faces > max_faces || seconds > 0.05 || expected.len() > 5 {
                 continue;

@@ -82,7 +82,8 @@ fn parse_line(body: &str) -> Result<(i64, DVec2, DVec2), String> {
         let after = &rest[at + 16..];
         let name_end = after.find('"').ok_or("unterminated property name")?;
         let name = &after[..name_end];
-        let value_text = value_of(&after[name_end..]).ok_or_else(|| format!("property {name:?} has no value"))?;
+        let value_text = value_of(&after[name_end..])
+            .ok_or_else(|| format!("property {name:?} has no value"))?;
         match name {
             "type" => {
                 kind = value_text
@@ -94,9 +95,14 @@ fn parse_line(body: &str) -> Result<(i64, DVec2, DVec2), String> {
                     .parse()
                     .map_err(|_| format!("{name} {value_text:?} is not a number"))?;
                 if !v.is_finite() || v.abs() > MAX_COORDINATE {
-                    return Err(format!("{name} = {v} is not finite or beyond ±{MAX_COORDINATE:e}"));
+                    return Err(format!(
+                        "{name} = {v} is not finite or beyond ±{MAX_COORDINATE:e}"
+                    ));
                 }
-                let i = ["x0", "y0", "x1", "y1"].iter().position(|n| *n == name).unwrap_or(0);
+                let i = ["x0", "y0", "x1", "y1"]
+                    .iter()
+                    .position(|n| *n == name)
+                    .unwrap_or(0);
                 c[i] = v;
             }
             _ => {}
@@ -140,10 +146,17 @@ pub fn write_string(pattern: &CreasePattern) -> String {
     let mut out = String::from(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<java version=\"1.8.0\" class=\"java.beans.XMLDecoder\">\n <object class=\"oripa.DataSet\" id=\"DataSet0\">\n  <void class=\"oripa.DataSet\" method=\"getField\">\n   <string>lines</string>\n   <void method=\"set\">\n    <object idref=\"DataSet0\"/>\n",
     );
-    let _ = writeln!(out, "    <array class=\"oripa.OriLineProxy\" length=\"{}\">", lines.len());
+    let _ = writeln!(
+        out,
+        "    <array class=\"oripa.OriLineProxy\" length=\"{}\">",
+        lines.len()
+    );
     for (i, (kind, a, b)) in lines.iter().enumerate() {
         let _ = writeln!(out, "     <void index=\"{i}\">\n      {LINE_OBJECT}");
-        let _ = writeln!(out, "       <void property=\"type\">\n        <int>{kind}</int>\n       </void>");
+        let _ = writeln!(
+            out,
+            "       <void property=\"type\">\n        <int>{kind}</int>\n       </void>"
+        );
         for (name, v) in [("x0", a.x), ("x1", b.x), ("y0", -a.y), ("y1", -b.y)] {
             let _ = writeln!(
                 out,
@@ -171,7 +184,11 @@ mod tests {
         );
         let cp = read_str(&text).expect("parses").pattern;
         assert_eq!(cp.edges.len(), 2);
-        let mountain = cp.edges.iter().find(|e| e.assignment == Assignment::Mountain).expect("M");
+        let mountain = cp
+            .edges
+            .iter()
+            .find(|e| e.assignment == Assignment::Mountain)
+            .expect("M");
         let ends = mountain.vertices.map(|v| cp.position(v));
         assert!(ends.contains(&DVec2::ZERO) && ends.contains(&DVec2::new(10.0, 0.0)));
         // y is negated: the boundary runs from (10, 0) to (0, 5)
@@ -181,8 +198,16 @@ mod tests {
     #[test]
     fn written_files_read_back() {
         let mut cp = CreasePattern::new();
-        cp.add_segment(DVec2::new(0.0, 0.0), DVec2::new(1.5, 0.25), Assignment::Valley);
-        cp.add_segment(DVec2::new(3.0, 1.0), DVec2::new(4.0, -2.0), Assignment::Boundary);
+        cp.add_segment(
+            DVec2::new(0.0, 0.0),
+            DVec2::new(1.5, 0.25),
+            Assignment::Valley,
+        );
+        cp.add_segment(
+            DVec2::new(3.0, 1.0),
+            DVec2::new(4.0, -2.0),
+            Assignment::Boundary,
+        );
         let back = read_str(&write_string(&cp)).expect("reads").pattern;
         assert_eq!(back.edges.len(), 2);
         for e in &cp.edges {
@@ -196,7 +221,8 @@ mod tests {
 
     #[test]
     fn bad_numbers_are_named() {
-        let text = format!("{LINE_OBJECT}<void property=\"x0\"><double>abc</double></void></object>");
+        let text =
+            format!("{LINE_OBJECT}<void property=\"x0\"><double>abc</double></void></object>");
         let err = read_str(&text).expect_err("refused");
         assert!(err.to_string().contains("x0"), "{err}");
         assert!(read_str("<java></java>").is_err());

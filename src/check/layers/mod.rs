@@ -38,7 +38,7 @@ use constraints::{Kind, Place, System};
 pub use decimal::BigCount;
 use folded::FoldedFaces;
 use search::{Count, Engine};
-pub use verdict::{LayerCheck, check_layers};
+pub use verdict::{LayerCheck, check_layers, flat_fold_warning, meant_to_fold_flat};
 
 /// The smallest merge distance of the arrangement, relative to the pattern's bounding-box
 /// diagonal (the distance itself adapts to the pattern, see [`cells::arrange`]).

@@ -148,3 +148,43 @@ fn finding(position: glam::DVec2, message: String, hint: &str) -> Finding {
         hint: hint.to_string(),
     }
 }
+
+/// Largest number of edges [`flat_fold_warning`] looks at (beyond it the check would slow
+/// down every cutting job; run `check --layers` instead).
+pub const WARNING_MAX_EDGES: usize = 20_000;
+
+/// True when the pattern is meant to fold flat: it has mountain or valley creases and every
+/// one of them is unangled or at ±180°.
+pub fn meant_to_fold_flat(cp: &CreasePattern) -> bool {
+    let mut any = false;
+    for e in cp.edges.iter().filter(|e| e.assignment.is_fold()) {
+        any = true;
+        if e.fold_angle.is_some_and(|a| (a.abs() - 180.0).abs() > 1e-6) {
+            return false;
+        }
+    }
+    any
+}
+
+/// For the cutting commands: a one-line warning when a pattern meant to fold flat passes the
+/// local checks but has no layer order (so the cut sheet could not be folded), naming the
+/// faces; `None` otherwise, also when the pattern is larger than [`WARNING_MAX_EDGES`] or the
+/// solver cannot judge it.
+pub fn flat_fold_warning(cp: &CreasePattern) -> Option<String> {
+    if !meant_to_fold_flat(cp) || cp.edges.len() > WARNING_MAX_EDGES {
+        return None;
+    }
+    let mut local = crate::check::check(cp, &crate::check::CheckOptions::default());
+    let options = LayerOptions {
+        max_states: Some(1),
+        ..LayerOptions::default()
+    };
+    let outcome = check_layers(cp, &mut local, &options).ok()?;
+    let report = outcome.report?;
+    let c = report.contradiction?;
+    Some(format!(
+        "the pattern passes every vertex check but cannot be folded flat: {} (run `foldcam check \
+         --layers` for details)",
+        c.message
+    ))
+}
