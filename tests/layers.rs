@@ -470,3 +470,59 @@ fn flat_folder_unsatisfiable_patterns_are_refused() {
     }
     assert_eq!(refused, 6);
 }
+
+#[test]
+fn square_twist_pleats_have_the_classic_width_and_angle() {
+    // Each pleat: a mountain and a parallel valley L·sin α apart, the mountain at α from the
+    // side it leaves (the smallest sector at every corner).
+    for twist_deg in [10.0, 22.5, 40.0] {
+        let t = SquareTwist {
+            twist_deg,
+            ..SquareTwist::default()
+        };
+        let cp = t.build().expect("twist");
+        let alpha = twist_deg.to_radians();
+        let lines = |a: Assignment| -> Vec<(DVec2, DVec2)> {
+            cp.edges
+                .iter()
+                .filter(|e| e.assignment == a)
+                .map(|e| (cp.position(e.vertices[0]), cp.position(e.vertices[1])))
+                .collect()
+        };
+        let (mountains, valleys) = (lines(Assignment::Mountain), lines(Assignment::Valley));
+        assert_eq!(mountains.len(), 4);
+        for (a, b) in &mountains {
+            let d = (*b - *a).normalize();
+            let partner = valleys.iter().find(|(c, e)| {
+                let u = (*e - *c).normalize();
+                (u.perp_dot(d)).abs() < 1e-9 && u.dot(d) > 0.0
+            });
+            let (c, _) = partner.expect("a parallel valley in the same direction");
+            let width = (*c - *a).perp_dot(d).abs();
+            assert!(
+                (width - t.square * alpha.sin()).abs() < 1e-9,
+                "{twist_deg}°: {width}"
+            );
+        }
+        let fans = foldcam::pattern::vertex_fan::VertexFans::new(&cp);
+        let smallest = cp
+            .vertex_ids()
+            .filter(|&v| fans.of(v).len() == 4)
+            .flat_map(|v| {
+                let s = fans.of(v);
+                (0..4).map(move |i| {
+                    let next = if i + 1 < 4 {
+                        s[i + 1].angle
+                    } else {
+                        s[0].angle + std::f64::consts::TAU
+                    };
+                    next - s[i].angle
+                })
+            })
+            .fold(f64::MAX, f64::min);
+        assert!(
+            (smallest - alpha).abs() < 1e-9,
+            "{twist_deg}°: smallest sector {smallest}"
+        );
+    }
+}
