@@ -11,6 +11,7 @@ mod demo_papercraft;
 mod demo_tessellation;
 mod fab_args;
 mod fold;
+mod fold_flat;
 mod generate;
 mod input;
 mod list;
@@ -77,6 +78,8 @@ enum Command {
     /// Design pop-up cards (origamic architecture).
     #[command(subcommand)]
     Popup(popup::Command),
+    /// Fold a crease pattern flat: write its folded form with a layer order, and a picture.
+    FoldFlat(fold_flat::Args),
     /// Fold a sheet step by step from a script (Miyazaki et al. 1992) and write its crease pattern.
     Fold(fold::Args),
     /// Make paper-craft parts from developable patches and cut lines on a mesh.
@@ -113,6 +116,7 @@ pub fn run() -> ExitCode {
         Command::Tessellate(a) => tessellate::run(a),
         Command::Fold(a) => fold::run(a),
         Command::List(a) => list::run(a),
+        Command::FoldFlat(a) => fold_flat::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
