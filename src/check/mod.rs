@@ -36,6 +36,7 @@
 //! fails a check.
 
 mod edges;
+pub mod fold3d;
 mod flat_foldability;
 mod report;
 mod vertex;

@@ -7,10 +7,12 @@ mod check;
 mod convert;
 mod cut;
 mod demo;
+mod demo_fold3d;
 mod demo_papercraft;
 mod demo_tessellation;
 mod fab_args;
 mod fold;
+mod fold3d;
 mod generate;
 mod input;
 mod papercraft;
@@ -77,6 +79,8 @@ enum Command {
     Popup(popup::Command),
     /// Fold a sheet step by step from a script (seed 003) and write its crease pattern.
     Fold(fold::Args),
+    /// Fold any pattern in 3D with a compliant simulation (bar-and-hinge model).
+    Fold3d(fold3d::Args),
     /// Make paper-craft parts from developable patches and cut lines on a mesh.
     Papercraft(papercraft::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
@@ -101,6 +105,7 @@ pub fn run() -> ExitCode {
         Command::Demo(a) => demo::run(a),
         Command::Tessellate(a) => tessellate::run(a),
         Command::Fold(a) => fold::run(a),
+        Command::Fold3d(a) => fold3d::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
