@@ -240,6 +240,7 @@ fn tessellation_from_flat_reaches_the_solved_form() {
     })
     .unwrap();
     assert_eq!(f.report.stop, Stop::Settled);
+    assert!(f.report.wrong_sign.is_empty());
     // Rigid-foldable: isometric all the way.
     assert!(worst < 0.01, "largest strain on the way: {worst}");
     let n = cp.vertices.len();
@@ -278,17 +279,40 @@ fn pop_up_card_at_half_matches_its_own_folded_state() {
         .map(f64::abs)
         .fold(0.0, f64::max);
     let opening = 180.0 - 0.5 * target;
-    let own = fold_card(&card, &cp, opening);
-    let own_faces = own.state.faces.as_ref().unwrap();
+    // The card's 3D frame has Y = −v (its flat state is the pattern mirrored): mirror it
+    // back, and check that at 180° (flat) it is then the pattern itself.
+    let corners = |opening: f64| {
+        let own = fold_card(&card, &cp, opening);
+        let faces = own.state.faces.clone().unwrap();
+        let corners: Vec<DVec3> = faces
+            .iter()
+            .flat_map(|o| o.outer.iter().map(|v| own.state.positions[v.index()]))
+            .map(|p| DVec3::new(p.x, -p.y, p.z))
+            .collect();
+        corners
+    };
+    let flat_pattern: Vec<DVec3> = cp
+        .faces
+        .as_ref()
+        .unwrap()
+        .iter()
+        .flat_map(|o| o.outer.iter().map(|v| cp.vertices[v.index()].extend(0.0)))
+        .collect();
+    let flat = corners(180.0);
+    assert_eq!(flat.len(), flat_pattern.len());
+    let d0 = align(&flat, &flat_pattern)
+        .iter()
+        .zip(&flat_pattern)
+        .map(|(p, q)| p.distance(*q))
+        .fold(0.0, f64::max);
+    assert!(d0 < 1e-6 * diagonal(&flat_pattern), "{d0}");
+    let b = corners(opening);
     let sim_faces = f.folded.faces.as_ref().unwrap();
-    assert_eq!(own_faces.len(), sim_faces.len());
-    let (mut a, mut b) = (Vec::new(), Vec::new());
-    for (s, o) in sim_faces.iter().zip(own_faces) {
-        for (vs, vo) in s.outer.iter().zip(&o.outer) {
-            a.push(f.folded.positions[vs.index()]);
-            b.push(own.state.positions[vo.index()]);
-        }
-    }
+    let a: Vec<DVec3> = sim_faces
+        .iter()
+        .flat_map(|s| s.outer.iter().map(|v| f.folded.positions[v.index()]))
+        .collect();
+    assert_eq!(a.len(), b.len());
     let moved = align(&a, &b);
     let diag = diagonal(&b);
     let off = moved.iter().zip(&b).map(|(p, q)| p.distance(*q)).fold(0.0, f64::max);

@@ -84,7 +84,7 @@ impl Default for FoldOptions {
             crease_stiffness: 0.7,
             facet_stiffness: 200.0,
             damping_ratio: 0.45,
-            ramp_steps: 1500,
+            ramp_steps: 6000,
             max_steps: 200_000,
             max_time: Duration::from_secs(60),
             tolerance: 1e-5,
