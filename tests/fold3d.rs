@@ -2,7 +2,7 @@
 //! Miura-ori kinematics derived here from the cell geometry, the rigid-foldable forms that
 //! `tessellate` solves, a pop-up card's own folded state, and isometry along the way.
 
-use foldcam::check::fold3d::{FoldOptions, ModelError, Stop, fold, fold_with, FoldError};
+use foldcam::check::fold3d::{FoldError, FoldOptions, ModelError, Stop, fold, fold_with};
 use foldcam::design::classic::MiuraOri;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 use glam::{DVec2, DVec3};
@@ -77,13 +77,16 @@ fn miura_at_half_follows_closed_form_kinematics() {
             _ => continue,
         };
         let got = r.fold_angles[e].unwrap();
-        assert!(got * want > 1.0, "edge {e} {:?} folded {got}", edge.assignment);
+        assert!(
+            got * want > 1.0,
+            "edge {e} {:?} folded {got}",
+            edge.assignment
+        );
     }
     // Generator numbering: (rows + 1) · cols row segments (pleats), then the zigzag columns.
     let horizontal = (rows + 1) * cols;
-    let zig = (horizontal..cp.edges.len()).filter(|&e| {
-        cp.edges[e].assignment != Assignment::Boundary
-    });
+    let zig =
+        (horizontal..cp.edges.len()).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
     let pleat = (0..horizontal).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
     let rho_z = mean_abs(&r.fold_angles, zig).to_radians();
     let rho_x = mean_abs(&r.fold_angles, pleat).to_radians();
@@ -93,13 +96,19 @@ fn miura_at_half_follows_closed_form_kinematics() {
     // Halfway between flat and flat-folded on average, but not equally: the two families
     // cannot both reach 90° (the closed form ties them).
     assert!(rho_z > 1.2 * rho_x, "{rho_z} {rho_x}");
-    assert!((rho_x - want_x).abs() < 0.01 * want_x, "{rho_x} vs {want_x}");
+    assert!(
+        (rho_x - want_x).abs() < 0.01 * want_x,
+        "{rho_x} vs {want_x}"
+    );
     // Overall dimensions: along the pleats cols · a · sin(η/2), across rows · c · q.
     let x = &f.folded.positions;
     let vid = |i: usize, j: usize| j * (cols + 1) + i;
     let lx = x[vid(0, rows / 2)].distance(x[vid(cols, rows / 2)]);
     let ly = x[vid(cols / 2, 0)].distance(x[vid(cols / 2, rows)]);
-    let (want_lx, want_ly) = (cols as f64 * m.width * (eta / 2.0).sin(), rows as f64 * c * q);
+    let (want_lx, want_ly) = (
+        cols as f64 * m.width * (eta / 2.0).sin(),
+        rows as f64 * c * q,
+    );
     assert!((lx - want_lx).abs() < 0.01 * want_lx, "{lx} vs {want_lx}");
     assert!((ly - want_ly).abs() < 0.01 * want_ly, "{ly} vs {want_ly}");
 }
@@ -129,7 +138,13 @@ fn miura_bars_stay_within_one_percent_at_every_step() {
     assert_eq!(steps, f.report.steps);
     assert!(worst < 0.01, "largest strain on the way: {worst}");
     // It did fold: every crease within a few degrees of flat-folded.
-    assert!(f.report.fold_angles.iter().flatten().all(|a| a.abs() > 150.0));
+    assert!(
+        f.report
+            .fold_angles
+            .iter()
+            .flatten()
+            .all(|a| a.abs() > 150.0)
+    );
     assert!(f.report.wrong_sign.is_empty());
 }
 
@@ -200,7 +215,10 @@ fn alignment_recovers_a_rigid_motion() {
         .map(|i| DVec3::new(i as f64, (i * i % 7) as f64, (i % 3) as f64))
         .collect();
     let q = glam::DQuat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 2.0);
-    let b: Vec<DVec3> = a.iter().map(|p| q * *p + DVec3::new(5.0, -2.0, 1.0)).collect();
+    let b: Vec<DVec3> = a
+        .iter()
+        .map(|p| q * *p + DVec3::new(5.0, -2.0, 1.0))
+        .collect();
     let moved = align(&a, &b);
     assert!(moved.iter().zip(&b).all(|(p, q)| p.distance(*q) < 1e-9));
 }
@@ -230,7 +248,11 @@ fn tessellation_from_flat_reaches_the_solved_form() {
         .arg(&out)
         .output()
         .unwrap();
-    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
     let imported = foldcam::formats::load(&out).unwrap();
     let solved = imported.folded.expect("the tessellation's folded form");
     let cp = imported.pattern;
@@ -315,7 +337,11 @@ fn pop_up_card_at_half_matches_its_own_folded_state() {
     assert_eq!(a.len(), b.len());
     let moved = align(&a, &b);
     let diag = diagonal(&b);
-    let off = moved.iter().zip(&b).map(|(p, q)| p.distance(*q)).fold(0.0, f64::max);
+    let off = moved
+        .iter()
+        .zip(&b)
+        .map(|(p, q)| p.distance(*q))
+        .fold(0.0, f64::max);
     assert!(off < 0.02 * diag, "{off} vs diagonal {diag}");
 }
 
@@ -336,14 +362,26 @@ fn kawasaki_violation() -> CreasePattern {
         let mid = (dirs[k] + dirs[(k + 1) % 4] + if k == 3 { 360.0 } else { 0.0 }) / 2.0;
         ring.push(cp.add_vertex(DVec2::from_angle(mid.to_radians()) * 60.0));
     }
-    let kinds = [Assignment::Mountain, Assignment::Valley, Assignment::Valley, Assignment::Valley];
+    let kinds = [
+        Assignment::Mountain,
+        Assignment::Valley,
+        Assignment::Valley,
+        Assignment::Valley,
+    ];
     for (t, kind) in tips.iter().zip(kinds) {
         cp.add_edge(c, *t, kind);
     }
     for k in 0..ring.len() {
         cp.add_edge(ring[k], ring[(k + 1) % ring.len()], Assignment::Boundary);
     }
-    planarize(&mut cp, &PlanarizeOptions { faces: true, ..PlanarizeOptions::default() }).unwrap();
+    planarize(
+        &mut cp,
+        &PlanarizeOptions {
+            faces: true,
+            ..PlanarizeOptions::default()
+        },
+    )
+    .unwrap();
     cp
 }
 
@@ -393,14 +431,21 @@ fn step_cap_and_bad_input_end_cleanly() {
         percent: 120.0,
         ..FoldOptions::default()
     };
-    assert!(matches!(fold(&cp, &bad), Err(FoldError::Option { name: "percent", .. })));
+    assert!(matches!(
+        fold(&cp, &bad),
+        Err(FoldError::Option {
+            name: "percent",
+            ..
+        })
+    ));
 }
 
 #[test]
 fn cuts_split_the_sheet() {
     // A square with a cut from one side to the centre: the vertices on the cut get a copy each.
     let mut cp = CreasePattern::new();
-    let sq = [(0., 0.), (100., 0.), (100., 100.), (0., 100.)].map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
+    let sq = [(0., 0.), (100., 0.), (100., 100.), (0., 100.)]
+        .map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
     for k in 0..4 {
         cp.add_edge(sq[k], sq[(k + 1) % 4], Assignment::Boundary);
     }
@@ -409,12 +454,26 @@ fn cuts_split_the_sheet() {
     cp.add_edge(mid, centre, Assignment::Cut);
     cp.add_edge(centre, sq[2], Assignment::Valley);
     cp.add_edge(centre, sq[3], Assignment::Valley);
-    planarize(&mut cp, &PlanarizeOptions { faces: true, ..PlanarizeOptions::default() }).unwrap();
+    planarize(
+        &mut cp,
+        &PlanarizeOptions {
+            faces: true,
+            ..PlanarizeOptions::default()
+        },
+    )
+    .unwrap();
     let model = foldcam::check::fold3d::BarHingeModel::build(&cp).unwrap();
     // The cut's bottom end (on the outline) is split; the centre is joined around the top.
     assert_eq!(model.vertex_count(), cp.vertices.len() + 1);
-    let mid_id = cp.vertices.iter().position(|p| *p == DVec2::new(50.0, 0.0)).unwrap();
-    assert_eq!(model.source.iter().filter(|v| v.index() == mid_id).count(), 2);
+    let mid_id = cp
+        .vertices
+        .iter()
+        .position(|p| *p == DVec2::new(50.0, 0.0))
+        .unwrap();
+    assert_eq!(
+        model.source.iter().filter(|v| v.index() == mid_id).count(),
+        2
+    );
 }
 
 #[test]
@@ -443,7 +502,12 @@ fn cli_folds_an_oripa_file_and_writes_every_output() {
     let key = foldcam::formats::fold::read_str(&text).unwrap();
     let folded = key.folded.expect("foldedForm frame");
     assert!(folded.positions.iter().any(|p| p.z.abs() > 1e-3));
-    assert!(folded.edges.iter().any(|e| e.fold_angle.is_some_and(|a| a.abs() > 1.0)));
+    assert!(
+        folded
+            .edges
+            .iter()
+            .any(|e| e.fold_angle.is_some_and(|a| a.abs() > 1.0))
+    );
 }
 
 #[test]

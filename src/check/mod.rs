@@ -36,8 +36,8 @@
 //! fails a check.
 
 mod edges;
-pub mod fold3d;
 mod flat_foldability;
+pub mod fold3d;
 mod report;
 mod vertex;
 

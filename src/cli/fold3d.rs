@@ -88,7 +88,10 @@ fn require_extension(path: &Path, ext: &str, what: &str) -> Result<()> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case(ext))
     {
-        bail!("{}: {what} is written as .{ext}: use a .{ext} name", path.display());
+        bail!(
+            "{}: {what} is written as .{ext}: use a .{ext} name",
+            path.display()
+        );
     }
     Ok(())
 }
@@ -168,7 +171,14 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
     );
     let at = r
         .max_strain_at
-        .map(|p| format!(" at face {} near ({:.2}, {:.2}) {unit}", r.max_strain_face.map_or(0, |f| f.index()), p.x, p.y))
+        .map(|p| {
+            format!(
+                " at face {} near ({:.2}, {:.2}) {unit}",
+                r.max_strain_face.map_or(0, |f| f.index()),
+                p.x,
+                p.y
+            )
+        })
         .unwrap_or_default();
     println!("  largest bar strain {:.3}%{at}", 100.0 * r.max_strain);
     if r.max_strain > STRAIN_WARNING {

@@ -72,13 +72,15 @@ pub fn triangulate_polygon(
             .iter()
             .enumerate()
             .map(|(k, p)| {
-                *first_at.entry([p.x.to_bits(), p.y.to_bits()]).or_insert_with(|| {
-                    corners.push(Corner {
-                        at: Point2::new(p.x, p.y),
-                        index: start + k,
-                    });
-                    start + k
-                })
+                *first_at
+                    .entry([p.x.to_bits(), p.y.to_bits()])
+                    .or_insert_with(|| {
+                        corners.push(Corner {
+                            at: Point2::new(p.x, p.y),
+                            index: start + k,
+                        });
+                        start + k
+                    })
             })
             .collect();
         for k in 0..index.len() {
@@ -90,8 +92,11 @@ pub fn triangulate_polygon(
         start += ring.len();
     }
     // spade numbers the loaded vertices in load order.
-    let position: HashMap<usize, usize> =
-        corners.iter().enumerate().map(|(i, c)| (c.index, i)).collect();
+    let position: HashMap<usize, usize> = corners
+        .iter()
+        .enumerate()
+        .map(|(i, c)| (c.index, i))
+        .collect();
     let mut constraints: Vec<[usize; 2]> = constraints
         .into_iter()
         .map(|[a, b]| [position[&a], position[&b]])
@@ -101,7 +106,8 @@ pub fn triangulate_polygon(
         return Ok(Vec::new());
     }
     for c in &corners {
-        if spade::validate_coordinate(c.at.x).is_err() || spade::validate_coordinate(c.at.y).is_err()
+        if spade::validate_coordinate(c.at.x).is_err()
+            || spade::validate_coordinate(c.at.y).is_err()
         {
             return Err(TriangulateError::BadCorner {
                 x: c.at.x,
@@ -123,8 +129,8 @@ pub fn triangulate_polygon(
         let [a, b, c] = face.vertices().map(|v| *v.data());
         let [pa, pb, pc] = [a, b, c].map(|v| DVec2::new(v.at.x, v.at.y));
         let centroid = (pa + pb + pc) / 3.0;
-        let inside = contains_point(outer, centroid)
-            && !holes.iter().any(|h| contains_point(h, centroid));
+        let inside =
+            contains_point(outer, centroid) && !holes.iter().any(|h| contains_point(h, centroid));
         if !inside {
             continue;
         }

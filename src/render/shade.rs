@@ -96,7 +96,10 @@ pub(crate) fn draw_state(
         .collect();
     for i in paint_order(&geometry, camera, &state.face_orders) {
         let face = faces[i].1;
-        let own = view.face_colors.as_ref().and_then(|c| c.get(faces[i].0.index()));
+        let own = view
+            .face_colors
+            .as_ref()
+            .and_then(|c| c.get(faces[i].0.index()));
         let color = shade(normals[i], camera, view, own.copied());
         fill_face(&mut pixmap, face, &pos, camera, framing, color);
         if view.outline {

@@ -216,7 +216,8 @@ pub struct Fold {
 }
 
 impl Fold {
-    /// A folded state with the positions of frame `f` (or the end).
+    /// The folded state with other positions (e.g. a recorded frame, or the flat sheet
+    /// [`BarHingeModel::rest`]).
     pub fn state_at(&self, positions: &[DVec3]) -> FoldedState {
         FoldedState {
             positions: positions.to_vec(),

@@ -180,10 +180,12 @@ impl BarHingeModel {
         for (f, face) in faces.iter().enumerate() {
             for ring in cycles(face) {
                 for (k, &v) in ring.iter().enumerate() {
-                    corner_of.entry((f as u32, v.index() as u32)).or_insert_with(|| {
-                        corner_vertex.push(v);
-                        (corner_vertex.len() - 1) as u32
-                    });
+                    corner_of
+                        .entry((f as u32, v.index() as u32))
+                        .or_insert_with(|| {
+                            corner_vertex.push(v);
+                            (corner_vertex.len() - 1) as u32
+                        });
                     let w = ring[(k + 1) % ring.len()];
                     if w != v {
                         sides.entry(pair(v, w)).or_default().push(f as u32);
@@ -373,9 +375,8 @@ fn bars_and_hinges(
         let kind = match crease.map(|e| &cp.edges[e.index()]) {
             Some(edge) => match edge.assignment {
                 Assignment::Mountain | Assignment::Valley | Assignment::Unassigned => {
-                    crease_target_deg(edge).map_or(HingeKind::Free, |d| {
-                        HingeKind::Crease(d.to_radians())
-                    })
+                    crease_target_deg(edge)
+                        .map_or(HingeKind::Free, |d| HingeKind::Crease(d.to_radians()))
                 }
                 _ => HingeKind::Facet,
             },
@@ -389,4 +390,71 @@ fn bars_and_hinges(
         });
     }
     (bars, hinges)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pattern::{PlanarizeOptions, planarize};
+
+    /// A 2 × 1 rectangle split by a valley at x = 1 into two unit squares.
+    fn two_squares() -> CreasePattern {
+        let mut cp = CreasePattern::new();
+        let p = [(0., 0.), (1., 0.), (2., 0.), (2., 1.), (1., 1.), (0., 1.)]
+            .map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
+        for k in 0..6 {
+            cp.add_edge(p[k], p[(k + 1) % 6], Assignment::Boundary);
+        }
+        cp.add_edge(p[1], p[4], Assignment::Valley);
+        let opts = PlanarizeOptions {
+            faces: true,
+            ..PlanarizeOptions::default()
+        };
+        planarize(&mut cp, &opts).unwrap();
+        cp
+    }
+
+    #[test]
+    fn squares_become_four_triangles_with_one_crease_and_two_facet_hinges() {
+        let cp = two_squares();
+        let m = BarHingeModel::build(&cp).unwrap();
+        assert_eq!(m.triangles.len(), 4);
+        // Euler: 6 vertices, 4 triangles → 9 sides, 3 of them shared.
+        assert_eq!(m.bars.len(), 9);
+        assert_eq!(m.hinges.len(), 3);
+        let creases: Vec<_> = m
+            .hinges
+            .iter()
+            .filter(|h| matches!(h.kind, HingeKind::Crease(_)))
+            .collect();
+        assert_eq!(creases.len(), 1);
+        assert_eq!(creases[0].kind, HingeKind::Crease(std::f64::consts::PI));
+        assert_eq!(m.vertex_count(), cp.vertices.len());
+        // Every triangle counter-clockwise in the flat sheet.
+        for t in &m.triangles {
+            let [a, b, c] = t.map(|v| m.rest[v as usize].truncate());
+            assert!((b - a).perp_dot(c - a) > 0.0);
+        }
+    }
+
+    #[test]
+    fn targets_follow_assignments_and_angles() {
+        let e = |a, angle| crate::pattern::Edge {
+            vertices: [VertexId::new(0), VertexId::new(1)],
+            assignment: a,
+            fold_angle: angle,
+        };
+        assert_eq!(
+            crease_target_deg(&e(Assignment::Mountain, None)),
+            Some(-180.0)
+        );
+        assert_eq!(crease_target_deg(&e(Assignment::Valley, None)), Some(180.0));
+        assert_eq!(
+            crease_target_deg(&e(Assignment::Valley, Some(40.0))),
+            Some(40.0)
+        );
+        assert_eq!(crease_target_deg(&e(Assignment::Unassigned, None)), None);
+        assert_eq!(crease_target_deg(&e(Assignment::Flat, Some(10.0))), None);
+        assert_eq!(crease_target_deg(&e(Assignment::Boundary, None)), None);
+    }
 }

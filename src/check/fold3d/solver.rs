@@ -204,7 +204,10 @@ impl<'m> Solver<'m> {
                 .with_min_len(512)
                 .for_each(|(h, o)| hinge(h, o));
         } else {
-            self.bar_out.iter_mut().enumerate().for_each(|(b, o)| bar(b, o));
+            self.bar_out
+                .iter_mut()
+                .enumerate()
+                .for_each(|(b, o)| bar(b, o));
             self.hinge_out
                 .iter_mut()
                 .enumerate()
@@ -261,23 +264,33 @@ impl<'m> Solver<'m> {
         }
     }
 
-    /// Largest force on a vertex without the damping, over the axial stiffness `EA`, for the
-    /// forces of the last step (a dimensionless residual: 1e-4 is the pull of a bar stretched
-    /// by 0.01 %).
+    /// Largest force on a vertex without the damping, over the axial stiffness `EA`, at the
+    /// current positions (a dimensionless residual: 1e-4 is the pull of a bar stretched by
+    /// 0.01 %).
     pub fn residual(&self) -> f64 {
-        let n = self.positions.len();
-        let mut f = vec![DVec3::ZERO; n];
-        for (b, bar) in self.model.bars.iter().enumerate() {
+        let (x, model) = (&self.positions, self.model);
+        let mut f = vec![DVec3::ZERO; x.len()];
+        for (b, bar) in model.bars.iter().enumerate() {
             let [p, q] = bar.ends.map(|e| e as usize);
-            let damp = (self.velocities[q] - self.velocities[p]) * self.bar_c[b];
-            let spring = self.bar_out[b] - damp;
-            f[p] += spring;
-            f[q] -= spring;
+            let d = x[q] - x[p];
+            let len = d.length();
+            if len > 0.0 {
+                let spring = d * (self.bar_k[b] * (len - bar.rest) / len);
+                f[p] += spring;
+                f[q] -= spring;
+            }
         }
-        for (h, hinge) in self.model.hinges.iter().enumerate() {
+        for (h, hinge) in model.hinges.iter().enumerate() {
+            let [j, k] = hinge.edge.map(|e| x[e as usize]);
+            let [i, l] = hinge.wings.map(|e| x[e as usize]);
+            let (raw, g) = fold_angle_gradient(j, k, i, l);
+            let last = self.hinge_out[h].angle;
+            let angle =
+                raw + ((last - raw) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+            let torque = -self.hinge_k[h] * (angle - self.hinge_target[h]);
             let corners = [hinge.edge[0], hinge.edge[1], hinge.wings[0], hinge.wings[1]];
             for (c, v) in corners.iter().enumerate() {
-                f[*v as usize] += self.hinge_out[h].force[c];
+                f[*v as usize] += g[c] * torque;
             }
         }
         f.iter().map(|v| v.length()).fold(0.0, f64::max) / self.axial
