@@ -6,7 +6,7 @@ use foldcam::check::fold3d::{FoldError, FoldOptions, ModelError, Stop, fold, fol
 use foldcam::design::classic::MiuraOri;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 use glam::{DVec2, DVec3};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// A Miura-ori sheet with faces.
 fn miura(columns: usize, rows: usize) -> (MiuraOri, CreasePattern) {
@@ -186,16 +186,14 @@ fn align(a: &[DVec3], b: &[DVec3]) -> Vec<DVec3> {
                 let t = if theta == 0.0 { 1.0 } else { t };
                 let c = 1.0 / (t * t + 1.0).sqrt();
                 let sn = t * c;
-                for k in 0..4 {
-                    let (mkp, mkq) = (m[k][p], m[k][q]);
-                    m[k][p] = c * mkp - sn * mkq;
-                    m[k][q] = sn * mkp + c * mkq;
+                for row in m.iter_mut() {
+                    let (mkp, mkq) = (row[p], row[q]);
+                    row[p] = c * mkp - sn * mkq;
+                    row[q] = sn * mkp + c * mkq;
                 }
-                for k in 0..4 {
-                    let (mpk, mqk) = (m[p][k], m[q][k]);
-                    m[p][k] = c * mpk - sn * mqk;
-                    m[q][k] = sn * mpk + c * mqk;
-                }
+                let (rp, rq) = (m[p], m[q]);
+                m[p] = std::array::from_fn(|k| c * rp[k] - sn * rq[k]);
+                m[q] = std::array::from_fn(|k| sn * rp[k] + c * rq[k]);
                 for row in v.iter_mut() {
                     let (vp, vq) = (row[p], row[q]);
                     row[p] = c * vp - sn * vq;
@@ -536,5 +534,4 @@ fn cli_bad_input_writes_nothing() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("x.jpg"));
     assert!(!fold_path.exists() && !bad_png.exists());
-    let _ = Path::new("");
 }

@@ -244,11 +244,9 @@ pub fn fold_with(
     let mut solver = Solver::new(&model, opts);
     let mut frames = Vec::new();
     let ramp = opts.ramp_steps.min(opts.max_steps);
-    let frame_every = if opts.frames > 0 {
-        (ramp / opts.frames).max(1)
-    } else {
-        usize::MAX
-    };
+    let frame_every = ramp
+        .checked_div(opts.frames)
+        .map_or(usize::MAX, |every| every.max(1));
     let mut last_good = solver.positions.clone();
     let mut steps = 0;
     let stop = loop {
