@@ -37,6 +37,7 @@
 
 mod edges;
 mod flat_foldability;
+pub mod fold3d;
 pub mod layers;
 mod report;
 mod vertex;

@@ -20,6 +20,7 @@ pub mod animation;
 mod chain;
 pub mod depth_order;
 pub mod font;
+pub mod heat;
 pub mod layout;
 mod preview;
 pub mod shade;
