@@ -187,6 +187,9 @@ fn demo_runs_end_to_end() {
         "papercraft-vase-1.fold",
         "papercraft-vase-1.png",
         "papercraft-vase-1.grbl-diode.gcode",
+        "fold3d-miura.fold",
+        "fold3d-miura.png",
+        "fold3d-miura.gif",
     ] {
         assert!(
             files.contains(&name.to_string()),
@@ -200,6 +203,11 @@ fn demo_runs_end_to_end() {
         "{}",
         sheet.pattern.edges.len()
     );
+    // The 3D fold stage: the Miura-ori's folded form is a frame of its FOLD file, in 3D.
+    let miura = foldcam::formats::load(&dir.path().join("d/fold3d-miura.fold"))
+        .expect("the folded Miura-ori reads back");
+    let folded = miura.folded.expect("a foldedForm frame");
+    assert!(folded.positions.iter().any(|p| p.z.abs() > 1.0));
 }
 
 /// Malformed inputs: exit 2, the message names the file, no panic, and no output file (nor

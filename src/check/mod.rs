@@ -37,6 +37,8 @@
 
 mod edges;
 mod flat_foldability;
+pub mod fold3d;
+pub mod layers;
 mod report;
 mod vertex;
 
@@ -95,16 +97,20 @@ pub enum FindingKind {
     ShortEdge,
     /// A fold angle exceeds the limit.
     FoldAngle,
+    /// No valid layer order exists (the global check of [`layers`]); one finding per face
+    /// named by the contradiction.
+    LayerOrder,
 }
 
 impl FindingKind {
     /// Every kind, in listing order.
-    pub const ALL: [FindingKind; 5] = [
+    pub const ALL: [FindingKind; 6] = [
         FindingKind::Kawasaki,
         FindingKind::Maekawa,
         FindingKind::VertexAngle,
         FindingKind::ShortEdge,
         FindingKind::FoldAngle,
+        FindingKind::LayerOrder,
     ];
 
     /// The snake-case name used in text and JSON.
@@ -115,6 +121,7 @@ impl FindingKind {
             FindingKind::VertexAngle => "vertex_angle",
             FindingKind::ShortEdge => "short_edge",
             FindingKind::FoldAngle => "fold_angle",
+            FindingKind::LayerOrder => "layer_order",
         }
     }
 }
@@ -132,6 +139,8 @@ pub enum Quantity {
     Creases,
     /// |M − V| (Maekawa: the limit is 2).
     MountainValleyDifference,
+    /// A number of valid layer orders (the limit is 1).
+    States,
 }
 
 /// Mountain and valley counts at a vertex (Maekawa findings).

@@ -95,9 +95,31 @@ pub struct CheckArgs {
     /// Skip Kawasaki and Maekawa (for patterns not meant to fold flat).
     #[arg(long)]
     pub no_flat_foldability: bool,
+    /// Also look for a global layer order (after the local checks pass): count the valid
+    /// ways to stack the folded layers, or show where none exists (Flat-Folder's method:
+    /// Akitaya, Demaine & Ku 2023).
+    #[arg(long, conflicts_with = "no_flat_foldability")]
+    pub layers: bool,
+    /// With --layers: stop counting each independent component at N states (the count is
+    /// then a lower bound, reported as not exact).
+    #[arg(
+        long,
+        value_name = "N",
+        requires = "layers",
+        default_value_t = 1_000_000
+    )]
+    pub max_states: u64,
 }
 
 impl CheckArgs {
+    /// The layer solver's options these arguments describe.
+    pub fn layer_options(&self) -> foldcam::check::layers::LayerOptions {
+        foldcam::check::layers::LayerOptions {
+            max_states: Some(self.max_states.max(1)),
+            ..Default::default()
+        }
+    }
+
     /// The library options these arguments describe.
     pub fn options(&self) -> CheckOptions {
         CheckOptions {

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use foldcam::check::check;
+use foldcam::check::layers::check_layers;
 
 use super::Outcome;
 use super::args::CheckArgs;
@@ -14,13 +15,16 @@ use super::input;
 #[command(
     long_about = "Checks every interior vertex for Kawasaki's theorem (alternating angle sum) and \
                   Maekawa's (|M - V| = 2), the smallest angle between neighbouring creases, the \
-                  shortest edge and fold angles. The pattern is cleaned into a planar graph \
+                  shortest edge and fold angles. With --layers, also whether the layers can be \
+                  stacked at all (a global layer order, counted as Flat-Folder counts it), \
+                  naming the faces of the first contradiction when they cannot. The pattern is cleaned into a planar graph \
                   first; vertex and edge numbers refer to the cleaned pattern (the same as the \
                   file's when it was clean already).\n\nExit status: 0 all checks pass, 1 a \
                   check failed, 2 the input could not be read.",
     after_help = "Examples:\n  foldcam check bird.fold\n  \
                   foldcam check tess.svg --min-vertex-angle 30 --max-fold-angle 165\n  \
-                  foldcam check bird.cp --json > report.json"
+                  foldcam check bird.cp --json > report.json\n  \
+                  foldcam check twist.fold --layers --json"
 )]
 pub struct Args {
     /// Input file (.fold, .svg or .cp).
@@ -39,12 +43,29 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
-    let report = check(cp, &args.limits.options());
+    let mut report = check(cp, &args.limits.options());
+    let layers = if args.limits.layers {
+        let outcome = check_layers(cp, &mut report, &args.limits.layer_options())
+            .map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
+        Some(outcome)
+    } else {
+        None
+    };
     if args.json {
-        let text = serde_json::to_string_pretty(&report).context("encoding the report")?;
+        let mut value = serde_json::to_value(&report).context("encoding the report")?;
+        if let (Some(l), Some(map)) = (&layers, value.as_object_mut()) {
+            map.insert(
+                "layers".into(),
+                serde_json::to_value(l).context("encoding the layer report")?,
+            );
+        }
+        let text = serde_json::to_string_pretty(&value).context("encoding the report")?;
         println!("{text}");
     } else {
         println!("{}", args.input.display());
+        if let Some(l) = &layers {
+            print!("{}", l.to_text());
+        }
         print!("{}", report.to_text(input::unit_label(cp.units)));
     }
     Ok(if report.passed() {

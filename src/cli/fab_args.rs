@@ -242,6 +242,9 @@ impl PlanRequest {
     pub fn plan(&self) -> Result<(MachineProfile, foldcam::fab::FabPlan)> {
         let (machine, material, options) = self.profiles.resolve(&self.fab)?;
         let cp = load_pattern(&self.input, &self.frame, &self.scale)?;
+        if let Some(w) = foldcam::check::layers::flat_fold_warning(&cp) {
+            eprintln!("foldcam: warning: {}: {w}", self.input.display());
+        }
         let p = foldcam::fab::plan(&cp, &machine, &material, &options)
             .with_context(|| self.input.display().to_string())?;
         Ok((machine, p))

@@ -7,10 +7,13 @@ mod check;
 mod convert;
 mod cut;
 mod demo;
+mod demo_fold3d;
 mod demo_papercraft;
 mod demo_tessellation;
 mod fab_args;
 mod fold;
+mod fold3d;
+mod fold_flat;
 mod generate;
 mod input;
 mod list;
@@ -77,8 +80,12 @@ enum Command {
     /// Design pop-up cards (origamic architecture).
     #[command(subcommand)]
     Popup(popup::Command),
+    /// Fold a crease pattern flat: write its folded form with a layer order, and a picture.
+    FoldFlat(fold_flat::Args),
     /// Fold a sheet step by step from a script (Miyazaki et al. 1992) and write its crease pattern.
     Fold(fold::Args),
+    /// Fold any pattern in 3D with a compliant simulation (bar-and-hinge model).
+    Fold3d(fold3d::Args),
     /// Make paper-craft parts from developable patches and cut lines on a mesh.
     Papercraft(papercraft::Args),
     /// Run the whole pipeline on bundled examples and write the results to a folder.
@@ -113,6 +120,8 @@ pub fn run() -> ExitCode {
         Command::Tessellate(a) => tessellate::run(a),
         Command::Fold(a) => fold::run(a),
         Command::List(a) => list::run(a),
+        Command::FoldFlat(a) => fold_flat::run(a),
+        Command::Fold3d(a) => fold3d::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use foldcam::check::check;
+use foldcam::check::layers::check_layers;
 use foldcam::formats::write_atomic;
 use foldcam::render::{PreviewOptions, preview_png};
 
@@ -17,7 +18,7 @@ use super::input;
     long_about = "Draws the pattern with the usual origami line styles: valley dashed blue, \
                   mountain dash-dot red, boundary black, cut green, flat grey, unassigned \
                   magenta, with a scale bar. With --check, faults found by `foldcam check` are \
-                  ringed.",
+                  ringed; with --check --layers, so are the faces where no layer order exists.",
     after_help = "Examples:\n  foldcam preview bird.fold -o bird.png\n  \
                   foldcam preview tess.svg -o tess.png --width 2400 --check --min-vertex-angle 30"
 )]
@@ -55,7 +56,12 @@ pub fn run(args: Args) -> Result<Outcome> {
     input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
     let findings = if args.check {
-        let report = check(cp, &args.limits.options());
+        let mut report = check(cp, &args.limits.options());
+        if args.limits.layers {
+            let layers = check_layers(cp, &mut report, &args.limits.layer_options())
+                .map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
+            eprint!("foldcam: {}: {}", args.input.display(), layers.to_text());
+        }
         eprintln!(
             "foldcam: {}: {} fault(s) ringed",
             args.input.display(),

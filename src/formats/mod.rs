@@ -1,5 +1,5 @@
-//! Reading and writing crease patterns: FOLD 1.2, Origami-Simulator SVG, ORIPA `.cp`; DXF
-//! drawings are read.
+//! Reading and writing crease patterns: FOLD 1.2, Origami-Simulator SVG, ORIPA `.cp` and
+//! `.opx`; DXF drawings are read.
 //!
 //! Each format module parses from text into an [`Imported`] pattern, or renders a pattern to
 //! text, without touching the file system; [`load`] and [`save`] add file access, pick the
@@ -11,6 +11,7 @@ pub mod cp;
 pub mod dxf;
 pub mod fold;
 pub mod options;
+pub mod opx;
 pub mod snap;
 pub mod svg;
 
@@ -39,6 +40,8 @@ pub enum Format {
     Cp,
     /// AutoCAD drawing exchange (`.dxf`, R12 and R2000 or later); read only.
     Dxf,
+    /// ORIPA's XML document (`.opx`).
+    Opx,
 }
 
 impl Format {
@@ -50,15 +53,16 @@ impl Format {
             "svg" => Some(Format::Svg),
             "cp" => Some(Format::Cp),
             "dxf" => Some(Format::Dxf),
+            "opx" => Some(Format::Opx),
             _ => None,
         }
     }
 
     /// Extensions accepted, for help and error text.
-    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp, .dxf (read only)";
+    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp, .opx, .dxf (read only)";
 
     /// Extensions that can be written.
-    pub const WRITABLE: &'static str = ".fold, .svg, .cp";
+    pub const WRITABLE: &'static str = ".fold, .svg, .cp, .opx";
 
     /// True for formats [`save`] can write.
     pub fn writable(self) -> bool {
@@ -251,6 +255,7 @@ pub fn parse_with(
         Format::Svg => svg::read_str_with(text, options),
         Format::Cp => cp::read_str(text),
         Format::Dxf => dxf::read_str_with(text, options),
+        Format::Opx => opx::read_str(text),
     }
 }
 
@@ -262,6 +267,7 @@ pub fn render(format: Format, pattern: &CreasePattern, folded: Option<&FoldedSta
         Format::Fold => fold::write_string(pattern, folded),
         Format::Svg => svg::write_string(pattern),
         Format::Cp => cp::write_string(pattern),
+        Format::Opx => opx::write_string(pattern),
         Format::Dxf => String::new(),
     }
 }

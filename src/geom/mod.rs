@@ -1,9 +1,10 @@
-//! Plane geometry shared by every stage: segments, polygons, angles.
+//! Plane geometry shared by every stage: segments, polygons, angles, triangulation.
 //!
 //! Vectors are glam's `DVec2`/`DVec3` (f64). Tolerances are explicit arguments.
 
 pub mod angle;
 pub mod polygon;
 pub mod segment;
+pub mod triangulate;
 
 pub use glam::{DVec2, DVec3};

@@ -20,10 +20,12 @@ pub mod animation;
 mod chain;
 pub mod depth_order;
 pub mod font;
+pub mod heat;
 pub mod layout;
 mod preview;
 pub mod shade;
 pub mod style;
+pub mod top_view;
 pub mod view3d;
 
 use crate::check::Finding;
@@ -33,6 +35,7 @@ pub use animation::render_gif;
 pub use layout::{MAX_SIZE, MIN_SIZE};
 pub use preview::render_pixmap;
 pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
+pub use top_view::render_top_view_png;
 pub use view3d::View3d;
 
 /// Options of [`preview_png`].

@@ -96,7 +96,11 @@ pub(crate) fn draw_state(
         .collect();
     for i in paint_order(&geometry, camera, &state.face_orders) {
         let face = faces[i].1;
-        let color = shade(normals[i], camera, view);
+        let own = view
+            .face_colors
+            .as_ref()
+            .and_then(|c| c.get(faces[i].0.index()));
+        let color = shade(normals[i], camera, view, own.copied());
         fill_face(&mut pixmap, face, &pos, camera, framing, color);
         if view.outline {
             outline_face(&mut pixmap, face, &pos, &edges, camera, framing, view);
@@ -126,14 +130,15 @@ fn newell_normal(face: &Face, pos: &impl Fn(VertexId) -> DVec3) -> DVec3 {
 }
 
 /// The flat colour of a face with normal `normal`: the side facing the eye, lit by Lambert's
-/// law with an ambient term.
-fn shade(normal: DVec3, camera: &Camera, view: &View3d) -> [u8; 3] {
+/// law with an ambient term; `own` replaces the paper colours of both sides.
+fn shade(normal: DVec3, camera: &Camera, view: &View3d, own: Option<[u8; 3]>) -> [u8; 3] {
     let n = normal.normalize_or_zero();
     let (n, base) = if n.dot(camera.toward_eye) >= 0.0 {
         (n, view.front_color)
     } else {
         (-n, view.back_color)
     };
+    let base = own.unwrap_or(base);
     let light = DVec3::from_array(LIGHT_DIRECTION).normalize();
     let k = AMBIENT + (1.0 - AMBIENT) * n.dot(light).max(0.0);
     base.map(|c| (f64::from(c) * k).round().clamp(0.0, 255.0) as u8)
@@ -251,10 +256,10 @@ mod tests {
     fn lit_faces_are_brighter_and_back_sides_use_the_back_tint() {
         let view = View3d::default();
         let camera = Camera::new(view.azimuth_deg, view.elevation_deg);
-        let up = shade(DVec3::Z, &camera, &view);
-        let wall = shade(-DVec3::Y, &camera, &view);
+        let up = shade(DVec3::Z, &camera, &view, None);
+        let wall = shade(-DVec3::Y, &camera, &view, None);
         assert!(up[0] > wall[0], "the top face is lit more steeply");
-        let under = shade(-DVec3::Z, &camera, &view);
+        let under = shade(-DVec3::Z, &camera, &view, None);
         let back_tint = shade(
             DVec3::Z,
             &camera,
@@ -262,13 +267,14 @@ mod tests {
                 back_color: [0, 0, 0],
                 ..view.clone()
             },
+            None,
         );
         assert_ne!(under, up);
         assert_eq!(
             back_tint, up,
             "a face seen from the front ignores the back colour"
         );
-        let degenerate = shade(DVec3::ZERO, &camera, &view);
+        let degenerate = shade(DVec3::ZERO, &camera, &view, None);
         let ambient = view
             .front_color
             .map(|c| (f64::from(c) * AMBIENT).round() as u8);

@@ -59,6 +59,10 @@ pub struct View3d {
     /// Colour of the paper's back side, RGB: a different tint so the two sides can be told
     /// apart.
     pub back_color: [u8; 3],
+    /// One colour per face of the state (by face index), used on both sides instead of
+    /// `front_color`/`back_color` (e.g. strain colouring, [`super::heat::heat_color`]); faces
+    /// beyond its end keep the paper colours.
+    pub face_colors: Option<Vec<[u8; 3]>>,
 }
 
 impl Default for View3d {
@@ -74,6 +78,7 @@ impl Default for View3d {
             margin: 16,
             front_color: [246, 236, 208],
             back_color: [176, 204, 236],
+            face_colors: None,
         }
     }
 }

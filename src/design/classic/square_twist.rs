@@ -1,12 +1,20 @@
-//! The square twist: a central square whose corners each send out two perpendicular pleat
-//! creases, rotated by the twist angle α.
+//! The classic square twist: a central square with one pleat on each side, the pleats running
+//! to the sheet edges.
 //!
-//! Around each corner, counter-clockwise from the side towards the next corner, the sectors
-//! are 90° (inside the square), 90° − α, 90°, 90° + α: the alternating sum vanishes
-//! (Kawasaki). The square's sides are valleys; of the two pleat creases the one bounding the
-//! smallest sector (90° − α) is the mountain, the other a valley (3 valleys, 1 mountain:
-//! Maekawa), so each pleat pair (parallel creases from neighbouring corners) is one mountain
-//! and one valley.
+//! The pleat of side k is the strip between two parallel creases leaving the side's two
+//! corners at the twist angle α outwards from the side's direction; its width is L sin α for a
+//! square of side L, and folded flat the square turns by 2α against the rest of the sheet. The
+//! square is turned by α so the pleats run straight to the edges. At each corner the four
+//! creases (two sides, two pleat creases at right angles) leave sectors of 90° (inside),
+//! 180° − α, 90°, α: the alternating sum vanishes (Kawasaki). The sides are valleys; the pleat
+//! crease bounding the smallest sector (α, between it and the next side) is the mountain, the
+//! other a valley (Maekawa: 3 valleys, 1 mountain; the small sector lies between opposite
+//! creases, as the big-little-big rule needs). So each pleat is one mountain (from the side's
+//! first corner) and one valley (from its second). Earlier versions put the pleat creases at
+//! α from the sides' normals: every vertex passed, but the corners folded back over the
+//! square and no layer order existed; the tests now run the layer solver on the result.
+
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use glam::DVec2;
 
@@ -56,25 +64,23 @@ impl SquareTwist {
         }
         let alpha = alpha.to_radians();
         let half = 0.5 * w;
-        // Corners of the central square, counter-clockwise, tilted by α so pleats leave at
-        // generic angles.
+        // Corners of the central square, counter-clockwise, turned by α so that the pleats,
+        // which leave each side at α outwards from the side's direction, run straight to the
+        // sheet edges.
         let corners: Vec<DVec2> = (0..4)
             .map(|k| {
-                let a =
-                    alpha + std::f64::consts::FRAC_PI_4 + k as f64 * std::f64::consts::FRAC_PI_2;
+                let a = alpha - 0.75 * PI + k as f64 * FRAC_PI_2;
                 DVec2::from_angle(a) * (l / std::f64::consts::SQRT_2)
             })
             .collect();
         let mut cp = CreasePattern::new();
         for k in 0..4 {
-            let c = corners[k];
-            let next = corners[(k + 1) % 4];
+            let (c, next) = (corners[k], corners[(k + 1) % 4]);
             cp.add_segment(c, next, Assignment::Valley);
-            let dir = (next - c).normalize();
-            let out_a = DVec2::from_angle(std::f64::consts::PI - alpha).rotate(dir);
-            let out_b = DVec2::from_angle(1.5 * std::f64::consts::PI - alpha).rotate(dir);
-            cp.add_segment(c, ray_to_square(c, out_a, half), Assignment::Mountain);
-            cp.add_segment(c, ray_to_square(c, out_b, half), Assignment::Valley);
+            // The side's direction turned outwards (clockwise) by α.
+            let out = DVec2::from_angle(-alpha).rotate((next - c).normalize());
+            cp.add_segment(c, ray_to_square(c, out, half), Assignment::Mountain);
+            cp.add_segment(next, ray_to_square(next, out, half), Assignment::Valley);
         }
         let sq = [
             DVec2::new(-half, -half),

@@ -1,0 +1,256 @@
+//! Runs the layer-order solver over Flat-Folder's published examples and compares the state
+//! counts with Flat-Folder's own (Jason Ku's Flat-Folder; the files and counts are in
+//! `../shared/testdata/flat-folder`, MIT licence).
+//!
+//! ```text
+//! cargo run --release --example flat_folder_set -- [--timeout SECONDS] [--filter TEXT] [DIR]
+//! ```
+//!
+//! Each pattern runs in a child process (this program with `--one FILE`) so a pattern that
+//! exceeds the time cap is stopped cleanly. Prints one line per pattern, then the matches,
+//! the differences (listed), the time-outs, the total time and the ten slowest designs.
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode, Stdio};
+use std::time::{Duration, Instant};
+
+use foldcam::check::layers::{LayerOptions, solve_layers};
+use foldcam::check::{CheckOptions, check};
+use foldcam::formats;
+use foldcam::pattern::{PlanarizeOptions, planarize};
+
+/// One row of Flat-Folder's CSV that we compare with.
+struct Row {
+    file: PathBuf,
+    title: String,
+    states: String,
+    exact: bool,
+    ff_seconds: f64,
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("--one") {
+        return one(Path::new(args.get(1).map_or("", String::as_str)));
+    }
+    let mut timeout = 30.0;
+    let mut filter = String::new();
+    let mut dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/flat-folder");
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--timeout" => timeout = it.next().and_then(|s| s.parse().ok()).unwrap_or(timeout),
+            "--filter" => filter = it.next().cloned().unwrap_or_default(),
+            other => dir = PathBuf::from(other),
+        }
+    }
+    let mut rows = Vec::new();
+    for (csv, sub) in [
+        ("grids_data.csv", "grids"),
+        ("instagram_data.csv", "instagram"),
+    ] {
+        match read_rows(&dir, csv, sub) {
+            Ok(r) => rows.extend(r),
+            Err(e) => {
+                eprintln!("flat_folder_set: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    for entry in std::fs::read_dir(dir.join("unsatisfiable"))
+        .into_iter()
+        .flatten()
+        .flatten()
+    {
+        rows.push(Row {
+            title: entry.file_name().to_string_lossy().into_owned(),
+            file: entry.path(),
+            states: "0".into(),
+            exact: true,
+            ff_seconds: 0.0,
+        });
+    }
+    rows.retain(|r| r.file.to_string_lossy().contains(&filter));
+    let exe = match std::env::current_exe() {
+        Ok(e) => e,
+        Err(e) => {
+            eprintln!("flat_folder_set: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let (mut matches, mut differ, mut timeouts, mut capped) = (0, Vec::new(), Vec::new(), 0);
+    let mut times: Vec<(f64, String)> = Vec::new();
+    let start = Instant::now();
+    for row in &rows {
+        let t0 = Instant::now();
+        let out = run_child(&exe, &row.file, Duration::from_secs_f64(timeout));
+        let secs = t0.elapsed().as_secs_f64();
+        let name = row
+            .file
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+        match out {
+            None => {
+                println!("TIMEOUT  {name} (Flat-Folder {:.2} s)", row.ff_seconds);
+                timeouts.push(name.clone());
+            }
+            Some(line) => {
+                let ours = line.split_whitespace().next().unwrap_or("?").to_string();
+                if !row.exact {
+                    capped += 1;
+                    println!(
+                        "capped   {name}: ours {line}, Flat-Folder ≥ {} (limited)",
+                        row.states
+                    );
+                } else if ours == row.states {
+                    matches += 1;
+                    println!(
+                        "ok       {name}: {ours} ({secs:.3} s, Flat-Folder {:.3} s)",
+                        row.ff_seconds
+                    );
+                } else {
+                    println!("DIFFER   {name}: ours {line}, Flat-Folder {}", row.states);
+                    differ.push(format!(
+                        "{name} ({}): ours {line}, Flat-Folder {}",
+                        row.title, row.states
+                    ));
+                }
+            }
+        }
+        times.push((secs, name));
+        let _ = std::io::stdout().flush();
+    }
+    times.sort_by(|a, b| b.0.total_cmp(&a.0));
+    println!("\n{} patterns, per-file cap {timeout} s", rows.len());
+    println!("match: {matches}");
+    println!("differ: {}", differ.len());
+    for d in &differ {
+        println!("  {d}");
+    }
+    println!("time out: {} {:?}", timeouts.len(), timeouts);
+    println!("limited by Flat-Folder (not compared): {capped}");
+    println!("total time: {:.1} s", start.elapsed().as_secs_f64());
+    println!("ten slowest:");
+    for (t, n) in times.iter().take(10) {
+        println!("  {t:8.3} s  {n}");
+    }
+    ExitCode::SUCCESS
+}
+
+fn read_rows(dir: &Path, csv: &str, sub: &str) -> Result<Vec<Row>, String> {
+    let text = std::fs::read_to_string(dir.join(csv)).map_err(|e| format!("{csv}: {e}"))?;
+    let files: Vec<PathBuf> = std::fs::read_dir(dir.join(sub))
+        .map_err(|e| format!("{sub}: {e}"))?
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name);
+    let (Some(num), Some(limited), Some(states), Some(setup), Some(solve)) = (
+        col("number").or_else(|| col("Number")),
+        col("limited"),
+        col("states"),
+        col("setup_sec"),
+        col("solve_sec"),
+    ) else {
+        return Err(format!("{csv}: unexpected columns"));
+    };
+    let mut rows = Vec::new();
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        if cells.len() < header.len() {
+            continue;
+        }
+        // titles hold no commas in these files; the columns line up from the end as well
+        let number = cells[num];
+        let Some(file) = files.iter().find(|f| {
+            f.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with(&format!("{number}_")))
+        }) else {
+            continue;
+        };
+        let seconds =
+            cells[setup].parse::<f64>().unwrap_or(0.0) + cells[solve].parse::<f64>().unwrap_or(0.0);
+        rows.push(Row {
+            file: file.clone(),
+            title: cells[2].to_string(),
+            states: cells[states].to_string(),
+            exact: cells[limited] == "no limit",
+            ff_seconds: seconds,
+        });
+    }
+    Ok(rows)
+}
+
+/// Runs `exe --one file`, killing it after `limit`; its first output line, or `None` on time-out.
+fn run_child(exe: &Path, file: &Path, limit: Duration) -> Option<String> {
+    let mut child = Command::new(exe)
+        .arg("--one")
+        .arg(file)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .ok()?;
+    let t0 = Instant::now();
+    loop {
+        match child.try_wait() {
+            Ok(Some(_)) => break,
+            Ok(None) if t0.elapsed() < limit => std::thread::sleep(Duration::from_millis(5)),
+            _ => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return None;
+            }
+        }
+    }
+    let out = child.wait_with_output().ok()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    Some(
+        text.lines()
+            .next()
+            .unwrap_or("error: no output")
+            .to_string(),
+    )
+}
+
+/// Solves one file and prints `STATES exact|capped components` or `error: ...`.
+fn one(path: &Path) -> ExitCode {
+    let mut cp = match formats::load(path) {
+        Ok(i) => i.pattern,
+        Err(e) => {
+            println!("error: {e}");
+            return ExitCode::SUCCESS;
+        }
+    };
+    let options = PlanarizeOptions {
+        tolerance: None,
+        faces: true,
+    };
+    if let Err(e) = planarize(&mut cp, &options) {
+        println!("error: {e}");
+        return ExitCode::SUCCESS;
+    }
+    let local = check(&cp, &CheckOptions::default());
+    if !local.passed() {
+        println!("local-fail {} findings", local.findings.len());
+        return ExitCode::SUCCESS;
+    }
+    match solve_layers(&cp, &LayerOptions::default()) {
+        Ok(r) => println!(
+            "{} {} components={} variables={} constraints={:?} comps={:?}",
+            r.states,
+            if r.exact { "exact" } else { "capped" },
+            r.components,
+            r.variables,
+            r.constraints,
+            r.component_states
+                .iter()
+                .map(|c| c.states.clone())
+                .collect::<Vec<_>>()
+        ),
+        Err(e) => println!("error: {e}"),
+    }
+    ExitCode::SUCCESS
+}

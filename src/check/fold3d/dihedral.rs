@@ -1,0 +1,92 @@
+//! The fold angle of a hinge and its gradient with respect to the four corners.
+//!
+//! For a hinge with edge `j → k` (counter-clockwise along its first triangle `j k i`) and
+//! wings `i` (first triangle) and `l` (second triangle `k j l`), let `nA = (k − j) × (i − j)`
+//! and `nB = (j − k) × (l − k)` be the triangles' normals (both +z in the flat sheet) and
+//! `ê = (k − j)/|k − j|`. The fold angle is
+//! `φ = atan2((n̂B × n̂A) · ê, n̂A · n̂B)`: 0 flat, positive when the wings rise towards the
+//! sheet's front (a valley, FOLD's sign), ±π folded flat.
+//!
+//! The gradient is the classical one of the dihedral angle (Bridson et al. 2003; Liu & Paulino
+//! 2017, eq. 27–30, with our sign): `∂φ/∂i = |e| nA/|nA|²`, `∂φ/∂l = |e| nB/|nB|²`, and with
+//! `tᵢ = (i − j)·e/|e|²`, `tₗ = (l − j)·e/|e|²`,
+//! `∂φ/∂j = −(1 − tᵢ) ∂φ/∂i − (1 − tₗ) ∂φ/∂l`, `∂φ/∂k = −tᵢ ∂φ/∂i − tₗ ∂φ/∂l`
+//! (they sum to zero: a translation does not fold).
+
+use glam::DVec3;
+
+/// The fold angle (radians, in (−π, π]) and its gradient with respect to
+/// `[j, k, i, l]` (see the module docs). A degenerate triangle (zero area or zero-length edge)
+/// gives a zero gradient.
+#[inline]
+pub fn fold_angle_gradient(j: DVec3, k: DVec3, i: DVec3, l: DVec3) -> (f64, [DVec3; 4]) {
+    let e = k - j;
+    let na = e.cross(i - j);
+    let nb = (j - k).cross(l - k);
+    let (na2, nb2, e2) = (na.length_squared(), nb.length_squared(), e.length_squared());
+    if na2 <= 0.0 || nb2 <= 0.0 || e2 <= 0.0 {
+        return (0.0, [DVec3::ZERO; 4]);
+    }
+    let el = e2.sqrt();
+    let (ua, ub) = (na / na2.sqrt(), nb / nb2.sqrt());
+    let phi = (ub.cross(ua).dot(e / el)).atan2(ua.dot(ub));
+    let gi = na * (el / na2);
+    let gl = nb * (el / nb2);
+    let ti = (i - j).dot(e) / e2;
+    let tl = (l - j).dot(e) / e2;
+    let gj = -(1.0 - ti) * gi - (1.0 - tl) * gl;
+    let gk = -ti * gi - tl * gl;
+    (phi, [gj, gk, gi, gl])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DQuat;
+
+    /// The unit square split along x = y... here along the x axis: first triangle above.
+    fn hinge(fold: f64) -> [DVec3; 4] {
+        let j = DVec3::new(0.0, 0.0, 0.0);
+        let k = DVec3::new(1.0, 0.0, 0.0);
+        let i = DVec3::new(0.3, 1.0, 0.0);
+        // The second wing lies at −y and is turned about the edge.
+        let l0 = DVec3::new(0.6, -0.8, 0.0);
+        let l = DQuat::from_axis_angle(DVec3::X, -fold) * l0;
+        [j, k, i, l]
+    }
+
+    #[test]
+    fn valley_is_positive_and_the_angle_is_the_turn() {
+        for fold in [0.0, 0.4, -0.4, 1.5, -2.5, 3.0] {
+            let [j, k, i, l] = hinge(fold);
+            let (phi, _) = fold_angle_gradient(j, k, i, l);
+            assert!((phi - fold).abs() < 1e-12, "{phi} vs {fold}");
+        }
+        // Valley: the wing rose to +z, the front side.
+        assert!(hinge(0.4)[3].z > 0.0);
+    }
+
+    #[test]
+    fn gradient_matches_finite_differences() {
+        let mut p = hinge(0.7);
+        p[2] += DVec3::new(0.05, 0.02, 0.3);
+        let (_, g) = fold_angle_gradient(p[0], p[1], p[2], p[3]);
+        let h = 1e-6;
+        for c in 0..4 {
+            for axis in 0..3 {
+                let mut plus = p;
+                let mut minus = p;
+                plus[c][axis] += h;
+                minus[c][axis] -= h;
+                let fp = fold_angle_gradient(plus[0], plus[1], plus[2], plus[3]).0;
+                let fm = fold_angle_gradient(minus[0], minus[1], minus[2], minus[3]).0;
+                let numeric = (fp - fm) / (2.0 * h);
+                assert!(
+                    (numeric - g[c][axis]).abs() < 1e-6,
+                    "corner {c} axis {axis}: {numeric} vs {}",
+                    g[c][axis]
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,265 @@
+//! The overlap arrangement of a folded form: every folded edge drawn in one plane and cut into
+//! a planar graph whose faces are the *cells* (maximal regions covered by the same set of
+//! pattern faces), after Flat-Folder's overlap graph (Ku; Akitaya, Demaine & Ku 2023).
+//!
+//! For each cell: the pattern faces that cover it (tested at one interior point, so a cell's
+//! faces are exact as long as the point is not on a face's outline, which a cell's interior
+//! never is). For each segment of the arrangement: the cells on its two sides and the pattern
+//! edges that lie along it.
+
+use glam::DVec2;
+
+use super::folded::FoldedFaces;
+use crate::pattern::faces::find_faces;
+use crate::pattern::{Assignment, CreasePattern, PlanarizeOptions, VertexId, planarize};
+
+/// Cells and segments of the folded arrangement.
+#[derive(Clone, Debug, Default)]
+pub struct Arrangement {
+    /// Pattern faces covering each cell, sorted ascending.
+    pub cell_faces: Vec<Vec<u32>>,
+    /// An interior point of each cell (folded coordinates).
+    pub cell_points: Vec<DVec2>,
+    /// Each cell's outline and holes (folded coordinates).
+    pub cell_rings: Vec<Vec<Vec<DVec2>>>,
+    /// Segments: the cells on the left and right (from `ends[0]` to `ends[1]`).
+    pub segment_cells: Vec<[Option<u32>; 2]>,
+    /// Segment end points (folded coordinates).
+    pub segment_ends: Vec<[DVec2; 2]>,
+    /// Pattern edges lying along each segment.
+    pub segment_edges: Vec<Vec<u32>>,
+}
+
+/// A uniform grid of bounding boxes, for point and box queries.
+pub(crate) struct BoxGrid {
+    origin: DVec2,
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    bins: Vec<Vec<u32>>,
+}
+
+impl BoxGrid {
+    /// A grid over `boxes` with about one box per bin.
+    pub(crate) fn new(boxes: &[(DVec2, DVec2)]) -> BoxGrid {
+        let (lo, hi) = boxes.iter().fold(
+            (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)),
+            |(lo, hi), b| (lo.min(b.0), hi.max(b.1)),
+        );
+        let (lo, hi) = if boxes.is_empty() {
+            (DVec2::ZERO, DVec2::ONE)
+        } else {
+            (lo, hi)
+        };
+        let size = (hi - lo).max(DVec2::splat(1e-12));
+        let per_side = (boxes.len() as f64).sqrt().ceil().clamp(1.0, 1024.0);
+        let cell = size.max_element() / per_side;
+        let nx = ((size.x / cell).ceil() as usize).clamp(1, 1024);
+        let ny = ((size.y / cell).ceil() as usize).clamp(1, 1024);
+        let mut grid = BoxGrid {
+            origin: lo,
+            cell,
+            nx,
+            ny,
+            bins: vec![Vec::new(); nx * ny],
+        };
+        for (i, b) in boxes.iter().enumerate() {
+            let (x0, y0) = grid.bin(b.0);
+            let (x1, y1) = grid.bin(b.1);
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    grid.bins[y * nx + x].push(i as u32);
+                }
+            }
+        }
+        grid
+    }
+
+    fn bin(&self, p: DVec2) -> (usize, usize) {
+        let q = (p - self.origin) / self.cell;
+        (
+            (q.x.max(0.0) as usize).min(self.nx - 1),
+            (q.y.max(0.0) as usize).min(self.ny - 1),
+        )
+    }
+
+    /// Ids whose box may hold `p`.
+    pub(crate) fn at(&self, p: DVec2) -> &[u32] {
+        let (x, y) = self.bin(p);
+        &self.bins[y * self.nx + x]
+    }
+}
+
+/// Halvings of the merge distance tried, from 1/8 of the shortest edge down.
+const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=50;
+
+/// How many successive halvings must give the same numbers of points and segments.
+const STABLE_REPEATS: usize = 3;
+
+/// The folded edges cut into a planar graph, and the merge distance chosen for it.
+///
+/// Like Flat-Folder, the distance is the shortest folded edge divided by 2^i for i = 3, 4, …,
+/// halved until the numbers of points and segments stay the same [`STABLE_REPEATS`] times;
+/// the largest distance of that stable run is used. Coordinates written to single precision
+/// by other tools then still meet where they should, and fine details are not merged away.
+/// `floor` is the smallest distance tried.
+fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePattern, f64)> {
+    let mut raw = CreasePattern::new();
+    for s in segments.iter().flatten() {
+        raw.add_segment(s[0], s[1], Assignment::Boundary);
+    }
+    let shortest = segments
+        .iter()
+        .flatten()
+        .map(|[a, b]| a.distance(*b))
+        .filter(|&d| d > 0.0)
+        .fold(f64::MAX, f64::min);
+    if shortest == f64::MAX {
+        return None;
+    }
+    let mut run: Vec<(CreasePattern, f64)> = Vec::new();
+    let mut last = (usize::MAX, usize::MAX);
+    let mut fallback = None;
+    for i in TOLERANCE_STEPS {
+        let tol = shortest / 2f64.powi(i);
+        if tol < floor {
+            break;
+        }
+        let mut sheet = raw.clone();
+        let options = PlanarizeOptions {
+            tolerance: Some(tol),
+            faces: false,
+        };
+        if planarize(&mut sheet, &options).is_err() {
+            continue;
+        }
+        let counts = (sheet.vertices.len(), sheet.edges.len());
+        if counts != last {
+            run.clear();
+            last = counts;
+        }
+        run.push((sheet, tol));
+        if run.len() >= STABLE_REPEATS {
+            return run.into_iter().next();
+        }
+        fallback = run.first().map(|(s, t)| (s.clone(), *t));
+    }
+    fallback
+}
+
+/// Builds the arrangement of `folded` (the folded form of `cp`); `floor` is the smallest merge
+/// distance tried (see [`planar_sheet`]). Returns the arrangement and the distance used.
+pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrangement, f64) {
+    let segments = folded_segments(cp, folded);
+    let Some((sheet, tol)) = planar_sheet(&segments, floor) else {
+        return (Arrangement::default(), floor);
+    };
+    if sheet.edges.is_empty() {
+        return (Arrangement::default(), tol);
+    }
+    let traced = find_faces(&sheet);
+    let face_boxes: Vec<(DVec2, DVec2)> = folded.faces.iter().map(|f| f.bounds).collect();
+    let face_grid = BoxGrid::new(&face_boxes);
+    let mut arr = Arrangement::default();
+    for cell in &traced.faces {
+        let rings: Vec<Vec<DVec2>> = std::iter::once(&cell.outer)
+            .chain(&cell.holes)
+            .map(|r| r.iter().map(|&v| sheet.position(v)).collect())
+            .collect();
+        let p = interior_point(&rings);
+        let mut covering: Vec<u32> = face_grid
+            .at(p)
+            .iter()
+            .copied()
+            .filter(|&f| folded.faces[f as usize].contains(p))
+            .collect();
+        covering.sort_unstable();
+        arr.cell_faces.push(covering);
+        arr.cell_points.push(p);
+        arr.cell_rings.push(rings);
+    }
+    let mut side_of = std::collections::HashMap::new();
+    for (c, cell) in traced.faces.iter().enumerate() {
+        for ring in std::iter::once(&cell.outer).chain(&cell.holes) {
+            for (a, b) in super::folded::ring_pairs(ring) {
+                side_of.insert((a, b), c as u32);
+            }
+        }
+    }
+    let edge_boxes: Vec<(DVec2, DVec2)> = segments
+        .iter()
+        .map(|s| match s {
+            Some([a, b]) => (a.min(*b) - tol, a.max(*b) + tol),
+            None => (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)),
+        })
+        .collect();
+    let edge_grid = BoxGrid::new(&edge_boxes);
+    for e in &sheet.edges {
+        let [a, b]: [VertexId; 2] = e.vertices;
+        let ends = [sheet.position(a), sheet.position(b)];
+        let mid = (ends[0] + ends[1]) * 0.5;
+        let mut along: Vec<u32> = edge_grid
+            .at(mid)
+            .iter()
+            .copied()
+            .filter(|&i| {
+                segments[i as usize].is_some_and(|[p, q]| {
+                    [ends[0], mid, ends[1]]
+                        .iter()
+                        .all(|&x| crate::geom::segment::distance_to_point(p, q, x) <= tol)
+                })
+            })
+            .collect();
+        along.sort_unstable();
+        arr.segment_cells
+            .push([side_of.get(&(a, b)).copied(), side_of.get(&(b, a)).copied()]);
+        arr.segment_ends.push(ends);
+        arr.segment_edges.push(along);
+    }
+    (arr, tol)
+}
+
+/// The folded segment of every edge that borders a face (`None` for edges on no face).
+fn folded_segments(cp: &CreasePattern, folded: &FoldedFaces) -> Vec<Option<[DVec2; 2]>> {
+    cp.edges
+        .iter()
+        .zip(&folded.edge_faces)
+        .map(|(e, sides)| {
+            let f = sides.iter().flatten().next()?;
+            let t = folded.faces[*f as usize].transform;
+            Some(e.vertices.map(|v| t.transform_point2(cp.position(v))))
+        })
+        .collect()
+}
+
+/// A point strictly inside a polygon with holes: the middle of the widest interval cut from a
+/// horizontal line halfway between the two most distant neighbouring vertex heights.
+pub fn interior_point(rings: &[Vec<DVec2>]) -> DVec2 {
+    let mut ys: Vec<f64> = rings.iter().flatten().map(|p| p.y).collect();
+    ys.sort_by(f64::total_cmp);
+    let y = ys
+        .windows(2)
+        .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
+        .map_or(ys.first().copied().unwrap_or(0.0), |w| (w[0] + w[1]) * 0.5);
+    let mut xs = Vec::new();
+    for ring in rings {
+        for i in 0..ring.len() {
+            let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+            if (a.y > y) != (b.y > y) {
+                xs.push(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
+            }
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    let best = xs
+        .chunks_exact(2)
+        .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])));
+    match best {
+        Some(w) => DVec2::new((w[0] + w[1]) * 0.5, y),
+        None => rings
+            .first()
+            .and_then(|r| r.first())
+            .copied()
+            .unwrap_or(DVec2::ZERO),
+    }
+}

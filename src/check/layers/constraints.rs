@@ -1,0 +1,369 @@
+//! Variables and constraints of the layer-order problem, as Flat-Folder states them (Ku,
+//! Flat-Folder; Akitaya, Demaine & Ku 2023):
+//!
+//! - a **variable** for every pair of faces that cover a common cell: which of the two is
+//!   above;
+//! - **taco-taco**: two folded creases along one segment, all four faces on the same side: the
+//!   two folds must not interleave (16 of the 64 assignments of the six face pairs are valid);
+//! - **taco-tortilla**: a folded crease along a segment that crosses the interior of a third
+//!   face (or lies along an unfolded F line whose face on the crease's side is the third face):
+//!   the third face is not between the crease's two faces (4 of 8);
+//! - **tortilla-tortilla**: two unfolded F lines along one segment, `f1`, `f2` on one side and
+//!   `g1`, `g2` on the other: `f1` is above `f2` exactly when `g1` is above `g2` (2 of 4); the
+//!   same holds for an F line and a face across it (`f2 = g2`): the face cannot pass between
+//!   the two sides of the line;
+//! - **transitivity**: three faces covering a common cell are not stacked in a cycle (6 of 8).
+//!
+//! A mountain or valley crease also fixes its own pair: with the face `f` on one side placed
+//! front up, a valley puts the other face above `f` (the front sides meet), a mountain below.
+
+use std::collections::HashSet;
+
+use super::LayerError;
+use super::cells::Arrangement;
+use super::folded::FoldedFaces;
+use crate::pattern::{Assignment, CreasePattern};
+
+/// The four kinds of constraint, in report order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// Two folded creases on the same side of a segment.
+    TacoTaco = 0,
+    /// A folded crease and a face across it.
+    TacoTortilla = 1,
+    /// Two unfolded lines along one segment.
+    TortillaTortilla = 2,
+    /// Three faces covering one cell.
+    Transitivity = 3,
+}
+
+/// Where a constraint comes from, in the arrangement.
+#[derive(Clone, Copy, Debug)]
+pub enum Place {
+    /// A cell (transitivity).
+    Cell(u32),
+    /// A segment (the others).
+    Segment(u32),
+}
+
+/// One constraint: literals `var << 1 | negated`, where a variable is true when its
+/// lower-numbered face is above, and the faces it concerns.
+#[derive(Clone, Debug)]
+pub struct Constraint {
+    /// The kind (selects the table of valid tuples).
+    pub kind: Kind,
+    /// Literals, `len` of them used.
+    pub lits: [u32; 6],
+    /// How many literals.
+    pub len: u8,
+    /// The faces concerned (unused slots repeat the last).
+    pub faces: [u32; 4],
+    /// Where it comes from.
+    pub place: Place,
+}
+
+/// Most transitivity triples generated before the problem is refused as too large.
+pub const MAX_TRIPLES: usize = 60_000_000;
+
+/// The constraint system of one folded form.
+#[derive(Clone, Debug, Default)]
+pub struct System {
+    /// Face pairs `(lo, hi)` packed as `lo << 32 | hi`, sorted: the variables.
+    pub pairs: Vec<u64>,
+    /// Constraints.
+    pub constraints: Vec<Constraint>,
+    /// Forced literals from mountain and valley creases: `(literal, edge)`.
+    pub forced: Vec<(u32, u32)>,
+    /// Constraint counts by [`Kind`].
+    pub counts: [usize; 4],
+}
+
+impl System {
+    /// The variable of faces `a`, `b` (any order), if they overlap.
+    pub fn var(&self, a: u32, b: u32) -> Option<u32> {
+        let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+        self.pairs.binary_search(&key).ok().map(|i| i as u32)
+    }
+
+    /// The literal "`a` is above `b`", if they overlap.
+    pub fn above(&self, a: u32, b: u32) -> Option<u32> {
+        self.var(a, b).map(|v| (v << 1) | u32::from(a > b))
+    }
+
+    /// The two faces of a variable, lower first.
+    pub fn faces_of(&self, var: u32) -> (u32, u32) {
+        let k = self.pairs[var as usize];
+        ((k >> 32) as u32, k as u32)
+    }
+
+    fn push(&mut self, kind: Kind, faces: &[u32], pairs: &[(u32, u32)], place: Place) {
+        let mut lits = [0; 6];
+        for (slot, &(a, b)) in lits.iter_mut().zip(pairs) {
+            match self.above(a, b) {
+                Some(l) => *slot = l,
+                None => return,
+            }
+        }
+        let mut fs = [0; 4];
+        for (i, slot) in fs.iter_mut().enumerate() {
+            *slot = faces[i.min(faces.len() - 1)];
+        }
+        self.counts[kind as usize] += 1;
+        self.constraints.push(Constraint {
+            kind,
+            lits,
+            len: pairs.len() as u8,
+            faces: fs,
+            place,
+        });
+    }
+}
+
+/// Builds the variables and constraints of a folded form.
+pub fn build(
+    cp: &CreasePattern,
+    folded: &FoldedFaces,
+    arr: &Arrangement,
+) -> Result<System, LayerError> {
+    let mut sys = System {
+        pairs: pairs(arr),
+        ..Default::default()
+    };
+    edge_constraints(cp, folded, arr, &mut sys);
+    transitivity(arr, &mut sys)?;
+    for (e, edge) in cp.edges.iter().enumerate() {
+        let [Some(f), Some(g)] = folded.edge_faces[e] else {
+            continue;
+        };
+        if f == g || !edge.assignment.is_fold() {
+            continue;
+        }
+        let valley = edge.assignment == Assignment::Valley;
+        if let Some(lit) = sys.above(g, f) {
+            let value = valley != folded.faces[f as usize].flipped;
+            sys.forced.push((lit ^ u32::from(!value), e as u32));
+        }
+    }
+    Ok(sys)
+}
+
+fn pairs(arr: &Arrangement) -> Vec<u64> {
+    let mut keys = Vec::new();
+    for faces in &arr.cell_faces {
+        for (i, &a) in faces.iter().enumerate() {
+            for &b in &faces[i + 1..] {
+                keys.push((u64::from(a) << 32) | u64::from(b));
+            }
+        }
+        if keys.len() > 4 * MAX_TRIPLES {
+            keys.sort_unstable();
+            keys.dedup();
+        }
+    }
+    keys.sort_unstable();
+    keys.dedup();
+    keys
+}
+
+fn transitivity(arr: &Arrangement, sys: &mut System) -> Result<(), LayerError> {
+    let mut seen: HashSet<&[u32]> = HashSet::new();
+    let mut triples: Vec<(u64, u32)> = Vec::new();
+    let mut dedup_at = 1 << 20;
+    for (c, faces) in arr.cell_faces.iter().enumerate() {
+        if faces.len() < 3 || !seen.insert(faces.as_slice()) {
+            continue;
+        }
+        for i in 0..faces.len() {
+            for j in i + 1..faces.len() {
+                for k in j + 1..faces.len() {
+                    let key = (u64::from(faces[i]) << 42)
+                        | (u64::from(faces[j]) << 21)
+                        | u64::from(faces[k]);
+                    triples.push((key, c as u32));
+                }
+            }
+        }
+        if triples.len() > dedup_at {
+            triples.sort_unstable_by_key(|t| t.0);
+            triples.dedup_by_key(|t| t.0);
+            if triples.len() > MAX_TRIPLES {
+                return Err(LayerError::TooLarge {
+                    what: "transitivity constraints",
+                    count: triples.len(),
+                    limit: MAX_TRIPLES,
+                });
+            }
+            dedup_at = 2 * triples.len().max(1 << 20);
+        }
+    }
+    triples.sort_unstable_by_key(|t| t.0);
+    triples.dedup_by_key(|t| t.0);
+    let mask = (1u64 << 21) - 1;
+    for (key, c) in triples {
+        let (a, b, d) = (
+            (key >> 42) as u32,
+            ((key >> 21) & mask) as u32,
+            (key & mask) as u32,
+        );
+        sys.push(
+            Kind::Transitivity,
+            &[a, b, d],
+            &[(a, b), (a, d), (b, d)],
+            Place::Cell(c),
+        );
+    }
+    Ok(())
+}
+
+/// Which side of segment `s` face `f` lies on (0 left, 1 right), if it borders it.
+fn side(arr: &Arrangement, s: usize, f: u32) -> Option<usize> {
+    (0..2).find(|&k| {
+        arr.segment_cells[s][k]
+            .is_some_and(|c| arr.cell_faces[c as usize].binary_search(&f).is_ok())
+    })
+}
+
+fn edge_constraints(cp: &CreasePattern, folded: &FoldedFaces, arr: &Arrangement, sys: &mut System) {
+    let mut done: HashSet<(u8, u32, u32)> = HashSet::new();
+    for s in 0..arr.segment_edges.len() {
+        let place = Place::Segment(s as u32);
+        // (faces, side) of the folded creases, and (left face, right face) of the F lines.
+        let mut tacos: Vec<(u32, u32, usize, u32)> = Vec::new();
+        let mut flats: Vec<([u32; 2], u32)> = Vec::new();
+        for &e in &arr.segment_edges[s] {
+            let [Some(f), Some(g)] = folded.edge_faces[e as usize] else {
+                continue;
+            };
+            let (Some(sf), Some(sg)) = (side(arr, s, f), side(arr, s, g)) else {
+                continue;
+            };
+            match cp.edges[e as usize].assignment {
+                a if a.may_fold() && sf == sg => tacos.push((f, g, sf, e)),
+                Assignment::Flat | Assignment::Join if sf != sg => {
+                    let mut pair = [f, g];
+                    if sf == 1 {
+                        pair.swap(0, 1);
+                    }
+                    flats.push((pair, e));
+                }
+                _ => {}
+            }
+        }
+        let through: Vec<u32> = match arr.segment_cells[s] {
+            [Some(l), Some(r)] => {
+                intersection(&arr.cell_faces[l as usize], &arr.cell_faces[r as usize])
+            }
+            _ => Vec::new(),
+        };
+        for (i, &(a, b, sa, ea)) in tacos.iter().enumerate() {
+            for &(c, d, sc, ec) in &tacos[i + 1..] {
+                if sa == sc && done.insert((0, ea.min(ec), ea.max(ec))) {
+                    sys.push(
+                        Kind::TacoTaco,
+                        &[a, b, c, d],
+                        &[(a, b), (a, c), (a, d), (b, c), (b, d), (c, d)],
+                        place,
+                    );
+                }
+            }
+            let thirds = through
+                .iter()
+                .copied()
+                .chain(flats.iter().map(|(pair, _)| pair[sa]));
+            for c in thirds {
+                if c != a && c != b && done.insert((1, ea, c)) {
+                    sys.push(
+                        Kind::TacoTortilla,
+                        &[a, b, c],
+                        &[(a, b), (a, c), (b, c)],
+                        place,
+                    );
+                }
+            }
+        }
+        for &([f, g], e) in &flats {
+            for &c in &through {
+                if done.insert((3, e, c)) {
+                    sys.push(
+                        Kind::TortillaTortilla,
+                        &[f, c, g, c],
+                        &[(f, c), (g, c)],
+                        place,
+                    );
+                }
+            }
+        }
+        for (i, &([f1, g1], e1)) in flats.iter().enumerate() {
+            for &([f2, g2], e2) in &flats[i + 1..] {
+                if done.insert((2, e1.min(e2), e1.max(e2))) {
+                    sys.push(
+                        Kind::TortillaTortilla,
+                        &[f1, f2, g1, g2],
+                        &[(f1, f2), (g1, g2)],
+                        place,
+                    );
+                }
+            }
+        }
+    }
+}
+
+fn intersection(a: &[u32], b: &[u32]) -> Vec<u32> {
+    let (mut i, mut j, mut out) = (0, 0, Vec::new());
+    while i < a.len() && j < b.len() {
+        match a[i].cmp(&b[j]) {
+            std::cmp::Ordering::Less => i += 1,
+            std::cmp::Ordering::Greater => j += 1,
+            std::cmp::Ordering::Equal => {
+                out.push(a[i]);
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    out
+}
+
+/// The valid tuples of each kind (bit `i` is literal `i`'s value).
+pub fn tables() -> [Vec<u8>; 4] {
+    let taco_taco = by_ranks(4, &[(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)], |r| {
+        let between = |x: usize| (r[x] > r[0]) != (r[x] > r[1]);
+        between(2) == between(3)
+    });
+    let taco_tortilla = by_ranks(3, &[(0, 1), (0, 2), (1, 2)], |r| {
+        (r[2] > r[0]) == (r[2] > r[1])
+    });
+    let transitivity = by_ranks(3, &[(0, 1), (0, 2), (1, 2)], |_| true);
+    [taco_taco, taco_tortilla, vec![0b00, 0b11], transitivity]
+}
+
+/// Tuples of "x above y" literals over `pairs` for every stacking of `n` faces (ranks, higher
+/// above) that `valid` accepts.
+fn by_ranks(n: usize, pairs: &[(usize, usize)], valid: impl Fn(&[usize]) -> bool) -> Vec<u8> {
+    let mut out = Vec::new();
+    let mut ranks: Vec<usize> = (0..n).collect();
+    permutations(&mut ranks, 0, &mut |r| {
+        if valid(r) {
+            let t = pairs
+                .iter()
+                .enumerate()
+                .fold(0u8, |t, (i, &(x, y))| t | (u8::from(r[x] > r[y]) << i));
+            out.push(t);
+        }
+    });
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+fn permutations(r: &mut Vec<usize>, k: usize, visit: &mut impl FnMut(&[usize])) {
+    if k == r.len() {
+        visit(r);
+        return;
+    }
+    for i in k..r.len() {
+        r.swap(k, i);
+        permutations(r, k + 1, visit);
+        r.swap(k, i);
+    }
+}

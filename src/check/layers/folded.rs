@@ -1,0 +1,235 @@
+//! The folded geometry of a flat fold: every face of the crease pattern placed in the plane by
+//! reflecting it across the creases that lead to it from a fixed face.
+//!
+//! One face per connected piece of paper keeps its place (the lowest-numbered face of the
+//! piece); crossing a mountain, valley or unassigned crease reflects the plane across that
+//! crease's line, crossing a flat (F) or join (J) line keeps it, and boundaries and cuts join
+//! nothing. A face reached by an odd number of reflections is *flipped*: its back side faces up.
+//! Where two routes place a vertex at different points (a vertex that breaks Kawasaki, or
+//! creases that do not close up around a hole), the pattern has no flat folded form and
+//! [`fold_faces`] says which faces disagree and where.
+
+use std::collections::HashMap;
+
+use glam::{DAffine2, DMat2, DVec2};
+
+use super::LayerError;
+use crate::pattern::{Assignment, CreasePattern, FaceId, VertexId};
+
+/// A face placed in its folded position: polygons in folded coordinates.
+#[derive(Clone, Debug)]
+pub struct FoldedFace {
+    /// Maps crease-pattern coordinates to folded coordinates (an isometry).
+    pub transform: DAffine2,
+    /// True when the face shows its back side upwards (odd number of reflections).
+    pub flipped: bool,
+    /// Outer ring in folded coordinates (counter-clockwise when not flipped).
+    pub outer: Vec<DVec2>,
+    /// Hole rings in folded coordinates.
+    pub holes: Vec<Vec<DVec2>>,
+    /// Folded bounding box `(min, max)`.
+    pub bounds: (DVec2, DVec2),
+}
+
+impl FoldedFace {
+    /// True when `p` (folded coordinates) lies inside the face: inside the outer ring and
+    /// outside every hole. Points on the outline may go either way.
+    pub fn contains(&self, p: DVec2) -> bool {
+        p.cmpge(self.bounds.0).all()
+            && p.cmple(self.bounds.1).all()
+            && ring_contains(&self.outer, p)
+            && !self.holes.iter().any(|h| ring_contains(h, p))
+    }
+}
+
+/// Even–odd ray test (no orientation needed).
+fn ring_contains(ring: &[DVec2], p: DVec2) -> bool {
+    let mut inside = false;
+    let n = ring.len();
+    for i in 0..n {
+        let (a, b) = (ring[i], ring[(i + 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) {
+            let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+            if x > p.x {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// The folded form of a pattern: faces placed, edges' neighbouring faces, folded vertices.
+#[derive(Clone, Debug)]
+pub struct FoldedFaces {
+    /// Faces in pattern order.
+    pub faces: Vec<FoldedFace>,
+    /// For every edge, the face on its left (from `vertices[0]` to `vertices[1]`) and on its
+    /// right, when there is one.
+    pub edge_faces: Vec<[Option<u32>; 2]>,
+    /// Folded position of every vertex (from the first face that holds it; a vertex on no face
+    /// keeps its pattern position).
+    pub vertices: Vec<DVec2>,
+}
+
+/// The reflection of the plane across the line through `a` and `b`.
+fn reflection(a: DVec2, b: DVec2) -> DAffine2 {
+    let d = (b - a).normalize_or_zero();
+    let m = DMat2::from_cols(
+        DVec2::new(2.0 * d.x * d.x - 1.0, 2.0 * d.x * d.y),
+        DVec2::new(2.0 * d.x * d.y, 2.0 * d.y * d.y - 1.0),
+    );
+    DAffine2::from_mat2_translation(m, a - m * a)
+}
+
+/// Places every face of `cp` (whose faces must be traced: `cp.faces` is `Some`), see the module
+/// docs. `tol` is the distance, in the pattern's unit, within which two placements of a vertex
+/// count as the same point.
+pub fn fold_faces(cp: &CreasePattern, tol: f64) -> Result<FoldedFaces, LayerError> {
+    let faces = cp.faces.as_deref().ok_or(LayerError::NoFaces)?;
+    if faces.is_empty() {
+        return Err(LayerError::NoFaces);
+    }
+    let edge_of: HashMap<(u32, u32), u32> = cp
+        .edges
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (key(e.vertices[0], e.vertices[1]), i as u32))
+        .collect();
+    let mut edge_faces = vec![[None, None]; cp.edges.len()];
+    for (f, face) in faces.iter().enumerate() {
+        for ring in std::iter::once(&face.outer).chain(&face.holes) {
+            for (a, b) in ring_pairs(ring) {
+                if let Some(&e) = edge_of.get(&key(a, b)) {
+                    let side = usize::from(cp.edges[e as usize].vertices[0] != a);
+                    edge_faces[e as usize][side] = Some(f as u32);
+                }
+            }
+        }
+    }
+    let transforms = place(cp, faces, &edge_of, &edge_faces);
+    let mut vertices: Vec<Option<(DVec2, u32)>> = vec![None; cp.vertices.len()];
+    let on_cut = cut_vertices(cp);
+    let mut out = Vec::with_capacity(faces.len());
+    for (f, (face, &(t, flipped))) in faces.iter().zip(&transforms).enumerate() {
+        let map = |ring: &Vec<VertexId>| -> Vec<DVec2> {
+            ring.iter()
+                .map(|&v| t.transform_point2(cp.position(v)))
+                .collect()
+        };
+        let outer = map(&face.outer);
+        for (&v, &p) in face.outer.iter().zip(&outer) {
+            match vertices[v.index()] {
+                None => vertices[v.index()] = Some((p, f as u32)),
+                Some((q, g)) if !on_cut[v.index()] && q.distance(p) > tol => {
+                    return Err(LayerError::NotFlat {
+                        faces: [FaceId(g), FaceId::new(f)],
+                        vertex: v,
+                        position: cp.position(v),
+                        gap: q.distance(p),
+                    });
+                }
+                _ => {}
+            }
+        }
+        let holes: Vec<Vec<DVec2>> = face.holes.iter().map(map).collect();
+        let bounds = outer.iter().fold(
+            (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)),
+            |(lo, hi), &p| (lo.min(p), hi.max(p)),
+        );
+        out.push(FoldedFace {
+            transform: t,
+            flipped,
+            outer,
+            holes,
+            bounds,
+        });
+    }
+    let vertices = vertices
+        .iter()
+        .zip(&cp.vertices)
+        .map(|(v, &p)| v.map_or(p, |(q, _)| q))
+        .collect();
+    Ok(FoldedFaces {
+        faces: out,
+        edge_faces,
+        vertices,
+    })
+}
+
+/// Breadth-first placement from the lowest face of each piece.
+fn place(
+    cp: &CreasePattern,
+    faces: &[crate::pattern::Face],
+    edge_of: &HashMap<(u32, u32), u32>,
+    edge_faces: &[[Option<u32>; 2]],
+) -> Vec<(DAffine2, bool)> {
+    let mut placed: Vec<Option<(DAffine2, bool)>> = vec![None; faces.len()];
+    let mut queue = std::collections::VecDeque::new();
+    for start in 0..faces.len() {
+        if placed[start].is_some() {
+            continue;
+        }
+        placed[start] = Some((DAffine2::IDENTITY, false));
+        queue.push_back(start);
+        while let Some(f) = queue.pop_front() {
+            let Some((t, flipped)) = placed[f] else {
+                continue;
+            };
+            let face = &faces[f];
+            for ring in std::iter::once(&face.outer).chain(&face.holes) {
+                for (a, b) in ring_pairs(ring) {
+                    let Some(&e) = edge_of.get(&key(a, b)) else {
+                        continue;
+                    };
+                    let edge = &cp.edges[e as usize];
+                    let Some(g) = edge_faces[e as usize]
+                        .iter()
+                        .flatten()
+                        .copied()
+                        .find(|&g| g as usize != f)
+                    else {
+                        continue;
+                    };
+                    if placed[g as usize].is_some() {
+                        continue;
+                    }
+                    let next = match edge.assignment {
+                        Assignment::Boundary | Assignment::Cut => continue,
+                        Assignment::Flat | Assignment::Join => (t, flipped),
+                        Assignment::Mountain | Assignment::Valley | Assignment::Unassigned => {
+                            let (pa, pb) = cp.segment(crate::pattern::EdgeId(e));
+                            (t * reflection(pa, pb), !flipped)
+                        }
+                    };
+                    placed[g as usize] = Some(next);
+                    queue.push_back(g as usize);
+                }
+            }
+        }
+    }
+    placed
+        .into_iter()
+        .map(|p| p.unwrap_or((DAffine2::IDENTITY, false)))
+        .collect()
+}
+
+/// Vertices on a cut: pieces on either side of a cut may fold apart, so their placements are
+/// not compared.
+fn cut_vertices(cp: &CreasePattern) -> Vec<bool> {
+    let mut mask = vec![false; cp.vertices.len()];
+    for e in cp.edges.iter().filter(|e| e.assignment == Assignment::Cut) {
+        for v in e.vertices {
+            mask[v.index()] = true;
+        }
+    }
+    mask
+}
+
+fn key(a: VertexId, b: VertexId) -> (u32, u32) {
+    (a.0.min(b.0), a.0.max(b.0))
+}
+
+/// Consecutive vertex pairs of a closed ring.
+pub(crate) fn ring_pairs(ring: &[VertexId]) -> impl Iterator<Item = (VertexId, VertexId)> + '_ {
+    (0..ring.len()).map(move |i| (ring[i], ring[(i + 1) % ring.len()]))
+}

@@ -1,0 +1,190 @@
+//! The layer-order check as part of `check`: run after the local checks, turned into findings
+//! (one per face of a contradiction) and a JSON object.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use super::{LayerError, LayerOptions, LayerReport, LayerSolver};
+use crate::check::{CheckReport, Finding, FindingKind, Quantity};
+use crate::pattern::CreasePattern;
+
+/// The outcome of the layer check: a report, or why there is none.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LayerCheck {
+    /// The solver's report, when it ran.
+    #[serde(flatten)]
+    pub report: Option<LayerReport>,
+    /// Why the solver did not run (the pattern fails a local check).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub skipped: Option<String>,
+    /// Why the pattern has no folded form at all.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    /// The findings the outcome adds to the check (listed in the report's findings too).
+    #[serde(skip)]
+    pub findings: Vec<Finding>,
+}
+
+impl LayerCheck {
+    /// True when a valid layer order exists (false when skipped).
+    pub fn passed(&self) -> bool {
+        self.report.as_ref().is_some_and(LayerReport::foldable)
+    }
+
+    /// One or two lines for the text report.
+    pub fn to_text(&self) -> String {
+        let mut out = String::new();
+        if let Some(reason) = &self.skipped {
+            let _ = writeln!(out, "layer order: not checked: {reason}");
+        }
+        if let Some(e) = &self.error {
+            let _ = writeln!(out, "layer order: {e}");
+        }
+        if let Some(r) = &self.report {
+            let c = &r.constraints;
+            let _ = writeln!(
+                out,
+                "layer order: {} state(s){} in {} component(s); {} faces, {} overlapping pairs, \
+                 constraints: taco-taco {}, taco-tortilla {}, tortilla-tortilla {}, \
+                 transitivity {}",
+                r.states,
+                if r.exact {
+                    ""
+                } else {
+                    " at least (a component reached --max-states)"
+                },
+                r.components,
+                r.faces,
+                r.variables,
+                c.taco_taco,
+                c.taco_tortilla,
+                c.tortilla_tortilla,
+                c.transitivity
+            );
+        }
+        out
+    }
+}
+
+/// Runs the layer solver on `cp` unless `local` (the local checks of the same pattern) found
+/// a Kawasaki or Maekawa fault, and appends its findings to `local`. Errors only for input it
+/// cannot judge: no faces, or a problem beyond the size limits.
+pub fn check_layers(
+    cp: &CreasePattern,
+    local: &mut CheckReport,
+    opts: &LayerOptions,
+) -> Result<LayerCheck, LayerError> {
+    let mut out = LayerCheck {
+        report: None,
+        skipped: None,
+        error: None,
+        findings: Vec::new(),
+    };
+    let first_local = local
+        .findings
+        .iter()
+        .find(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa));
+    if let Some(f) = first_local {
+        out.skipped = Some(format!(
+            "the pattern is not locally flat-foldable ({} fails first, at {})",
+            f.kind.name(),
+            f.vertex.map_or_else(|| "-".to_string(), |v| v.to_string())
+        ));
+        return Ok(out);
+    }
+    match LayerSolver::new(cp, opts) {
+        Ok(solver) => {
+            let report = solver.into_report();
+            if let Some(c) = &report.contradiction {
+                for (f, &p) in c.faces.iter().zip(&c.positions) {
+                    out.findings.push(finding(
+                        p,
+                        format!("face {f}: {}", c.message),
+                        "change the mountain/valley assignment or the creases near these faces",
+                    ));
+                }
+            }
+            out.report = Some(report);
+        }
+        Err(LayerError::NotFlat {
+            faces,
+            vertex,
+            position,
+            gap,
+        }) => {
+            let e = LayerError::NotFlat {
+                faces,
+                vertex,
+                position,
+                gap,
+            };
+            let mut f = finding(
+                position,
+                e.to_string(),
+                "the creases around this vertex do not close up when folded flat",
+            );
+            f.vertex = Some(vertex);
+            out.findings.push(f);
+            out.error = Some(e.to_string());
+        }
+        Err(e) => return Err(e),
+    }
+    local.findings.extend(out.findings.iter().cloned());
+    Ok(out)
+}
+
+fn finding(position: glam::DVec2, message: String, hint: &str) -> Finding {
+    Finding {
+        kind: FindingKind::LayerOrder,
+        vertex: None,
+        edge: None,
+        position,
+        value: 0.0,
+        limit: 1.0,
+        quantity: Quantity::States,
+        mv_counts: None,
+        message,
+        hint: hint.to_string(),
+    }
+}
+
+/// Largest number of edges [`flat_fold_warning`] looks at (beyond it the check would slow
+/// down every cutting job; run `check --layers` instead).
+pub const WARNING_MAX_EDGES: usize = 20_000;
+
+/// True when the pattern is meant to fold flat: it has mountain or valley creases and every
+/// one of them is unangled or at ±180°.
+pub fn meant_to_fold_flat(cp: &CreasePattern) -> bool {
+    let mut any = false;
+    for e in cp.edges.iter().filter(|e| e.assignment.is_fold()) {
+        any = true;
+        if e.fold_angle.is_some_and(|a| (a.abs() - 180.0).abs() > 1e-6) {
+            return false;
+        }
+    }
+    any
+}
+
+/// For the cutting commands: a one-line warning when a pattern meant to fold flat passes the
+/// local checks but has no layer order (so the cut sheet could not be folded), naming the
+/// faces; `None` otherwise, also when the pattern is larger than [`WARNING_MAX_EDGES`] or the
+/// solver cannot judge it.
+pub fn flat_fold_warning(cp: &CreasePattern) -> Option<String> {
+    if !meant_to_fold_flat(cp) || cp.edges.len() > WARNING_MAX_EDGES {
+        return None;
+    }
+    let mut local = crate::check::check(cp, &crate::check::CheckOptions::default());
+    let options = LayerOptions {
+        max_states: Some(1),
+        ..LayerOptions::default()
+    };
+    let outcome = check_layers(cp, &mut local, &options).ok()?;
+    let report = outcome.report?;
+    let c = report.contradiction?;
+    Some(format!(
+        "the pattern passes every vertex check but cannot be folded flat: {} (run `foldcam check \
+         --layers` for details)",
+        c.message
+    ))
+}

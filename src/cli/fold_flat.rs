@@ -1,0 +1,138 @@
+//! `foldcam fold-flat IN -o OUT.fold [--png OUT.png] [--state K]`.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use foldcam::check::layers::{LayerOptions, LayerSolver};
+use foldcam::check::{CheckOptions, FindingKind, check};
+use foldcam::formats::{self, write_atomic};
+use foldcam::render::render_top_view_png;
+
+use super::Outcome;
+use super::args::positive;
+use super::input;
+
+/// Fold a crease pattern flat and write the folded state.
+#[derive(clap::Args)]
+#[command(
+    long_about = "Folds a locally flat-foldable crease pattern flat: places every face (one held \
+                  fixed), finds the valid layer orders (Flat-Folder's method: Akitaya, Demaine \
+                  & Ku 2023) and writes state K as a FOLD file: the pattern as the key frame and \
+                  the folded form as a foldedForm frame with faceOrders. --png draws the folded \
+                  model from above, faces shaded by the number of layers beneath (front side \
+                  cream, back side blue); --xray shades by layer count only.\n\nExit status: 0 \
+                  written, 1 the pattern has no valid layer order (nothing written), 2 bad \
+                  input.",
+    after_help = "Examples:\n  foldcam fold-flat crane.fold -o crane-folded.fold --png crane.png\n  \
+                  foldcam fold-flat twist.fold -o twist-folded.fold --state 1"
+)]
+pub struct Args {
+    /// Input file (.fold, .svg or .cp).
+    pub input: PathBuf,
+    #[command(flatten)]
+    pub frame: input::FrameArg,
+    /// Output FOLD file (key frame: the pattern; second frame: the folded form).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Also draw the folded model from above as a PNG.
+    #[arg(long, value_name = "PNG")]
+    pub png: Option<PathBuf>,
+    /// Which valid state to write, from 0 (states are numbered across independent components).
+    #[arg(long, value_name = "K", default_value_t = 0)]
+    pub state: u64,
+    /// Shade the picture by layer count only (X-ray view).
+    #[arg(long, requires = "png")]
+    pub xray: bool,
+    /// Picture width in pixels.
+    #[arg(long, default_value_t = 1200, requires = "png")]
+    pub width: u32,
+    /// Stop counting each component at N states (states beyond are not reachable).
+    #[arg(long, value_name = "N", default_value_t = 1_000_000)]
+    pub max_states: u64,
+    /// Kawasaki tolerance of the local check run first, degrees.
+    #[arg(long, value_name = "DEG", default_value_t = 0.01, value_parser = positive)]
+    pub kawasaki_tolerance: f64,
+}
+
+/// Folds and writes.
+pub fn run(args: Args) -> Result<Outcome> {
+    if formats::Format::from_path(&args.output) != Some(formats::Format::Fold) {
+        bail!(
+            "{}: the folded state is written as FOLD: use a .fold name",
+            args.output.display()
+        );
+    }
+    let mut imported = input::load(&args.input, &args.frame)?;
+    input::clean(&args.input, &mut imported, None, true)?;
+    let cp = &imported.pattern;
+    let local = check(
+        cp,
+        &CheckOptions {
+            kawasaki_tolerance_deg: args.kawasaki_tolerance,
+            ..CheckOptions::default()
+        },
+    );
+    if let Some(f) = local
+        .findings
+        .iter()
+        .find(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa))
+    {
+        eprintln!(
+            "foldcam: {}: not locally flat-foldable ({} at {}: {}); nothing written",
+            args.input.display(),
+            f.kind.name(),
+            f.vertex.map_or_else(|| "-".into(), |v| v.to_string()),
+            f.message
+        );
+        return Ok(Outcome::CheckFailed);
+    }
+    let options = LayerOptions {
+        max_states: Some(args.max_states.max(1)),
+        ..LayerOptions::default()
+    };
+    let solver = LayerSolver::new(cp, &options)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
+    let report = solver.report();
+    if let Some(c) = &report.contradiction {
+        eprintln!(
+            "foldcam: {}: {}; nothing written",
+            args.input.display(),
+            c.message
+        );
+        return Ok(Outcome::CheckFailed);
+    }
+    let k = u128::from(args.state);
+    let (Some(folded), Some(view)) = (solver.folded_state(cp, k), solver.top_view(k)) else {
+        bail!(
+            "{}: there is no state {} ({} state(s){})",
+            args.input.display(),
+            args.state,
+            report.states,
+            if report.exact {
+                String::new()
+            } else {
+                ", counting stopped at --max-states: raise it".to_string()
+            }
+        );
+    };
+    let png = match &args.png {
+        Some(_) => Some(
+            render_top_view_png(&view, args.width, args.xray)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?,
+        ),
+        None => None,
+    };
+    input::save(&args.output, cp, Some(&folded))?;
+    if let (Some(path), Some(bytes)) = (&args.png, png) {
+        write_atomic(path, &bytes).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        eprintln!("foldcam: wrote {}", path.display());
+    }
+    eprintln!(
+        "foldcam: {}: state {} of {}{}",
+        args.input.display(),
+        args.state,
+        report.states,
+        if report.exact { "" } else { " (at least)" }
+    );
+    Ok(Outcome::Done)
+}

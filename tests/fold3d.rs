@@ -1,0 +1,537 @@
+//! The compliant fold simulation (`check::fold3d`) against closed forms and other solvers:
+//! Miura-ori kinematics derived here from the cell geometry, the rigid-foldable forms that
+//! `tessellate` solves, a pop-up card's own folded state, and isometry along the way.
+
+use foldcam::check::fold3d::{FoldError, FoldOptions, ModelError, Stop, fold, fold_with};
+use foldcam::design::classic::MiuraOri;
+use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
+use glam::{DVec2, DVec3};
+use std::path::PathBuf;
+
+/// A Miura-ori sheet with faces.
+fn miura(columns: usize, rows: usize) -> (MiuraOri, CreasePattern) {
+    let m = MiuraOri {
+        columns,
+        rows,
+        ..MiuraOri::default()
+    };
+    let mut cp = m.build().unwrap();
+    planarize(&mut cp, &PlanarizeOptions::default()).unwrap();
+    (m, cp)
+}
+
+/// Closed-form Miura-ori kinematics of one degree-4 vertex, derived from the cell geometry
+/// (independently of the simulator). The vertex has collinear pleat creases `c1`, `c3` and
+/// zigzag creases `c2`, `c4` at angle γ to `c1` (sectors γ, π − γ, π − γ, γ). Folded, the
+/// mirror symmetry swapping `c2` and `c4` puts `c1 = (s, 0, k)` and `c3 = (−s, 0, k)` in one
+/// plane, with η the angle between them, `s = sin(η/2)`, `k = cos(η/2)`; the rigid sectors
+/// give `c2 = (p, ±q, 0)` with `p = cos γ / s`, `q = √(1 − p²)`. The normals of the four
+/// faces then give the zigzag fold ρ_z and the pleat fold ρ_x:
+/// `cos ρ_z = −(cos η + cos² γ)/sin² γ`, `cos ρ_x = (q² − k² p²)/sin² γ`.
+/// Returns (ρ_x, η, q) for a zigzag fold ρ_z (radians).
+fn miura_closed_form(gamma: f64, rho_z: f64) -> (f64, f64, f64) {
+    let (cg, sg) = (gamma.cos(), gamma.sin());
+    let cos_eta = -cg * cg - sg * sg * rho_z.cos();
+    let eta = cos_eta.clamp(-1.0, 1.0).acos();
+    let (s, k) = ((eta / 2.0).sin(), (eta / 2.0).cos());
+    let p = cg / s;
+    let q2 = 1.0 - p * p;
+    let cos_rx = (q2 - k * k * p * p) / (sg * sg);
+    (cos_rx.clamp(-1.0, 1.0).acos(), eta, q2.max(0.0).sqrt())
+}
+
+#[test]
+fn closed_form_is_flat_at_zero_and_flat_folded_at_pi() {
+    let g = 1.2f64;
+    let (rx, eta, q) = miura_closed_form(g, 0.0);
+    assert!(rx.abs() < 1e-6 && (eta - std::f64::consts::PI).abs() < 1e-6);
+    assert!((q - g.sin()).abs() < 1e-6);
+    let (rx, eta, _) = miura_closed_form(g, std::f64::consts::PI);
+    assert!((rx - std::f64::consts::PI).abs() < 1e-6);
+    assert!((eta - (std::f64::consts::PI - 2.0 * g)).abs() < 1e-6);
+}
+
+/// Mean |fold angle| (degrees) of the interior creases among `edges`.
+fn mean_abs(angles: &[Option<f64>], edges: impl Iterator<Item = usize>) -> f64 {
+    let v: Vec<f64> = edges.filter_map(|e| angles[e]).map(f64::abs).collect();
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+#[test]
+fn miura_at_half_follows_closed_form_kinematics() {
+    let (cols, rows) = (6, 6);
+    let (m, cp) = miura(cols, rows);
+    let opts = FoldOptions {
+        percent: 50.0,
+        ..FoldOptions::default()
+    };
+    let f = fold(&cp, &opts).unwrap();
+    let r = &f.report;
+    assert_eq!(r.stop, Stop::Settled);
+    assert!(r.wrong_sign.is_empty());
+    // Every crease folds with the sign of its assignment.
+    for (e, edge) in cp.edges.iter().enumerate() {
+        let want = match edge.assignment {
+            Assignment::Mountain => -1.0,
+            Assignment::Valley => 1.0,
+            _ => continue,
+        };
+        let got = r.fold_angles[e].unwrap();
+        assert!(
+            got * want > 1.0,
+            "edge {e} {:?} folded {got}",
+            edge.assignment
+        );
+    }
+    // Generator numbering: (rows + 1) · cols row segments (pleats), then the zigzag columns.
+    let horizontal = (rows + 1) * cols;
+    let zig =
+        (horizontal..cp.edges.len()).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
+    let pleat = (0..horizontal).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
+    let rho_z = mean_abs(&r.fold_angles, zig).to_radians();
+    let rho_x = mean_abs(&r.fold_angles, pleat).to_radians();
+    let c = (m.shear * m.shear + m.height * m.height).sqrt();
+    let gamma = (m.shear / c).acos();
+    let (want_x, eta, q) = miura_closed_form(gamma, rho_z);
+    // Halfway between flat and flat-folded on average, but not equally: the two families
+    // cannot both reach 90° (the closed form ties them).
+    assert!(rho_z > 1.2 * rho_x, "{rho_z} {rho_x}");
+    assert!(
+        (rho_x - want_x).abs() < 0.01 * want_x,
+        "{rho_x} vs {want_x}"
+    );
+    // Overall dimensions: along the pleats cols · a · sin(η/2), across rows · c · q.
+    let x = &f.folded.positions;
+    let vid = |i: usize, j: usize| j * (cols + 1) + i;
+    let lx = x[vid(0, rows / 2)].distance(x[vid(cols, rows / 2)]);
+    let ly = x[vid(cols / 2, 0)].distance(x[vid(cols / 2, rows)]);
+    let (want_lx, want_ly) = (
+        cols as f64 * m.width * (eta / 2.0).sin(),
+        rows as f64 * c * q,
+    );
+    assert!((lx - want_lx).abs() < 0.01 * want_lx, "{lx} vs {want_lx}");
+    assert!((ly - want_ly).abs() < 0.01 * want_ly, "{ly} vs {want_ly}");
+}
+
+/// Largest |bar strain| of positions `x`.
+fn max_bar_strain(model: &foldcam::check::fold3d::BarHingeModel, x: &[DVec3]) -> f64 {
+    model
+        .bars
+        .iter()
+        .map(|b| {
+            let len = x[b.ends[0] as usize].distance(x[b.ends[1] as usize]);
+            ((len - b.rest) / b.rest).abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn miura_bars_stay_within_one_percent_at_every_step() {
+    let (_, cp) = miura(4, 4);
+    let mut worst = 0.0f64;
+    let mut steps = 0;
+    let f = fold_with(&cp, &FoldOptions::default(), |model, x| {
+        worst = worst.max(max_bar_strain(model, x));
+        steps += 1;
+    })
+    .unwrap();
+    assert_eq!(steps, f.report.steps);
+    assert!(worst < 0.01, "largest strain on the way: {worst}");
+    // It did fold: every crease within a few degrees of flat-folded.
+    assert!(
+        f.report
+            .fold_angles
+            .iter()
+            .flatten()
+            .all(|a| a.abs() > 150.0)
+    );
+    assert!(f.report.wrong_sign.is_empty());
+}
+
+/// Rotation (as a matrix) and translation that best map `a` onto `b` in the least-squares
+/// sense (Kabsch's problem, solved with Horn's quaternion: the eigenvector of the largest
+/// eigenvalue of a symmetric 4 × 4 matrix, by Jacobi rotations).
+fn align(a: &[DVec3], b: &[DVec3]) -> Vec<DVec3> {
+    let n = a.len() as f64;
+    let ca = a.iter().sum::<DVec3>() / n;
+    let cb = b.iter().sum::<DVec3>() / n;
+    let mut s = [[0.0f64; 3]; 3];
+    for (p, q) in a.iter().zip(b) {
+        let (p, q) = ((*p - ca).to_array(), (*q - cb).to_array());
+        for i in 0..3 {
+            for j in 0..3 {
+                s[i][j] += p[i] * q[j];
+            }
+        }
+    }
+    let [[sxx, sxy, sxz], [syx, syy, syz], [szx, szy, szz]] = s;
+    let mut m = [
+        [sxx + syy + szz, syz - szy, szx - sxz, sxy - syx],
+        [syz - szy, sxx - syy - szz, sxy + syx, szx + sxz],
+        [szx - sxz, sxy + syx, -sxx + syy - szz, syz + szy],
+        [sxy - syx, szx + sxz, syz + szy, -sxx - syy + szz],
+    ];
+    let mut v = [[0.0f64; 4]; 4];
+    for (i, row) in v.iter_mut().enumerate() {
+        row[i] = 1.0;
+    }
+    for _ in 0..100 {
+        for p in 0..4 {
+            for q in p + 1..4 {
+                if m[p][q].abs() < 1e-300 {
+                    continue;
+                }
+                let theta = (m[q][q] - m[p][p]) / (2.0 * m[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let t = if theta == 0.0 { 1.0 } else { t };
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let sn = t * c;
+                for row in m.iter_mut() {
+                    let (mkp, mkq) = (row[p], row[q]);
+                    row[p] = c * mkp - sn * mkq;
+                    row[q] = sn * mkp + c * mkq;
+                }
+                let (rp, rq) = (m[p], m[q]);
+                m[p] = std::array::from_fn(|k| c * rp[k] - sn * rq[k]);
+                m[q] = std::array::from_fn(|k| sn * rp[k] + c * rq[k]);
+                for row in v.iter_mut() {
+                    let (vp, vq) = (row[p], row[q]);
+                    row[p] = c * vp - sn * vq;
+                    row[q] = sn * vp + c * vq;
+                }
+            }
+        }
+    }
+    let best = (0..4).max_by(|&i, &j| m[i][i].total_cmp(&m[j][j])).unwrap();
+    let q = glam::DQuat::from_xyzw(v[1][best], v[2][best], v[3][best], v[0][best]).normalize();
+    a.iter().map(|p| q * (*p - ca) + cb).collect()
+}
+
+#[test]
+fn alignment_recovers_a_rigid_motion() {
+    let a: Vec<DVec3> = (0..20)
+        .map(|i| DVec3::new(i as f64, (i * i % 7) as f64, (i % 3) as f64))
+        .collect();
+    let q = glam::DQuat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 2.0);
+    let b: Vec<DVec3> = a
+        .iter()
+        .map(|p| q * *p + DVec3::new(5.0, -2.0, 1.0))
+        .collect();
+    let moved = align(&a, &b);
+    assert!(moved.iter().zip(&b).all(|(p, q)| p.distance(*q) < 1e-9));
+}
+
+fn diagonal(x: &[DVec3]) -> f64 {
+    let lo = x.iter().fold(DVec3::splat(f64::MAX), |m, p| m.min(*p));
+    let hi = x.iter().fold(DVec3::splat(f64::MIN), |m, p| m.max(*p));
+    lo.distance(hi)
+}
+
+fn foldcam() -> std::process::Command {
+    std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+}
+
+fn manifest(rel: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(rel)
+}
+
+#[test]
+fn tessellation_from_flat_reaches_the_solved_form() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("dome.fold");
+    let status = foldcam()
+        .arg("tessellate")
+        .arg(manifest("examples/tessellation/dome.obj"))
+        .args(["-x", "stainless-0.5", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let imported = foldcam::formats::load(&out).unwrap();
+    let solved = imported.folded.expect("the tessellation's folded form");
+    let cp = imported.pattern;
+    let mut worst = 0.0f64;
+    let f = fold_with(&cp, &FoldOptions::default(), |model, x| {
+        worst = worst.max(max_bar_strain(model, x));
+    })
+    .unwrap();
+    assert_eq!(f.report.stop, Stop::Settled);
+    assert!(f.report.wrong_sign.is_empty());
+    // Rigid-foldable: isometric all the way.
+    assert!(worst < 0.01, "largest strain on the way: {worst}");
+    let n = cp.vertices.len();
+    let sim = &f.folded.positions[..n];
+    let moved = align(sim, &solved.positions);
+    let diag = diagonal(&solved.positions);
+    let off = moved
+        .iter()
+        .zip(&solved.positions)
+        .map(|(p, q)| p.distance(*q))
+        .fold(0.0, f64::max);
+    assert!(off < 0.02 * diag, "{off} vs diagonal {diag}");
+}
+
+#[test]
+fn pop_up_card_at_half_matches_its_own_folded_state() {
+    use foldcam::design::popup::voxel::{crease_pattern, fold_card, parse_voxel_card};
+    let text = std::fs::read_to_string(manifest("examples/popup/house.voxel.txt")).unwrap();
+    let card = parse_voxel_card(&text).unwrap();
+    let cp = crease_pattern(&card).unwrap();
+    let f = fold(
+        &cp,
+        &FoldOptions {
+            percent: 50.0,
+            ..FoldOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(f.report.stop, Stop::Settled);
+    assert!(f.report.wrong_sign.is_empty());
+    // The card's creases all fold by the same angle; half of it gives the opening.
+    let target = cp
+        .edges
+        .iter()
+        .filter_map(foldcam::check::fold3d::crease_target_deg)
+        .map(f64::abs)
+        .fold(0.0, f64::max);
+    let opening = 180.0 - 0.5 * target;
+    // The card's 3D frame has Y = −v (its flat state is the pattern mirrored): mirror it
+    // back, and check that at 180° (flat) it is then the pattern itself.
+    let corners = |opening: f64| {
+        let own = fold_card(&card, &cp, opening);
+        let faces = own.state.faces.clone().unwrap();
+        let corners: Vec<DVec3> = faces
+            .iter()
+            .flat_map(|o| o.outer.iter().map(|v| own.state.positions[v.index()]))
+            .map(|p| DVec3::new(p.x, -p.y, p.z))
+            .collect();
+        corners
+    };
+    let flat_pattern: Vec<DVec3> = cp
+        .faces
+        .as_ref()
+        .unwrap()
+        .iter()
+        .flat_map(|o| o.outer.iter().map(|v| cp.vertices[v.index()].extend(0.0)))
+        .collect();
+    let flat = corners(180.0);
+    assert_eq!(flat.len(), flat_pattern.len());
+    let d0 = align(&flat, &flat_pattern)
+        .iter()
+        .zip(&flat_pattern)
+        .map(|(p, q)| p.distance(*q))
+        .fold(0.0, f64::max);
+    assert!(d0 < 1e-6 * diagonal(&flat_pattern), "{d0}");
+    let b = corners(opening);
+    let sim_faces = f.folded.faces.as_ref().unwrap();
+    let a: Vec<DVec3> = sim_faces
+        .iter()
+        .flat_map(|s| s.outer.iter().map(|v| f.folded.positions[v.index()]))
+        .collect();
+    assert_eq!(a.len(), b.len());
+    let moved = align(&a, &b);
+    let diag = diagonal(&b);
+    let off = moved
+        .iter()
+        .zip(&b)
+        .map(|(p, q)| p.distance(*q))
+        .fold(0.0, f64::max);
+    assert!(off < 0.02 * diag, "{off} vs diagonal {diag}");
+}
+
+/// A degree-4 vertex whose sectors break Kawasaki's theorem (100°, 80°, 100°, 80° would pass;
+/// here 120°, 60°, 80°, 100°).
+fn kawasaki_violation() -> CreasePattern {
+    let mut cp = CreasePattern::new();
+    let c = cp.add_vertex(DVec2::ZERO);
+    let dirs = [0.0f64, 120.0, 180.0, 260.0];
+    let tips: Vec<_> = dirs
+        .iter()
+        .map(|d| cp.add_vertex(DVec2::from_angle(d.to_radians()) * 50.0))
+        .collect();
+    // Corners of the sheet between the spokes, so every face is a convex quadrilateral.
+    let mut ring = Vec::new();
+    for k in 0..4 {
+        ring.push(tips[k]);
+        let mid = (dirs[k] + dirs[(k + 1) % 4] + if k == 3 { 360.0 } else { 0.0 }) / 2.0;
+        ring.push(cp.add_vertex(DVec2::from_angle(mid.to_radians()) * 60.0));
+    }
+    let kinds = [
+        Assignment::Mountain,
+        Assignment::Valley,
+        Assignment::Valley,
+        Assignment::Valley,
+    ];
+    for (t, kind) in tips.iter().zip(kinds) {
+        cp.add_edge(c, *t, kind);
+    }
+    for k in 0..ring.len() {
+        cp.add_edge(ring[k], ring[(k + 1) % ring.len()], Assignment::Boundary);
+    }
+    planarize(
+        &mut cp,
+        &PlanarizeOptions {
+            faces: true,
+            ..PlanarizeOptions::default()
+        },
+    )
+    .unwrap();
+    cp
+}
+
+#[test]
+fn unfoldable_vertex_reports_where_strain_concentrates() {
+    let cp = kawasaki_violation();
+    let f = fold(
+        &cp,
+        &FoldOptions {
+            percent: 80.0,
+            ..FoldOptions::default()
+        },
+    )
+    .unwrap();
+    let r = &f.report;
+    assert!(f.folded.positions.iter().all(|p| p.is_finite()));
+    assert!(r.max_strain.is_finite() && r.residual.is_finite());
+    // Four faces meet at the vertex, all strained; the report names one of them and a place
+    // within the sheet.
+    assert!(r.max_strain_face.is_some());
+    let at = r.max_strain_at.unwrap();
+    assert!(at.length() < 60.0, "{at}");
+    // Far from its targets: the angle error says so.
+    assert!(r.max_angle_error_deg > 5.0, "{}", r.max_angle_error_deg);
+}
+
+#[test]
+fn step_cap_and_bad_input_end_cleanly() {
+    let (_, cp) = miura(4, 4);
+    let capped = fold(
+        &cp,
+        &FoldOptions {
+            max_steps: 10,
+            ..FoldOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(capped.report.stop, Stop::StepCap);
+    assert_eq!(capped.report.steps, 10);
+    let mut no_faces = cp.clone();
+    no_faces.faces = None;
+    assert_eq!(
+        fold(&no_faces, &FoldOptions::default()).unwrap_err(),
+        FoldError::Model(ModelError::NoFaces)
+    );
+    let bad = FoldOptions {
+        percent: 120.0,
+        ..FoldOptions::default()
+    };
+    assert!(matches!(
+        fold(&cp, &bad),
+        Err(FoldError::Option {
+            name: "percent",
+            ..
+        })
+    ));
+}
+
+#[test]
+fn cuts_split_the_sheet() {
+    // A square with a cut from one side to the centre: the vertices on the cut get a copy each.
+    let mut cp = CreasePattern::new();
+    let sq = [(0., 0.), (100., 0.), (100., 100.), (0., 100.)]
+        .map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
+    for k in 0..4 {
+        cp.add_edge(sq[k], sq[(k + 1) % 4], Assignment::Boundary);
+    }
+    let mid = cp.add_vertex(DVec2::new(50.0, 0.0));
+    let centre = cp.add_vertex(DVec2::new(50.0, 50.0));
+    cp.add_edge(mid, centre, Assignment::Cut);
+    cp.add_edge(centre, sq[2], Assignment::Valley);
+    cp.add_edge(centre, sq[3], Assignment::Valley);
+    planarize(
+        &mut cp,
+        &PlanarizeOptions {
+            faces: true,
+            ..PlanarizeOptions::default()
+        },
+    )
+    .unwrap();
+    let model = foldcam::check::fold3d::BarHingeModel::build(&cp).unwrap();
+    // The cut's bottom end (on the outline) is split; the centre is joined around the top.
+    assert_eq!(model.vertex_count(), cp.vertices.len() + 1);
+    let mid_id = cp
+        .vertices
+        .iter()
+        .position(|p| *p == DVec2::new(50.0, 0.0))
+        .unwrap();
+    assert_eq!(
+        model.source.iter().filter(|v| v.index() == mid_id).count(),
+        2
+    );
+}
+
+#[test]
+fn cli_folds_an_oripa_file_and_writes_every_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let fold_path = dir.path().join("base.fold");
+    let (png, gif) = (dir.path().join("base.png"), dir.path().join("base.gif"));
+    let out = foldcam()
+        .arg("fold3d")
+        .arg(manifest("examples/patterns/preliminary-base.cp"))
+        .arg("-o")
+        .arg(&fold_path)
+        .args(["--percent", "40", "--strain", "--width", "200", "--png"])
+        .arg(&png)
+        .arg("--gif")
+        .arg(&gif)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.code().is_some_and(|c| c <= 1), "{stdout}");
+    assert!(stdout.contains("largest bar strain"), "{stdout}");
+    assert!(stdout.contains("largest fold-angle error"), "{stdout}");
+    assert!(png.exists() && gif.exists());
+    // Frame 0 is the flat pattern, frame 1 the folded form in 3D with reached angles.
+    let text = std::fs::read_to_string(&fold_path).unwrap();
+    let key = foldcam::formats::fold::read_str(&text).unwrap();
+    let folded = key.folded.expect("foldedForm frame");
+    assert!(folded.positions.iter().any(|p| p.z.abs() > 1e-3));
+    assert!(
+        folded
+            .edges
+            .iter()
+            .any(|e| e.fold_angle.is_some_and(|a| a.abs() > 1.0))
+    );
+}
+
+#[test]
+fn cli_bad_input_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let fold_path = dir.path().join("x.fold");
+    let out = foldcam()
+        .arg("fold3d")
+        .arg(manifest("examples/patterns/preliminary-base.cp"))
+        .arg("-o")
+        .arg(&fold_path)
+        .args(["--percent", "140"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let bad_png = dir.path().join("x.jpg");
+    let out = foldcam()
+        .arg("fold3d")
+        .arg(manifest("examples/patterns/preliminary-base.cp"))
+        .arg("-o")
+        .arg(&fold_path)
+        .arg("--png")
+        .arg(&bad_png)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("x.jpg"));
+    assert!(!fold_path.exists() && !bad_png.exists());
+}

@@ -1,0 +1,528 @@
+//! The global layer-order solver (`check::layers`): closed-form counts on tiny patterns,
+//! Flat-Folder's published counts (copied grids here; the whole shared set in the ignored
+//! tests), our own generators, bundled examples and fold scripts.
+
+use std::path::{Path, PathBuf};
+
+use foldcam::check::layers::{LayerOptions, LayerSolver, solve_layers};
+use foldcam::check::{CheckOptions, FindingKind, check};
+use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
+use foldcam::design::folding::crease::{crease_pattern, step_states};
+use foldcam::design::folding::script::{parse_script, run_script};
+use foldcam::formats;
+use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
+use glam::DVec2;
+
+fn clean(mut cp: CreasePattern) -> CreasePattern {
+    let options = PlanarizeOptions {
+        tolerance: None,
+        faces: true,
+    };
+    planarize(&mut cp, &options).expect("planarises");
+    cp
+}
+
+fn load(path: &Path) -> CreasePattern {
+    clean(
+        formats::load(path)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .pattern,
+    )
+}
+
+fn states(cp: &CreasePattern) -> String {
+    solve_layers(cp, &LayerOptions::default())
+        .expect("layer problem")
+        .states
+}
+
+/// True when at least one state exists (counting stops at one per component).
+fn has_state(cp: &CreasePattern) -> bool {
+    let options = LayerOptions {
+        max_states: Some(1),
+        ..LayerOptions::default()
+    };
+    solve_layers(cp, &options)
+        .expect("layer problem")
+        .foldable()
+}
+
+fn locally_flat(cp: &CreasePattern) -> bool {
+    !check(cp, &CheckOptions::default())
+        .findings
+        .iter()
+        .any(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa))
+}
+
+/// A unit square folded in half along x = 0.5 with the given assignment.
+fn folded_once(a: Assignment) -> CreasePattern {
+    let mut cp = CreasePattern::new();
+    let p = [
+        (0.0, 0.0),
+        (0.5, 0.0),
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.5, 1.0),
+        (0.0, 1.0),
+    ]
+    .map(|(x, y)| cp.add_vertex(DVec2::new(x, y)));
+    for i in 0..6 {
+        cp.add_edge(p[i], p[(i + 1) % 6], Assignment::Boundary);
+    }
+    cp.add_edge(p[1], p[4], a);
+    clean(cp)
+}
+
+/// A strip folded at x = 1 and x = 2 (three equal panels), with the given assignments.
+fn zigzag(a: Assignment, b: Assignment) -> CreasePattern {
+    let mut cp = CreasePattern::new();
+    for x in 0..3 {
+        let x = f64::from(x);
+        cp.add_segment(
+            DVec2::new(x, 0.0),
+            DVec2::new(x + 1.0, 0.0),
+            Assignment::Boundary,
+        );
+        cp.add_segment(
+            DVec2::new(x, 1.0),
+            DVec2::new(x + 1.0, 1.0),
+            Assignment::Boundary,
+        );
+    }
+    cp.add_segment(
+        DVec2::new(0.0, 0.0),
+        DVec2::new(0.0, 1.0),
+        Assignment::Boundary,
+    );
+    cp.add_segment(
+        DVec2::new(3.0, 0.0),
+        DVec2::new(3.0, 1.0),
+        Assignment::Boundary,
+    );
+    cp.add_segment(DVec2::new(1.0, 0.0), DVec2::new(1.0, 1.0), a);
+    cp.add_segment(DVec2::new(2.0, 0.0), DVec2::new(2.0, 1.0), b);
+    clean(cp)
+}
+
+#[test]
+fn one_fold_has_one_order_and_an_unassigned_fold_two() {
+    // Two panels on top of each other: the valley (or mountain) says which is on top; an
+    // unassigned crease allows both.
+    assert_eq!(states(&folded_once(Assignment::Valley)), "1");
+    assert_eq!(states(&folded_once(Assignment::Mountain)), "1");
+    assert_eq!(states(&folded_once(Assignment::Unassigned)), "2");
+}
+
+#[test]
+fn three_panel_strip_counts_match_the_stackings_by_hand() {
+    // Panels 0|1|2 fold onto one square; the two creases land on opposite edges of it, so
+    // neither fold constrains the other and no panel crosses a fold: only the stacking
+    // order matters. Valley at x = 1: panel 1 above panel 0. The second crease is seen from
+    // panel 1's back (it lies face down): a mountain puts panel 2 above panel 1 (the pleat,
+    // 0 < 1 < 2: one stack), a valley puts it below panel 1, either under panel 0 or
+    // between 0 and 1 (two stacks); unassigned leaves three places for panel 2. Both
+    // unassigned: all 3! = 6 stacks.
+    assert_eq!(
+        states(&zigzag(Assignment::Valley, Assignment::Mountain)),
+        "1"
+    );
+    assert_eq!(states(&zigzag(Assignment::Valley, Assignment::Valley)), "2");
+    assert_eq!(
+        states(&zigzag(Assignment::Valley, Assignment::Unassigned)),
+        "3"
+    );
+    assert_eq!(
+        states(&zigzag(Assignment::Unassigned, Assignment::Unassigned)),
+        "6"
+    );
+}
+
+#[test]
+fn faces_named_when_no_order_exists() {
+    // Flat-Folder's smallest unsatisfiable pattern: every face the contradiction names is
+    // located inside that face on the pattern.
+    let Some(dir) = shared() else { return };
+    let cp = load(&dir.join("unsatisfiable/001_ku_Bad_Twist.fold"));
+    assert!(locally_flat(&cp));
+    let solver = LayerSolver::new(&cp, &LayerOptions::default()).expect("layer problem");
+    let report = solver.report();
+    assert_eq!(report.states, "0");
+    let c = report.contradiction.as_ref().expect("a contradiction");
+    assert!(c.faces.len() >= 2);
+    let faces = cp.faces.as_ref().expect("faces");
+    for (f, p) in c.faces.iter().zip(&c.positions) {
+        let ring: Vec<DVec2> = faces[f.index()]
+            .outer
+            .iter()
+            .map(|&v| cp.position(v))
+            .collect();
+        let (lo, hi) = ring
+            .iter()
+            .fold((ring[0], ring[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)));
+        assert!(
+            p.cmpge(lo - 1e-6).all() && p.cmple(hi + 1e-6).all(),
+            "{f} at {p}"
+        );
+    }
+}
+
+fn copied(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/flat-folder")
+        .join(name)
+}
+
+#[test]
+fn copied_grids_match_flat_folder_counts() {
+    // Counts published in Flat-Folder's grids_data.csv (see tests/data/flat-folder/README.md).
+    for (name, expected) in [
+        ("000_brown_2x2_A1.fold", "1"),
+        ("001_brown_2x2_C1.fold", "1"),
+        ("002_brown_2x2_D1.fold", "16"),
+        ("171_brown_4x4_C30.fold", "16"),
+        ("372_brown_4x4_D112.fold", "4096"),
+    ] {
+        let cp = load(&copied(name));
+        assert!(locally_flat(&cp), "{name}");
+        assert_eq!(states(&cp), expected, "{name}");
+    }
+}
+
+#[test]
+fn a_state_and_its_face_orders_are_admitted_and_a_flipped_pair_is_not() {
+    let cp = load(&copied("002_brown_2x2_D1.fold"));
+    let solver = LayerSolver::new(&cp, &LayerOptions::default()).expect("layer problem");
+    for k in [0u128, 5, 15] {
+        let orders = solver.face_orders(k).expect("state exists");
+        assert!(solver.admits(&orders), "state {k}");
+    }
+    assert!(solver.face_orders(16).is_none());
+    // Flipping a pair forced by a crease is refused.
+    let mut orders = solver.face_orders(0).expect("state 0");
+    let forced = orders
+        .iter()
+        .position(|&(f, g, _)| {
+            let (fv, gv) = (
+                &cp.faces.as_ref().expect("faces")[f.index()],
+                &cp.faces.as_ref().expect("faces")[g.index()],
+            );
+            fv.outer.iter().filter(|v| gv.outer.contains(v)).count() >= 2
+        })
+        .expect("two neighbouring faces overlap");
+    orders[forced].2 = -orders[forced].2;
+    assert!(!solver.admits(&orders));
+}
+
+#[test]
+fn every_state_number_gives_a_different_order() {
+    let cp = load(&copied("002_brown_2x2_D1.fold"));
+    let solver = LayerSolver::new(&cp, &LayerOptions::default()).expect("layer problem");
+    let mut seen = std::collections::HashSet::new();
+    for k in 0..16u128 {
+        let orders = solver.face_orders(k).expect("state exists");
+        assert!(seen.insert(orders), "state {k} repeats an earlier one");
+    }
+}
+
+#[test]
+fn the_cap_makes_the_count_inexact() {
+    let cp = load(&copied("372_brown_4x4_D112.fold"));
+    let options = LayerOptions {
+        max_states: Some(2),
+        ..LayerOptions::default()
+    };
+    let report = solve_layers(&cp, &options).expect("layer problem");
+    assert!(!report.exact);
+    assert!(
+        report
+            .component_states
+            .iter()
+            .any(|c| !c.exact && c.states == "2")
+    );
+}
+
+#[test]
+fn square_twist_folds_flat_across_angles_and_sizes() {
+    for twist_deg in [1.0, 10.0, 22.5, 30.0, 40.0, 44.0] {
+        for (sheet, square) in [(120.0, 30.0), (61.0, 30.0), (200.0, 20.0)] {
+            let cp = clean(
+                SquareTwist {
+                    sheet,
+                    square,
+                    twist_deg,
+                }
+                .build()
+                .expect("valid parameters"),
+            );
+            assert!(locally_flat(&cp), "{twist_deg}° {sheet}/{square}");
+            assert!(has_state(&cp), "{twist_deg}° {sheet}/{square}");
+        }
+    }
+}
+
+#[test]
+fn generated_patterns_have_a_layer_order() {
+    let mut patterns = vec![
+        ("square twist", SquareTwist::default().build()),
+        ("miura", MiuraOri::default().build()),
+        ("waterbomb", Waterbomb::default().build()),
+        ("yoshimura", Yoshimura::default().build()),
+    ];
+    for (columns, rows, shear) in [(2, 2, 0.0), (5, 3, 3.0), (4, 6, 6.0)] {
+        patterns.push((
+            "miura",
+            MiuraOri {
+                columns,
+                rows,
+                shear,
+                ..MiuraOri::default()
+            }
+            .build(),
+        ));
+        patterns.push((
+            "waterbomb",
+            Waterbomb {
+                columns,
+                rows,
+                ..Waterbomb::default()
+            }
+            .build(),
+        ));
+        patterns.push((
+            "yoshimura",
+            Yoshimura {
+                columns,
+                rows,
+                ..Yoshimura::default()
+            }
+            .build(),
+        ));
+    }
+    let mut checked = 0;
+    for (name, cp) in patterns {
+        let cp = clean(cp.expect("valid parameters"));
+        if !locally_flat(&cp) {
+            // not meant to fold flat at every vertex (reported by `check` already)
+            continue;
+        }
+        assert!(has_state(&cp), "{name}");
+        checked += 1;
+    }
+    assert!(
+        checked >= 4,
+        "only {checked} generated patterns fold flat locally"
+    );
+}
+
+#[test]
+fn bundled_patterns_that_pass_locally_have_a_layer_order() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/patterns");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(dir).expect("examples/patterns") {
+        let path = entry.expect("entry").path();
+        if formats::Format::from_path(&path).is_none() {
+            continue;
+        }
+        let cp = load(&path);
+        if !locally_flat(&cp) {
+            continue;
+        }
+        assert!(has_state(&cp), "{}", path.display());
+        checked += 1;
+    }
+    assert!(checked >= 2);
+}
+
+#[test]
+fn fold_scripts_end_in_a_state_the_solver_admits() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/folding");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(dir).expect("examples/folding") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).expect("readable");
+        let folding = run_script(&parse_script(&text).expect("parses")).expect("runs");
+        let sheet = crease_pattern(&folding);
+        let Some(last) = step_states(&folding, &sheet).pop() else {
+            continue;
+        };
+        let flat = last
+            .positions
+            .iter()
+            .all(|p| (p.z - last.positions[0].z).abs() < 1e-6);
+        let all_flat_folds = sheet.pattern.edges.iter().all(|e| {
+            e.fold_angle
+                .is_none_or(|a| a.abs() < 1e-6 || (a.abs() - 180.0).abs() < 1e-6)
+        });
+        if !flat || !all_flat_folds {
+            continue;
+        }
+        let cp = clean(sheet.pattern.clone());
+        assert_eq!(
+            cp.faces.as_ref().map(Vec::len),
+            sheet.pattern.faces.as_ref().map(Vec::len)
+        );
+        let solver = LayerSolver::new(&cp, &LayerOptions::default()).expect("layer problem");
+        assert_ne!(solver.report().states, "0", "{}", path.display());
+        assert!(solver.admits(&last.face_orders), "{}", path.display());
+        checked += 1;
+    }
+    assert!(checked >= 1, "no fold script ends flat");
+}
+
+fn shared() -> Option<PathBuf> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/flat-folder");
+    dir.is_dir().then_some(dir)
+}
+
+/// Rows of a Flat-Folder CSV: (file number, faces, limited, states, seconds).
+fn rows(dir: &Path, csv: &str) -> Vec<(String, usize, bool, String, f64)> {
+    let text = std::fs::read_to_string(dir.join(csv)).expect("csv");
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let col = |n: &str| {
+        header
+            .iter()
+            .position(|h| h.eq_ignore_ascii_case(n))
+            .expect(n)
+    };
+    let (num, faces, limited, states, setup, solve) = (
+        col("number"),
+        col("faces"),
+        col("limited"),
+        col("states"),
+        col("setup_sec"),
+        col("solve_sec"),
+    );
+    lines
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|c| c.len() == header.len())
+        .map(|c| {
+            (
+                c[num].to_string(),
+                c[faces].parse().unwrap_or(usize::MAX),
+                c[limited] == "no limit",
+                c[states].to_string(),
+                c[setup].parse::<f64>().unwrap_or(f64::MAX)
+                    + c[solve].parse::<f64>().unwrap_or(0.0),
+            )
+        })
+        .collect()
+}
+
+fn file_numbered(dir: &Path, number: &str) -> Option<PathBuf> {
+    std::fs::read_dir(dir)
+        .ok()?
+        .flatten()
+        .map(|e| e.path())
+        .find(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with(&format!("{number}_")))
+        })
+}
+
+/// Patterns with few faces and a small Flat-Folder time: the subset that stays well under two
+/// minutes in a debug build (the whole set runs in `examples/flat_folder_set.rs`).
+#[test]
+#[ignore = "needs ../shared"]
+fn flat_folder_counts_match_on_small_patterns() {
+    let Some(dir) = shared() else {
+        panic!("../shared/testdata/flat-folder is absent");
+    };
+    let mut compared = 0;
+    for (csv, sub, max_faces) in [
+        ("grids_data.csv", "grids", 120),
+        ("instagram_data.csv", "instagram", 90),
+    ] {
+        for (number, faces, exact, expected, seconds) in rows(&dir, csv) {
+            if !exact || faces > max_faces || seconds > 0.05 || expected.len() > 5 {
+                continue;
+            }
+            let Some(path) = file_numbered(&dir.join(sub), &number) else {
+                continue;
+            };
+            let cp = load(&path);
+            assert!(locally_flat(&cp), "{}", path.display());
+            assert_eq!(states(&cp), expected, "{}", path.display());
+            compared += 1;
+        }
+    }
+    assert!(compared >= 100, "only {compared} patterns compared");
+}
+
+#[test]
+#[ignore = "needs ../shared"]
+fn flat_folder_unsatisfiable_patterns_are_refused() {
+    let Some(dir) = shared() else {
+        panic!("../shared/testdata/flat-folder is absent");
+    };
+    let mut refused = 0;
+    for entry in std::fs::read_dir(dir.join("unsatisfiable")).expect("listing") {
+        let path = entry.expect("entry").path();
+        let cp = load(&path);
+        assert!(locally_flat(&cp), "{}", path.display());
+        let report = solve_layers(&cp, &LayerOptions::default()).expect("layer problem");
+        assert_eq!(report.states, "0", "{}", path.display());
+        assert!(report.contradiction.is_some(), "{}", path.display());
+        refused += 1;
+    }
+    assert_eq!(refused, 6);
+}
+
+#[test]
+fn square_twist_pleats_have_the_classic_width_and_angle() {
+    // Each pleat: a mountain and a parallel valley L·sin α apart, the mountain at α from the
+    // side it leaves (the smallest sector at every corner).
+    for twist_deg in [10.0, 22.5, 40.0] {
+        let t = SquareTwist {
+            twist_deg,
+            ..SquareTwist::default()
+        };
+        let cp = t.build().expect("twist");
+        let alpha = twist_deg.to_radians();
+        let lines = |a: Assignment| -> Vec<(DVec2, DVec2)> {
+            cp.edges
+                .iter()
+                .filter(|e| e.assignment == a)
+                .map(|e| (cp.position(e.vertices[0]), cp.position(e.vertices[1])))
+                .collect()
+        };
+        let (mountains, valleys) = (lines(Assignment::Mountain), lines(Assignment::Valley));
+        assert_eq!(mountains.len(), 4);
+        for (a, b) in &mountains {
+            let d = (*b - *a).normalize();
+            let partner = valleys.iter().find(|(c, e)| {
+                let u = (*e - *c).normalize();
+                (u.perp_dot(d)).abs() < 1e-9 && u.dot(d) > 0.0
+            });
+            let (c, _) = partner.expect("a parallel valley in the same direction");
+            let width = (*c - *a).perp_dot(d).abs();
+            assert!(
+                (width - t.square * alpha.sin()).abs() < 1e-9,
+                "{twist_deg}°: {width}"
+            );
+        }
+        let fans = foldcam::pattern::vertex_fan::VertexFans::new(&cp);
+        let smallest = cp
+            .vertex_ids()
+            .filter(|&v| fans.of(v).len() == 4)
+            .flat_map(|v| {
+                let s = fans.of(v);
+                (0..4).map(move |i| {
+                    let next = if i + 1 < 4 {
+                        s[i + 1].angle
+                    } else {
+                        s[0].angle + std::f64::consts::TAU
+                    };
+                    next - s[i].angle
+                })
+            })
+            .fold(f64::MAX, f64::min);
+        assert!(
+            (smallest - alpha).abs() < 1e-9,
+            "{twist_deg}°: smallest sector {smallest}"
+        );
+    }
+}
