@@ -129,9 +129,36 @@ fn preview_writes_a_png_of_the_requested_width() {
         ],
         dir.path(),
     );
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    // The broken vertex fails Kawasaki and Maekawa: the preview is written with the faults
+    // ringed, and the exit status says so, as `foldcam check` does.
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
     let img = image::open(dir.path().join("p.png")).expect("a PNG");
     assert_eq!(img.width(), 321);
+}
+
+#[test]
+fn preview_check_exit_status_follows_the_faults() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let run = |input: &str, out: &str, check: bool| {
+        let mut args = vec!["preview", input, "-o", out, "--width", "200"];
+        if check {
+            args.push("--check");
+        }
+        foldcam(&args, dir.path())
+    };
+    let good = run(&example("flat-vertex.fold"), "good.png", true);
+    assert_eq!(good.status.code(), Some(0), "{}", text(&good.stderr));
+    let bad = run(&example("broken-vertex.fold"), "bad.png", true);
+    assert_eq!(bad.status.code(), Some(1), "{}", text(&bad.stderr));
+    assert!(
+        text(&bad.stderr).contains("ringed"),
+        "{}",
+        text(&bad.stderr)
+    );
+    // Without --check nothing is judged.
+    let plain = run(&example("broken-vertex.fold"), "plain.png", false);
+    assert_eq!(plain.status.code(), Some(0), "{}", text(&plain.stderr));
+    assert_eq!(listing(dir.path()), ["bad.png", "good.png", "plain.png"]);
 }
 
 #[test]

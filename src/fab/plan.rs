@@ -72,6 +72,7 @@ pub fn plan_toolpaths(
         settings: material.settings,
         stats,
         warnings,
+        mapping: opts.mapping,
     })
 }
 
