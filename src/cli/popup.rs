@@ -101,13 +101,20 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         if report.problems.len() > 40 {
             println!("  … and {} more front faces", report.problems.len() - 40);
         }
+        if !is_voxel_text(&args.input) {
+            println!(
+                "  try: a smaller --morphology (now {}; 3 is the paper's, 1 turns bump removal \
+                 off), another --resolution (now {}), or --thin-top 0",
+                args.model.morphology, args.model.resolution
+            );
+        }
         return Ok(Outcome::CheckFailed);
     }
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
     let closed = fold_card(&card, &cp, 0.0).state;
     let hint = "try another --resolution, a larger --thin-top (or 0 to keep every top), or a \
                 smaller --morphology";
-    if !card_holds(&args.input, &cp, &closed, args.fit, hint) {
+    if !card_holds(&args.input, &cp, &closed, args.fit, hint, |_| true) {
         return Ok(Outcome::CheckFailed);
     }
     let images = card_previews(args.png.as_ref(), args.gif.as_ref(), args.width, |angle| {
@@ -142,6 +149,11 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     Ok(Outcome::Done)
 }
 
+/// Whether `path` is a voxel text file (no conversion options apply to it).
+fn is_voxel_text(path: &std::path::Path) -> bool {
+    path.to_string_lossy().to_lowercase().ends_with(".txt")
+}
+
 /// Checks that a card holds together and closes within its outline
 /// ([`foldcam::design::popup::integrity`]); prints what is wrong. Loose pieces refuse the
 /// card; an overhang when closed warns, or refuses with `fit`. Returns whether to go on.
@@ -151,9 +163,10 @@ pub fn card_holds(
     closed: &foldcam::pattern::FoldedState,
     fit: bool,
     hint: &str,
+    paper: impl Fn(&foldcam::pattern::Face) -> bool,
 ) -> bool {
-    use foldcam::design::popup::integrity::{closed_overhang, loose_pieces};
-    let loose = loose_pieces(cp);
+    use foldcam::design::popup::integrity::{closed_overhang, loose_pieces_where};
+    let loose = loose_pieces_where(cp, paper);
     if !loose.is_empty() {
         println!(
             "{}: the card would lose {} piece(s): {hint}",

@@ -5,8 +5,10 @@
 //!   [`crate::pattern::faces::find_faces`], not taken from the builder) are flooded across
 //!   every edge that holds material together: creases and flat lines (M, V, U, F, J). Cuts and
 //!   the outline (C, B) stop the flood. The component with the largest area is the card; every
-//!   other component is cut on every side and falls out when the card is cut
-//!   ([`loose_pieces`]).
+//!   other component that holds paper is cut on every side and falls out when the card is cut
+//!   ([`loose_pieces`]). Which traced faces are paper the caller says
+//!   ([`loose_pieces_where`]): a cut-out's scrap, such as a polygon card's opening with
+//!   slanted sides, is meant to fall out.
 //! - **Closed overhang.** With the card folded shut (opening angle 0°), the outline of the
 //!   sheet (its boundary edges) lies on the closed card's rectangle; every folded vertex
 //!   should lie within that rectangle's x–y bounds. [`closed_overhang`] measures how far the
@@ -20,7 +22,7 @@ use glam::DVec2;
 
 use crate::geom::polygon::signed_area;
 use crate::pattern::faces::find_faces;
-use crate::pattern::{Assignment, CreasePattern, FoldedState, VertexId};
+use crate::pattern::{Assignment, CreasePattern, Face, FoldedState, VertexId};
 
 /// A region of the sheet cut free on every side.
 #[derive(Clone, Debug, PartialEq)]
@@ -52,8 +54,14 @@ fn holds(a: Assignment) -> bool {
 }
 
 /// Every region of `cp` that no crease joins to the largest one (see the module docs), the
-/// largest first.
+/// largest first; every face is paper.
 pub fn loose_pieces(cp: &CreasePattern) -> Vec<LoosePiece> {
+    loose_pieces_where(cp, |_| true)
+}
+
+/// [`loose_pieces`] counting only regions with a face for which `paper` holds (faces as
+/// traced from `cp`, outer cycle counter-clockwise).
+pub fn loose_pieces_where(cp: &CreasePattern, paper: impl Fn(&Face) -> bool) -> Vec<LoosePiece> {
     let faces = find_faces(cp).faces;
     let mut by_pair: HashMap<(VertexId, VertexId), Vec<usize>> = HashMap::new();
     let key = |a: VertexId, b: VertexId| if a < b { (a, b) } else { (b, a) };
@@ -76,6 +84,8 @@ pub fn loose_pieces(cp: &CreasePattern) -> Vec<LoosePiece> {
             }
         }
     }
+    let declared: Vec<bool> = faces.iter().map(&paper).collect();
+    let mut has_paper: HashMap<usize, bool> = HashMap::new();
     let mut pieces: HashMap<usize, LoosePiece> = HashMap::new();
     for (f, face) in faces.iter().enumerate() {
         let ring: Vec<DVec2> = face.outer.iter().map(|&v| cp.position(v)).collect();
@@ -86,6 +96,7 @@ pub fn loose_pieces(cp: &CreasePattern) -> Vec<LoosePiece> {
             .sum();
         let area = signed_area(ring.iter().copied()) + holes;
         let root = find(&mut parent, f);
+        *has_paper.entry(root).or_default() |= declared[f];
         let piece = pieces.entry(root).or_insert(LoosePiece {
             area_mm2: 0.0,
             min: DVec2::INFINITY,
@@ -99,12 +110,13 @@ pub fn loose_pieces(cp: &CreasePattern) -> Vec<LoosePiece> {
             piece.max = piece.max.max(p);
         }
     }
-    let mut all: Vec<LoosePiece> = pieces.into_values().collect();
-    all.sort_by(|a, b| b.area_mm2.total_cmp(&a.area_mm2));
-    if !all.is_empty() {
-        all.remove(0);
-    }
-    all
+    let mut all: Vec<(usize, LoosePiece)> = pieces.into_iter().collect();
+    all.sort_by(|a, b| b.1.area_mm2.total_cmp(&a.1.area_mm2));
+    all.into_iter()
+        .skip(1)
+        .filter(|(root, _)| has_paper.get(root).copied().unwrap_or(false))
+        .map(|(_, piece)| piece)
+        .collect()
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
