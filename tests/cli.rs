@@ -139,9 +139,36 @@ fn preview_writes_a_png_of_the_requested_width() {
         ],
         dir.path(),
     );
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    // The broken vertex fails Kawasaki and Maekawa: the preview is written with the faults
+    // ringed, and the exit status says so, as `foldcam check` does.
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
     let img = image::open(dir.path().join("p.png")).expect("a PNG");
     assert_eq!(img.width(), 321);
+}
+
+#[test]
+fn preview_check_exit_status_follows_the_faults() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let run = |input: &str, out: &str, check: bool| {
+        let mut args = vec!["preview", input, "-o", out, "--width", "200"];
+        if check {
+            args.push("--check");
+        }
+        foldcam(&args, dir.path())
+    };
+    let good = run(&example("flat-vertex.fold"), "good.png", true);
+    assert_eq!(good.status.code(), Some(0), "{}", text(&good.stderr));
+    let bad = run(&example("broken-vertex.fold"), "bad.png", true);
+    assert_eq!(bad.status.code(), Some(1), "{}", text(&bad.stderr));
+    assert!(
+        text(&bad.stderr).contains("ringed"),
+        "{}",
+        text(&bad.stderr)
+    );
+    // Without --check nothing is judged.
+    let plain = run(&example("broken-vertex.fold"), "plain.png", false);
+    assert_eq!(plain.status.code(), Some(0), "{}", text(&plain.stderr));
+    assert_eq!(listing(dir.path()), ["bad.png", "good.png", "plain.png"]);
 }
 
 #[test]
@@ -711,4 +738,61 @@ fn popup_voxel_from_a_mesh_cuts_directly_and_saves_its_voxels() {
     assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("bad.obj"), "{}", text(&o.stderr));
     assert!(!listing(dir.path()).contains(&"bad.fold".to_string()));
+}
+
+#[test]
+fn tessellation_passes_the_checks_that_apply_to_it() {
+    // A star-tuck dome folds to a 3D form (every fold below 180°): Kawasaki and Maekawa, which
+    // describe folding flat, do not apply; the fabrication limits it was solved for do, and
+    // the FOLD file's 3D frame must unfold onto the pattern.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let dome = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/tessellation/dome.obj");
+    let o = foldcam(
+        &[
+            "tessellate",
+            &dome.to_string_lossy(),
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "t.fold",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let o = foldcam(&["convert", "t.fold", "t.svg"], dir.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let limits = [
+        "--min-vertex-angle",
+        "30",
+        "--max-fold-angle",
+        "165",
+        "--json",
+    ];
+    for (file, frame) in [("t.svg", false), ("t.fold", true)] {
+        let mut args = vec!["check", file];
+        args.extend(limits);
+        let o = foldcam(&args, dir.path());
+        assert_eq!(o.status.code(), Some(0), "{file}: {}", text(&o.stdout));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        let run = |name: &str| {
+            v["runs"]
+                .as_array()
+                .expect("runs")
+                .iter()
+                .find(|r| r["name"] == name)
+                .cloned()
+                .expect(name)
+        };
+        assert_eq!(run("flat_foldability")["ran"], false, "{file}");
+        assert!(v["summary"]["vertices_3d"].as_u64().unwrap() > 0);
+        assert_eq!(run("vertex_angle")["ran"], true);
+        assert_eq!(run("fold_angle")["ran"], true);
+        // Only the FOLD file carries the 3D frame.
+        assert_eq!(run("developability")["ran"], frame, "{file}");
+    }
+    // Tighter limits than the solve's still fail: the check is not switched off.
+    let o = foldcam(&["check", "t.svg", "--max-fold-angle", "120"], dir.path());
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stdout));
+    let out = text(&o.stdout);
+    assert!(out.contains("flat_foldability  not run"), "{out}");
 }

@@ -91,7 +91,17 @@ fn waterbomb_base_as_assigned_fails_maekawa_at_its_centre() {
         (count(Assignment::Mountain), count(Assignment::Valley)),
         (4, 4)
     );
+    // The file folds its valleys to 90° (stroke opacity 0.5): a 3D target, to which
+    // Maekawa (folding flat) does not apply; the centre is counted as such.
     let report = check(&cp, &CheckOptions::default());
+    assert_eq!(report.of_kind(FindingKind::Maekawa).count(), 0);
+    assert!(report.summary.vertices_3d >= 1);
+    // Meant to fold flat (no stored angles), the same assignment fails Maekawa there.
+    let mut flat = cp.clone();
+    for e in &mut flat.edges {
+        e.fold_angle = None;
+    }
+    let report = check(&flat, &CheckOptions::default());
     let maekawa: Vec<_> = report.of_kind(FindingKind::Maekawa).collect();
     assert_eq!(maekawa.len(), 1);
     assert_eq!(maekawa[0].vertex, Some(centre));

@@ -21,6 +21,14 @@
 //!   edge is always in the summary.
 //! - **Fold angles** where known: |angle| > [`CheckOptions::max_fold_angle_deg`] fails.
 //!
+//! # What applies ([`applies`])
+//! Kawasaki and Maekawa are about folding flat: they run only at interior vertices whose
+//! creases are all meant to fold flat (fold angle ±180°, or a crease without a stored angle).
+//! A vertex with a crease folding to less than 180° belongs to a 3D target and is counted in
+//! [`CheckSummary::vertices_3d`] instead; for such patterns [`check_with_frame`] checks the
+//! developability of the 3D frame when there is one ([`developability`]). The fabrication
+//! limits apply to every pattern. [`CheckReport::runs`] says which checks ran and why.
+//!
 //! # Creases and interior vertices
 //! Creases are the edges that fold: mountain, valley and unassigned. Flat facet lines (F) and
 //! joins (J) do not fold and are ignored by Kawasaki, Maekawa and the vertex angle. A vertex is
@@ -35,11 +43,14 @@
 //! and faces plus a parallel pass over the vertices; nothing is allocated per vertex unless it
 //! fails a check.
 
+pub mod applies;
+pub mod developability;
 mod edges;
 mod flat_foldability;
 pub mod fold3d;
 pub mod layers;
 mod report;
+mod runs;
 mod vertex;
 
 use glam::DVec2;
@@ -48,7 +59,7 @@ use serde::Serialize;
 
 use crate::pattern::faces::find_faces_with;
 use crate::pattern::vertex_fan::VertexFans;
-use crate::pattern::{CreasePattern, EdgeId, VertexId};
+use crate::pattern::{CreasePattern, EdgeId, FoldedState, VertexId};
 
 pub use report::{
     AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
@@ -100,17 +111,21 @@ pub enum FindingKind {
     /// No valid layer order exists (the global check of [`layers`]); one finding per face
     /// named by the contradiction.
     LayerOrder,
+    /// A face of the 3D frame is stretched or bent: the frame does not unfold onto the
+    /// pattern.
+    Developability,
 }
 
 impl FindingKind {
     /// Every kind, in listing order.
-    pub const ALL: [FindingKind; 6] = [
+    pub const ALL: [FindingKind; 7] = [
         FindingKind::Kawasaki,
         FindingKind::Maekawa,
         FindingKind::VertexAngle,
         FindingKind::ShortEdge,
         FindingKind::FoldAngle,
         FindingKind::LayerOrder,
+        FindingKind::Developability,
     ];
 
     /// The snake-case name used in text and JSON.
@@ -122,6 +137,7 @@ impl FindingKind {
             FindingKind::ShortEdge => "short_edge",
             FindingKind::FoldAngle => "fold_angle",
             FindingKind::LayerOrder => "layer_order",
+            FindingKind::Developability => "developability",
         }
     }
 }
@@ -141,6 +157,8 @@ pub enum Quantity {
     MountainValleyDifference,
     /// A number of valid layer orders (the limit is 1).
     States,
+    /// A dimensionless ratio (developability: a distance change relative to the face's size).
+    Ratio,
 }
 
 /// Mountain and valley counts at a vertex (Maekawa findings).
@@ -200,6 +218,8 @@ pub struct CheckReport {
     pub summary: CheckSummary,
     /// The options the checks ran with.
     pub options: CheckOptions,
+    /// Each family of checks: whether it ran, over how much, and why.
+    pub runs: Vec<applies::CheckRun>,
 }
 
 impl CheckReport {
@@ -214,8 +234,19 @@ impl CheckReport {
     }
 }
 
-/// Runs the checks (see the module docs for what each one means).
+/// Runs the checks (see the module docs for what each one means) on a pattern without a 3D
+/// frame.
 pub fn check(cp: &CreasePattern, opts: &CheckOptions) -> CheckReport {
+    check_with_frame(cp, None, opts)
+}
+
+/// Runs the checks; `folded`, the pattern's 3D frame (same vertices), adds the
+/// developability check.
+pub fn check_with_frame(
+    cp: &CreasePattern,
+    folded: Option<&FoldedState>,
+    opts: &CheckOptions,
+) -> CheckReport {
     let fans = VertexFans::new(cp);
     let interior = if opts.flat_foldability {
         interior_mask(cp, &fans)
@@ -228,16 +259,27 @@ pub fn check(cp: &CreasePattern, opts: &CheckOptions) -> CheckReport {
         interior: &interior,
         opts,
     };
-    let vertices = (0..cp.vertices.len())
+    let mut vertices = (0..cp.vertices.len())
         .into_par_iter()
         .fold(vertex::Tally::default, |acc, v| {
             acc.add(&ctx, VertexId::new(v))
         })
         .reduce(vertex::Tally::default, vertex::Tally::merge);
     let edge_tally = edges::check_edges(cp, opts);
-    let mut findings = vertices.findings;
+    let mut findings = std::mem::take(&mut vertices.findings);
     findings.extend(edge_tally.findings);
+    let develop = folded.map(|f| {
+        let faces = match (&f.faces, &cp.faces) {
+            (Some(faces), _) | (None, Some(faces)) => faces.clone(),
+            (None, None) => find_faces_with(cp, &fans).faces,
+        };
+        developability::check_faces(cp, &f.positions, &faces)
+    });
+    if let Some(d) = &develop {
+        findings.extend(d.findings.iter().cloned());
+    }
     sort_findings(&mut findings);
+    let runs = runs::describe(cp, opts, &vertices, develop.as_ref());
     let summary = CheckSummary {
         vertices: cp.vertices.len(),
         edges: cp.edges.len(),
@@ -248,11 +290,14 @@ pub fn check(cp: &CreasePattern, opts: &CheckOptions) -> CheckReport {
         largest_fold_angle: edge_tally.largest_fold,
         maekawa_skipped_unassigned: vertices.maekawa_skipped,
         flat_foldability_checked: opts.flat_foldability,
+        vertices_3d: vertices.vertices_3d,
+        largest_developability_error: develop.as_ref().map(|d| d.largest_error),
     };
     CheckReport {
         findings,
         summary,
         options: opts.clone(),
+        runs,
     }
 }
 

@@ -116,6 +116,12 @@ pub struct CheckSummary {
     pub maekawa_skipped_unassigned: usize,
     /// Whether Kawasaki and Maekawa ran.
     pub flat_foldability_checked: bool,
+    /// Interior vertices with creases where Kawasaki and Maekawa do not apply: a crease there
+    /// folds to less than 180° (a 3D target).
+    pub vertices_3d: usize,
+    /// The largest relative distance change within a face between the pattern and its 3D
+    /// frame, when a frame was checked.
+    pub largest_developability_error: Option<f64>,
 }
 
 impl CheckReport {
@@ -157,15 +163,9 @@ impl CheckReport {
             a.cut,
             a.join
         );
-        if s.flat_foldability_checked {
-            let _ = writeln!(
-                out,
-                "interior vertices checked (Kawasaki, Maekawa): {}; Maekawa skipped at {} with \
-                 unassigned creases",
-                s.interior_vertices_checked, s.maekawa_skipped_unassigned
-            );
-        } else {
-            out.push_str("flat-foldability not checked\n");
+        for run in &self.runs {
+            let verdict = if run.ran { "ran" } else { "not run" };
+            let _ = writeln!(out, "{:<17} {verdict}: {}", run.name, run.why);
         }
         if let Some(e) = &s.shortest_edge {
             let _ = writeln!(

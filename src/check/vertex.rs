@@ -4,6 +4,7 @@
 
 use std::f64::consts::TAU;
 
+use super::applies::vertex_folds_flat;
 use super::flat_foldability::{self, Maekawa, is_crease};
 use super::report::VertexMeasure;
 use super::{CheckOptions, Finding, FindingKind, Quantity};
@@ -32,6 +33,9 @@ pub(super) struct Tally {
     pub checked: usize,
     /// Interior vertices not checked for Maekawa because of an unassigned crease.
     pub maekawa_skipped: usize,
+    /// Interior vertices with creases not checked for flat-foldability because a crease
+    /// there folds to less than 180° (a 3D target).
+    pub vertices_3d: usize,
     /// The narrowest crease sector seen.
     pub smallest_angle: Option<VertexMeasure>,
 }
@@ -67,6 +71,10 @@ impl Tally {
         if degree == 0 {
             return;
         }
+        if !vertex_folds_flat(ctx.cp, fan) {
+            self.vertices_3d += 1;
+            return;
+        }
         self.checked += 1;
         let tol = ctx.opts.kawasaki_tolerance_deg;
         if let Some(f) = flat_foldability::kawasaki(ctx.cp, v, fan, tol) {
@@ -87,6 +95,7 @@ impl Tally {
         self.findings.extend(other.findings);
         self.checked += other.checked;
         self.maekawa_skipped += other.maekawa_skipped;
+        self.vertices_3d += other.vertices_3d;
         self.smallest_angle = match (self.smallest_angle, other.smallest_angle) {
             (Some(a), Some(b)) => Some(if b.degrees < a.degrees { b } else { a }),
             (a, b) => a.or(b),

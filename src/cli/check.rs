@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
-use foldcam::check::check;
+use foldcam::check::check_with_frame;
 use foldcam::check::layers::check_layers;
 
 use super::Outcome;
@@ -13,13 +13,18 @@ use super::input;
 /// Check local flat-foldability and fabrication limits.
 #[derive(clap::Args)]
 #[command(
-    long_about = "Checks every interior vertex for Kawasaki's theorem (alternating angle sum) and \
-                  Maekawa's (|M - V| = 2), the smallest angle between neighbouring creases, the \
-                  shortest edge and fold angles. With --layers, also whether the layers can be \
-                  stacked at all (a global layer order, counted as Flat-Folder counts it), \
-                  naming the faces of the first contradiction when they cannot. The pattern is cleaned into a planar graph \
-                  first; vertex and edge numbers refer to the cleaned pattern (the same as the \
-                  file's when it was clean already).\n\nExit status: 0 all checks pass, 1 a \
+    long_about = "Checks what applies to the pattern. Kawasaki's theorem (alternating angle \
+                  sum) and Maekawa's (|M - V| = 2) describe folding flat: they run at interior \
+                  vertices whose creases all fold flat (fold angle ±180°, or no stored angle). \
+                  Where a crease folds to less than 180° (a 3D target, such as a tessellation) \
+                  they do not apply; a FOLD file's 3D frame is then checked for developability \
+                  (every face keeps its flat shape). The smallest angle between neighbouring \
+                  creases, the shortest edge and fold angles are checked against the limits \
+                  given. With --layers, also whether the layers can be stacked at all (a global \
+                  layer order, counted as Flat-Folder counts it), naming the faces of the first \
+                  contradiction when they cannot. The report says which checks ran and why. The pattern is cleaned into \
+                  a planar graph first; vertex and edge numbers refer to the cleaned pattern \
+                  (the same as the file's when it was clean already).\n\nExit status: 0 all checks pass, 1 a \
                   check failed, 2 the input could not be read.",
     after_help = "Examples:\n  foldcam check bird.fold\n  \
                   foldcam check tess.svg --min-vertex-angle 30 --max-fold-angle 165\n  \
@@ -43,7 +48,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
-    let mut report = check(cp, &args.limits.options());
+    let mut report = check_with_frame(cp, imported.folded.as_ref(), &args.limits.options());
     let layers = if args.limits.layers {
         let outcome = check_layers(cp, &mut report, &args.limits.layer_options())
             .map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;

@@ -76,6 +76,10 @@ pub struct VoxelArgs {
     /// With --machine and .svg output: perforations as dashed strokes.
     #[arg(long, help_heading = "Cutting")]
     pub dasharray: bool,
+    /// Refuse (exit 1) a card that reaches beyond its own outline when folded shut, instead
+    /// of warning, and say how much smaller the model must be.
+    #[arg(long)]
+    pub fit: bool,
 }
 
 /// Runs a popup subcommand.
@@ -97,9 +101,22 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         if report.problems.len() > 40 {
             println!("  … and {} more front faces", report.problems.len() - 40);
         }
+        if !is_voxel_text(&args.input) {
+            println!(
+                "  try: a smaller --morphology (now {}; 3 is the paper's, 1 turns bump removal \
+                 off), another --resolution (now {}), or --thin-top 0",
+                args.model.morphology, args.model.resolution
+            );
+        }
         return Ok(Outcome::CheckFailed);
     }
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    let closed = fold_card(&card, &cp, 0.0).state;
+    let hint = "try another --resolution, a larger --thin-top (or 0 to keep every top), or a \
+                smaller --morphology";
+    if !card_holds(&args.input, &cp, &closed, args.fit, hint, |_| true) {
+        return Ok(Outcome::CheckFailed);
+    }
     // The pattern, pictures and voxel model are written together: all of them, or none.
     let mut outputs = OutputSet::new();
     card_previews(
@@ -133,6 +150,62 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     );
     Ok(Outcome::Done)
 }
+
+/// Whether `path` is a voxel text file (no conversion options apply to it).
+fn is_voxel_text(path: &std::path::Path) -> bool {
+    path.to_string_lossy().to_lowercase().ends_with(".txt")
+}
+
+/// Checks that a card holds together and closes within its outline
+/// ([`foldcam::design::popup::integrity`]); prints what is wrong. Loose pieces refuse the
+/// card; an overhang when closed warns, or refuses with `fit`. Returns whether to go on.
+pub fn card_holds(
+    input: &std::path::Path,
+    cp: &foldcam::pattern::CreasePattern,
+    closed: &foldcam::pattern::FoldedState,
+    fit: bool,
+    hint: &str,
+    paper: impl Fn(&foldcam::pattern::Face) -> bool,
+) -> bool {
+    use foldcam::design::popup::integrity::{closed_overhang, loose_pieces_where};
+    let loose = loose_pieces_where(cp, paper);
+    if !loose.is_empty() {
+        println!(
+            "{}: the card would lose {} piece(s): {hint}",
+            input.display(),
+            loose.len()
+        );
+        for piece in loose.iter().take(20) {
+            println!("  {piece}");
+        }
+        return false;
+    }
+    let Some(o) = closed_overhang(closed).filter(|o| o.beyond_mm > CLOSED_SLACK_MM) else {
+        return true;
+    };
+    let (lo, hi) = o.outline;
+    let message = format!(
+        "{}: folded shut, the card reaches {:.1} mm beyond its {:.1} × {:.1} mm outline (at \
+         x = {:.1}, y = {:.1} mm of the closed card)",
+        input.display(),
+        o.beyond_mm,
+        hi.x - lo.x,
+        hi.y - lo.y,
+        o.at.x,
+        o.at.y
+    );
+    if fit {
+        println!("{message}: make the model smaller or the card larger (--fit refuses)");
+        false
+    } else {
+        eprintln!("foldcam: warning: {message}; --fit refuses such cards");
+        true
+    }
+}
+
+/// How far a closed card may reach beyond its outline before it counts, mm: rounding of the
+/// folded positions, far below a cut's width.
+const CLOSED_SLACK_MM: f64 = 1e-6;
 
 /// The PNG of a card standing at 90° and the GIF of it opening, as asked for, rendered
 /// before anything is written. `fold(angle)` gives the card's folded state at an opening angle

@@ -3,7 +3,9 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
-use foldcam::design::popup::polygon::{Replay, crease_pattern, fold_card, parse_design};
+use foldcam::design::popup::polygon::{
+    Replay, crease_pattern, fold_card, holds_paper, parse_design,
+};
 use foldcam::formats::{OutputSet, read_text};
 
 use super::Outcome;
@@ -39,6 +41,10 @@ pub struct PolyArgs {
     /// Image width in pixels for --png and --gif.
     #[arg(long, default_value_t = 640)]
     pub width: u32,
+    /// Refuse (exit 1) a card that reaches beyond its own outline when folded shut, instead
+    /// of warning.
+    #[arg(long)]
+    pub fit: bool,
 }
 
 /// Runs `popup poly`.
@@ -56,6 +62,13 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
     }
     let card = replay.card;
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    let closed = fold_card(&card, &cp, 0.0).state;
+    let hint = "join every face to the card through a fold (move or grow the face that is cut \
+                free)";
+    let paper = |f: &foldcam::pattern::Face| holds_paper(&card, &cp, f);
+    if !super::popup::card_holds(path, &cp, &closed, args.fit, hint, paper) {
+        return Ok(Outcome::CheckFailed);
+    }
     // The pattern and its pictures are written together: all of them, or none.
     let mut outputs = OutputSet::new();
     super::popup::card_previews(

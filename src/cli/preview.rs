@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
-use foldcam::check::check;
+use foldcam::check::check_with_frame;
 use foldcam::check::layers::check_layers;
 use foldcam::formats::write_atomic;
 use foldcam::render::{PreviewOptions, preview_png};
@@ -18,7 +18,9 @@ use super::input;
     long_about = "Draws the pattern with the usual origami line styles: valley dashed blue, \
                   mountain dash-dot red, boundary black, cut green, flat grey, unassigned \
                   magenta, with a scale bar. With --check, faults found by `foldcam check` are \
-                  ringed; with --check --layers, so are the faces where no layer order exists.",
+                  ringed; with --check --layers, so are the faces where no layer order \
+                  exists.\n\nExit status: 0 written (and, with --check, no fault), 1 written \
+                  with faults ringed (like `foldcam check`), 2 bad input.",
     after_help = "Examples:\n  foldcam preview bird.fold -o bird.png\n  \
                   foldcam preview tess.svg -o tess.png --width 2400 --check --min-vertex-angle 30"
 )]
@@ -55,8 +57,9 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
-    let findings = if args.check {
-        let mut report = check(cp, &args.limits.options());
+    let checked = args.check;
+    let findings = if checked {
+        let mut report = check_with_frame(cp, imported.folded.as_ref(), &args.limits.options());
         if args.limits.layers {
             let layers = check_layers(cp, &mut report, &args.limits.layer_options())
                 .map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
@@ -80,5 +83,9 @@ pub fn run(args: Args) -> Result<Outcome> {
     write_atomic(&args.output, &png)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.output.display()))?;
     eprintln!("foldcam: wrote {}", args.output.display());
-    Ok(Outcome::Done)
+    Ok(if checked && !findings.is_empty() {
+        Outcome::CheckFailed
+    } else {
+        Outcome::Done
+    })
 }

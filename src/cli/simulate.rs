@@ -133,6 +133,14 @@ fn summary(job: &std::path::Path, r: &SimReport, coverage: Option<&CoverageRepor
     if let Some(c) = coverage {
         let ok = c.edges.iter().filter(|e| e.ok).count();
         let _ = writeln!(s, "  coverage: {ok} of {} edges as planned", c.edges.len());
+        let left_out = c.left_out().count();
+        if left_out > 0 {
+            let _ = writeln!(
+                s,
+                "    {left_out} edges have no toolpath although the operation mapping asks for \
+                 one (left uncut by the plan: see its warnings)"
+            );
+        }
         for e in c.failed_edges().take(10) {
             let _ = writeln!(
                 s,

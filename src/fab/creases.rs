@@ -6,9 +6,11 @@
 //! caller says which vertices join:
 //!
 //! - perforated creases ([`crease_joins`]): the vertex has degree 2 in the whole pattern, both
-//!   edges have the same assignment and operation and continue each other in a straight line
-//!   (sine of the turn below [`COLLINEAR_SINE`]). Anywhere else another line meets, the crease
-//!   ends, because that is where a vertex clearance is needed;
+//!   edges have the same assignment and operation, and the crease turns there by at most
+//!   [`CHAIN_MAX_TURN_DEG`]. A polyline or a flattened curve between two *real* vertices
+//!   (another line meets, or the crease turns sharper than that) is one crease: its dashes
+//!   run along the whole chain, and vertex clearances sit only at its real ends. Anywhere
+//!   another line meets, the crease ends, because that is where a clearance is needed;
 //! - scores, marks and pen lines ([`polyline_joins`]): degree 2 in the whole pattern and the
 //!   same assignment and operation, at any angle — a drawn polyline is burnt in one stroke;
 //! - slits: any vertex where exactly two slit edges meet.
@@ -23,6 +25,12 @@ use crate::pattern::{CreasePattern, EdgeId, VertexId};
 /// Largest sine of the turn between two edges that still continue one straight crease:
 /// 1e-4 rad absorbs the rounding of planarisation's split points and vertex merging.
 pub const COLLINEAR_SINE: f64 = 1e-4;
+
+/// Largest turn, degrees, between two edges of one perforated crease at a vertex where no
+/// other line meets. A flattened curve turns by a few degrees per point (a circle cut into
+/// 64 chords, by 5.6°), so every drawn curve stays one crease; a polyline that turns more
+/// sharply than this ends there, and the corner gets vertex clearances like any other.
+pub const CHAIN_MAX_TURN_DEG: f64 = 30.0;
 
 /// A maximal walk over edges.
 #[derive(Clone, Debug, PartialEq)]
@@ -197,6 +205,27 @@ pub fn polyline_joins(
     degree[v.index()] == 2 && ea.assignment == eb.assignment
 }
 
+/// Whether edges `a` and `b`, both at `v`, continue each other with a turn of at most
+/// `max_turn_deg` degrees (0 for straight on, 180 for doubling back).
+pub fn turns_at_most(
+    cp: &CreasePattern,
+    v: VertexId,
+    a: EdgeId,
+    b: EdgeId,
+    max_turn_deg: f64,
+) -> bool {
+    let p = cp.position(v);
+    let da = cp.position(cp.edges[a.index()].other(v)) - p;
+    let db = cp.position(cp.edges[b.index()].other(v)) - p;
+    let scale = da.length() * db.length();
+    if scale <= 0.0 {
+        return false;
+    }
+    // The turn is π minus the angle between the two rays leaving `v`.
+    let between = da.perp_dot(db).abs().atan2(da.dot(db));
+    (std::f64::consts::PI - between).to_degrees() <= max_turn_deg
+}
+
 /// The joining rule of perforated creases (see the module docs).
 pub fn crease_joins(
     cp: &CreasePattern,
@@ -205,7 +234,8 @@ pub fn crease_joins(
     a: EdgeId,
     b: EdgeId,
 ) -> bool {
-    polyline_joins(cp, degree, v, a, b) && straight_through(cp, v, a, b)
+    polyline_joins(cp, degree, v, a, b)
+        && (straight_through(cp, v, a, b) || turns_at_most(cp, v, a, b, CHAIN_MAX_TURN_DEG))
 }
 
 /// Number of edges at every vertex of `cp`.
@@ -244,6 +274,28 @@ mod tests {
         lens.sort();
         assert_eq!(lens, vec![1, 2]);
         assert!(chains.iter().all(|c| !c.closed));
+    }
+
+    #[test]
+    fn a_gentle_polyline_is_one_crease_and_a_sharp_corner_ends_it() {
+        // A quarter circle in 8 chords (turns of 11.25°), then a 90° corner and a straight
+        // leg: the arc is one chain, the leg another.
+        let mut cp = CreasePattern::new();
+        let mut v: Vec<VertexId> = (0..=8)
+            .map(|i| {
+                let t = std::f64::consts::FRAC_PI_2 * f64::from(i) / 8.0;
+                cp.add_vertex(DVec2::new(t.cos(), t.sin()) * 10.0)
+            })
+            .collect();
+        v.push(cp.add_vertex(DVec2::new(0.0, 20.0)));
+        for w in v.windows(2) {
+            cp.add_edge(w[0], w[1], Assignment::Valley);
+        }
+        let deg = degrees(&cp);
+        let chains = chain_edges(&cp, |_| true, |v, a, b| crease_joins(&cp, &deg, v, a, b));
+        let mut lens: Vec<usize> = chains.iter().map(|c| c.edges.len()).collect();
+        lens.sort();
+        assert_eq!(lens, vec![1, 8]);
     }
 
     #[test]

@@ -2,15 +2,18 @@
 //! clearances, see [`super::perforation`]) and score, mark and pen polylines.
 //!
 //! Creases are chained by [`super::creases`]; each perforated crease becomes one toolpath
-//! whose strokes are its dashes (2-point strokes, in order from the crease's first vertex to
-//! its last); each score, mark or pen chain becomes one toolpath with a single polyline
-//! stroke (closed when the chain closes). Creases too short for a dash produce no toolpath
-//! and a warning naming their edges.
+//! whose strokes are its dashes, laid out along the chain's arc length and following it
+//! (a dash across a polyline vertex keeps that vertex), in order from the crease's first
+//! vertex to its last; a closed crease is dashed all round without end clearances. Each
+//! score, mark or pen chain becomes one toolpath with a single polyline stroke (closed when
+//! the chain closes). Creases too short for a dash produce no toolpath and a warning naming
+//! their edges.
 
-use super::creases::{Chain, chain_edges, crease_joins, degrees, polyline_joins};
+use super::creases::{COLLINEAR_SINE, Chain, chain_edges, crease_joins, degrees, polyline_joins};
 use super::operations::is_continuous_weakening;
-use super::perforation::{NoDashes, clearance_for, layout};
+use super::perforation::{NoDashes, clearance_for, layout, layout_closed};
 use super::{ContourRole, Operation, PlanOptions, Toolpath};
+use crate::geom::polyline;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
@@ -76,19 +79,12 @@ impl<'a> LineContext<'a> {
             .fold(perf.vertex_clearance_mm, f64::max)
     }
 
-    /// The perforation toolpath of one straight crease, or a warning when it gets no dash.
+    /// The perforation toolpath of one crease (a chain of edges), or a warning when it gets
+    /// no dash.
     pub fn perforate(&self, chain: &Chain, opts: &PlanOptions) -> Result<Toolpath, String> {
         let (first, last) = (chain.vertices[0], chain.vertices[chain.vertices.len() - 1]);
-        let (a, b) = (self.cp.position(first), self.cp.position(last));
-        let length = a.distance(b);
-        let clear = if chain.closed {
-            [opts.perforation.vertex_clearance_mm; 2]
-        } else {
-            [
-                self.end_clearance(first, chain.edges[0], opts),
-                self.end_clearance(last, chain.edges[chain.edges.len() - 1], opts),
-            ]
-        };
+        let points = chain.points(self.cp);
+        let length = polyline::length(&points);
         // Bridges are material left: the toolpath layout takes the kerf into account when
         // contours are kerf-compensated too.
         let perf = if opts.kerf_offset {
@@ -96,7 +92,16 @@ impl<'a> LineContext<'a> {
         } else {
             opts.perforation
         };
-        let fit = layout(length, clear, &perf).map_err(|why| {
+        let fit = if chain.closed {
+            layout_closed(length, &perf)
+        } else {
+            let clear = [
+                self.end_clearance(first, chain.edges[0], opts),
+                self.end_clearance(last, chain.edges[chain.edges.len() - 1], opts),
+            ];
+            layout(length, clear, &perf)
+        };
+        let fit = fit.map_err(|why| {
             let names = edge_names(&chain.edges);
             match why {
                 NoDashes::TooShort { end_mm, .. } => format!(
@@ -110,11 +115,12 @@ impl<'a> LineContext<'a> {
                 ),
             }
         })?;
-        let dir = (b - a) / length;
         let strokes = fit
             .dashes
             .iter()
-            .map(|&(s, t)| vec![a + dir * s, a + dir * t])
+            .map(|&(s, t)| {
+                polyline::drop_straight_points(&polyline::sub_path(&points, s, t), COLLINEAR_SINE)
+            })
             .collect();
         Ok(line_path(Operation::Perforate, strokes, chain))
     }

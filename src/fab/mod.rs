@@ -155,6 +155,10 @@ pub struct FabPlan {
     pub stats: PlanStats,
     /// Remarks (skipped edges, vertex-angle warnings, …).
     pub warnings: Vec<String>,
+    /// The operation per assignment the plan was made with: every edge it maps to an
+    /// operation should be realised by some toolpath of some job (the coverage check counts
+    /// the ones that are not, such as creases left without a dash).
+    pub mapping: crate::machine::OperationMapping,
 }
 
 /// Holding tabs: short uncut gaps left in closed contours so parts stay in the sheet.

@@ -15,6 +15,15 @@
 //! `d ≥ min_dash`; a crease with `A < min_dash` gets no dash ([`NoDashes::TooShort`]).
 //! A single dash (`n = 1`) fills `A`.
 //!
+//! Lengths are measured along the crease: a crease may be a chain of edges (a polyline or a
+//! flattened curve, see [`super::creases`]), and the caller maps distances back onto it.
+//!
+//! # Closed creases
+//! A crease that closes on itself without meeting another line (a circle) has no end and
+//! needs no clearance: [`layout_closed`] places `n = round(L / p₀)` periods of length
+//! `p = L / n` all round, each a bridge of `(1 − D)·p` centred on the period's start and a
+//! dash of `D·p`, lowering `n` until `d ≥ min_dash`.
+//!
 //! # Clearance at a vertex
 //! Let `W = min_web + kerf`: every cut is `kerf` wide, so two cut centre lines `W` apart leave
 //! `min_web` of material between them. Take another line leaving the same vertex at ray
@@ -163,6 +172,42 @@ pub fn layout(
     })
 }
 
+/// Fits dashes all round a closed crease of `length_mm` that meets no other line (see the
+/// module docs); positions are distances from an arbitrary start, each dash within
+/// `[0, length_mm]`.
+pub fn layout_closed(length_mm: f64, perf: &Perforation) -> Result<DashLayout, NoDashes> {
+    let period0 = perf.cut_mm + perf.bridge_mm;
+    let duty = perf.cut_mm / period0;
+    let min_dash = perf.min_dash_mm.max(1e-9);
+    // Written so that a NaN length also counts as too short.
+    if length_mm.is_nan() || duty * length_mm < min_dash {
+        return Err(NoDashes::TooShort {
+            available_mm: length_mm,
+            end_mm: 0.0,
+        });
+    }
+    let nominal = (length_mm / period0).round();
+    let longest_allowed = (duty * length_mm / min_dash).floor();
+    let n = nominal.min(longest_allowed).max(1.0);
+    if n > MAX_DASHES as f64 {
+        return Err(NoDashes::TooMany { count: n });
+    }
+    let period = length_mm / n;
+    let (dash, bridge) = (duty * period, (1.0 - duty) * period);
+    let dashes = (0..n as usize)
+        .map(|i| {
+            let start = i as f64 * period + bridge / 2.0;
+            (start, (start + dash).min(length_mm))
+        })
+        .collect();
+    Ok(DashLayout {
+        end_mm: bridge / 2.0,
+        dash_mm: dash,
+        bridge_mm: bridge,
+        dashes,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -207,6 +252,31 @@ mod tests {
         ));
         assert!(matches!(
             layout(10.0, [f64::INFINITY, 1.0], &perf()),
+            Err(NoDashes::TooShort { .. })
+        ));
+    }
+
+    #[test]
+    fn closed_creases_are_dashed_all_round_at_nominal_duty() {
+        let circumference = std::f64::consts::TAU * 10.0;
+        let l = layout_closed(circumference, &perf()).unwrap();
+        // 62.83 mm / 4 mm periods: 16 periods.
+        assert_eq!(l.dashes.len(), 16);
+        let cut: f64 = l.dashes.iter().map(|(a, b)| b - a).sum();
+        assert!((cut / circumference - 0.75).abs() < 1e-12);
+        // The bridges, including the one across the start, are all equal.
+        let gaps: Vec<f64> = l
+            .dashes
+            .windows(2)
+            .map(|w| w[1].0 - w[0].1)
+            .chain([circumference - l.dashes[15].1 + l.dashes[0].0])
+            .collect();
+        assert!(
+            gaps.iter().all(|g| (g - l.bridge_mm).abs() < 1e-9),
+            "{gaps:?}"
+        );
+        assert!(matches!(
+            layout_closed(0.6, &perf()),
             Err(NoDashes::TooShort { .. })
         ));
     }

@@ -73,6 +73,7 @@ pub fn plan_toolpaths(
         settings: material.settings,
         stats,
         warnings,
+        mapping: opts.mapping,
     })
 }
 

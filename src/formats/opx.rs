@@ -61,7 +61,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     if zero_length > 0 {
         warnings.push(format!("{zero_length} zero-length line(s) ignored"));
     }
-    super::finish_drawing(pattern, None, "lying", warnings)
+    super::finish_drawing(pattern, None, None, "lying", warnings)
 }
 
 fn assignment(kind: i64) -> Assignment {

@@ -4,6 +4,7 @@
 
 pub mod angle;
 pub mod polygon;
+pub mod polyline;
 pub mod segment;
 pub mod triangulate;
 

@@ -9,10 +9,21 @@
 //! - **burned**: covered by the run's burns whose power matches the operation's setting.
 //!
 //! A burn covers the stretch of an edge it runs along within the tolerance band, kerf/2 plus
-//! the resolution (kerf-offset contours run kerf/2 off the pattern line). An edge passes when
+//! the resolution (kerf-offset contours run kerf/2 off the pattern line), and only where it
+//! *follows* the edge: a burn piece more than [`CoverageOptions::max_follow_angle_deg`] off
+//! the edge's direction covers nothing of it (a cut meeting a crease at a narrow angle, or a
+//! straight chord across a curve, does not perforate the crease), unless the piece is shorter
+//! than the resolution (G-code rounding decides its direction). An edge passes when
 //! its burned fraction matches the planned one: for cuts, burned ≥ planned − (1 − min cut
 //! coverage), so a 99 % rule still allows the planned tabs; for perforations, scores, marks and
 //! plots, |burned − planned| ≤ the duty tolerance.
+//!
+//! **Edges the plan leaves out.** The plan's operation mapping says which pattern edges
+//! should be machined at all; an edge it maps to an operation but that no toolpath of any job
+//! of the plan realises (a crease too short for a dash, a curve whose dashes were dropped, a
+//! toolpath removed by hand) is listed with `in_plan: false`, its burned share measured as
+//! for any edge, and fails: a crease counts as covered only where a burn really follows it,
+//! and the plan's own silence is not coverage.
 //!
 //! **Stray burns.** Every burn is sampled every tolerance/2; a sample is explained when it lies
 //! within the band of a pattern edge of an operation whose power matches the burn, or of a
@@ -21,8 +32,7 @@
 //!
 //! Power matching maps `S` back to a fraction of the profile's range (`(S − min)/(max − min)`)
 //! and compares it with the plan's `settings`; pen strokes (plots) match any power. Not
-//! checked: the order of burns, passes counted separately (overlapping passes are a union),
-//! burns across an edge at a steep angle (they cover only the band's width of it).
+//! checked: the order of burns, passes counted separately (overlapping passes are a union).
 
 use std::collections::HashSet;
 
@@ -31,6 +41,7 @@ use serde::Serialize;
 
 use super::grid::{SegmentGrid, covered_interval, point_segment_distance, union_length};
 use super::report::SimReport;
+use crate::fab::operations::operation_for;
 use crate::fab::{ContourRole, FabPlan, Job, Operation};
 use crate::pattern::{CreasePattern, EdgeId};
 
@@ -47,6 +58,8 @@ pub struct CoverageOptions {
     pub duty_tolerance: f64,
     /// Largest difference between a burn's power fraction and its operation's.
     pub power_tolerance: f64,
+    /// Largest angle, degrees, between a burn piece and an edge for the burn to cover it.
+    pub max_follow_angle_deg: f64,
 }
 
 impl Default for CoverageOptions {
@@ -57,6 +70,7 @@ impl Default for CoverageOptions {
             min_cut_coverage: 0.99,
             duty_tolerance: 0.05,
             power_tolerance: 0.02,
+            max_follow_angle_deg: 10.0,
         }
     }
 }
@@ -76,6 +90,9 @@ pub struct EdgeCoverage {
     pub burned: f64,
     /// Whether burned matches planned (see the module docs).
     pub ok: bool,
+    /// Whether a toolpath of the plan realises the edge; `false` for edges the plan's mapping
+    /// gives an operation but no toolpath covers (these always fail).
+    pub in_plan: bool,
 }
 
 /// A burn, or part of one, that no pattern edge or job stroke explains.
@@ -116,6 +133,11 @@ impl CoverageReport {
     pub fn failed_edges(&self) -> impl Iterator<Item = &EdgeCoverage> {
         self.edges.iter().filter(|e| !e.ok)
     }
+
+    /// The edges the plan's mapping asks for but no toolpath realises.
+    pub fn left_out(&self) -> impl Iterator<Item = &EdgeCoverage> {
+        self.edges.iter().filter(|e| !e.in_plan)
+    }
 }
 
 /// Checks `report` against `pattern` and `job` of `plan` with default thresholds.
@@ -144,7 +166,15 @@ pub fn coverage_with(
     plan: &FabPlan,
     opts: &CoverageOptions,
 ) -> CoverageReport {
-    let edges = job_edges(pattern, job);
+    let mut edges: Vec<(EdgeId, Seg, bool)> = job_edges(pattern, job)
+        .into_iter()
+        .map(|(e, s)| (e, s, true))
+        .collect();
+    edges.extend(
+        left_out_edges(pattern, job, plan)
+            .into_iter()
+            .map(|(e, s)| (e, s, false)),
+    );
     let strokes = job_strokes(job);
     let kerf_mm = opts
         .kerf_mm
@@ -166,27 +196,39 @@ pub fn coverage_with(
             op: Operation::Cut,
         })
         .collect();
-    let cell = cell_size(&edges, &strokes, &burns, tol);
+    let cell = cell_size(edges.iter().map(|(_, s, _)| s), &strokes, &burns, tol);
     let burn_grid = grid(&burns, cell);
+    let follow = Follow {
+        band: tol,
+        max_sine: opts.max_follow_angle_deg.to_radians().sin(),
+        short_mm: opts.resolution_mm,
+    };
     let stroke_grid = grid(&strokes, cell);
     let results = edges
         .iter()
-        .map(|(id, s)| {
-            let planned = covered(s, &strokes, &stroke_grid, tol, |i| strokes[i].op == s.op);
-            let burned = covered(s, &burns, &burn_grid, tol, |i| matcher.fits(i, s.op));
+        .map(|&(id, ref s, in_plan)| {
+            let planned = if in_plan {
+                covered(s, &strokes, &stroke_grid, &follow, |i| {
+                    strokes[i].op == s.op
+                })
+            } else {
+                0.0
+            };
+            let burned = covered(s, &burns, &burn_grid, &follow, |i| matcher.fits(i, s.op));
             let length_mm = s.a.distance(s.b);
-            let ok = judge(s.op, planned, burned, opts);
+            let ok = in_plan && judge(s.op, planned, burned, opts);
             EdgeCoverage {
-                edge: *id,
+                edge: id,
                 op: s.op,
                 length_mm,
                 planned,
                 burned,
                 ok,
+                in_plan,
             }
         })
         .collect();
-    let allowed: Vec<Seg> = edges.iter().map(|(_, s)| *s).chain(strokes).collect();
+    let allowed: Vec<Seg> = edges.iter().map(|(_, s, _)| *s).chain(strokes).collect();
     let stray = stray_burns(report, &allowed, &matcher, tol, cell);
     let stray_length_mm = stray.iter().map(|s| s.stray_mm).sum();
     CoverageReport {
@@ -245,6 +287,33 @@ fn job_edges(pattern: &CreasePattern, job: &Job) -> Vec<(EdgeId, Seg)> {
         }
     }
     out
+}
+
+/// The pattern edges the plan's mapping gives an operation but that no toolpath of any job
+/// realises with that operation, in `job`'s machine coordinates.
+fn left_out_edges(pattern: &CreasePattern, job: &Job, plan: &FabPlan) -> Vec<(EdgeId, Seg)> {
+    let realised: HashSet<(EdgeId, Operation)> = plan
+        .jobs
+        .iter()
+        .chain(std::iter::once(job))
+        .flat_map(|j| j.paths.iter())
+        .flat_map(|tp| tp.edges.iter().map(move |&e| (e, tp.op)))
+        .collect();
+    pattern
+        .edge_ids()
+        .filter_map(|e| {
+            let op = operation_for(pattern.edges[e.index()].assignment, &plan.mapping)?;
+            if realised.contains(&(e, op)) {
+                return None;
+            }
+            let (a, b) = edge_segment(pattern, e)?;
+            let (a, b) = (
+                job.to_machine.transform_point2(a),
+                job.to_machine.transform_point2(b),
+            );
+            Some((e, Seg { a, b, op }))
+        })
+        .collect()
 }
 
 fn edge_segment(pattern: &CreasePattern, e: EdgeId) -> Option<(DVec2, DVec2)> {
@@ -312,13 +381,13 @@ fn estimate_kerf(pattern: &CreasePattern, job: &Job) -> f64 {
 }
 
 /// Grid cells at least four tolerances wide and at most 1024 across the whole extent.
-fn cell_size(edges: &[(EdgeId, Seg)], strokes: &[Seg], burns: &[Seg], tol: f64) -> f64 {
-    let points = edges
-        .iter()
-        .map(|(_, s)| s)
-        .chain(strokes)
-        .chain(burns)
-        .flat_map(|s| [s.a, s.b]);
+fn cell_size<'a>(
+    edges: impl Iterator<Item = &'a Seg>,
+    strokes: &'a [Seg],
+    burns: &'a [Seg],
+    tol: f64,
+) -> f64 {
+    let points = edges.chain(strokes).chain(burns).flat_map(|s| [s.a, s.b]);
     let (lo, hi) = points.fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), p| {
         (lo.min(p), hi.max(p))
     });
@@ -339,15 +408,34 @@ fn grid(segs: &[Seg], cell: f64) -> SegmentGrid {
     g
 }
 
+/// When a burn piece counts as running along an edge (see the module docs).
+struct Follow {
+    /// Half-width of the band around the edge, mm.
+    band: f64,
+    /// Largest sine of the angle between piece and edge.
+    max_sine: f64,
+    /// Pieces shorter than this count whatever their direction, mm.
+    short_mm: f64,
+}
+
+impl Follow {
+    fn along(&self, edge: &Seg, piece: &Seg) -> bool {
+        let (e, p) = (edge.b - edge.a, piece.b - piece.a);
+        let scale = e.length() * p.length();
+        p.length() < self.short_mm || e.perp_dot(p).abs() <= self.max_sine * scale
+    }
+}
+
 /// Share of `edge` covered by the segments of `by` (those in `grid` near the edge) that `keep`
-/// accepts.
+/// accepts and that follow the edge.
 fn covered(
     edge: &Seg,
     by: &[Seg],
     grid: &SegmentGrid,
-    tol: f64,
+    follow: &Follow,
     keep: impl Fn(usize) -> bool,
 ) -> f64 {
+    let tol = follow.band;
     let len = edge.a.distance(edge.b);
     if len <= 0.0 {
         return 1.0;
@@ -358,6 +446,7 @@ fn covered(
         .map(|&i| i as usize)
         .filter(|&i| keep(i))
         .filter_map(|i| by.get(i))
+        .filter(|s| follow.along(edge, s))
         .filter_map(|s| covered_interval(edge.a, edge.b, s.a, s.b, tol))
         .collect();
     (union_length(intervals) / len).min(1.0)

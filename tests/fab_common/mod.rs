@@ -70,7 +70,9 @@ pub fn point_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
 pub fn segment_segment(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> f64 {
     let (r, s) = (a1 - a0, b1 - b0);
     let denom = r.perp_dot(s);
-    if denom != 0.0 {
+    // Nearly parallel segments (collinear ones included) are measured by their end points:
+    // the crossing parameters of two almost collinear segments are rounding noise.
+    if denom.abs() > 1e-9 * r.length() * s.length() {
         let t = (b0 - a0).perp_dot(s) / denom;
         let u = (b0 - a0).perp_dot(r) / denom;
         if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u) {

@@ -87,6 +87,14 @@ pub fn plan(job: Job) -> FabPlan {
         settings: settings(),
         stats: PlanStats::default(),
         warnings: Vec::new(),
+        // Nothing beyond the job's own toolpaths is expected.
+        mapping: foldcam::machine::OperationMapping {
+            mountain: None,
+            valley: None,
+            unassigned: None,
+            flat: None,
+            boundary: None,
+        },
     }
 }
 

@@ -80,6 +80,14 @@ fn plan(job: Job) -> FabPlan {
         },
         stats: PlanStats::default(),
         warnings: Vec::new(),
+        // Nothing beyond the job's own toolpaths is expected.
+        mapping: foldcam::machine::OperationMapping {
+            mountain: None,
+            valley: None,
+            unassigned: None,
+            flat: None,
+            boundary: None,
+        },
     }
 }
 

@@ -7,5 +7,6 @@
 //!
 //! The polygon model of seed 000 shares the open/close transform and will live next to it.
 
+pub mod integrity;
 pub mod polygon;
 pub mod voxel;

@@ -39,6 +39,22 @@ pub fn face_planes(card: &PolygonCard, cp: &CreasePattern) -> Vec<Plane> {
         .collect()
 }
 
+/// Whether a face of `cp` is paper the card means to keep: it lies on a face of `card` and
+/// has an edge parallel to the fold. Every fold of a polygon card runs parallel to the
+/// central fold (x), so a face without such an edge can never be held by a fold: the design
+/// cuts it out (seed 000's slanted outlines; a diamond opening's paper falls out by design).
+pub fn holds_paper(card: &PolygonCard, cp: &CreasePattern, face: &Face) -> bool {
+    let ring = &face.outer;
+    let along_x = (0..ring.len()).any(|i| {
+        let (a, b) = (
+            cp.position(ring[i]),
+            cp.position(ring[(i + 1) % ring.len()]),
+        );
+        (a.y - b.y).abs() <= super::crease::PATTERN_TOLERANCE_MM && a.x != b.x
+    });
+    along_x && face_plane(card, cp, face).is_some()
+}
+
 fn face_plane(card: &PolygonCard, cp: &CreasePattern, face: &Face) -> Option<Plane> {
     let ring = |c: &Vec<VertexId>| c.iter().map(|&v| cp.position(v)).collect::<Vec<DVec2>>();
     let outer = ring(&face.outer);

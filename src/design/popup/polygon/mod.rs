@@ -56,7 +56,7 @@ pub use design::{
     Add, CardSize, Design, DesignError, MAX_DESIGN_POINTS, MAX_OPERATIONS, Operation, PlaneName,
     Replay, Units, parse_design,
 };
-pub use fold::{FoldedPolygonCard, face_planes, fold_card, standing_corners};
+pub use fold::{FoldedPolygonCard, face_planes, fold_card, holds_paper, standing_corners};
 pub use from_voxel::from_voxel;
 pub use model::{
     FaceKind, MAX_POLYGON_POINTS, MAX_SIDE_MM, OaFace, Plane, Point, PolygonCard, PolygonError,

@@ -1,5 +1,8 @@
 //! The greedy searches of §3.2 c) (windows where eq. 7 added voxels) and §3.3 (thin top faces
-//! left out): each candidate is applied and kept only if the card still pops up (§2.6).
+//! left out): each candidate is applied and kept only if the card still pops up (§2.6) and
+//! holds together: it may not add a piece cut free on every side
+//! ([`crate::design::popup::integrity::loose_pieces`], counted on the card's crease pattern).
+//! A thin top whose removal would cut a strip loose is kept instead.
 
 use std::collections::VecDeque;
 
@@ -11,6 +14,16 @@ pub(super) struct Search<'a> {
     card: &'a mut VoxelCard,
     runs: ColumnRuns,
     checks: usize,
+    /// Loose pieces of the card as it stands (edits may not add any).
+    loose: usize,
+}
+
+/// Pieces of `card` cut free on every side; a card whose pattern cannot be built counts as
+/// falling apart.
+fn loose_count(card: &VoxelCard) -> usize {
+    crate::design::popup::voxel::crease_pattern(card).map_or(usize::MAX, |cp| {
+        crate::design::popup::integrity::loose_pieces(&cp).len()
+    })
 }
 
 /// Columns `x0..=x1` of one candidate, with the rows it flags.
@@ -25,10 +38,12 @@ struct Block {
 impl<'a> Search<'a> {
     pub(super) fn new(card: &'a mut VoxelCard) -> Self {
         let runs = ColumnRuns::new(card);
+        let loose = loose_count(card);
         Search {
             card,
             runs,
             checks: 0,
+            loose,
         }
     }
 
@@ -144,7 +159,11 @@ impl<'a> Search<'a> {
         }
         self.checks += 1;
         if self.runs.passes() {
-            return true;
+            let loose = loose_count(self.card);
+            if loose <= self.loose {
+                self.loose = loose;
+                return true;
+            }
         }
         for e in edits {
             self.set(e, false);
