@@ -143,7 +143,7 @@ fn frog_base_drawing_is_off_by_its_approximated_angle() {
             .collect();
         dirs.sort_by(f64::total_cmp);
         let n = dirs.len();
-        assert!(n % 2 == 0 && n >= 4, "degree {n}");
+        assert!(n.is_multiple_of(2) && n >= 4, "degree {n}");
         let odd: f64 = (0..n)
             .step_by(2)
             .map(|i| {

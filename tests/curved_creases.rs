@@ -74,9 +74,17 @@ fn stroke_length(tp: &Toolpath) -> f64 {
 }
 
 /// The nominal duty cycle: cut / (cut + bridge) of the material.
+/// The toolpath's cut share: the beam burns half a kerf past both ends of each toolpath dash,
+/// so with kerf compensation the toolpath dash is one kerf shorter than the dash the material
+/// gets (at least a tenth of it), the period unchanged.
 fn duty(options: &PlanOptions) -> f64 {
     let p = &options.perforation;
-    p.cut_mm / (p.cut_mm + p.bridge_mm)
+    let kerf = if options.kerf_offset {
+        options.kerf_mm.min(0.9 * p.cut_mm)
+    } else {
+        0.0
+    };
+    (p.cut_mm - kerf) / (p.cut_mm + p.bridge_mm)
 }
 
 fn perforated_mm(p: &FabPlan) -> f64 {
@@ -210,7 +218,29 @@ fn hex_spiral_curves_are_perforated_on_stainless_and_card() {
             assert!(wrong.is_empty(), "{name}: {:?}", wrong.first());
             let left: f64 = cov.left_out().map(|e| e.length_mm).sum();
             assert!(left < 1e-3 * crease_mm, "{name}: {left} mm left out");
-            assert!(cov.left_out().all(|e| e.length_mm < 0.5), "{name}");
+            // Each edge left out is a crease too short for one dash between its vertex
+            // clearances, and the planner said so.
+            let too_short = p
+                .warnings
+                .iter()
+                .filter(|w| w.contains("too short"))
+                .count();
+            assert!(
+                cov.left_out().count() <= too_short,
+                "{name}: {:?}",
+                p.warnings
+            );
+            let limit = 2.0 * options.perforation.vertex_clearance_mm.max(0.5)
+                + options.perforation.min_dash_mm;
+            let long: Vec<f64> = cov
+                .left_out()
+                .map(|e| e.length_mm)
+                .filter(|l| *l >= limit)
+                .collect();
+            assert!(
+                long.is_empty(),
+                "{name}: left out although longer than {limit} mm: {long:?}"
+            );
         }
     }
 }
