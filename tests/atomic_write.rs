@@ -1,16 +1,11 @@
 //! The failure paths of atomic writes: the target keeps its old contents and no temporary
 //! file is left behind.
 
-use foldcam::formats::write_atomic;
+#[path = "common/bin.rs"]
+mod bin;
 
-fn listing(dir: &std::path::Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .expect("listing")
-        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
-}
+use bin::listing;
+use foldcam::formats::write_atomic;
 
 #[test]
 fn a_failed_rename_leaves_the_target_and_no_temporary() {

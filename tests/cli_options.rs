@@ -2,24 +2,14 @@
 //! would fail if the option were ignored. Expected values come from the input's own geometry
 //! (edge lengths, bounding boxes, the alternating sector sum), not from foldcam's code.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "common/bin.rs"]
+mod bin;
 
+use std::path::Path;
+
+use bin::{foldcam, repo_file as data};
 use foldcam::pattern::{Assignment, CreasePattern};
 use serde_json::Value;
-
-fn foldcam(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the foldcam binary runs")
-}
-
-fn data(rel: &str) -> String {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(rel);
-    p.to_string_lossy().into_owned()
-}
 
 /// Runs and parses the one JSON object printed on stdout, with the exit code.
 fn json(args: &[&str], dir: &Path) -> (Value, Option<i32>) {

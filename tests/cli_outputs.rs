@@ -2,32 +2,10 @@
 //! (a missing folder, a wrong extension, the input named as output) leaves every existing
 //! file as it was and no temporary behind.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "common/bin.rs"]
+mod bin;
 
-fn foldcam(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the foldcam binary runs")
-}
-
-fn example(rel: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join(rel)
-        .to_string_lossy()
-        .into_owned()
-}
-
-fn listing(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .expect("listing")
-        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
-}
+use bin::{foldcam, listing, repo_file as example};
 
 /// Runs `args` in a folder holding `k.fold` = "OLD": the run must exit 2, naming `culprit`,
 /// and leave `k.fold` and the folder exactly as they were.

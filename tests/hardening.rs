@@ -1,16 +1,10 @@
 //! Hostile inputs from the hardening review end with a clear refusal (exit 2, the option and
 //! the limit named), never a hang or a panic.
 
-use std::path::Path;
-use std::process::{Command, Output};
+#[path = "common/bin.rs"]
+mod bin;
 
-fn foldcam(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the foldcam binary runs")
-}
+use bin::foldcam;
 
 #[test]
 fn generators_refuse_sizes_beyond_a_kilometre() {

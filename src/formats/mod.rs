@@ -156,8 +156,8 @@ fn format_of(path: &Path) -> Result<Format, FormatError> {
     })
 }
 
-/// Reads a text file, refusing files over [`MAX_INPUT_BYTES`] and invalid UTF-8.
-pub fn read_text(path: &Path) -> Result<String, FormatError> {
+/// Reads a file's bytes, refusing files over [`MAX_INPUT_BYTES`].
+pub fn read_bytes(path: &Path) -> Result<Vec<u8>, FormatError> {
     let io = |source| FormatError::Io {
         path: path.to_path_buf(),
         source,
@@ -169,7 +169,12 @@ pub fn read_text(path: &Path) -> Result<String, FormatError> {
             size,
         });
     }
-    let bytes = std::fs::read(path).map_err(io)?;
+    std::fs::read(path).map_err(io)
+}
+
+/// Reads a text file, refusing files over [`MAX_INPUT_BYTES`] and invalid UTF-8.
+pub fn read_text(path: &Path) -> Result<String, FormatError> {
+    let bytes = read_bytes(path)?;
     String::from_utf8(bytes).map_err(|e| FormatError::Parse {
         path: path.to_path_buf(),
         source: ParseError::new(

@@ -28,7 +28,7 @@ use dxf::entities::{Entity, EntityType};
 use dxf::enums::Units as DxfUnits;
 use glam::{DAffine2, DVec2};
 
-use super::{FormatError, Imported, MAX_INPUT_BYTES, ParseError, ReadOptions, snap};
+use super::{FormatError, Imported, ParseError, ReadOptions, snap};
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Largest chord deviation when flattening curves, in millimetres (in drawing units for a
@@ -45,20 +45,9 @@ pub const MAX_ARRAY_COPIES: usize = 100_000;
 pub const MAX_SEGMENTS: usize = super::svg::MAX_SEGMENTS;
 
 /// Reads a DXF file's bytes as text (other code pages than UTF-8 only touch names and text,
-/// which are replaced character by character), refusing files over [`MAX_INPUT_BYTES`].
+/// which are replaced character by character), refusing files over [`super::MAX_INPUT_BYTES`].
 pub fn read_text_lossy(path: &Path) -> Result<String, FormatError> {
-    let io = |source| FormatError::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let size = std::fs::metadata(path).map_err(io)?.len();
-    if size > MAX_INPUT_BYTES {
-        return Err(FormatError::TooLarge {
-            path: path.to_path_buf(),
-            size,
-        });
-    }
-    let bytes = std::fs::read(path).map_err(io)?;
+    let bytes = super::read_bytes(path)?;
     Ok(String::from_utf8_lossy(&bytes).into_owned())
 }
 
