@@ -102,7 +102,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         return Ok(Outcome::CheckFailed);
     }
     let k = u128::from(args.state);
-    let (Some(folded), Some(view)) = (solver.folded_state(cp, k), solver.top_view(k)) else {
+    let Some(folded) = solver.folded_state(cp, k) else {
         bail!(
             "{}: there is no state {} ({} state(s){})",
             args.input.display(),
@@ -115,11 +115,17 @@ pub fn run(args: Args) -> Result<Outcome> {
             }
         );
     };
+    // The top view searches the state again: only when a picture is asked for.
     let png = match &args.png {
-        Some(_) => Some(
-            render_top_view_png(&view, args.width, args.xray)
-                .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?,
-        ),
+        Some(_) => {
+            let view = solver.top_view(k).ok_or_else(|| {
+                anyhow::anyhow!("{}: no top view of state {k}", args.input.display())
+            })?;
+            Some(
+                render_top_view_png(&view, args.width, args.xray)
+                    .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?,
+            )
+        }
         None => None,
     };
     input::save(&args.output, cp, Some(&folded))?;

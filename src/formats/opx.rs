@@ -46,7 +46,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
                     format!("more than {MAX_LINES} lines, the most read"),
                 ));
             }
-            pattern.add_segment(a, b, assignment(kind));
+            pattern.add_segment(a, b, super::cp::assignment_of(kind));
         }
         rest = &body[end..];
         index += 1;
@@ -62,15 +62,6 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
         warnings.push(format!("{zero_length} zero-length line(s) ignored"));
     }
     super::finish_drawing(pattern, None, None, "lying", warnings)
-}
-
-fn assignment(kind: i64) -> Assignment {
-    match kind {
-        1 => Assignment::Boundary,
-        2 => Assignment::Mountain,
-        3 => Assignment::Valley,
-        _ => Assignment::Flat,
-    }
 }
 
 /// Reads the properties of one line object (missing ones are 0).

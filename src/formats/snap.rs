@@ -27,7 +27,7 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 
-use crate::geom::segment::distance_to_point;
+use crate::geom::segment::project;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
 /// Default snapping tolerance relative to the drawing's bounding-box diagonal (1e-3: 0.28 mm
@@ -209,23 +209,14 @@ impl EdgeIndex {
                     *best = Some((d, q));
                 }
             }
-            let d = distance_to_point(a, b, p);
+            let q = a.lerp(b, project(a, b, p));
+            let d = p.distance(q);
             if d <= tol && best_edge.is_none_or(|(bd, _)| d < bd) {
-                best_edge = Some((d, project(a, b, p)));
+                best_edge = Some((d, q));
             }
         }
         best_vertex.or(best_edge).or(best_end).map(|(_, q)| q)
     }
-}
-
-/// The point of segment `a b` nearest to `p`.
-fn project(a: DVec2, b: DVec2, p: DVec2) -> DVec2 {
-    let d = b - a;
-    let len2 = d.length_squared();
-    if len2 == 0.0 {
-        return a;
-    }
-    a + d * ((p - a).dot(d) / len2).clamp(0.0, 1.0)
 }
 
 #[cfg(test)]

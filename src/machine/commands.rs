@@ -95,19 +95,25 @@ pub fn effects(lines: &[String], at: DVec2, machine: &MachineProfile) -> Vec<Eff
     out
 }
 
-/// The letter–number words of a G-code line, comments (`;…`, `(…)`) removed.
-fn words(line: &str) -> Vec<(char, f64)> {
-    let mut text = String::new();
+/// A G-code line compared loosely: comments (`;…`, `(…)`) and blanks removed, upper case.
+pub fn normalize(line: &str) -> String {
+    let mut out = String::new();
     let mut depth = 0;
     for c in line.chars() {
         match c {
             ';' if depth == 0 => break,
             '(' => depth += 1,
             ')' if depth > 0 => depth -= 1,
-            _ if depth == 0 && !c.is_whitespace() => text.push(c.to_ascii_uppercase()),
+            _ if depth == 0 && !c.is_whitespace() => out.push(c.to_ascii_uppercase()),
             _ => {}
         }
     }
+    out
+}
+
+/// The letter–number words of a G-code line, comments (`;…`, `(…)`) removed.
+fn words(line: &str) -> Vec<(char, f64)> {
+    let text = normalize(line);
     let mut out = Vec::new();
     let mut chars = text.char_indices().peekable();
     while let Some((i, c)) = chars.next() {

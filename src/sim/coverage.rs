@@ -419,10 +419,11 @@ struct Follow {
 }
 
 impl Follow {
-    fn along(&self, edge: &Seg, piece: &Seg) -> bool {
+    /// Whether `piece` runs along `edge`, whose length is `edge_len` (known to the caller).
+    fn along(&self, edge: &Seg, edge_len: f64, piece: &Seg) -> bool {
         let (e, p) = (edge.b - edge.a, piece.b - piece.a);
-        let scale = e.length() * p.length();
-        p.length() < self.short_mm || e.perp_dot(p).abs() <= self.max_sine * scale
+        let piece_len = p.length();
+        piece_len < self.short_mm || e.perp_dot(p).abs() <= self.max_sine * edge_len * piece_len
     }
 }
 
@@ -446,7 +447,7 @@ fn covered(
         .map(|&i| i as usize)
         .filter(|&i| keep(i))
         .filter_map(|i| by.get(i))
-        .filter(|s| follow.along(edge, s))
+        .filter(|s| follow.along(edge, len, s))
         .filter_map(|s| covered_interval(edge.a, edge.b, s.a, s.b, tol))
         .collect();
     (union_length(intervals) / len).min(1.0)

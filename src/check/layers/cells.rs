@@ -119,7 +119,6 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
     }
     let mut run: Vec<(CreasePattern, f64)> = Vec::new();
     let mut last = (usize::MAX, usize::MAX);
-    let mut fallback = None;
     for i in TOLERANCE_STEPS {
         let tol = shortest / 2f64.powi(i);
         if tol < floor {
@@ -140,11 +139,11 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
         }
         run.push((sheet, tol));
         if run.len() >= STABLE_REPEATS {
-            return run.into_iter().next();
+            break;
         }
-        fallback = run.first().map(|(s, t)| (s.clone(), *t));
     }
-    fallback
+    // Stable for STABLE_REPEATS steps, or else the last counts reached: their coarsest sheet.
+    run.into_iter().next()
 }
 
 /// Builds the arrangement of `folded` (the folded form of `cp`); `floor` is the smallest merge

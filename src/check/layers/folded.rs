@@ -14,6 +14,7 @@ use std::collections::HashMap;
 use glam::{DAffine2, DMat2, DVec2};
 
 use super::LayerError;
+use crate::geom::polygon::contains_point;
 use crate::pattern::{Assignment, CreasePattern, FaceId, VertexId};
 
 /// A face placed in its folded position: polygons in folded coordinates.
@@ -37,25 +38,9 @@ impl FoldedFace {
     pub fn contains(&self, p: DVec2) -> bool {
         p.cmpge(self.bounds.0).all()
             && p.cmple(self.bounds.1).all()
-            && ring_contains(&self.outer, p)
-            && !self.holes.iter().any(|h| ring_contains(h, p))
+            && contains_point(&self.outer, p)
+            && !self.holes.iter().any(|h| contains_point(h, p))
     }
-}
-
-/// Even–odd ray test (no orientation needed).
-fn ring_contains(ring: &[DVec2], p: DVec2) -> bool {
-    let mut inside = false;
-    let n = ring.len();
-    for i in 0..n {
-        let (a, b) = (ring[i], ring[(i + 1) % n]);
-        if (a.y > p.y) != (b.y > p.y) {
-            let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-            if x > p.x {
-                inside = !inside;
-            }
-        }
-    }
-    inside
 }
 
 /// The folded form of a pattern: faces placed, edges' neighbouring faces, folded vertices.

@@ -83,6 +83,22 @@ impl<'a> Engine<'a> {
         &self.incident[self.offsets[v as usize] as usize..self.offsets[v as usize + 1] as usize]
     }
 
+    /// The variables sharing a binding constraint with `v` (`v` itself included), the edges
+    /// of the graph whose connected parts are the independent components.
+    fn bound_neighbours<'s>(
+        &'s self,
+        v: u32,
+        binding: &'s [bool],
+    ) -> impl Iterator<Item = u32> + 's {
+        self.constraints_of(v)
+            .iter()
+            .filter(move |&&c| binding[c as usize])
+            .flat_map(move |&c| {
+                let con = &self.sys.constraints[c as usize];
+                con.lits[..con.len as usize].iter().map(|&l| l >> 1)
+            })
+    }
+
     fn filter(&self, c: u32) -> Filtered {
         let con = &self.sys.constraints[c as usize];
         let (mut known, mut bits, mut unknown) = (0u8, 0u8, 0u8);
@@ -209,17 +225,10 @@ impl<'a> Engine<'a> {
             while k < members.len() {
                 let v = members[k];
                 k += 1;
-                for &c in self.constraints_of(v) {
-                    if !binding[c as usize] {
-                        continue;
-                    }
-                    let con = &self.sys.constraints[c as usize];
-                    for &l in &con.lits[..con.len as usize] {
-                        let w = (l >> 1) as usize;
-                        if self.value[w] == -1 && comp[w] == u32::MAX {
-                            comp[w] = id;
-                            members.push(w as u32);
-                        }
+                for w in self.bound_neighbours(v, &binding) {
+                    if self.value[w as usize] == -1 && comp[w as usize] == u32::MAX {
+                        comp[w as usize] = id;
+                        members.push(w);
                     }
                 }
             }
@@ -242,16 +251,9 @@ impl<'a> Engine<'a> {
         while k < order.len() {
             let v = order[k];
             k += 1;
-            for &c in self.constraints_of(v) {
-                if !binding[c as usize] {
-                    continue;
-                }
-                let con = &self.sys.constraints[c as usize];
-                for &l in &con.lits[..con.len as usize] {
-                    let w = l >> 1;
-                    if comp[w as usize] == id && seen.insert(w) {
-                        order.push(w);
-                    }
+            for w in self.bound_neighbours(v, binding) {
+                if comp[w as usize] == id && seen.insert(w) {
+                    order.push(w);
                 }
             }
         }

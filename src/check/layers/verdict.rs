@@ -107,18 +107,11 @@ pub fn check_layers(
             }
             out.report = Some(report);
         }
-        Err(LayerError::NotFlat {
-            faces,
-            vertex,
-            position,
-            gap,
-        }) => {
-            let e = LayerError::NotFlat {
-                faces,
-                vertex,
-                position,
-                gap,
-            };
+        Err(
+            e @ LayerError::NotFlat {
+                vertex, position, ..
+            },
+        ) => {
             let mut f = finding(
                 position,
                 e.to_string(),

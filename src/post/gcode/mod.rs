@@ -126,21 +126,8 @@ pub fn flavour(machine: &MachineProfile) -> Result<Box<dyn Flavour>, PostError> 
     })
 }
 
-/// A command line compared loosely: comments and blanks removed, upper case.
-pub fn normalize(line: &str) -> String {
-    let mut out = String::new();
-    let mut depth = 0;
-    for c in line.chars() {
-        match c {
-            ';' if depth == 0 => break,
-            '(' => depth += 1,
-            ')' if depth > 0 => depth -= 1,
-            _ if depth == 0 && !c.is_whitespace() => out.push(c.to_ascii_uppercase()),
-            _ => {}
-        }
-    }
-    out
-}
+/// A command line compared loosely (see [`crate::machine::commands::normalize`]).
+pub use crate::machine::commands::normalize;
 
 /// `text` on one line: control characters become spaces.
 pub fn one_line(text: &str) -> String {

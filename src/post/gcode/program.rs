@@ -40,8 +40,6 @@ struct Program<'a> {
     travel_feed: String,
     /// Air assist is on.
     air: bool,
-    /// Operation groups written so far.
-    layers: usize,
 }
 
 /// Feed written on travel moves when the dialect shares `G0`'s feed with `G1`.
@@ -80,7 +78,6 @@ pub fn write(
             String::new()
         },
         air: false,
-        layers: 0,
     };
     p.header(job, machine);
     let mut group = None;
@@ -156,7 +153,8 @@ impl Program<'_> {
             return;
         }
         if *group != Some(path.op) {
-            if self.layers > 0 && machine.pauses_between_layers() {
+            // A group before this one was written: the pen changes between layers.
+            if group.is_some() && machine.pauses_between_layers() {
                 let note = format!("change the pen for layer {}, then resume", path.op.name());
                 self.lines.push(self.flavour.comment(&note));
                 self.lines
@@ -173,7 +171,6 @@ impl Program<'_> {
                 self.air = air;
             }
             *group = Some(path.op);
-            self.layers += 1;
         }
         for _ in 0..burn.passes {
             for stroke in &strokes {
