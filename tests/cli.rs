@@ -309,7 +309,7 @@ fn frame_option_reads_a_later_frame_with_inheritance() {
     }"#;
     std::fs::write(dir.path().join("multi.fold"), fold).expect("write");
     let o = foldcam(
-        &["convert", "multi.fold", "f1.fold", "--frame", "1"],
+        &["convert", "multi.fold", "f1.fold", "--fold-frame", "1"],
         dir.path(),
     );
     assert!(o.status.success(), "{}", text(&o.stderr));
@@ -320,16 +320,16 @@ fn frame_option_reads_a_later_frame_with_inheritance() {
     assert_eq!(hi, glam::DVec2::new(20.0, 20.0), "frame 1's coordinates");
     assert_eq!(cp.edges.len(), 3, "edges inherited from frame 0");
     let o = foldcam(
-        &["convert", "multi.fold", "f9.fold", "--frame", "9"],
+        &["convert", "multi.fold", "f9.fold", "--fold-frame", "9"],
         dir.path(),
     );
     assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("multi.fold"));
     let o = foldcam(
-        &["check", &example("preliminary-base.cp"), "--frame", "1"],
+        &["check", &example("preliminary-base.cp"), "--fold-frame", "1"],
         dir.path(),
     );
-    assert_eq!(o.status.code(), Some(2), "--frame on a .cp file");
+    assert_eq!(o.status.code(), Some(2), "--fold-frame on a .cp file");
 }
 
 #[test]

@@ -89,3 +89,114 @@ fn a_closed_pipe_ends_the_program_quietly() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+fn run_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
+    foldcam()
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("runs")
+}
+
+fn repo(rel: &str) -> String {
+    std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join(rel)
+        .to_string_lossy()
+        .into_owned()
+}
+
+#[test]
+fn cut_frame_writes_a_dark_outline_job_and_refuses_drawings() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let ok = run_in(dir.path(), &["generate", "miura", "-o", "m.fold"]);
+    assert!(ok.status.success());
+    let args = ["cut", "m.fold", "-m", "grbl-diode", "-x", "card-300gsm"];
+    let out = run_in(dir.path(), &[&args[..], &["-o", "f.gcode", "--frame"]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("frame front"));
+    let text = std::fs::read_to_string(dir.path().join("f.gcode")).expect("written");
+    let machine = load_machine("grbl-diode").expect("shipped");
+    let run = foldcam::sim::run(&text, &machine).expect("readable");
+    assert!(run.is_clean() && run.burns.is_empty() && run.travels.len() >= 5);
+    let out = run_in(dir.path(), &[&args[..], &["-o", "f.svg", "--frame"]].concat());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--frame writes G-code"));
+    assert!(!dir.path().join("f.svg").exists());
+    // The FOLD frame selector is --fold-frame now.
+    let out = run_in(dir.path(), &["check", "m.fold", "--frame", "1"]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn testgrid_writes_every_format_and_refuses_values_out_of_range() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let base = ["testgrid", "-m", "marlin-laser", "-x", "paper-160gsm"];
+    for file in ["g.gcode", "g.dxf", "g.svg", "g.lbrn2"] {
+        let out = run_in(dir.path(), &[&base[..], &["-o", file]].concat());
+        assert!(out.status.success(), "{file}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(String::from_utf8_lossy(&out.stdout).contains("27 cells"));
+        assert!(dir.path().join(file).exists());
+    }
+    let out = run_in(
+        dir.path(),
+        &[&base[..], &["-o", "bad.gcode", "--power", "0.5,2"]].concat(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("power"));
+    assert!(!dir.path().join("bad.gcode").exists());
+}
+
+/// Burn length at `power` (a fraction) in a simulated run, mm.
+fn burned_at(run: &foldcam::sim::SimReport, power: f64) -> f64 {
+    run.burns
+        .iter()
+        .filter(|b| (run.power_fraction(b.power) - power).abs() < 1e-9)
+        .map(|b| b.length())
+        .sum()
+}
+
+#[test]
+fn papercraft_jobs_mark_edge_numbers_where_the_material_can_mark() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let vase = repo("examples/papercraft/vase.craft.toml");
+    let machine = load_machine("grbl-diode").expect("shipped");
+    let card = load_material("card-300gsm").expect("shipped");
+    let out = run_in(
+        dir.path(),
+        &["papercraft", &vase, "-o", "v.fold", "--job", "v.gcode", "-m", "grbl-diode", "-x", "card-300gsm"],
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let sheet = foldcam::formats::load(&dir.path().join("v.fold")).expect("sheet").pattern;
+    let labels: f64 = sheet
+        .edge_ids()
+        .filter(|&e| sheet.edges[e.index()].assignment == foldcam::pattern::Assignment::Flat)
+        .map(|e| sheet.edge_length(e))
+        .sum();
+    assert!(labels > 0.0, "the vase has edge numbers");
+    let text = std::fs::read_to_string(dir.path().join("v.gcode")).expect("job");
+    let run = foldcam::sim::run(&text, &machine).expect("readable");
+    assert!(run.is_clean());
+    let marked = burned_at(&run, card.settings.mark.power);
+    assert!((marked - labels).abs() < 0.01 * labels, "marked {marked} of {labels} mm");
+    // The same card with no mark power cannot show them: none are burned.
+    let toml = std::fs::read_to_string(repo("machines/materials/card-300gsm.toml")).expect("toml");
+    let at = toml.find("[settings.mark]").expect("mark settings");
+    let (head, tail) = toml.split_at(at);
+    let dark = format!("{head}{}", tail.replacen("power = 0.1", "power = 0.0", 1));
+    std::fs::write(dir.path().join("dark.toml"), dark).expect("write");
+    let out = run_in(
+        dir.path(),
+        &["papercraft", &vase, "-o", "w.fold", "--job", "w.gcode", "-m", "grbl-diode", "-x", "dark.toml"],
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("edge numbers left out"));
+    let text = std::fs::read_to_string(dir.path().join("w.gcode")).expect("job");
+    assert!(!text.contains("; mark"), "no mark layer");
+    let run = foldcam::sim::run(&text, &machine).expect("readable");
+    assert!(run.is_clean());
+    let cut_and_score = run.burn_length_mm;
+    let first = foldcam::sim::run(&std::fs::read_to_string(dir.path().join("v.gcode")).expect("job"), &machine)
+        .expect("readable")
+        .burn_length_mm;
+    assert!((first - cut_and_score - labels).abs() < 0.01 * labels);
+}

@@ -13,7 +13,7 @@ use super::input;
 #[derive(clap::Args)]
 #[command(after_help = "Examples:\n  foldcam convert bird.cp bird.fold\n  \
     foldcam convert bird.fold bird.svg --size 150\n  foldcam convert drawing.svg clean.fold --planarize\n  \
-    foldcam convert animation.fold frame3.svg --frame 3")]
+    foldcam convert animation.fold frame3.svg --fold-frame 3")]
 pub struct Args {
     /// Input file (.fold, .svg, .cp or .dxf).
     pub input: PathBuf,

@@ -63,13 +63,97 @@ pub struct Args {
     /// In SVG output, draw perforations as dashed strokes (for plotting) instead of dashes.
     #[arg(long)]
     pub dasharray: bool,
+    /// Write a framing job instead of the job (G-code only): the job's bounding box traced
+    /// with the laser off (or the pen up), as LightBurn's Frame does, to see where it lands
+    /// on the sheet. (The FOLD frame to read is --fold-frame.)
+    #[arg(long)]
+    pub frame: bool,
+    /// Trace the frame with the laser on at this power, a fraction of the machine's range
+    /// (0 to 1; default 0: off), at the material's mark speed. Ignored by pen plotters.
+    #[arg(long, value_name = "SHARE", requires = "frame", value_parser = frame_power)]
+    pub frame_power: Option<f64>,
 }
 
-/// Plans and writes the job files.
+/// Parses a power from 0 to 1.
+fn frame_power(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
+    if (0.0..=1.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!(
+            "{s} must be from 0 to 1 (a share of the machine's power)"
+        ))
+    }
+}
+
+/// Plans and writes the job files (or their frames).
 pub fn run(args: Args) -> Result<Outcome> {
     let (machine, p) = args.request.plan()?;
-    write_jobs(&args.output, &p, &machine, args.r12, args.dasharray)?;
+    if args.frame {
+        write_frames(&args.output, &p, &machine, args.frame_power.unwrap_or(0.0))?;
+    } else {
+        write_jobs(&args.output, &p, &machine, args.r12, args.dasharray)?;
+    }
     Ok(Outcome::Done)
+}
+
+/// Writes one framing job per job of the plan (G-code, read back by the simulated machine
+/// first), and says what each traces.
+fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64) -> Result<()> {
+    if output_kind(output)? != Output::Gcode {
+        bail!(
+            "{}: --frame writes G-code (.gcode, .nc, .ngc); LightBurn and other job software \
+             frame a drawing themselves",
+            output.display()
+        );
+    }
+    let paths = job_paths(output, p);
+    let mut files = Vec::new();
+    for (job, path) in p.jobs.iter().zip(&paths) {
+        let text = post::gcode::frame(p, job, machine, power)
+            .with_context(|| path.display().to_string())?;
+        simulated_clean(&text, machine).with_context(|| path.display().to_string())?;
+        files.push((path, job, text));
+    }
+    for (path, _, text) in &files {
+        write_atomic(path, text.as_bytes()).with_context(|| path.display().to_string())?;
+    }
+    for (path, job, _) in files {
+        eprintln!("foldcam: wrote {}", path.display());
+        if let Some((lo, hi)) = foldcam::fab::frame::bounds(job) {
+            let how = if power > 0.0 && !machine.pen_tool() {
+                format!("at {:.0}% power", power * 100.0)
+            } else {
+                "with the tool off".to_string()
+            };
+            println!(
+                "frame {:<6} X {:.3} to {:.3}, Y {:.3} to {:.3} mm ({:.1} × {:.1} mm), {how}",
+                job.name,
+                lo.x,
+                hi.x,
+                lo.y,
+                hi.y,
+                hi.x - lo.x,
+                hi.y - lo.y
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Runs `text` on the simulated `machine`; an error naming the first violation.
+fn simulated_clean(text: &str, m: &MachineProfile) -> Result<()> {
+    let report = foldcam::sim::run(text, m)?;
+    if let Some(v) = report.violations.first() {
+        bail!(
+            "the simulated {} found {} problem(s) in the job, first at line {}: {}",
+            m.name,
+            report.violation_count,
+            v.line,
+            v.message
+        );
+    }
+    Ok(())
 }
 
 /// Writes the plan's jobs as the output's extension says (G-code read back by the simulated
@@ -82,6 +166,23 @@ pub fn write_jobs(
     r12: bool,
     dasharray: bool,
 ) -> Result<()> {
+    let files = render_jobs(output, p, machine, r12, dasharray)?;
+    for (path, bytes) in &files {
+        write_atomic(path, bytes).with_context(|| path.display().to_string())?;
+        eprintln!("foldcam: wrote {}", path.display());
+    }
+    print!("{}", super::plan::summary(p));
+    Ok(())
+}
+
+/// The files of the plan's jobs (see [`write_jobs`]), rendered and checked, not written.
+pub fn render_jobs(
+    output: &Path,
+    p: &FabPlan,
+    machine: &MachineProfile,
+    r12: bool,
+    dasharray: bool,
+) -> Result<Vec<(PathBuf, Vec<u8>)>> {
     let kind = output_kind(output)?;
     if dasharray && kind != Output::Svg {
         eprintln!("warning: --dasharray applies to SVG output only: ignored");
@@ -96,17 +197,12 @@ pub fn write_jobs(
     }
     let paths = job_paths(output, p);
     let mut files = Vec::new();
-    for (job, path) in p.jobs.iter().zip(&paths) {
+    for (job, path) in p.jobs.iter().zip(paths) {
         let bytes = render(kind, p, job, machine, r12, dasharray)
             .with_context(|| path.display().to_string())?;
         files.push((path, bytes));
     }
-    for (path, bytes) in &files {
-        write_atomic(path, bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
-    print!("{}", super::plan::summary(p));
-    Ok(())
+    Ok(files)
 }
 
 fn render(
@@ -120,16 +216,7 @@ fn render(
     Ok(match kind {
         Output::Gcode => {
             let text = post::gcode(p, job, m)?;
-            let report = foldcam::sim::run(&text, m)?;
-            if let Some(v) = report.violations.first() {
-                bail!(
-                    "the simulated {} found {} problem(s) in the job, first at line {}: {}",
-                    m.name,
-                    report.violation_count,
-                    v.line,
-                    v.message
-                );
-            }
+            simulated_clean(&text, m)?;
             text.into_bytes()
         }
         Output::Dxf => {

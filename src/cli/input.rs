@@ -12,9 +12,9 @@ use foldcam::pattern::{
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct FrameArg {
     /// Read frame N of a FOLD file (0 is the key frame; later frames come from file_frames,
-    /// with frame_inherit resolved).
-    #[arg(long, value_name = "N")]
-    pub frame: Option<usize>,
+    /// with frame_inherit resolved). Not `cut --frame`, which traces a job's outline.
+    #[arg(long = "fold-frame", value_name = "N")]
+    pub fold_frame: Option<usize>,
     /// SVG and DXF input: join line ends that stop within this distance (mm) of a line or
     /// corner; default 1/1000 of the drawing's diagonal, 0 turns it off.
     #[arg(long, value_name = "MM", value_parser = non_negative)]
@@ -44,10 +44,10 @@ fn non_negative(s: &str) -> Result<f64, String> {
     }
 }
 
-/// Reads `path` (frame `frame.frame` for FOLD files), prints the reader's warnings to stderr,
+/// Reads `path` (frame `frame.fold_frame` for FOLD files), prints the reader's warnings to stderr,
 /// and returns the import.
 pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
-    let imported = match frame.frame {
+    let imported = match frame.fold_frame {
         None | Some(0) => formats::load_with(path, &frame.read_options())?,
         Some(n) => load_frame(path, n)?,
     };
@@ -69,7 +69,7 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
 
 fn load_frame(path: &Path, n: usize) -> Result<Imported> {
     if formats::Format::from_path(path) != Some(formats::Format::Fold) {
-        bail!("{}: --frame applies to FOLD files only", path.display());
+        bail!("{}: --fold-frame applies to FOLD files only", path.display());
     }
     let text = formats::read_text(path)?;
     let imported = formats::fold::read_frame_str(&text, n)

@@ -26,6 +26,7 @@ mod popup_poly;
 mod preview;
 mod simulate;
 mod tessellate;
+mod testgrid;
 
 use std::process::ExitCode;
 
@@ -94,6 +95,8 @@ enum Command {
     Tessellate(tessellate::Args),
     /// List the shipped machine or material profiles.
     List(list::Args),
+    /// Write a calibration grid of perforated creases over dash, bridge, power and speed.
+    Testgrid(testgrid::Args),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
@@ -122,6 +125,7 @@ pub fn run() -> ExitCode {
         Command::List(a) => list::run(a),
         Command::FoldFlat(a) => fold_flat::run(a),
         Command::Fold3d(a) => fold3d::run(a),
+        Command::Testgrid(a) => testgrid::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

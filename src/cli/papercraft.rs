@@ -3,7 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Result, anyhow};
+use anyhow::{Context, Result, anyhow};
+use foldcam::fab::operations::label_operation;
+use foldcam::fab::{PlanOptions, plan};
+use foldcam::machine::{MachineProfile, Material};
 use foldcam::design::papercraft::ReferenceMesh;
 use foldcam::design::papercraft::design::parse_design;
 use foldcam::formats::{OutputSet, read_text};
@@ -21,9 +24,15 @@ use super::Outcome;
                   cut lines, trims each patch where it crosses its walls, unrolls it \
                   isometrically, adds glue tabs on one side of every shared boundary and packs \
                   the parts onto sheets. Writes one crease pattern per sheet: outlines cut, tab \
-                  roots mountain folds. With several sheets, sheet n > 1 goes to NAME-n.EXT.",
+                  roots mountain folds, edge numbers flat lines. With several sheets, sheet \
+                  n > 1 goes to NAME-n.EXT. With --job, --machine and --material it also \
+                  plans every sheet and writes the machine job (as `cut` does, with its \
+                  options), the edge numbers marked (--flat mark) by default wherever the \
+                  machine can mark the material (a pen, or a laser whose mark power is above \
+                  0); --flat skip leaves them out.",
     after_help = "Examples:\n  foldcam papercraft examples/papercraft/vase.craft.toml -o vase.fold --svg vase.svg --png vase.png\n  \
-                  foldcam cut vase.fold --machine grbl-diode --material paper-160gsm -o vase.gcode"
+                  foldcam papercraft examples/papercraft/vase.craft.toml -o vase.fold --job vase.gcode -m grbl-diode -x paper-160gsm\n  \
+                  foldcam cut vase.fold --machine grbl-diode --material paper-160gsm --flat mark -o vase.gcode"
 )]
 pub struct Args {
     /// Design file (`.craft.toml`).
@@ -40,6 +49,38 @@ pub struct Args {
     /// PNG width in pixels.
     #[arg(long, default_value_t = 1200)]
     pub width: u32,
+    /// Also write the machine job of every sheet (.gcode/.nc/.ngc, .dxf, .svg, .lbrn2;
+    /// sheet n > 1 to NAME-n.EXT); needs --machine and --material.
+    #[arg(long, value_name = "FILE", requires_all = ["machine", "material"])]
+    pub job: Option<PathBuf>,
+    /// Machine profile for --job: a shipped name or a TOML file.
+    #[arg(long, short = 'm', requires = "job")]
+    pub machine: Option<String>,
+    /// Material profile for --job: a shipped name or a TOML file.
+    #[arg(long, short = 'x', requires = "job")]
+    pub material: Option<String>,
+    #[command(flatten)]
+    pub fab: super::fab_args::FabArgs,
+}
+
+/// The plan options for the sheets' jobs: `cut`'s, with the edge numbers (flat lines) marked
+/// where the machine can mark the material unless `--flat` says otherwise.
+fn job_options(
+    args: &Args,
+    machine: &str,
+    material: &str,
+) -> Result<(MachineProfile, Material, PlanOptions)> {
+    let (m, x, mut o) = args.fab.resolve(machine, material)?;
+    if args.fab.flat.is_none() {
+        o.mapping.flat = label_operation(&m, &x);
+        if o.mapping.flat.is_none() {
+            eprintln!(
+                "foldcam: {} cannot mark {} (its mark power is 0): edge numbers left out",
+                m.name, x.name
+            );
+        }
+    }
+    Ok((m, x, o))
 }
 
 /// `path` for sheet 0, `stem-n.ext` for sheet n − 1 > 0.
@@ -105,7 +146,23 @@ pub fn run(args: Args) -> Result<Outcome> {
             super::input::stage_image(&mut outputs, &sheet_path(png, s), bytes, "png")?;
         }
     }
+    let mut plans = Vec::new();
+    if let (Some(job), Some(machine), Some(material)) = (&args.job, &args.machine, &args.material)
+    {
+        let (m, x, o) = job_options(&args, machine, material)?;
+        for (s, cp) in made.sheets.iter().enumerate() {
+            let sheet = sheet_path(job, s);
+            let p = plan(cp, &m, &x, &o).with_context(|| sheet.display().to_string())?;
+            for (path, bytes) in super::cut::render_jobs(&sheet, &p, &m, false, false)? {
+                outputs.add(path, bytes);
+            }
+            plans.push(p);
+        }
+    }
     super::input::commit(outputs, &[&args.design])?;
+    for p in &plans {
+        print!("{}", super::plan::summary(p));
+    }
     if !made.unlabelled.is_empty() {
         eprintln!(
             "foldcam: no room for the edge labels of cut lines {:?} (lower label_height)",

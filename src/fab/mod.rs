@@ -10,6 +10,7 @@
 
 pub mod contours;
 pub mod creases;
+pub mod frame;
 pub mod geometry;
 pub mod kerf;
 pub mod lines;
@@ -21,6 +22,7 @@ pub mod plan;
 pub mod sides;
 pub mod stats;
 pub mod tabs;
+pub mod testgrid;
 pub mod timing;
 
 pub use plan::plan;
@@ -28,7 +30,7 @@ pub use plan::plan;
 use glam::{DAffine2, DVec2};
 use serde::Serialize;
 
-use crate::machine::SettingsByOperation;
+use crate::machine::{MachineProfile, OperationSettings, SettingsByOperation};
 use crate::pattern::EdgeId;
 
 /// What a toolpath does to the sheet.
@@ -159,6 +161,40 @@ pub struct FabPlan {
     /// operation should be realised by some toolpath of some job (the coverage check counts
     /// the ones that are not, such as creases left without a dash).
     pub mapping: crate::machine::OperationMapping,
+    /// Settings of their own for some edges' toolpaths (the cells of a calibration grid,
+    /// [`testgrid`]); empty for an ordinary plan. Writers give each entry a layer of its own.
+    pub overrides: Vec<SettingsOverride>,
+}
+
+/// Speed, power and passes of their own for the toolpaths of some edges, instead of their
+/// operation's.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SettingsOverride {
+    /// Short name for layers and messages (letters, digits, `-`, `_` and `.`), e.g. `cell-4`.
+    pub name: String,
+    /// The pattern edges whose toolpaths run with these settings (a toolpath belongs to the
+    /// entry holding its first edge).
+    pub edges: Vec<EdgeId>,
+    /// The settings (used as they are, also on a plotter).
+    pub settings: OperationSettings,
+}
+
+impl FabPlan {
+    /// The index in [`FabPlan::overrides`] of the entry `path` runs with, if any.
+    pub fn override_of(&self, path: &Toolpath) -> Option<usize> {
+        let first = path.edges.first()?;
+        self.overrides.iter().position(|o| o.edges.contains(first))
+    }
+
+    /// The speed, power and passes `path` runs with on `machine`: its override's, or its
+    /// operation's as the machine takes them ([`MachineProfile::settings_for`]: a plotter
+    /// draws everything at the `plot` settings).
+    pub fn settings_of(&self, path: &Toolpath, machine: &MachineProfile) -> OperationSettings {
+        match self.override_of(path) {
+            Some(i) => self.overrides[i].settings,
+            None => machine.settings_for(&self.settings, path.op),
+        }
+    }
 }
 
 /// Holding tabs: short uncut gaps left in closed contours so parts stay in the sheet.

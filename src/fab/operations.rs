@@ -6,7 +6,7 @@
 //! `mapping.flat` (skip or mark); join edges (two faces glued) are never machined.
 
 use super::Operation;
-use crate::machine::OperationMapping;
+use crate::machine::{MachineProfile, Material, OperationMapping};
 use crate::pattern::{Assignment, CreasePattern, EdgeId};
 
 /// The operation for an edge of `assignment` under `mapping`; `None` skips the edge.
@@ -36,6 +36,19 @@ pub fn edge_operations(cp: &CreasePattern, mapping: &OperationMapping) -> Vec<Op
 pub fn is_continuous_weakening(cp: &CreasePattern, ops: &[Option<Operation>], e: EdgeId) -> bool {
     cp.edges[e.index()].assignment.is_boundary_like()
         || matches!(ops[e.index()], Some(Operation::Cut | Operation::Score))
+}
+
+/// Whether `machine` can leave a visible mark on `material`: the machine marks at all
+/// ([`MachineProfile::supports`]), and a laser's `mark` power is above zero (a pen always
+/// draws). Paper-craft edge numbers and calibration-grid labels are marked only then.
+pub fn can_mark(machine: &MachineProfile, material: &Material) -> bool {
+    machine.supports(Operation::Mark) && (machine.pen_tool() || material.settings.mark.power > 0.0)
+}
+
+/// The operation for labels drawn as flat lines (paper-craft edge numbers) when the user
+/// chose none: [`Operation::Mark`] where [`can_mark`], else `None` (skipped).
+pub fn label_operation(machine: &MachineProfile, material: &Material) -> Option<Operation> {
+    can_mark(machine, material).then_some(Operation::Mark)
 }
 
 #[cfg(test)]

@@ -67,14 +67,16 @@ pub fn plan_toolpaths(
     } else {
         one_sided_job(cp, paths, &machine.bed, opts)?
     };
-    let stats = plan_stats(&jobs, naive, &material.settings, machine);
-    Ok(FabPlan {
+    let mut plan = FabPlan {
         jobs,
         settings: material.settings,
-        stats,
+        stats: Default::default(),
         warnings,
         mapping: opts.mapping,
-    })
+        overrides: Vec::new(),
+    };
+    plan.stats = plan_stats(&plan, naive, machine);
+    Ok(plan)
 }
 
 /// One job `front`; returns it with the naive travel.

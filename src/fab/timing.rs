@@ -17,13 +17,19 @@
 
 use glam::DVec2;
 
-use super::{Job, Operation};
+use super::{Job, Operation, Toolpath};
 use crate::machine::commands::{Effect, effects};
 use crate::machine::motion::{Kinematics, Move, Timeline};
-use crate::machine::{MachineProfile, SettingsByOperation};
+use crate::machine::{MachineProfile, OperationSettings};
 
-/// Seconds to run `job` on `machine` with `settings`, from rest at the machine origin.
-pub fn job_time(job: &Job, settings: &SettingsByOperation, machine: &MachineProfile) -> f64 {
+/// Seconds to run `job` on `machine`, each toolpath with the speed and passes `settings`
+/// gives it (as the writer takes them: [`super::FabPlan::settings_of`]), from rest at the
+/// machine origin.
+pub fn job_time(
+    job: &Job,
+    settings: &dyn Fn(&Toolpath) -> OperationSettings,
+    machine: &MachineProfile,
+) -> f64 {
     let mut clock = Clock {
         timeline: Timeline::new(Kinematics::of(machine), DVec2::ZERO),
         seconds: 0.0,
@@ -56,7 +62,7 @@ pub fn job_time(job: &Job, settings: &SettingsByOperation, machine: &MachineProf
             }
             group = Some(path.op);
         }
-        let s = machine.settings_for(settings, path.op);
+        let s = settings(path);
         for _ in 0..s.passes {
             for stroke in &strokes {
                 if clock.timeline.at().distance(stroke[0]) > same {

@@ -6,6 +6,7 @@ pub mod angle;
 pub mod polygon;
 pub mod polyline;
 pub mod segment;
+pub mod stroke_digits;
 pub mod triangulate;
 
 pub use glam::{DVec2, DVec3};

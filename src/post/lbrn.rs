@@ -1,5 +1,7 @@
 //! LightBurn project (`.lbrn2`): one layer (`CutSetting`) per operation carrying the
-//! material's speed, power and passes, and the job's lines as `Path` shapes.
+//! material's speed, power and passes — and one per settings override of the plan (the cells
+//! of a calibration grid, see [`super::layers`]) carrying its own — and the job's lines as
+//! `Path` shapes.
 //!
 //! Format facts followed (LightBurn 1.7, `FormatVersion="1"`, the condensed `.lbrn2` form):
 //! the root `LightBurnProject` with `AppVersion` and `FormatVersion`; each layer a
@@ -11,16 +13,20 @@
 //! `<VertList>` of `Vx y` vertices and a `<PrimList>` of `La b` lines; coordinates are
 //! millimetres with y up from the bed's front-left corner.
 //!
-//! **Perforations** are written as LightBurn perforations: each perforated crease is one line
-//! from the start of its first dash to the end of its last (the vertex clearances left out),
-//! on a layer with `perforate` on and the job's own mean dash and gap as `perfLen` and
-//! `perfSkip`, so LightBurn lays the dashes at the controller's pace.
+//! **Perforations** are written as LightBurn perforations: each perforated crease is one path
+//! along the crease from the start of its first dash to the end of its last (the vertex
+//! clearances left out): every point of every dash in order, so a curved crease keeps its
+//! shape (a bridge is drawn as the straight chord between two dashes, off the curve by at most
+//! b²/8r for a bridge b on a radius r), on a layer with `perforate` on and the layer's own
+//! mean dash and gap as `perfLen` and `perfSkip`, so LightBurn lays the dashes at the
+//! controller's pace.
 
 use std::fmt::Write as _;
 
 use glam::DVec2;
 
 use super::PostError;
+use super::layers::{Layer, layers};
 use super::number::fixed;
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
 use crate::machine::MachineProfile;
@@ -39,21 +45,14 @@ pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
         out,
         r#"<LightBurnProject AppVersion="{LIGHTBURN_APP_VERSION}" FormatVersion="1" MaterialHeight="0" MirrorX="False" MirrorY="False">"#
     );
-    let ops: Vec<Operation> = Operation::ALL
-        .into_iter()
-        .filter(|op| {
-            job.paths
-                .iter()
-                .any(|p| p.op == *op && !p.strokes.is_empty())
-        })
-        .collect();
-    for (index, &op) in ops.iter().enumerate() {
-        let paths: Vec<&Toolpath> = job.paths.iter().filter(|p| p.op == op).collect();
-        cut_setting(&mut out, plan, machine, op, index, &paths);
+    let layers = layers(plan, job);
+    for (index, l) in layers.iter().enumerate() {
+        let paths: Vec<&Toolpath> = job.paths.iter().filter(|p| l.holds(plan, p)).collect();
+        cut_setting(&mut out, plan, machine, l, index, &paths);
     }
     let mut shapes = 0;
     for path in &job.paths {
-        let Some(index) = ops.iter().position(|&o| o == path.op) else {
+        let Some(index) = super::layers::layer_of(&layers, plan, path) else {
             continue;
         };
         let lines: Vec<Vec<DVec2>> = if path.op == Operation::Perforate {
@@ -80,11 +79,12 @@ pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
     Ok(out)
 }
 
-/// The line a perforated crease runs along: first dash start to last dash end.
+/// The path a perforated crease runs along: every point of every dash in order, from the
+/// first dash's start to the last dash's end (repeated points once).
 fn perforated_line(path: &Toolpath) -> Option<Vec<DVec2>> {
-    let first = *path.strokes.first()?.first()?;
-    let last = *path.strokes.last()?.last()?;
-    (first.distance(last) > 0.0).then(|| vec![first, last])
+    let mut points: Vec<DVec2> = path.strokes.iter().flatten().copied().collect();
+    points.dedup();
+    (points.len() >= 2).then_some(points)
 }
 
 /// Mean dash length and mean gap of the perforation toolpaths, mm.
@@ -106,15 +106,17 @@ pub fn perforation_layout(paths: &[&Toolpath]) -> (f64, f64) {
     (mean(dash, dashes), mean(gap, gaps))
 }
 
+/// The `CutSetting` of layer `l` (number `index`), whose toolpaths are `paths`.
 fn cut_setting(
     out: &mut String,
     plan: &FabPlan,
     machine: &MachineProfile,
-    op: Operation,
+    l: &Layer,
     index: usize,
     paths: &[&Toolpath],
 ) {
-    let s = machine.settings_for(&plan.settings, op);
+    let op = l.op;
+    let s = l.settings(plan, Some(machine));
     let speed_mm_s = s.speed_mm_min.min(machine.max_feed_mm_min) / 60.0;
     let power = fixed(s.power.clamp(0.0, 1.0) * 100.0, DECIMALS);
     let value = |out: &mut String, key: &str, v: &str| {
@@ -122,7 +124,7 @@ fn cut_setting(
     };
     out.push_str("  <CutSetting type=\"Cut\">\n");
     value(out, "index", &index.to_string());
-    value(out, "name", op.name());
+    value(out, "name", &l.name);
     value(out, "minPower", &power);
     value(out, "maxPower", &power);
     value(out, "speed", &fixed(speed_mm_s, DECIMALS));

@@ -16,6 +16,7 @@
 mod check;
 mod dxf;
 pub mod gcode;
+pub mod layers;
 pub mod lbrn;
 mod number;
 mod style;
@@ -107,15 +108,15 @@ pub fn gcode(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
     gcode::write(plan, job, machine)
 }
 
-/// DXF of one job, one layer per operation, in machine coordinates (mm).
-///
-/// The plan is not read yet: speeds and powers stay with the laser software's layers.
+/// DXF of one job, one layer per operation (and per settings override of the plan, see
+/// [`layers`](mod@layers)), in machine coordinates (mm). Speeds and powers stay with the laser
+/// software's layers.
 ///
 /// # Errors
 /// [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
-pub fn dxf(_plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
+pub fn dxf(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
     check::job(job)?;
-    dxf::write(job, version)
+    dxf::write(plan, job, version)
 }
 
 /// LightBurn project (`.lbrn2`) of one job: one layer per operation with the material's

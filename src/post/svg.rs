@@ -7,7 +7,8 @@
 //! printed on a 0.001 mm grid.
 //!
 //! Each operation present gets a layer (`<g inkscape:groupmode="layer"
-//! inkscape:label="cut">`, in execution order, so later operations draw on top) stroked in
+//! inkscape:label="cut">`; and each settings override present one more, see
+//! [`super::layers`]), in execution order, so later operations draw on top) stroked in
 //! its LightBurn colour (see [`super::layer_style`]) with a 0.025 mm hairline and no fill;
 //! LightBurn and Inkscape import one layer per colour or group. Every stroke is one `<path>`,
 //! perforation dashes included. With `dasharray`, each perforation toolpath is instead one
@@ -19,6 +20,7 @@ use std::fmt::Write;
 use glam::DVec2;
 
 use super::number::{Grid, fixed};
+use super::layers::{Layer, layers};
 use super::{PostError, layer_style};
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
 use crate::machine::Bed;
@@ -50,11 +52,12 @@ pub fn write(plan: &FabPlan, job: &Job, bed: &Bed, dasharray: bool) -> Result<St
         flip: !bed.y_flipped,
     };
     let mut body = String::new();
-    for op in Operation::ALL {
-        let paths: Vec<&Toolpath> = job.paths.iter().filter(|p| p.op == op).collect();
-        let elements = layer_elements(&page, &paths, dasharray && op == Operation::Perforate);
+    for l in layers(plan, job) {
+        let paths: Vec<&Toolpath> = job.paths.iter().filter(|p| l.holds(plan, p)).collect();
+        let dashed = dasharray && l.op == Operation::Perforate;
+        let elements = layer_elements(&page, &paths, dashed);
         if !elements.is_empty() {
-            layer(&mut body, plan, op, &elements);
+            layer(&mut body, plan, &l, &elements);
         }
     }
     if body.is_empty() {
@@ -88,10 +91,10 @@ fn document(page: &Page, bed: &Bed, name: &str, body: &str) -> String {
     out
 }
 
-/// One layer group holding `elements`, with the operation's settings in its `<desc>`.
-fn layer(out: &mut String, plan: &FabPlan, op: Operation, elements: &[String]) {
-    let style = layer_style(op);
-    let name = op.name();
+/// One layer group holding `elements`, with the layer's settings in its `<desc>`.
+fn layer(out: &mut String, plan: &FabPlan, l: &Layer, elements: &[String]) {
+    let style = layer_style(l.op);
+    let name = l.name.as_str();
     let _ = writeln!(
         out,
         "  <g id=\"layer-{name}\" inkscape:groupmode=\"layer\" inkscape:label=\"{name}\" \
@@ -99,7 +102,7 @@ fn layer(out: &mut String, plan: &FabPlan, op: Operation, elements: &[String]) {
          stroke-linejoin=\"round\">",
         style.hex
     );
-    let s = plan.settings.get(op);
+    let s = l.settings(plan, None);
     if s.speed_mm_min.is_finite() && s.power.is_finite() {
         let (speed, power) = (fixed(s.speed_mm_min, 3), fixed(s.power * 100.0, 3));
         let passes = match s.passes {

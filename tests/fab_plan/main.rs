@@ -11,9 +11,7 @@ mod stats;
 use foldcam::fab::placement::{bed_to_machine, bounds_of, place};
 use foldcam::fab::plan::{design_limit_warnings, plan_toolpaths};
 use foldcam::fab::sides::{mirror, registration_marks, split};
-use foldcam::fab::stats::{moves, stroke_length};
 use foldcam::fab::{ContourRole, FabError, Operation, PlanOptions, Side, Toolpath};
-use foldcam::machine::motion::job_time;
 use foldcam::machine::{
     Bed, Corner, DesignLimits, Dialect, MachineProfile, Material, OperationMapping,
     OperationSettings, Perforation, SettingsByOperation,

@@ -2,58 +2,83 @@
 
 use super::*;
 
-#[test]
-fn stats_sum_lengths_pierces_and_time_exactly() {
-    let (cp, paths) = sheet(100.0, DVec2::ZERO);
-    let mut opts = PlanOptions::from_material(&material());
-    opts.margin_mm = 0.0;
-    let mat = material();
-    let m = machine(bed(Corner::BottomLeft, false));
-    let plan = plan_toolpaths(&cp, paths, &m, &mat, &opts).unwrap();
-    let s = &plan.stats;
-    let diag = 100.0 * 2f64.sqrt();
-    let want = [
-        (Operation::Score, 100.0),
-        (Operation::Perforate, diag),
-        (Operation::Cut, 400.0 * 2.0),
-    ];
-    assert_eq!(s.length_mm.len(), 3);
-    for (op, len) in want {
-        let got = s.length_mm.iter().find(|(o, _)| *o == op).unwrap().1;
-        assert!((got - len).abs() < 1e-9, "{op:?}: {got} vs {len}");
+/// Seconds to run `length` mm from rest to rest at `speed` mm/s with acceleration `accel`
+/// mm/s²: a trapezoid (L/v + v/a) when the cruise speed is reached (L ≥ v²/a), else a
+/// triangle (2 √(L/a)).
+fn rest_to_rest(length: f64, speed: f64, accel: f64) -> f64 {
+    if length >= speed * speed / accel {
+        length / speed + speed / accel
+    } else {
+        2.0 * (length / accel).sqrt()
     }
-    assert_eq!(s.pierces, 1 + 1 + 2);
-    let job = &plan.jobs[0];
-    let travel = foldcam::fab::order::travel_mm(&job.paths, DVec2::ZERO);
-    assert!((s.travel_mm - travel).abs() < 1e-9);
-    assert!(s.travel_mm <= s.naive_travel_mm + 1e-9);
-    let t = job_time(DVec2::ZERO, &moves(&job.paths, &mat.settings), &m);
-    assert!((s.time_s - t).abs() < 1e-9 && t > 0.0);
-    // Every length at its speed, passes included, plus travel at the travel feed, is a lower
-    // bound whatever the motion model adds (acceleration, cornering, pierce delays).
-    let burn: f64 = 100.0 / 3000.0 * 60.0 + diag / 1200.0 * 60.0 + 800.0 / 600.0 * 60.0;
-    assert!(t >= burn + travel / 6000.0 * 60.0 - 1e-9, "{t} < {burn}");
 }
 
 #[test]
-fn open_strokes_repeat_backwards_without_travel() {
+fn stats_match_lengths_pierces_travel_and_time_computed_by_hand() {
+    // A 50 mm square cut twice around an L-shaped score: 30 mm right, then 30 mm up.
+    let mut cp = CreasePattern::new();
+    let c = [(0.0, 0.0), (50.0, 0.0), (50.0, 50.0), (0.0, 50.0)].map(|(x, y)| DVec2::new(x, y));
+    let v: Vec<_> = c.iter().map(|&p| cp.add_vertex(p)).collect();
+    for i in 0..4 {
+        cp.add_edge(v[i], v[(i + 1) % 4], Assignment::Boundary);
+    }
+    let l = [(10.0, 10.0), (40.0, 10.0), (40.0, 40.0)].map(|(x, y)| DVec2::new(x, y));
+    let lv: Vec<_> = l.iter().map(|&p| cp.add_vertex(p)).collect();
+    let e1 = cp.add_edge(lv[0], lv[1], Assignment::Valley);
+    let e2 = cp.add_edge(lv[1], lv[2], Assignment::Valley);
+    let paths = vec![
+        Toolpath {
+            op: Operation::Score,
+            strokes: vec![l.to_vec()],
+            role: ContourRole::None,
+            container: None,
+            edges: vec![e1, e2],
+        },
+        Toolpath {
+            op: Operation::Cut,
+            strokes: vec![vec![c[0], c[1], c[2], c[3], c[0]]],
+            role: ContourRole::Outer,
+            container: None,
+            edges: (0..4).map(EdgeId::new).collect(),
+        },
+    ];
     let mut mat = material();
-    mat.settings.score.passes = 3;
-    let p = Toolpath {
-        op: Operation::Score,
-        strokes: vec![vec![
-            DVec2::new(0.0, 0.0),
-            DVec2::new(10.0, 0.0),
-            DVec2::new(10.0, 5.0),
-        ]],
-        role: ContourRole::None,
-        container: None,
-        edges: Vec::new(),
+    mat.settings.score = settings(600.0, 1); // 10 mm/s, once
+    mat.settings.cut = settings(300.0, 2); // 5 mm/s, twice
+    let mut opts = PlanOptions::from_material(&mat);
+    opts.margin_mm = 0.0;
+    // No junction deviation: the machine stops at every corner, so each move is a trapezoid
+    // from rest to rest.
+    let m = MachineProfile {
+        acceleration_mm_s2: 100.0,
+        junction_deviation_mm: 0.0,
+        travel_feed_mm_min: 6000.0,
+        ..machine(bed(Corner::BottomLeft, false))
     };
-    let mv = moves(std::slice::from_ref(&p), &mat.settings);
-    assert_eq!(mv.iter().filter(|m| m.rapid).count(), 1);
-    let burned: f64 = mv.windows(2).map(|w| w[0].to.distance(w[1].to)).sum();
-    assert!((burned - 3.0 * stroke_length(&p.strokes[0])).abs() < 1e-9);
+    let plan = plan_toolpaths(&cp, paths, &m, &mat, &opts).unwrap();
+    let job = &plan.jobs[0];
+    // The pattern sits in the bed's corner as drawn; the score comes first (cuts last) from
+    // its end nearest the origin.
+    assert_eq!(job.paths[0].strokes[0], l.to_vec());
+    let cut = &job.paths[1].strokes[0];
+    let cut_start = cut[0];
+    assert!(c.contains(&cut_start) && cut.len() == 5, "{cut:?}");
+    let s = &plan.stats;
+    assert_eq!(
+        s.length_mm,
+        vec![(Operation::Score, 60.0), (Operation::Cut, 400.0)]
+    );
+    assert_eq!(s.pierces, 1 + 2);
+    let to_score = 200f64.sqrt(); // (0, 0) to (10, 10)
+    let to_cut = (l[2] - cut_start).length();
+    assert!((s.travel_mm - (to_score + to_cut)).abs() < 1e-9, "{}", s.travel_mm);
+    let a = 100.0;
+    let time = rest_to_rest(to_score, 100.0, a)
+        + 2.0 * rest_to_rest(30.0, 10.0, a)
+        + rest_to_rest(to_cut, 100.0, a)
+        + 8.0 * rest_to_rest(50.0, 5.0, a);
+    // By the numbers: 0.7521 + 2 × 3.1 + travel + 8 × 10.05 s.
+    assert!((s.time_s - time).abs() < 1e-9, "{} vs {time}", s.time_s);
 }
 
 #[test]

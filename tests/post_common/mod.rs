@@ -95,6 +95,7 @@ pub fn plan(job: Job) -> FabPlan {
             flat: None,
             boundary: None,
         },
+        overrides: Vec::new(),
     }
 }
 

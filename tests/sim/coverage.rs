@@ -88,6 +88,7 @@ fn plan(job: Job) -> FabPlan {
             flat: None,
             boundary: None,
         },
+        overrides: Vec::new(),
     }
 }
 

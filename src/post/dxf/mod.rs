@@ -9,7 +9,8 @@
 //! groups and the two layouts). The R12 file has no handles, no `$INSUNITS` (R12 has none)
 //! and draws with `LINE` (two-point strokes) and `POLYLINE`/`VERTEX`/`SEQEND`.
 //!
-//! One layer per operation present, named and coloured by [`super::layer_style`]. Every
+//! One layer per operation present (and per settings override, see [`super::layers`]), named
+//! as there and coloured by [`super::layer_style`] of its operation. Every
 //! stroke is one entity (so perforation dashes stay separate); a stroke whose ends meet is
 //! written closed. Coordinates are machine coordinates in mm, printed on a 1e-6 mm grid;
 //! repeated points are dropped and strokes of zero length skipped.
@@ -21,8 +22,8 @@ mod writer;
 use glam::DVec2;
 
 use super::number::Grid;
-use super::{DxfVersion, PostError};
-use crate::fab::{Job, Operation};
+use super::{DxfVersion, PostError, layer_style, layers};
+use crate::fab::{FabPlan, Job};
 
 /// Decimals of printed DXF coordinates (a 1e-6 mm grid).
 const DXF_DECIMALS: usize = 6;
@@ -30,41 +31,69 @@ const DXF_DECIMALS: usize = 6;
 /// One stroke ready to draw: grid counts, repeated points removed, closing point dropped.
 #[derive(Clone, Debug, PartialEq)]
 struct Shape {
-    /// The operation (its layer).
-    op: Operation,
+    /// Index of its layer in the document's [`LayerName`]s.
+    layer: usize,
     /// Vertices in grid counts, at least two.
     points: Vec<(i64, i64)>,
     /// The last vertex joins the first.
     closed: bool,
 }
 
+/// A DXF layer: its name and AutoCAD Color Index.
+#[derive(Clone, Debug, PartialEq)]
+struct LayerName {
+    name: String,
+    aci: u8,
+}
+
 /// The job's drawing in `version`.
-pub fn write(job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
+pub fn write(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
     let grid = Grid::decimal(DXF_DECIMALS);
-    let shapes = shapes(job, &grid);
+    let layers = layers::layers(plan, job);
+    let shapes = shapes(plan, job, &layers, &grid);
     if shapes.is_empty() {
         return Err(PostError::EmptyJob {
             job: job.name.clone(),
         });
     }
+    // Only the layers some shape is drawn on (a layer's strokes may all round away).
+    let used: Vec<usize> = (0..layers.len())
+        .filter(|&i| shapes.iter().any(|s| s.layer == i))
+        .collect();
+    let names: Vec<LayerName> = used
+        .iter()
+        .map(|&i| LayerName {
+            name: layers[i].dxf_name.clone(),
+            aci: layer_style(layers[i].op).aci,
+        })
+        .collect();
+    let shapes: Vec<Shape> = shapes
+        .into_iter()
+        .filter_map(|mut s| {
+            s.layer = used.iter().position(|&i| i == s.layer)?;
+            Some(s)
+        })
+        .collect();
     let text = match version {
-        DxfVersion::R2000 => r2000::document(&shapes, &grid),
-        DxfVersion::R12 => r12::document(&shapes, &grid),
+        DxfVersion::R2000 => r2000::document(&shapes, &names, &grid),
+        DxfVersion::R12 => r12::document(&shapes, &names, &grid),
     };
     Ok(text.into_bytes())
 }
 
-/// Every stroke of the job with a length, in order.
-fn shapes(job: &Job, grid: &Grid) -> Vec<Shape> {
-    let strokes = job
-        .paths
-        .iter()
-        .flat_map(|p| p.strokes.iter().map(|s| (p.op, s)));
-    strokes.filter_map(|(op, s)| shape(op, s, grid)).collect()
+/// Every stroke of the job with a length, in order, on its layer.
+fn shapes(plan: &FabPlan, job: &Job, layers: &[layers::Layer], grid: &Grid) -> Vec<Shape> {
+    let strokes = job.paths.iter().flat_map(|p| {
+        let layer = layers::layer_of(layers, plan, p);
+        p.strokes.iter().map(move |s| (layer, s))
+    });
+    strokes
+        .filter_map(|(layer, s)| shape(layer?, s, grid))
+        .collect()
 }
 
 /// `stroke` on the grid, or `None` when it has no length there.
-fn shape(op: Operation, stroke: &[DVec2], grid: &Grid) -> Option<Shape> {
+fn shape(layer: usize, stroke: &[DVec2], grid: &Grid) -> Option<Shape> {
     let mut points: Vec<(i64, i64)> = stroke
         .iter()
         .map(|p| (grid.snap(p.x), grid.snap(p.y)))
@@ -77,15 +106,11 @@ fn shape(op: Operation, stroke: &[DVec2], grid: &Grid) -> Option<Shape> {
     if closed {
         points.pop();
     }
-    Some(Shape { op, points, closed })
-}
-
-/// The operations drawn, in [`Operation::ALL`] order.
-fn operations(shapes: &[Shape]) -> Vec<Operation> {
-    Operation::ALL
-        .into_iter()
-        .filter(|op| shapes.iter().any(|s| s.op == *op))
-        .collect()
+    Some(Shape {
+        layer,
+        points,
+        closed,
+    })
 }
 
 /// Lower-left and upper-right corners of all shapes, grid counts.

@@ -1,19 +1,18 @@
 //! DXF R12 (AC1009): no handles, no `$INSUNITS`; `LINE` and `POLYLINE` entities only.
 
-use super::super::layer_style;
 use super::super::number::Grid;
 use super::writer::Pairs;
-use super::{Shape, extents, operations};
+use super::{LayerName, Shape, extents};
 
 /// The whole R12 file.
-pub fn document(shapes: &[Shape], grid: &Grid) -> String {
+pub fn document(shapes: &[Shape], names: &[LayerName], grid: &Grid) -> String {
     let mut out = Pairs::new(grid);
     header(&mut out, shapes);
-    tables(&mut out, shapes);
+    tables(&mut out, names);
     out.section("BLOCKS").end_section();
     out.section("ENTITIES");
     for shape in shapes {
-        entity(&mut out, shape);
+        entity(&mut out, shape, names);
     }
     out.end_section();
     out.finish()
@@ -28,8 +27,8 @@ fn header(out: &mut Pairs, shapes: &[Shape]) {
     out.end_section();
 }
 
-/// The continuous line type and the layers: `0` and one per operation.
-fn tables(out: &mut Pairs, shapes: &[Shape]) {
+/// The continuous line type and the layers: `0` and the job's.
+fn tables(out: &mut Pairs, names: &[LayerName]) {
     out.section("TABLES");
     out.pair(0, "TABLE").pair(2, "LTYPE").pair(70, 1);
     out.pair(0, "LTYPE").pair(2, "CONTINUOUS").pair(70, 0);
@@ -38,14 +37,12 @@ fn tables(out: &mut Pairs, shapes: &[Shape]) {
         .pair(73, 0)
         .pair(40, "0.0");
     out.pair(0, "ENDTAB");
-    let ops = operations(shapes);
     out.pair(0, "TABLE")
         .pair(2, "LAYER")
-        .pair(70, ops.len() + 1);
+        .pair(70, names.len() + 1);
     layer(out, "0", 7);
-    for op in ops {
-        let style = layer_style(op);
-        layer(out, style.dxf_name, style.aci);
+    for l in names {
+        layer(out, &l.name, l.aci);
     }
     out.pair(0, "ENDTAB");
     out.end_section();
@@ -58,8 +55,8 @@ fn layer(out: &mut Pairs, name: &str, aci: u8) {
 }
 
 /// A two-point open stroke as `LINE`, anything else as `POLYLINE`.
-fn entity(out: &mut Pairs, shape: &Shape) {
-    let layer = layer_style(shape.op).dxf_name;
+fn entity(out: &mut Pairs, shape: &Shape, names: &[LayerName]) {
+    let layer = names[shape.layer].name.as_str();
     if let ([a, b], false) = (shape.points.as_slice(), shape.closed) {
         out.pair(0, "LINE").pair(8, layer);
         out.point3(10, *a).point3(11, *b);

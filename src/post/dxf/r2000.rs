@@ -1,12 +1,12 @@
 //! DXF R2000 (AC1015): handles and owners for every table, record, block and object.
 //!
-//! Handles are fixed for the structure (below 0x30) and counted up from [`FIRST_ENTITY`] for
+//! Handles are fixed for the structure (below 0x20), counted up from [`FIRST_LAYER`] for the
+//! layers and from [`FIRST_ENTITY`] (or past the last layer, with more than 15 layers) for
 //! the entities, so `$HANDSEED` is known before the header is written.
 
-use super::super::layer_style;
 use super::super::number::Grid;
 use super::writer::Pairs;
-use super::{Shape, extents, operations};
+use super::{LayerName, Shape, extents};
 
 const VPORT_TABLE: u32 = 0x1;
 const LTYPE_TABLE: u32 = 0x2;
@@ -40,16 +40,22 @@ const FIRST_LAYER: u32 = 0x20;
 /// The first entity; the rest follow.
 const FIRST_ENTITY: u32 = 0x30;
 
+/// The handle of the first entity: [`FIRST_ENTITY`], or the one after the last layer.
+fn first_entity(names: &[LayerName]) -> u32 {
+    (FIRST_LAYER + 1 + names.len() as u32).max(FIRST_ENTITY)
+}
+
 /// The whole R2000 file.
-pub fn document(shapes: &[Shape], grid: &Grid) -> String {
+pub fn document(shapes: &[Shape], names: &[LayerName], grid: &Grid) -> String {
     let mut out = Pairs::new(grid);
-    header(&mut out, shapes);
+    let first = first_entity(names);
+    header(&mut out, shapes, first);
     out.section("CLASSES").end_section();
-    tables(&mut out, shapes);
+    tables(&mut out, names);
     blocks(&mut out);
     out.section("ENTITIES");
     for (i, shape) in shapes.iter().enumerate() {
-        entity(&mut out, shape, FIRST_ENTITY + i as u32);
+        entity(&mut out, shape, names, first + i as u32);
     }
     out.end_section();
     objects(&mut out);
@@ -57,11 +63,11 @@ pub fn document(shapes: &[Shape], grid: &Grid) -> String {
 }
 
 /// Version, next handle, units (4 = mm), metric, extents.
-fn header(out: &mut Pairs, shapes: &[Shape]) {
+fn header(out: &mut Pairs, shapes: &[Shape], first_entity: u32) {
     let (lo, hi) = extents(shapes);
     out.section("HEADER").pair(9, "$ACADVER").pair(1, "AC1015");
     out.pair(9, "$HANDSEED")
-        .handle(5, FIRST_ENTITY + shapes.len() as u32);
+        .handle(5, first_entity + shapes.len() as u32);
     out.pair(9, "$INSUNITS").pair(70, 4);
     out.pair(9, "$MEASUREMENT").pair(70, 1);
     out.pair(9, "$EXTMIN").point3(10, lo);
@@ -70,7 +76,7 @@ fn header(out: &mut Pairs, shapes: &[Shape]) {
 }
 
 /// The nine symbol tables.
-fn tables(out: &mut Pairs, shapes: &[Shape]) {
+fn tables(out: &mut Pairs, names: &[LayerName]) {
     out.section("TABLES");
     table(out, "VPORT", VPORT_TABLE, 1);
     vport(out);
@@ -78,7 +84,7 @@ fn tables(out: &mut Pairs, shapes: &[Shape]) {
     table(out, "LTYPE", LTYPE_TABLE, 3);
     linetypes(out);
     out.pair(0, "ENDTAB");
-    layers(out, shapes);
+    layers(out, names);
     table(out, "STYLE", STYLE_TABLE, 1);
     style(out);
     out.pair(0, "ENDTAB");
@@ -148,14 +154,12 @@ fn linetypes(out: &mut Pairs) {
     }
 }
 
-/// Layer `0` and one per operation present.
-fn layers(out: &mut Pairs, shapes: &[Shape]) {
-    let ops = operations(shapes);
-    table(out, "LAYER", LAYER_TABLE, ops.len() + 1);
+/// Layer `0` and the job's layers.
+fn layers(out: &mut Pairs, names: &[LayerName]) {
+    table(out, "LAYER", LAYER_TABLE, names.len() + 1);
     layer(out, FIRST_LAYER, "0", 7);
-    for (i, op) in ops.into_iter().enumerate() {
-        let style = layer_style(op);
-        layer(out, FIRST_LAYER + 1 + i as u32, style.dxf_name, style.aci);
+    for (i, l) in names.iter().enumerate() {
+        layer(out, FIRST_LAYER + 1 + i as u32, &l.name, l.aci);
     }
     out.pair(0, "ENDTAB");
 }
@@ -264,12 +268,12 @@ fn blocks(out: &mut Pairs) {
 }
 
 /// One stroke as a light-weight polyline in model space.
-fn entity(out: &mut Pairs, shape: &Shape, handle: u32) {
+fn entity(out: &mut Pairs, shape: &Shape, names: &[LayerName], handle: u32) {
     out.pair(0, "LWPOLYLINE")
         .handle(5, handle)
         .handle(330, MODEL_RECORD);
     out.pair(100, "AcDbEntity")
-        .pair(8, layer_style(shape.op).dxf_name);
+        .pair(8, names[shape.layer].name.as_str());
     out.pair(100, "AcDbPolyline").pair(90, shape.points.len());
     out.pair(70, u8::from(shape.closed)).pair(43, "0.0");
     for &p in &shape.points {

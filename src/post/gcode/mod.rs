@@ -102,9 +102,53 @@ pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
     let grid = check::machine(machine, flavour.uses_power(), flavour.travel_sets_feed())?;
     check::job(job)?;
     for path in &job.paths {
-        check::settings(path.op, &plan.settings.get(path.op), flavour.uses_power())?;
+        check::settings(
+            path.op,
+            &plan.settings_of(path, machine),
+            flavour.uses_power(),
+        )?;
     }
     program::write(plan, job, machine, flavour.as_ref(), grid)
+}
+
+/// A framing job for `job` on `machine` (LightBurn's Frame): the job's bounding box
+/// ([`crate::fab::frame::outline`]) traced from its lower-left corner counter-clockwise, with
+/// the tool off (travel moves only: no beam, the pen up) when `power` is 0 or the machine is a
+/// pen tool, else burned once at `power` (a fraction of the machine's range) at the
+/// material's `mark` speed. Header and trailer as in [`write`].
+///
+/// # Errors
+/// As [`write`]; [`PostError::BadSetting`] for a power outside 0..=1.
+pub fn frame(
+    plan: &FabPlan,
+    job: &Job,
+    machine: &MachineProfile,
+    power: f64,
+) -> Result<String, PostError> {
+    let flavour = flavour(machine)?;
+    let grid = check::machine(machine, flavour.uses_power(), flavour.travel_sets_feed())?;
+    check::job(job)?;
+    let Some(outline) = crate::fab::frame::outline(job) else {
+        return Err(PostError::EmptyJob {
+            job: job.name.clone(),
+        });
+    };
+    let lit = (power > 0.0 && !machine.pen_tool()).then(|| crate::machine::OperationSettings {
+        power,
+        passes: 1,
+        ..plan.settings.mark
+    });
+    if let Some(s) = &lit {
+        check::settings(crate::fab::Operation::Mark, s, flavour.uses_power())?;
+    } else if !(0.0..=1.0).contains(&power) {
+        return Err(PostError::BadSetting {
+            op: "frame",
+            key: "power",
+            value: power,
+            expected: "a fraction from 0 to 1",
+        });
+    }
+    program::write_frame(job, &outline, lit, machine, flavour.as_ref(), grid)
 }
 
 /// The writer for the machine's dialect and kind.

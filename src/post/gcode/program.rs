@@ -6,7 +6,7 @@ use super::super::PostError;
 use super::super::number::{Grid, fixed};
 use super::Flavour;
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
-use crate::machine::MachineProfile;
+use crate::machine::{MachineProfile, OperationSettings};
 use crate::machine::control::AIR_OFF;
 
 /// Units and distance mode, written once at the top of every program.
@@ -82,7 +82,7 @@ pub fn write(
     p.header(job, machine);
     let mut group = None;
     for path in &job.paths {
-        let burn = burn(plan, path.op, machine);
+        let burn = burn(plan.settings_of(path, machine), machine);
         p.toolpath(path, &burn, machine, &mut group);
     }
     if p.burned == 0 {
@@ -94,9 +94,52 @@ pub fn write(
     Ok(p.lines.join("\n") + "\n")
 }
 
-/// Feed and power of `op` on `machine`.
-fn burn(plan: &FabPlan, op: Operation, machine: &MachineProfile) -> Burn {
-    let s = machine.settings_for(&plan.settings, op);
+/// The program tracing `outline` for framing (see [`super::frame`]): the header, a travel to
+/// its first point, then its points burned at `lit` (speed and power; one pass) or, when
+/// `lit` is `None`, visited with travel moves (tool off), then the trailer.
+pub fn write_frame(
+    job: &Job,
+    outline: &[DVec2],
+    lit: Option<OperationSettings>,
+    machine: &MachineProfile,
+    flavour: &dyn Flavour,
+    grid: Grid,
+) -> Result<String, PostError> {
+    let mut p = Program {
+        lines: Vec::new(),
+        flavour,
+        grid,
+        at: None,
+        feed: None,
+        burned: 0,
+        travel_feed: if flavour.travel_sets_feed() {
+            format!(" F{}", travel_feed(machine))
+        } else {
+            String::new()
+        },
+        air: false,
+    };
+    p.header(job, machine);
+    let Some(points) = p.snap(outline) else {
+        return Err(PostError::EmptyJob {
+            job: job.name.clone(),
+        });
+    };
+    p.lines.push(flavour.comment("frame: the job's bounding box"));
+    match lit {
+        Some(s) => p.stroke(&points, &burn(s, machine)),
+        None => {
+            for &q in &points {
+                p.travel(q);
+            }
+        }
+    }
+    p.trailer(machine);
+    Ok(p.lines.join("\n") + "\n")
+}
+
+/// Feed and power of settings `s` on `machine`.
+fn burn(s: OperationSettings, machine: &MachineProfile) -> Burn {
     let feed = s.speed_mm_min.min(machine.max_feed_mm_min);
     let power = machine.power.min + s.power * (machine.power.max - machine.power.min);
     Burn {
