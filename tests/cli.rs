@@ -326,7 +326,12 @@ fn frame_option_reads_a_later_frame_with_inheritance() {
     assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("multi.fold"));
     let o = foldcam(
-        &["check", &example("preliminary-base.cp"), "--fold-frame", "1"],
+        &[
+            "check",
+            &example("preliminary-base.cp"),
+            "--fold-frame",
+            "1",
+        ],
         dir.path(),
     );
     assert_eq!(o.status.code(), Some(2), "--fold-frame on a .cp file");

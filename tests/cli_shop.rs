@@ -111,14 +111,24 @@ fn cut_frame_writes_a_dark_outline_job_and_refuses_drawings() {
     let ok = run_in(dir.path(), &["generate", "miura", "-o", "m.fold"]);
     assert!(ok.status.success());
     let args = ["cut", "m.fold", "-m", "grbl-diode", "-x", "card-300gsm"];
-    let out = run_in(dir.path(), &[&args[..], &["-o", "f.gcode", "--frame"]].concat());
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = run_in(
+        dir.path(),
+        &[&args[..], &["-o", "f.gcode", "--frame"][..]].concat(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(String::from_utf8_lossy(&out.stdout).contains("frame front"));
     let text = std::fs::read_to_string(dir.path().join("f.gcode")).expect("written");
     let machine = load_machine("grbl-diode").expect("shipped");
     let run = foldcam::sim::run(&text, &machine).expect("readable");
     assert!(run.is_clean() && run.burns.is_empty() && run.travels.len() >= 5);
-    let out = run_in(dir.path(), &[&args[..], &["-o", "f.svg", "--frame"]].concat());
+    let out = run_in(
+        dir.path(),
+        &[&args[..], &["-o", "f.svg", "--frame"][..]].concat(),
+    );
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--frame writes G-code"));
     assert!(!dir.path().join("f.svg").exists());
@@ -132,14 +142,18 @@ fn testgrid_writes_every_format_and_refuses_values_out_of_range() {
     let dir = tempfile::tempdir().expect("temp dir");
     let base = ["testgrid", "-m", "marlin-laser", "-x", "paper-160gsm"];
     for file in ["g.gcode", "g.dxf", "g.svg", "g.lbrn2"] {
-        let out = run_in(dir.path(), &[&base[..], &["-o", file]].concat());
-        assert!(out.status.success(), "{file}: {}", String::from_utf8_lossy(&out.stderr));
+        let out = run_in(dir.path(), &[&base[..], &["-o", file][..]].concat());
+        assert!(
+            out.status.success(),
+            "{file}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         assert!(String::from_utf8_lossy(&out.stdout).contains("27 cells"));
         assert!(dir.path().join(file).exists());
     }
     let out = run_in(
         dir.path(),
-        &[&base[..], &["-o", "bad.gcode", "--power", "0.5,2"]].concat(),
+        &[&base[..], &["-o", "bad.gcode", "--power", "0.5,2"][..]].concat(),
     );
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("power"));
@@ -163,10 +177,27 @@ fn papercraft_jobs_mark_edge_numbers_where_the_material_can_mark() {
     let card = load_material("card-300gsm").expect("shipped");
     let out = run_in(
         dir.path(),
-        &["papercraft", &vase, "-o", "v.fold", "--job", "v.gcode", "-m", "grbl-diode", "-x", "card-300gsm"],
+        &[
+            "papercraft",
+            &vase,
+            "-o",
+            "v.fold",
+            "--job",
+            "v.gcode",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+        ],
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let sheet = foldcam::formats::load(&dir.path().join("v.fold")).expect("sheet").pattern;
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sheet = foldcam::formats::load(&dir.path().join("v.fold"))
+        .expect("sheet")
+        .pattern;
     let labels: f64 = sheet
         .edge_ids()
         .filter(|&e| sheet.edges[e.index()].assignment == foldcam::pattern::Assignment::Flat)
@@ -177,7 +208,10 @@ fn papercraft_jobs_mark_edge_numbers_where_the_material_can_mark() {
     let run = foldcam::sim::run(&text, &machine).expect("readable");
     assert!(run.is_clean());
     let marked = burned_at(&run, card.settings.mark.power);
-    assert!((marked - labels).abs() < 0.01 * labels, "marked {marked} of {labels} mm");
+    assert!(
+        (marked - labels).abs() < 0.01 * labels,
+        "marked {marked} of {labels} mm"
+    );
     // The same card with no mark power cannot show them: none are burned.
     let toml = std::fs::read_to_string(repo("machines/materials/card-300gsm.toml")).expect("toml");
     let at = toml.find("[settings.mark]").expect("mark settings");
@@ -186,17 +220,35 @@ fn papercraft_jobs_mark_edge_numbers_where_the_material_can_mark() {
     std::fs::write(dir.path().join("dark.toml"), dark).expect("write");
     let out = run_in(
         dir.path(),
-        &["papercraft", &vase, "-o", "w.fold", "--job", "w.gcode", "-m", "grbl-diode", "-x", "dark.toml"],
+        &[
+            "papercraft",
+            &vase,
+            "-o",
+            "w.fold",
+            "--job",
+            "w.gcode",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "dark.toml",
+        ],
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(String::from_utf8_lossy(&out.stderr).contains("edge numbers left out"));
     let text = std::fs::read_to_string(dir.path().join("w.gcode")).expect("job");
     assert!(!text.contains("; mark"), "no mark layer");
     let run = foldcam::sim::run(&text, &machine).expect("readable");
     assert!(run.is_clean());
     let cut_and_score = run.burn_length_mm;
-    let first = foldcam::sim::run(&std::fs::read_to_string(dir.path().join("v.gcode")).expect("job"), &machine)
-        .expect("readable")
-        .burn_length_mm;
+    let first = foldcam::sim::run(
+        &std::fs::read_to_string(dir.path().join("v.gcode")).expect("job"),
+        &machine,
+    )
+    .expect("readable")
+    .burn_length_mm;
     assert!((first - cut_and_score - labels).abs() < 0.01 * labels);
 }

@@ -84,7 +84,11 @@ fn testgrid_runs_clean_on_every_shipped_machine_with_each_cells_power_and_speed(
                 assert!((burn.feed_mm_min - feed).abs() < 1e-6, "{name} feed");
                 if !plotter {
                     let f = run.power_fraction(burn.power);
-                    assert!((f - cell.power).abs() < 1e-6, "{name} cell {} power {f}", cell.number);
+                    assert!(
+                        (f - cell.power).abs() < 1e-6,
+                        "{name} cell {} power {f}",
+                        cell.number
+                    );
                 }
             }
             // The labels name the values.
@@ -102,7 +106,9 @@ fn testgrid_runs_clean_on_every_shipped_machine_with_each_cells_power_and_speed(
             let mark = run
                 .burns
                 .iter()
-                .filter(|b| (run.power_fraction(b.power) - material.settings.mark.power).abs() < 1e-6)
+                .filter(|b| {
+                    (run.power_fraction(b.power) - material.settings.mark.power).abs() < 1e-6
+                })
                 .count();
             assert!(mark > grid.cells.len(), "{name}: {mark} label strokes");
         }
@@ -160,8 +166,14 @@ fn testgrid_lightburn_project_has_one_cut_setting_per_cell_with_its_values() {
             // The layer's own dash and gap: the asked values, kerf taken into account, within
             // the layout's stretch to whole dashes.
             let (dash, gap) = (num(*cs, "perfLen"), num(*cs, "perfSkip"));
-            assert!((dash - (cell.dash_mm - kerf)).abs() < 0.1 * cell.dash_mm, "{dash}");
-            assert!((gap - (cell.bridge_mm + kerf)).abs() < 0.15 * cell.bridge_mm + 0.05, "{gap}");
+            assert!(
+                (dash - (cell.dash_mm - kerf)).abs() < 0.1 * cell.dash_mm,
+                "{dash}"
+            );
+            assert!(
+                (gap - (cell.bridge_mm + kerf)).abs() < 0.15 * cell.bridge_mm + 0.05,
+                "{gap}"
+            );
             let index = value(*cs, "index");
             let shapes = doc
                 .root_element()
@@ -170,14 +182,23 @@ fn testgrid_lightburn_project_has_one_cut_setting_per_cell_with_its_values() {
                 .count();
             assert_eq!(shapes, 1, "{layer}: one perforated crease");
         }
+        // A grid with more cells than LightBurn has colour layers is refused, not truncated.
+        let mut many = TestGridOptions::around(&material, &machine);
+        many.dash_mm = vec![1.0, 1.5, 2.0, 2.5];
+        many.bridge_mm = vec![0.4, 0.5, 0.6, 0.7];
+        many.power = vec![0.6, 0.7];
+        let big = test_grid(&machine, &material, &many).expect("32 cells");
+        let err = post::lbrn2(&big.plan, &big.plan.jobs[0], &machine).expect_err("too many");
+        assert!(
+            matches!(err, post::PostError::TooManyLayers { layers: 34, .. }),
+            "{err}"
+        );
         for op in ["cut", "mark"] {
             let cs = settings
                 .iter()
                 .find(|c| value(**c, "name") == op)
                 .unwrap_or_else(|| panic!("{op} missing"));
-            let s = material
-                .settings
-                .get(Operation::from_name(op).expect("op"));
+            let s = material.settings.get(Operation::from_name(op).expect("op"));
             assert!((num(*cs, "maxPower") - 100.0 * s.power).abs() < 1e-3);
         }
     }
@@ -192,7 +213,8 @@ fn testgrid_dxf_and_svg_give_every_cell_a_layer_with_unique_handles() {
     let n = grid.cells.len();
     assert!(n > 16, "more layers than the fixed handle block holds");
     for version in [DxfVersion::R2000, DxfVersion::R12] {
-        let text = String::from_utf8(post::dxf(&grid.plan, job, version).expect("dxf")).expect("text");
+        let text =
+            String::from_utf8(post::dxf(&grid.plan, job, version).expect("dxf")).expect("text");
         let lines: Vec<&str> = text.lines().map(str::trim).collect();
         let pairs: Vec<(&str, &str)> = lines.chunks(2).map(|c| (c[0], c[1])).collect();
         let layer_records = pairs.iter().filter(|p| **p == ("0", "LAYER")).count();
@@ -200,8 +222,14 @@ fn testgrid_dxf_and_svg_give_every_cell_a_layer_with_unique_handles() {
         assert_eq!(layer_records, n + 3, "{version:?}");
         for cell in &grid.cells {
             let layer = format!("PERFORATE-CELL-{}", cell.number);
-            assert!(pairs.contains(&("2", layer.as_str())), "{version:?}: {layer}");
-            assert!(pairs.contains(&("8", layer.as_str())), "{version:?}: {layer} unused");
+            assert!(
+                pairs.contains(&("2", layer.as_str())),
+                "{version:?}: {layer}"
+            );
+            assert!(
+                pairs.contains(&("8", layer.as_str())),
+                "{version:?}: {layer} unused"
+            );
         }
         if version == DxfVersion::R2000 {
             let mut handles: Vec<&str> = pairs.iter().filter(|p| p.0 == "5").map(|p| p.1).collect();
@@ -249,25 +277,34 @@ fn frames_trace_exactly_the_jobs_bounds_with_the_tool_off_or_at_the_frame_power(
         let real = sim::run(&post::gcode(&p, job, &machine).expect("job"), &machine).expect("sim");
         let (lo, hi) = burned_box(&real);
         let corners = [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y), lo];
-        let dark = sim::run(&post::gcode::frame(&p, job, &machine, 0.0).expect("frame"), &machine)
-            .expect("sim");
+        let dark = sim::run(
+            &post::gcode::frame(&p, job, &machine, 0.0).expect("frame"),
+            &machine,
+        )
+        .expect("sim");
         assert!(dark.is_clean(), "{name}: {:?}", dark.violations);
         assert!(dark.burns.is_empty(), "{name}: the frame burned");
         let visited: Vec<DVec2> = dark.travels.iter().map(|t| t.to).collect();
-        let traced = visited.windows(5).any(|w| {
-            w.iter().zip(&corners).all(|(a, b)| a.distance(*b) <= tol)
-        });
+        let traced = visited
+            .windows(5)
+            .any(|w| w.iter().zip(&corners).all(|(a, b)| a.distance(*b) <= tol));
         assert!(traced, "{name}: {visited:?} does not trace {corners:?}");
         if machine.kind == MachineKind::Plotter {
             continue;
         }
-        let lit = sim::run(&post::gcode::frame(&p, job, &machine, 0.05).expect("frame"), &machine)
-            .expect("sim");
+        let lit = sim::run(
+            &post::gcode::frame(&p, job, &machine, 0.05).expect("frame"),
+            &machine,
+        )
+        .expect("sim");
         assert!(lit.is_clean(), "{name}: {:?}", lit.violations);
         let (llo, lhi) = burned_box(&lit);
         assert!(llo.distance(lo) <= tol && lhi.distance(hi) <= tol, "{name}");
         let perimeter = 2.0 * ((hi.x - lo.x) + (hi.y - lo.y));
-        assert!((lit.burn_length_mm - perimeter).abs() <= 4.0 * tol, "{name}");
+        assert!(
+            (lit.burn_length_mm - perimeter).abs() <= 4.0 * tol,
+            "{name}"
+        );
         for b in &lit.burns {
             assert!((lit.power_fraction(b.power) - 0.05).abs() < 1e-6, "{name}");
         }
@@ -322,7 +359,10 @@ fn lightburn_perforations_follow_a_curved_crease() {
     let length: f64 = verts.windows(2).map(|w| w[0].distance(w[1])).sum();
     let arc = std::f64::consts::PI * r;
     let clearance = material.perforation.vertex_clearance_mm;
-    assert!(length > arc - 2.0 * clearance - 2.0 * material.perforation.cut_mm, "{length}");
+    assert!(
+        length > arc - 2.0 * clearance - 2.0 * material.perforation.cut_mm,
+        "{length}"
+    );
     assert!(length < arc, "{length}");
 }
 

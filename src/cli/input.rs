@@ -69,7 +69,10 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
 
 fn load_frame(path: &Path, n: usize) -> Result<Imported> {
     if formats::Format::from_path(path) != Some(formats::Format::Fold) {
-        bail!("{}: --fold-frame applies to FOLD files only", path.display());
+        bail!(
+            "{}: --fold-frame applies to FOLD files only",
+            path.display()
+        );
     }
     let text = formats::read_text(path)?;
     let imported = formats::fold::read_frame_str(&text, n)

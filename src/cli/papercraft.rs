@@ -4,12 +4,12 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow};
-use foldcam::fab::operations::label_operation;
-use foldcam::fab::{PlanOptions, plan};
-use foldcam::machine::{MachineProfile, Material};
 use foldcam::design::papercraft::ReferenceMesh;
 use foldcam::design::papercraft::design::parse_design;
+use foldcam::fab::operations::label_operation;
+use foldcam::fab::{PlanOptions, plan};
 use foldcam::formats::{OutputSet, read_text};
+use foldcam::machine::{MachineProfile, Material};
 use foldcam::mesh::read_mesh;
 use foldcam::render::{PreviewOptions, preview_png};
 
@@ -147,8 +147,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
     }
     let mut plans = Vec::new();
-    if let (Some(job), Some(machine), Some(material)) = (&args.job, &args.machine, &args.material)
-    {
+    if let (Some(job), Some(machine), Some(material)) = (&args.job, &args.machine, &args.material) {
         let (m, x, o) = job_options(&args, machine, material)?;
         for (s, cp) in made.sheets.iter().enumerate() {
             let sheet = sheet_path(job, s);

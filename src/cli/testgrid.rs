@@ -138,5 +138,9 @@ pub fn run(args: Args) -> Result<Outcome> {
             short_number(c.speed_mm_min)
         );
     }
+    println!(
+        "estimated time {:.1} s (the simulated machine's model)",
+        grid.plan.stats.time_s
+    );
     Ok(Outcome::Done)
 }

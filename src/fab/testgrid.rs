@@ -160,12 +160,7 @@ impl TestGridOptions {
         let p = &material.perforation;
         // As the machine takes them: a plotter draws at the plot settings.
         let s = machine.settings_for(&material.settings, Operation::Perforate);
-        let dash_mm = spread(
-            (p.cut_mm / 2.0).max(p.min_dash_mm),
-            p.cut_mm * 1.5,
-            3,
-            0.01,
-        );
+        let dash_mm = spread((p.cut_mm / 2.0).max(p.min_dash_mm), p.cut_mm * 1.5, 3, 0.01);
         let bridge_mm = spread(
             (p.bridge_mm / 2.0).max(p.min_web_mm),
             p.bridge_mm * 1.5,
@@ -205,7 +200,12 @@ impl TestGridOptions {
             ("dash", &self.dash_mm, false, "a positive length in mm"),
             ("bridge", &self.bridge_mm, false, "a positive length in mm"),
             ("power", &self.power, true, "a fraction from 0 to 1"),
-            ("speed", &self.speed_mm_min, false, "a positive speed in mm/min"),
+            (
+                "speed",
+                &self.speed_mm_min,
+                false,
+                "a positive speed in mm/min",
+            ),
         ];
         for (what, values, fraction, expected) in lists {
             let ok = |v: f64| {
@@ -226,10 +226,7 @@ impl TestGridOptions {
                 return Err(bad(format!("{v}: expected {expected}")));
             }
         }
-        for (what, v) in [
-            ("crease", self.crease_mm),
-            ("label height", self.label_mm),
-        ] {
+        for (what, v) in [("crease", self.crease_mm), ("label height", self.label_mm)] {
             if !(positive(v) && v <= 1000.0) {
                 return Err(TestGridError::Values {
                     what,
@@ -243,10 +240,8 @@ impl TestGridOptions {
                 message: format!("{}: expected a length of at least 0 mm", self.margin_mm),
             });
         }
-        let cells = self.power.len()
-            * self.speed_mm_min.len()
-            * self.dash_mm.len()
-            * self.bridge_mm.len();
+        let cells =
+            self.power.len() * self.speed_mm_min.len() * self.dash_mm.len() * self.bridge_mm.len();
         if cells > MAX_CELLS {
             return Err(TestGridError::TooManyCells { cells });
         }
@@ -429,12 +424,13 @@ fn cell_pattern(
             });
         }
         let y = LABEL_INSET_MM + (1 - line) as f64 * (label_mm + LABEL_LEADING_MM);
-        let strokes = stroke_digits::text_strokes(s, at(LABEL_INSET_MM, y), label_mm).map_err(
-            |c| TestGridError::Values {
-                what: "label",
-                message: format!("{c:?} cannot be drawn"),
-            },
-        )?;
+        let strokes =
+            stroke_digits::text_strokes(s, at(LABEL_INSET_MM, y), label_mm).map_err(|c| {
+                TestGridError::Values {
+                    what: "label",
+                    message: format!("{c:?} cannot be drawn"),
+                }
+            })?;
         for stroke in strokes {
             let ids: Vec<_> = stroke.iter().map(|&p| cp.add_vertex(p)).collect();
             for pair in ids.windows(2) {
@@ -452,6 +448,7 @@ fn append(into: &mut CreasePattern, part: &CreasePattern) {
     for e in &part.edges {
         let a = crate::pattern::VertexId::new(e.vertices[0].index() + shift);
         let b = crate::pattern::VertexId::new(e.vertices[1].index() + shift);
-        into.add_edge(a, b, e.assignment);
+        let id = into.add_edge(a, b, e.assignment);
+        into.edges[id.index()].fold_angle = e.fold_angle;
     }
 }

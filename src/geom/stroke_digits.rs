@@ -64,14 +64,18 @@ pub fn text_strokes(text: &str, origin: DVec2, height: f64) -> Result<Vec<Vec<DV
 
 /// The strokes of one character at `at`.
 fn char_strokes(c: char, at: DVec2, h: f64) -> Result<Vec<Vec<DVec2>>, char> {
-    let corner = |(x, y): (u8, u8)| at + DVec2::new(f64::from(x) * DIGIT_WIDTH * h, f64::from(y) * h / 2.0);
+    let corner =
+        |(x, y): (u8, u8)| at + DVec2::new(f64::from(x) * DIGIT_WIDTH * h, f64::from(y) * h / 2.0);
     let lit: u8 = match c {
         '0'..='9' => DIGITS[c as usize - '0' as usize],
         '-' => 1 << 6,
         ' ' => 0,
         '.' => {
             let x = at.x + DIGIT_WIDTH * h / 2.0;
-            return Ok(vec![vec![DVec2::new(x, at.y), DVec2::new(x, at.y + POINT_TICK * h)]]);
+            return Ok(vec![vec![
+                DVec2::new(x, at.y),
+                DVec2::new(x, at.y + POINT_TICK * h),
+            ]]);
         }
         other => return Err(other),
     };
@@ -127,7 +131,14 @@ mod tests {
     fn one_is_the_right_uprights_and_text_advances() {
         let s = text_strokes("11", DVec2::new(10.0, 5.0), 4.0).unwrap();
         assert_eq!(s.len(), 2);
-        assert_eq!(s[0], vec![DVec2::new(12.0, 9.0), DVec2::new(12.0, 7.0), DVec2::new(12.0, 5.0)]);
+        assert_eq!(
+            s[0],
+            vec![
+                DVec2::new(12.0, 9.0),
+                DVec2::new(12.0, 7.0),
+                DVec2::new(12.0, 5.0)
+            ]
+        );
         assert!((s[1][0].x - (12.0 + ADVANCE * 4.0)).abs() < 1e-12);
         assert!((text_width("11", 4.0) - (ADVANCE * 4.0 + 2.0)).abs() < 1e-12);
     }

@@ -35,6 +35,8 @@ use crate::machine::MachineProfile;
 pub const LIGHTBURN_APP_VERSION: &str = "1.7.08";
 /// Decimals of coordinates and settings.
 const DECIMALS: usize = 4;
+/// Most layers in a project: LightBurn's colour layers 00–29.
+pub const MAX_LAYERS: usize = 30;
 
 /// The LightBurn project of `job` on `machine`.
 pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
@@ -46,6 +48,13 @@ pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
         r#"<LightBurnProject AppVersion="{LIGHTBURN_APP_VERSION}" FormatVersion="1" MaterialHeight="0" MirrorX="False" MirrorY="False">"#
     );
     let layers = layers(plan, job);
+    if layers.len() > MAX_LAYERS {
+        return Err(PostError::TooManyLayers {
+            job: job.name.clone(),
+            layers: layers.len(),
+            limit: MAX_LAYERS,
+        });
+    }
     for (index, l) in layers.iter().enumerate() {
         let paths: Vec<&Toolpath> = job.paths.iter().filter(|p| l.holds(plan, p)).collect();
         cut_setting(&mut out, plan, machine, l, index, &paths);

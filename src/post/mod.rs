@@ -76,6 +76,19 @@ pub enum PostError {
         /// Bed depth, mm.
         height_mm: f64,
     },
+    /// More layers than the output format holds.
+    #[error(
+        "job {job} needs {layers} layers; a LightBurn project holds at most {limit} (its colour \
+         layers 00-29): give the calibration grid fewer values"
+    )]
+    TooManyLayers {
+        /// The job name.
+        job: String,
+        /// Layers needed.
+        layers: usize,
+        /// Layers the format holds.
+        limit: usize,
+    },
     /// A machine profile value cannot be written.
     #[error("machine {machine}: {key} = {message}")]
     BadMachine {
@@ -124,7 +137,7 @@ pub fn dxf(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, Po
 /// [`lbrn`](mod@lbrn) for the format and the LightBurn version followed.
 ///
 /// # Errors
-/// [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
+/// [`PostError::BadCoordinate`], [`PostError::EmptyJob`] or [`PostError::TooManyLayers`].
 pub fn lbrn2(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
     check::job(job)?;
     lbrn::write(plan, job, machine)

@@ -19,8 +19,8 @@ use std::fmt::Write;
 
 use glam::DVec2;
 
-use super::number::{Grid, fixed};
 use super::layers::{Layer, layers};
+use super::number::{Grid, fixed};
 use super::{PostError, layer_style};
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
 use crate::machine::Bed;

@@ -71,7 +71,11 @@ fn stats_match_lengths_pierces_travel_and_time_computed_by_hand() {
     assert_eq!(s.pierces, 1 + 2);
     let to_score = 200f64.sqrt(); // (0, 0) to (10, 10)
     let to_cut = (l[2] - cut_start).length();
-    assert!((s.travel_mm - (to_score + to_cut)).abs() < 1e-9, "{}", s.travel_mm);
+    assert!(
+        (s.travel_mm - (to_score + to_cut)).abs() < 1e-9,
+        "{}",
+        s.travel_mm
+    );
     let a = 100.0;
     let time = rest_to_rest(to_score, 100.0, a)
         + 2.0 * rest_to_rest(30.0, 10.0, a)

@@ -6,8 +6,8 @@ use super::super::PostError;
 use super::super::number::{Grid, fixed};
 use super::Flavour;
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
-use crate::machine::{MachineProfile, OperationSettings};
 use crate::machine::control::AIR_OFF;
+use crate::machine::{MachineProfile, OperationSettings};
 
 /// Units and distance mode, written once at the top of every program.
 const HEADER: [&str; 2] = ["G21", "G90"];
@@ -125,7 +125,8 @@ pub fn write_frame(
             job: job.name.clone(),
         });
     };
-    p.lines.push(flavour.comment("frame: the job's bounding box"));
+    p.lines
+        .push(flavour.comment("frame: the job's bounding box"));
     match lit {
         Some(s) => p.stroke(&points, &burn(s, machine)),
         None => {
