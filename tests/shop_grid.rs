@@ -74,9 +74,14 @@ fn testgrid_runs_clean_on_every_shipped_machine_with_each_cells_power_and_speed(
                 })
                 .collect();
             let length: f64 = on.iter().map(|b| b.length()).sum();
+            // The cut share of the crease: toolpath dashes one kerf shorter than asked, the
+            // period dash + bridge; the end clearances and the stretch to whole dashes take
+            // some of the crease, never more than half.
+            let duty = (cell.dash_mm - material.kerf_mm) / (cell.dash_mm + cell.bridge_mm);
+            let most = duty * a.distance(b);
             assert!(
-                length > 0.5 * a.distance(b),
-                "{name} cell {}: {length} mm burned on the crease",
+                length > 0.5 * most && length < 1.2 * most,
+                "{name} cell {}: {length} mm burned on the crease, about {most} mm expected",
                 cell.number
             );
             let feed = cell.speed_mm_min.min(machine.max_feed_mm_min);

@@ -133,7 +133,7 @@ pub fn frame(
             job: job.name.clone(),
         });
     };
-    let lit = (power > 0.0 && !machine.pen_tool()).then(|| crate::machine::OperationSettings {
+    let lit = (power > 0.0 && !machine.pen_tool()).then_some(crate::machine::OperationSettings {
         power,
         passes: 1,
         ..plan.settings.mark
