@@ -406,8 +406,8 @@ fn cell_pattern(
     .into_iter()
     .map(|p| cp.add_vertex(p))
     .collect();
-    for k in 0..ring.len() {
-        cp.add_edge(ring[k], ring[(k + 1) % ring.len()], Assignment::Boundary);
+    for (k, &v) in ring.iter().enumerate() {
+        cp.add_edge(v, ring[(k + 1) % ring.len()], Assignment::Boundary);
     }
     let crease = cp.add_edge(ring[5], ring[2], Assignment::Valley);
     // Coupons are folded by hand to a right angle, not flat: no fold-angle warning.
