@@ -33,6 +33,24 @@ fn grid_for(machine: &MachineProfile, material: &Material) -> TestGrid {
     test_grid(machine, material, &opts).unwrap_or_else(|e| panic!("{}: {e}", machine.name))
 }
 
+/// LinuxCNC's own interpreter on `text`: `None` when `rs274` (Debian linuxcnc-uspace) is not
+/// installed, else whether it read the program to its end without an error.
+fn rs274_accepts(text: &str) -> Option<bool> {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let file = dir.path().join("job.ngc");
+    std::fs::write(&file, text).expect("write");
+    let Ok(out) = std::process::Command::new("rs274")
+        .arg("-g")
+        .arg(&file)
+        .output()
+    else {
+        eprintln!("SKIPPED: rs274 (Debian linuxcnc-uspace) is not installed");
+        return None;
+    };
+    let canon = String::from_utf8_lossy(&out.stdout);
+    Some(out.status.success() && canon.contains("PROGRAM_END()"))
+}
+
 fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     let ab = b - a;
     let t = ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
@@ -58,6 +76,9 @@ fn testgrid_runs_clean_on_every_shipped_machine_with_each_cells_power_and_speed(
         let text = post::gcode(&grid.plan, job, &machine).expect("G-code");
         let run = sim::run(&text, &machine).expect("readable");
         assert!(run.is_clean(), "{name}: {:?}", run.violations);
+        if machine.dialect == Dialect::LinuxCnc {
+            assert_ne!(rs274_accepts(&text), Some(false), "rs274 refused the grid");
+        }
         let plotter = machine.kind == MachineKind::Plotter;
         for cell in &grid.cells {
             let (a, b) = grid.pattern.segment(cell.crease);
@@ -282,11 +303,15 @@ fn frames_trace_exactly_the_jobs_bounds_with_the_tool_off_or_at_the_frame_power(
         let real = sim::run(&post::gcode(&p, job, &machine).expect("job"), &machine).expect("sim");
         let (lo, hi) = burned_box(&real);
         let corners = [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y), lo];
-        let dark = sim::run(
-            &post::gcode::frame(&p, job, &machine, 0.0).expect("frame"),
-            &machine,
-        )
-        .expect("sim");
+        let dark_text = post::gcode::frame(&p, job, &machine, 0.0).expect("frame");
+        if machine.dialect == Dialect::LinuxCnc {
+            assert_ne!(
+                rs274_accepts(&dark_text),
+                Some(false),
+                "rs274 refused the frame"
+            );
+        }
+        let dark = sim::run(&dark_text, &machine).expect("sim");
         assert!(dark.is_clean(), "{name}: {:?}", dark.violations);
         assert!(dark.burns.is_empty(), "{name}: the frame burned");
         let visited: Vec<DVec2> = dark.travels.iter().map(|t| t.to).collect();
