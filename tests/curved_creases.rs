@@ -221,7 +221,12 @@ fn a_two_sided_plan_reports_each_left_out_edge_once() {
     let back = p.jobs.iter().position(|j| j.name == "back").unwrap();
     assert_eq!(side_of(&reports[front]), m);
     assert_eq!(side_of(&reports[back]), v);
-    assert!(reports.iter().flat_map(|c| c.left_out()).all(|e| e.burned == 0.0 && !e.ok));
+    assert!(
+        reports
+            .iter()
+            .flat_map(|c| c.left_out())
+            .all(|e| e.burned == 0.0 && !e.ok)
+    );
     // Everything else still passes, on both sides.
     for c in &reports {
         assert_eq!(c.failed_edges().count(), c.left_out().count());

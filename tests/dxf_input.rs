@@ -2,9 +2,9 @@
 //! named MOUNTAIN/VALLEY/…, or colours), ORIPA's DXF layout, units, curves, block inserts, and
 //! foldcam's own machine DXF read back.
 
-mod post_common;
 #[path = "common/bin.rs"]
 mod bin;
+mod post_common;
 
 use std::collections::HashMap;
 use std::f64::consts::PI;
@@ -325,7 +325,11 @@ fn layer_named_and_coloured_files_convert_with_their_counts() {
         let (dxf, fold) = (format!("{name}.dxf"), format!("{name}.fold"));
         std::fs::write(dir.path().join(&dxf), text(&d)).unwrap();
         let o = bin::foldcam(&["convert", &dxf, &fold], dir.path());
-        assert!(o.status.success(), "{name}: {}", String::from_utf8_lossy(&o.stderr));
+        assert!(
+            o.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
         let cp = formats::load(&dir.path().join(&fold)).unwrap().pattern;
         let counts = (
             n(&cp, Assignment::Mountain),
@@ -335,6 +339,11 @@ fn layer_named_and_coloured_files_convert_with_their_counts() {
         );
         assert_eq!(counts, (2, 4, 6, 12), "{name}");
         let o = bin::foldcam(&["check", &dxf], dir.path());
-        assert_eq!(o.status.code(), Some(0), "{name}: {}", String::from_utf8_lossy(&o.stdout));
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
     }
 }

@@ -134,7 +134,13 @@ fn assert_fits(label: &str, args: &[&str], dir: &Path, margin_mm: f64) -> bool {
     let _ = std::fs::remove_file(&out);
     let _ = std::fs::remove_file(&vox);
     let mut all = args.to_vec();
-    all.extend(["--fit", "-o", "card.fold", "--save-voxels", "card.voxel.txt"]);
+    all.extend([
+        "--fit",
+        "-o",
+        "card.fold",
+        "--save-voxels",
+        "card.voxel.txt",
+    ]);
     let o = foldcam(&all, dir);
     let (stdout, stderr) = (
         String::from_utf8_lossy(&o.stdout),
@@ -145,19 +151,31 @@ fn assert_fits(label: &str, args: &[&str], dir: &Path, margin_mm: f64) -> bool {
             assert_eq!(loose_in(&out), 0, "{label}: loose pieces\n{stdout}");
             let v = read_voxels(&vox);
             let (reach, half) = (v.closed_reach_mm(), v.half_mm());
-            assert!(reach <= half + 1e-6, "{label}: reaches {reach} mm, half {half} mm");
-            assert!((sheet_height(&out) - v.sheet_height_mm()).abs() < 1e-6, "{label}");
+            assert!(
+                reach <= half + 1e-6,
+                "{label}: reaches {reach} mm, half {half} mm"
+            );
+            assert!(
+                (sheet_height(&out) - v.sheet_height_mm()).abs() < 1e-6,
+                "{label}"
+            );
             if v.margin_mm > margin_mm {
                 // Grown: by the shortfall at the given margin, rounded up to a whole step.
                 let short = reach - (half - v.margin_mm + margin_mm);
                 let added = v.margin_mm - margin_mm;
-                assert!(short > 0.0 && added >= short && added < short + STEP_MM, "{label}");
+                assert!(
+                    short > 0.0 && added >= short && added < short + STEP_MM,
+                    "{label}"
+                );
                 assert!(stderr.contains("--fit added"), "{label}: {stderr}");
             }
             true
         }
         Some(1) => {
-            assert!(!out.exists() && !vox.exists(), "{label}: refused but written");
+            assert!(
+                !out.exists() && !vox.exists(),
+                "{label}: refused but written"
+            );
             assert!(
                 stdout.contains("would not pop up") || stdout.contains(" at x = "),
                 "{label}: {stdout}"
@@ -196,7 +214,12 @@ fn design_reach(toml_text: &str) -> f64 {
         .as_array()
         .unwrap()
         .iter()
-        .filter(|op| op.get("add").and_then(toml::Value::as_str).unwrap_or("face") == "face")
+        .filter(|op| {
+            op.get("add")
+                .and_then(toml::Value::as_str)
+                .unwrap_or("face")
+                == "face"
+        })
         .map(|op| {
             let unit = match op.get("units").and_then(toml::Value::as_str) {
                 Some("grid") => grid,
@@ -227,16 +250,27 @@ fn fit_grows_the_taj_mahal_back_sheet_to_what_the_design_reaches() {
         &["popup", "poly", &path, "--fit", "-o", "taj.fold"],
         dir.path(),
     );
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
     assert!(String::from_utf8_lossy(&o.stderr).contains("--fit added"));
     // Base 70 mm plus the grown back sheet.
     let back = sheet_height(&dir.path().join("taj.fold")) - 70.0;
-    assert!(back >= reach - 1e-6 && back < reach + STEP_MM, "back {back}, reach {reach}");
+    assert!(
+        back >= reach - 1e-6 && back < reach + STEP_MM,
+        "back {back}, reach {reach}"
+    );
     for (height, warns) in [(back, false), (back - 1.0, true)] {
         let edited = text.replacen("height = 100.0", &format!("height = {height:.1}"), 1);
         assert_ne!(edited, text);
         std::fs::write(dir.path().join("t.popup.toml"), edited).unwrap();
-        let o = foldcam(&["popup", "poly", "t.popup.toml", "-o", "t.fold"], dir.path());
+        let o = foldcam(
+            &["popup", "poly", "t.popup.toml", "-o", "t.fold"],
+            dir.path(),
+        );
         assert_eq!(o.status.code(), Some(0));
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(err.contains("beyond"), warns, "height {height}: {err}");
@@ -267,7 +301,10 @@ fn building_sweep_with_fit_closes_within_the_outline() {
                     "--thin-top",
                     thin,
                 ];
-                assert!(assert_fits(&label, &args, dir.path(), 10.0), "{label}: refused");
+                assert!(
+                    assert_fits(&label, &args, dir.path(), 10.0),
+                    "{label}: refused"
+                );
             }
         }
     }

@@ -194,7 +194,11 @@ fn raw_crane() -> (Vec<RawLine>, [f64; 4]) {
     };
     let num = |tag: &str, name: &str| attr(tag, name).parse::<f64>().unwrap();
     let mut lines = Vec::new();
-    for tag in text.split("<line").skip(1).map(|t| t.split("/>").next().unwrap()) {
+    for tag in text
+        .split("<line")
+        .skip(1)
+        .map(|t| t.split("/>").next().unwrap())
+    {
         let opacity = if tag.contains(" opacity=") {
             num(tag, "opacity")
         } else {
@@ -293,7 +297,10 @@ fn the_crane_keeps_its_colours_and_only_the_drawing_s_own_faults() {
     for (kind, length) in &drawn {
         // Snapping trims or extends line ends by at most its tolerance (0.22 mm) each.
         let got = read.get(kind).copied().unwrap_or(0.0);
-        assert!((got - length).abs() < 0.005 * length, "{kind:?}: drawn {length}, read {got}");
+        assert!(
+            (got - length).abs() < 0.005 * length,
+            "{kind:?}: drawn {length}, read {got}"
+        );
     }
     // Fold angles from the stroke opacity (opacity × 180°), per assignment, as drawn.
     let mut want: Vec<(bool, i64)> = lines
@@ -320,7 +327,11 @@ fn the_crane_keeps_its_colours_and_only_the_drawing_s_own_faults() {
     let kawasaki: Vec<_> = report
         .of_kind(foldcam::check::FindingKind::Kawasaki)
         .collect();
-    assert_eq!(report.findings.len(), kawasaki.len(), "only Kawasaki faults remain");
+    assert_eq!(
+        report.findings.len(),
+        kawasaki.len(),
+        "only Kawasaki faults remain"
+    );
     let mut large = 0;
     for f in &kawasaki {
         let px = [f.position.x / PX_MM, -f.position.y / PX_MM];

@@ -213,7 +213,14 @@ mod tests {
 
     /// A closed 10 × 10 mm card (outline in z = 0) with one crease out to `tip`.
     fn closed_card(top: f64, tip: (f64, f64)) -> FoldedState {
-        let p = [(0.0, 0.0), (10.0, 0.0), (10.0, top), (0.0, top), (5.0, 5.0), tip];
+        let p = [
+            (0.0, 0.0),
+            (10.0, 0.0),
+            (10.0, top),
+            (0.0, top),
+            (5.0, 5.0),
+            tip,
+        ];
         let edge = |a: usize, b: usize, assignment| Edge {
             vertices: [VertexId::new(a), VertexId::new(b)],
             assignment,
