@@ -209,7 +209,11 @@ fn design_reach(toml_text: &str) -> f64 {
         .get("grid")
         .and_then(toml::Value::as_float)
         .unwrap_or(1.0);
-    let num = |v: &toml::Value| v.as_float().or(v.as_integer().map(|i| i as f64)).unwrap();
+    let num = |v: &toml::Value| {
+        v.as_float()
+            .or_else(|| v.as_integer().map(|i| i as f64))
+            .unwrap()
+    };
     design["operation"]
         .as_array()
         .unwrap()

@@ -247,7 +247,7 @@ fn raw_kawasaki_error(lines: &[RawLine], p: [f64; 2], near: f64) -> f64 {
             }
         }
     }
-    if dirs.len() % 2 == 1 || dirs.is_empty() {
+    if !dirs.len().is_multiple_of(2) || dirs.is_empty() {
         return f64::INFINITY;
     }
     dirs.sort_by(f64::total_cmp);

@@ -131,7 +131,7 @@ pub struct Fitted<T> {
 
 /// Rounds a shortfall up to whole [`FIT_STEP_MM`] steps (at least one).
 fn step_up(mm: f64) -> f64 {
-    ((mm / FIT_STEP_MM).ceil()).max(1.0) * FIT_STEP_MM
+    (mm / FIT_STEP_MM).ceil().max(1.0) * FIT_STEP_MM
 }
 
 /// Grows `grow(card, mm)` until `closed(card)` holds every folded vertex (see the module
@@ -152,7 +152,7 @@ fn fit_with<T: Clone>(
             break;
         }
         before.get_or_insert(reach.overhang);
-        if reach.elsewhere_mm > CLOSED_SLACK_MM || added > 0.0 && reach.above_mm <= 0.0 {
+        if reach.elsewhere_mm > CLOSED_SLACK_MM || (added > 0.0 && reach.above_mm <= 0.0) {
             return Err(FitError::unfittable(reach.overhang));
         }
         let more = step_up(reach.above_mm);
