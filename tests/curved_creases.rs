@@ -179,6 +179,60 @@ fn simulate_counts_an_uncovered_curve_as_uncovered() {
     assert_eq!(cov.failed_edges().count(), gone.len());
 }
 
+/// A two-sided plan (mountains from the front, valleys from the back): a circle of each kind
+/// dropped from its job is reported once over the plan, by the job of its own side, and the
+/// burned share measured there (in that job's mirrored machine frame) is zero.
+#[test]
+fn a_two_sided_plan_reports_each_left_out_edge_once() {
+    let (cp, circles) = concentric_pleat(4);
+    let (machine, material, mut options) = setup("stainless-0.5");
+    options.two_sided = true;
+    let mut p = plan(&cp, &machine, &material, &options).unwrap();
+    assert_eq!(p.jobs.len(), 2);
+    assert!(run_jobs(&cp, &p, &machine).iter().all(|c| c.passed()));
+    // Circle 0 is a mountain (front), circle 1 a valley (back): drop both toolpaths.
+    let (mountain, valley) = (&circles[0], &circles[1]);
+    for job in &mut p.jobs {
+        job.paths.retain(|t| {
+            !t.edges
+                .iter()
+                .any(|e| mountain.contains(e) || valley.contains(e))
+        });
+    }
+    let reports = run_jobs(&cp, &p, &machine);
+    let mut listed: Vec<EdgeId> = reports
+        .iter()
+        .flat_map(|c| c.left_out().map(|e| e.edge))
+        .collect();
+    listed.sort();
+    let mut expected: Vec<EdgeId> = mountain.iter().chain(valley).copied().collect();
+    expected.sort();
+    // Each dropped edge exactly once over the two jobs (before: once per job, twice).
+    assert_eq!(listed, expected);
+    let side_of = |c: &sim::CoverageReport| -> Vec<EdgeId> {
+        let mut v: Vec<EdgeId> = c.left_out().map(|e| e.edge).collect();
+        v.sort();
+        v
+    };
+    let (mut m, mut v) = (mountain.clone(), valley.clone());
+    m.sort();
+    v.sort();
+    let front = p.jobs.iter().position(|j| j.name == "front").unwrap();
+    let back = p.jobs.iter().position(|j| j.name == "back").unwrap();
+    assert_eq!(side_of(&reports[front]), m);
+    assert_eq!(side_of(&reports[back]), v);
+    assert!(
+        reports
+            .iter()
+            .flat_map(|c| c.left_out())
+            .all(|e| e.burned == 0.0 && !e.ok)
+    );
+    // Everything else still passes, on both sides.
+    for c in &reports {
+        assert_eq!(c.failed_edges().count(), c.left_out().count());
+    }
+}
+
 /// The pattern of `path`, read and planarised as `foldcam plan` does.
 fn load(path: &Path) -> CreasePattern {
     let mut cp = foldcam::formats::load(path).unwrap().pattern;

@@ -2,6 +2,8 @@
 //! named MOUNTAIN/VALLEY/…, or colours), ORIPA's DXF layout, units, curves, block inserts, and
 //! foldcam's own machine DXF read back.
 
+#[path = "common/bin.rs"]
+mod bin;
 mod post_common;
 
 use std::collections::HashMap;
@@ -300,5 +302,48 @@ fn our_machine_dxf_reads_back() {
             _ => Units::Unitless,
         };
         assert_eq!(cp.units, expected_units);
+    }
+}
+
+/// The layer-named (R2000, LWPOLYLINE outline) and coloured (R12, POLYLINE outline) sheets
+/// converted by the binary, as a user would: `foldcam convert sheet.dxf sheet.fold` writes
+/// the counts drawn (2 mountain, 4 valley, 6 outline pieces; see [`sheet`]), read back from
+/// the FOLD file, and `foldcam check` passes both.
+#[test]
+fn layer_named_and_coloured_files_convert_with_their_counts() {
+    let dir = tempfile::tempdir().unwrap();
+    for (by_layer, version) in [(true, AcadVersion::R2000), (false, AcadVersion::R12)] {
+        let mut d = Drawing::new();
+        d.header.version = version;
+        let outline = if by_layer {
+            square_lwpolyline("BOUNDARY", None)
+        } else {
+            square_polyline("0", Some(7))
+        };
+        sheet(&mut d, by_layer, outline);
+        let name = if by_layer { "layers" } else { "colours" };
+        let (dxf, fold) = (format!("{name}.dxf"), format!("{name}.fold"));
+        std::fs::write(dir.path().join(&dxf), text(&d)).unwrap();
+        let o = bin::foldcam(&["convert", &dxf, &fold], dir.path());
+        assert!(
+            o.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let cp = formats::load(&dir.path().join(&fold)).unwrap().pattern;
+        let counts = (
+            n(&cp, Assignment::Mountain),
+            n(&cp, Assignment::Valley),
+            n(&cp, Assignment::Boundary),
+            cp.edges.len(),
+        );
+        assert_eq!(counts, (2, 4, 6, 12), "{name}");
+        let o = bin::foldcam(&["check", &dxf], dir.path());
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
     }
 }

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow};
 use clap::Subcommand;
+use foldcam::design::popup::fit::{CLOSED_SLACK_MM, Fitted, fit_voxel_card};
 use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, format_voxel_card};
 use foldcam::formats::OutputSet;
 use foldcam::render::{View3d, render_folded_png, render_gif};
@@ -76,8 +77,9 @@ pub struct VoxelArgs {
     /// With --machine and .svg output: perforations as dashed strokes.
     #[arg(long, help_heading = "Cutting")]
     pub dasharray: bool,
-    /// Refuse (exit 1) a card that reaches beyond its own outline when folded shut, instead
-    /// of warning, and say how much smaller the model must be.
+    /// Grow the card's margin so that, folded shut, it holds every face (a card that reaches
+    /// beyond its outline is otherwise only warned about); refuse (exit 1) with the place
+    /// when more paper cannot hold it.
     #[arg(long)]
     pub fit: bool,
 }
@@ -110,6 +112,20 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         }
         return Ok(Outcome::CheckFailed);
     }
+    let card = if args.fit {
+        match fit_voxel_card(&card) {
+            Ok(fitted) => {
+                report_fit(&args.input, &fitted, "margin");
+                fitted.card
+            }
+            Err(e) => {
+                println!("{}: {e}", args.input.display());
+                return Ok(Outcome::CheckFailed);
+            }
+        }
+    } else {
+        card
+    };
     let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
     let closed = fold_card(&card, &cp, 0.0).state;
     let hint = "try another --resolution, a larger --thin-top (or 0 to keep every top), or a \
@@ -149,6 +165,21 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         card.cell_mm()
     );
     Ok(Outcome::Done)
+}
+
+/// Says what `--fit` added, if anything.
+pub fn report_fit<T>(input: &std::path::Path, fitted: &Fitted<T>, what: &str) {
+    if let Some(o) = fitted.before {
+        eprintln!(
+            "foldcam: {}: folded shut, the card reached {:.1} mm beyond its outline (at x = \
+             {:.1}, y = {:.1} mm of the closed card); --fit added {:.0} mm to the {what}",
+            input.display(),
+            o.beyond_mm,
+            o.at.x,
+            o.at.y,
+            fitted.added_mm
+        );
+    }
 }
 
 /// Whether `path` is a voxel text file (no conversion options apply to it).
@@ -195,17 +226,13 @@ pub fn card_holds(
         o.at.y
     );
     if fit {
-        println!("{message}: make the model smaller or the card larger (--fit refuses)");
+        println!("{message}: make the model smaller or the card larger");
         false
     } else {
-        eprintln!("foldcam: warning: {message}; --fit refuses such cards");
+        eprintln!("foldcam: warning: {message}; --fit adds the paper it needs");
         true
     }
 }
-
-/// How far a closed card may reach beyond its outline before it counts, mm: rounding of the
-/// folded positions, far below a cut's width.
-const CLOSED_SLACK_MM: f64 = 1e-6;
 
 /// The PNG of a card standing at 90° and the GIF of it opening, as asked for, rendered
 /// before anything is written. `fold(angle)` gives the card's folded state at an opening angle

@@ -41,8 +41,9 @@ pub struct PolyArgs {
     /// Image width in pixels for --png and --gif.
     #[arg(long, default_value_t = 640)]
     pub width: u32,
-    /// Refuse (exit 1) a card that reaches beyond its own outline when folded shut, instead
-    /// of warning.
+    /// Grow the back sheet (`[card] height`) so that, folded shut, the card holds every face
+    /// (a card that reaches beyond its outline is otherwise only warned about); refuse (exit
+    /// 1) with the place when more paper cannot hold it.
     #[arg(long)]
     pub fit: bool,
 }
@@ -52,6 +53,20 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
     let path = &args.design;
     let text = read_text(path)?;
     let design = parse_design(&text).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    let design = if args.fit {
+        match foldcam::design::popup::fit::fit_design(&design) {
+            Ok(fitted) => {
+                super::popup::report_fit(path, &fitted, "back sheet");
+                fitted.card
+            }
+            Err(e) => {
+                println!("{}: {e}", path.display());
+                return Ok(Outcome::CheckFailed);
+            }
+        }
+    } else {
+        design
+    };
     eprintln!("foldcam: replaying {} operations", design.operations.len());
     let replay = design
         .replay()

@@ -59,6 +59,12 @@ fn belongs_to_back(cp: &CreasePattern, p: &Toolpath) -> bool {
     p.op == Operation::Cut || (!p.edges.is_empty() && p.edges.iter().all(valley))
 }
 
+/// Whether a single edge of `assignment`, realised by `op`, is done from the back in a
+/// two-sided job (the rule of [`split`] for a toolpath of that one edge).
+pub fn edge_on_back(assignment: Assignment, op: Operation) -> bool {
+    op == Operation::Cut || assignment == Assignment::Valley
+}
+
 /// The reflection about the vertical line `x = axis_x`.
 pub fn mirror(axis_x: f64) -> DAffine2 {
     DAffine2::from_scale_angle_translation(

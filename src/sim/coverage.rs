@@ -23,7 +23,9 @@
 //! of the plan realises (a crease too short for a dash, a curve whose dashes were dropped, a
 //! toolpath removed by hand) is listed with `in_plan: false`, its burned share measured as
 //! for any edge, and fails: a crease counts as covered only where a burn really follows it,
-//! and the plan's own silence is not coverage.
+//! and the plan's own silence is not coverage. Each left-out edge is listed by one job of
+//! the plan: in a two-sided plan the job of the side it would be machined from (valleys and
+//! cuts from the back), so the front and back reports together list it once.
 //!
 //! **Stray burns.** Every burn is sampled every tolerance/2; a sample is explained when it lies
 //! within the band of a pattern edge of an operation whose power matches the burn, or of a
@@ -42,8 +44,9 @@ use serde::Serialize;
 use super::grid::{SegmentGrid, covered_interval, point_segment_distance, union_length};
 use super::report::SimReport;
 use crate::fab::operations::operation_for;
-use crate::fab::{ContourRole, FabPlan, Job, Operation};
-use crate::pattern::{CreasePattern, EdgeId};
+use crate::fab::sides::edge_on_back;
+use crate::fab::{ContourRole, FabPlan, Job, Operation, Side};
+use crate::pattern::{Assignment, CreasePattern, EdgeId};
 
 /// Thresholds of [`coverage_with`].
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -289,8 +292,27 @@ fn job_edges(pattern: &CreasePattern, job: &Job) -> Vec<(EdgeId, Seg)> {
     out
 }
 
+/// Whether `job` is the one job of `plan` that reports a left-out edge of `assignment` and
+/// `op`: the first job on the side the edge would be machined from (the two-sided rule of
+/// [`crate::fab::sides::edge_on_back`]), or the first job when the plan has none on that side
+/// (a one-sided plan). A job outside the plan's list (a caller's own) reports it too.
+fn reports_left_out(plan: &FabPlan, job: &Job, assignment: Assignment, op: Operation) -> bool {
+    let side = if edge_on_back(assignment, op) {
+        Side::Back
+    } else {
+        Side::Front
+    };
+    let owner = plan
+        .jobs
+        .iter()
+        .find(|j| j.side == side)
+        .or(plan.jobs.first());
+    owner.is_none_or(|o| o.name == job.name) || !plan.jobs.iter().any(|j| j.name == job.name)
+}
+
 /// The pattern edges the plan's mapping gives an operation but that no toolpath of any job
-/// realises with that operation, in `job`'s machine coordinates.
+/// realises with that operation, in `job`'s machine coordinates; each is reported by one job
+/// only ([`reports_left_out`]), so a two-sided plan lists it once, on the side it belongs to.
 fn left_out_edges(pattern: &CreasePattern, job: &Job, plan: &FabPlan) -> Vec<(EdgeId, Seg)> {
     let realised: HashSet<(EdgeId, Operation)> = plan
         .jobs
@@ -302,8 +324,9 @@ fn left_out_edges(pattern: &CreasePattern, job: &Job, plan: &FabPlan) -> Vec<(Ed
     pattern
         .edge_ids()
         .filter_map(|e| {
-            let op = operation_for(pattern.edges[e.index()].assignment, &plan.mapping)?;
-            if realised.contains(&(e, op)) {
+            let assignment = pattern.edges[e.index()].assignment;
+            let op = operation_for(assignment, &plan.mapping)?;
+            if realised.contains(&(e, op)) || !reports_left_out(plan, job, assignment, op) {
                 return None;
             }
             let (a, b) = edge_segment(pattern, e)?;

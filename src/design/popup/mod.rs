@@ -4,9 +4,11 @@
 //! - [`voxel`]: the voxel model of seed paper 001 (Mitani, Suzuki, Uno): staircase voxels with
 //!   windows, the crease pattern (Table 1), the pop-up check (§2.6) and the open/close
 //!   transform (eq. 6).
-//!
-//! The polygon model of seed 000 shares the open/close transform and will live next to it.
+//! - [`polygon`]: the polygon model of seed 000.
+//! - [`integrity`]: whether a finished card holds together and closes within its outline.
+//! - [`fit`]: `--fit`, more paper above the model until the closed card holds every face.
 
+pub mod fit;
 pub mod integrity;
 pub mod polygon;
 pub mod voxel;

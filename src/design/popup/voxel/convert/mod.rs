@@ -154,16 +154,23 @@ pub fn card_from_depths(
     // A face on the base's front edge would have nothing to stand on: depths stop one cell
     // short of it.
     // Nor can a top face on the back sheet's top edge hang from it: the top row stays empty.
+    // Both hold after the bump removal too: closing with a large element fills the top row
+    // next to a tall face (the slice's edge does not erode) and may reach past the cap.
     let cap = (ny - 1) as u16;
-    let mut depths: Vec<u16> = field.depths.iter().map(|&d| d.min(cap)).collect();
-    for column in depths.chunks_mut(nz) {
-        column[nz - 1] = 0;
-    }
+    let bound = |slice: &mut [u16]| {
+        for d in slice.iter_mut() {
+            *d = (*d).min(cap);
+        }
+        slice[nz - 1] = 0;
+    };
+    let mut depths: Vec<u16> = field.depths.clone();
     let radius = options.element / 2;
     for slice in depths.chunks_mut(nz) {
+        bound(slice);
         let before = slice.to_vec();
         // Unbounded in depth: closing never goes beyond the deepest row of its window.
         morphology::open_close(slice, u16::MAX, radius);
+        bound(slice);
         report.smoothed_cells += before
             .iter()
             .zip(slice.iter())
