@@ -4,7 +4,6 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use foldcam::fab::{FabPlan, Job};
-use foldcam::formats::write_atomic;
 use foldcam::machine::MachineProfile;
 use foldcam::post::{self, DxfVersion};
 
@@ -82,6 +81,23 @@ pub fn write_jobs(
     r12: bool,
     dasharray: bool,
 ) -> Result<()> {
+    let mut outputs = foldcam::formats::OutputSet::new();
+    stage_jobs(&mut outputs, output, p, machine, r12, dasharray)?;
+    super::input::commit(outputs, &[])?;
+    print!("{}", super::plan::summary(p));
+    Ok(())
+}
+
+/// Renders every job of the plan (G-code read back by the simulated machine) and adds the
+/// files to `outputs`, written all together or not at all by [`super::input::commit`].
+pub fn stage_jobs(
+    outputs: &mut foldcam::formats::OutputSet,
+    output: &Path,
+    p: &FabPlan,
+    machine: &MachineProfile,
+    r12: bool,
+    dasharray: bool,
+) -> Result<()> {
     let kind = output_kind(output)?;
     if dasharray && kind != Output::Svg {
         eprintln!("warning: --dasharray applies to SVG output only: ignored");
@@ -95,17 +111,11 @@ pub fn write_jobs(
         eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
     let paths = job_paths(output, p);
-    let mut files = Vec::new();
     for (job, path) in p.jobs.iter().zip(&paths) {
         let bytes = render(kind, p, job, machine, r12, dasharray)
             .with_context(|| path.display().to_string())?;
-        files.push((path, bytes));
+        outputs.add(path, bytes);
     }
-    for (path, bytes) in &files {
-        write_atomic(path, bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
-    print!("{}", super::plan::summary(p));
     Ok(())
 }
 
