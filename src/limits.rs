@@ -62,7 +62,9 @@ impl Limit {
     pub fn expected(&self) -> String {
         format!(
             "a number from {} to {} {}",
-            self.min, self.max, self.unit
+            show(self.min),
+            show(self.max),
+            self.unit
         )
     }
 
@@ -71,7 +73,7 @@ impl Limit {
         if value.is_finite() && value >= self.min && value <= self.max {
             Ok(value)
         } else {
-            Err(format!("expected {}, got {value}", self.expected()))
+            Err(format!("expected {}, got {}", self.expected(), show(value)))
         }
     }
 
@@ -119,6 +121,16 @@ impl CountLimit {
             .parse()
             .map_err(|_| format!("expected {}, got {text:?}", self.expected()))?;
         self.check(value)
+    }
+}
+
+/// A number as a person writes it: plain between 1e-4 and 1e15, else in exponent form
+/// (`1e300`, not three hundred digits).
+pub fn show(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+        x.to_string()
+    } else {
+        format!("{x:e}")
     }
 }
 
@@ -230,7 +242,7 @@ pub fn check_tolerance(tolerance: f64, diagonal: f64) -> Result<(), LimitError> 
     }
     Err(LimitError {
         setting: TOLERANCE.option.to_string(),
-        value: tolerance.to_string(),
+        value: show(tolerance),
         message: format!(
             "larger than {MAX_RELATIVE_TOLERANCE} of the pattern's diagonal ({diagonal:.6}), at \
              most {largest:.6}: every vertex would merge and nothing would be left"
@@ -251,7 +263,7 @@ pub fn check_perforation(p: &Perforation) -> Result<(), LimitError> {
     ] {
         limit.check(value).map_err(|message| LimitError {
             setting: limit.name(),
-            value: value.to_string(),
+            value: show(value),
             message,
         })?;
     }
@@ -287,7 +299,7 @@ pub fn check_perforation(p: &Perforation) -> Result<(), LimitError> {
 pub fn check_length(limit: &Limit, value: f64) -> Result<f64, LimitError> {
     limit.check(value).map_err(|message| LimitError {
         setting: limit.name(),
-        value: value.to_string(),
+        value: show(value),
         message,
     })
 }

@@ -83,7 +83,11 @@ fn kerf_beyond_its_range_is_refused_on_plan_and_cut_as_in_the_profile() {
         let base = ["-m", "grbl-diode", "-x", "card-300gsm", "--kerf", kerf];
         let plan: Vec<&str> = ["plan", p].iter().chain(&base).copied().collect();
         refused(&plan, d, &["--kerf", "expected a number from 0 to 5 mm"]);
-        let cut: Vec<&str> = ["cut", p, "-o", "j.gcode"].iter().chain(&base).copied().collect();
+        let cut: Vec<&str> = ["cut", p, "-o", "j.gcode"]
+            .iter()
+            .chain(&base)
+            .copied()
+            .collect();
         refused(&cut, d, &["--kerf", "expected a number from 0 to 5 mm"]);
     }
     assert!(!d.join("j.gcode").exists());
@@ -98,7 +102,19 @@ fn kerf_beyond_its_range_is_refused_on_plan_and_cut_as_in_the_profile() {
         &["wide.toml", "kerf_mm", "expected a number from 0 to 5 mm"],
     );
     // Inside the range the job is made.
-    let (code, _, err) = run(&["plan", p, "-m", "grbl-diode", "-x", "card-300gsm", "--kerf", "0.2"], d);
+    let (code, _, err) = run(
+        &[
+            "plan",
+            p,
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "--kerf",
+            "0.2",
+        ],
+        d,
+    );
     assert_eq!(code, 0, "{err}");
 }
 
@@ -115,7 +131,16 @@ fn perforation_options_take_the_ranges_the_material_profile_takes() {
         ("--tabs", "from 0.01 to 100 mm"),
     ] {
         for value in ["1e308", "NaN"] {
-            let args = ["plan", p, "-m", "grbl-diode", "-x", "card-300gsm", option, value];
+            let args = [
+                "plan",
+                p,
+                "-m",
+                "grbl-diode",
+                "-x",
+                "card-300gsm",
+                option,
+                value,
+            ];
             refused(&args, d, &[option, range]);
         }
     }
@@ -127,7 +152,16 @@ fn a_dash_that_would_become_a_continuous_slot_is_refused_by_plan_cut_and_simulat
     let d = dir.path();
     let p = miura(d);
     let perforate = ["--mountain", "perforate", "--valley", "perforate"];
-    let mut cut = vec!["cut", p, "-m", "grbl-diode", "-x", "card-300gsm", "-o", "d.gcode"];
+    let mut cut = vec![
+        "cut",
+        p,
+        "-m",
+        "grbl-diode",
+        "-x",
+        "card-300gsm",
+        "-o",
+        "d.gcode",
+    ];
     cut.extend(perforate);
     let mut slot = cut.clone();
     slot.extend(["--dash", "0.01"]);
@@ -178,7 +212,8 @@ fn svg_coordinates_that_are_not_numbers_are_refused_with_element_and_line() {
 fn svg_numbers_beyond_the_reader_limit_name_the_attribute() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let body = "<g transform=\"scale(1e300)\"><line x1='0' y1='0' x2='50' y2='50' stroke='red'/></g>";
+    let body =
+        "<g transform=\"scale(1e300)\"><line x1='0' y1='0' x2='50' y2='50' stroke='red'/></g>";
     std::fs::write(d.join("scale.svg"), svg(SIZE, body)).unwrap();
     refused(
         &["convert", "scale.svg", "s.fold"],
@@ -247,12 +282,28 @@ fn cell_sizes_and_resolutions_out_of_range_are_refused() {
     let d = dir.path();
     let building = repo_file("examples/popup/building.obj");
     refused(
-        &["popup", "voxel", &building, "-o", "c.fold", "--cell-mm", "1e-300"],
+        &[
+            "popup",
+            "voxel",
+            &building,
+            "-o",
+            "c.fold",
+            "--cell-mm",
+            "1e-300",
+        ],
         d,
         &["--cell-mm", "from 0.1 to 1000 mm"],
     );
     refused(
-        &["popup", "voxel", &building, "-o", "c.fold", "--resolution", "5000"],
+        &[
+            "popup",
+            "voxel",
+            &building,
+            "-o",
+            "c.fold",
+            "--resolution",
+            "5000",
+        ],
         d,
         &["--resolution", "from 4 to 4000 cells"],
     );
@@ -273,7 +324,17 @@ fn a_merge_tolerance_larger_than_the_pattern_is_refused_instead_of_emptying_it()
     );
     assert!(!d.join("t.fold").exists());
     // A tolerance well inside the pattern cleans it and keeps every edge.
-    let (code, _, err) = run(&["convert", p, "t.fold", "--planarize", "--tolerance", "0.001"], d);
+    let (code, _, err) = run(
+        &[
+            "convert",
+            p,
+            "t.fold",
+            "--planarize",
+            "--tolerance",
+            "0.001",
+        ],
+        d,
+    );
     assert_eq!(code, 0, "{err}");
     let count = |f: &str| {
         let v: serde_json::Value =
@@ -291,7 +352,10 @@ fn cp_line_types_beyond_the_known_ones_are_read_as_auxiliary_with_a_warning() {
     std::fs::write(d.join("t.cp"), text).unwrap();
     let (code, _, err) = run(&["convert", "t.cp", "t.fold"], d);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("line 5, type 7") && err.contains("flat"), "{err}");
+    assert!(
+        err.contains("line 5, type 7") && err.contains("flat"),
+        "{err}"
+    );
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(d.join("t.fold")).unwrap()).unwrap();
     let flat = v["edges_assignment"]
@@ -303,7 +367,11 @@ fn cp_line_types_beyond_the_known_ones_are_read_as_auxiliary_with_a_warning() {
     assert_eq!(flat, 1, "the diagonal is the one flat line: {v}");
     // A type that is not a number: the message lists the same mapping.
     std::fs::write(d.join("x.cp"), "x 0 0 10 10\n").unwrap();
-    refused(&["convert", "x.cp", "x.fold"], d, &["line 1", "read as flat"]);
+    refused(
+        &["convert", "x.cp", "x.fold"],
+        d,
+        &["line 1", "read as flat"],
+    );
 }
 
 const TRIANGLE: &str = "\"vertices_coords\": [[0,0],[10,0],[10,10]], \
@@ -323,7 +391,9 @@ fn fold_duplicate_keys_degenerate_faces_and_broken_frames_are_refused_with_their
             vec!["faces_vertices", "[0]", "follows itself"],
         ),
         (
-            format!("{{{TRIANGLE}, \"file_frames\": [{{\"frame_parent\": 7, \"frame_inherit\": true}}]}}"),
+            format!(
+                "{{{TRIANGLE}, \"file_frames\": [{{\"frame_parent\": 7, \"frame_inherit\": true}}]}}"
+            ),
             vec!["frame 1", "frame_parent"],
         ),
         (
@@ -390,10 +460,20 @@ fn a_long_job_is_simulated_streaming_with_the_same_totals_and_drawn() {
     assert!(out.contains(&format!("({} lines)", n + 6)), "{out}");
     let streamed = printed_burn(&out);
     // Printed to 0.1 mm.
-    assert!((streamed - burned).abs() <= 0.05 + 1e-9 * burned, "{streamed} vs {burned}");
+    assert!(
+        (streamed - burned).abs() <= 0.05 + 1e-9 * burned,
+        "{streamed} vs {burned}"
+    );
     // With a picture the moves are kept; the totals do not change.
     let (code, out, err) = run(
-        &["simulate", "long.gcode", "-m", "grbl-diode", "--png", "long.png"],
+        &[
+            "simulate",
+            "long.gcode",
+            "-m",
+            "grbl-diode",
+            "--png",
+            "long.png",
+        ],
         d,
     );
     assert_eq!(code, 0, "{err}");
@@ -408,19 +488,34 @@ fn a_popup_cut_directly_writes_all_its_outputs_or_none() {
     let d = dir.path();
     std::fs::write(d.join("card.gcode"), "OLD").unwrap();
     let house = repo_file("examples/popup/house.voxel.txt");
-    let base = ["popup", "voxel", house.as_str(), "-m", "grbl-diode", "-x", "card-300gsm"];
+    let base = [
+        "popup",
+        "voxel",
+        house.as_str(),
+        "-m",
+        "grbl-diode",
+        "-x",
+        "card-300gsm",
+    ];
     let mut failing: Vec<&str> = base.to_vec();
     failing.extend(["-o", "card.gcode", "--png", "nodir/x.png"]);
     let (code, _, err) = run(&failing, d);
     assert_eq!(code, 2, "{err}");
-    assert_eq!(std::fs::read_to_string(d.join("card.gcode")).unwrap(), "OLD");
+    assert_eq!(
+        std::fs::read_to_string(d.join("card.gcode")).unwrap(),
+        "OLD"
+    );
     assert_eq!(listing(d), vec!["card.gcode".to_string()]);
     let mut fine: Vec<&str> = base.to_vec();
     fine.extend(["-o", "card.gcode", "--png", "card.png"]);
     let (code, out, err) = run(&fine, d);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("pierces"), "{out}");
-    assert!(std::fs::read_to_string(d.join("card.gcode")).unwrap().contains("G1"));
+    assert!(
+        std::fs::read_to_string(d.join("card.gcode"))
+            .unwrap()
+            .contains("G1")
+    );
     assert!(d.join("card.png").exists());
 }
 
@@ -430,11 +525,21 @@ fn long_design_steps_print_an_estimate_first() {
     let d = dir.path();
     let dome = repo_file("examples/tessellation/dome.obj");
     let (code, _, err) = run(
-        &["tessellate", &dome, "-x", "stainless-0.5", "-o", "dome.fold"],
+        &[
+            "tessellate",
+            &dome,
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "dome.fold",
+        ],
         d,
     );
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("estimate:") && err.contains("per solve"), "{err}");
+    assert!(
+        err.contains("estimate:") && err.contains("per solve"),
+        "{err}"
+    );
     let building = repo_file("examples/popup/building.obj");
     let (code, _, err) = run(&["popup", "voxel", &building, "-o", "b.fold"], d);
     assert_eq!(code, 0, "{err}");
@@ -465,7 +570,12 @@ fn simulate_json_into_a_closed_pipe_ends_quietly() {
         std::thread::sleep(Duration::from_millis(20));
     }
     let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert_eq!(first, *b"{");
 }
 

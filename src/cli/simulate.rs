@@ -71,8 +71,10 @@ pub fn run(args: Args) -> Result<Outcome> {
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     let bar = super::progress::bar(size, "simulating");
     let reader = std::io::BufReader::with_capacity(1 << 16, file);
-    let report = sim::run_reader(reader, &machine, keep_moves, |bytes| bar.set_position(bytes))
-        .map_err(|e| anyhow!("{}: {e}", args.job.display()))?;
+    let report = sim::run_reader(reader, &machine, keep_moves, |bytes| {
+        bar.set_position(bytes)
+    })
+    .map_err(|e| anyhow!("{}: {e}", args.job.display()))?;
     bar.finish_and_clear();
     let coverage = match (&args.pattern, &args.material) {
         (Some(pattern), Some(material)) => Some(check_coverage(&args, &report, pattern, material)?),

@@ -29,7 +29,6 @@ impl std::fmt::Display for Estimate {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::Estimate;

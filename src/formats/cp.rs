@@ -222,8 +222,8 @@ mod tests {
     #[test]
     fn lines_parse_with_y_negated() {
         let parsed = parse_line(" 2\t-200 0.5  1e2 200 ").ok().flatten();
-        let (a, p, q) = parsed.unwrap_or((Assignment::Join, DVec2::NAN, DVec2::NAN));
-        assert_eq!(a, Assignment::Mountain);
+        let (t, p, q) = parsed.unwrap_or((-1, DVec2::NAN, DVec2::NAN));
+        assert_eq!(assignment_of(t), Assignment::Mountain);
         assert_eq!(p, DVec2::new(-200.0, -0.5));
         assert_eq!(q, DVec2::new(100.0, -200.0));
         assert_eq!(parse_line("   "), Ok(None));

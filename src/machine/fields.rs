@@ -134,7 +134,9 @@ impl<'a> Fields<'a> {
         key: &str,
         limit: &crate::limits::Limit,
     ) -> Result<f64, ProfileError> {
-        self.number(key, limit.min, limit.max, limit.unit)
+        let expected = limit.expected();
+        let value = self.require(key, &expected)?;
+        self.check_number(key, value, limit.min, limit.max, &expected)
     }
 
     /// The whole number `key`, within the range of `limit`.

@@ -25,10 +25,10 @@ use toml::Table;
 use super::ProfileError;
 use super::control::{AirAssist, LaserOutput, MachineControl};
 use super::fields::Fields;
-use crate::limits;
 use super::profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
 };
+use crate::limits;
 
 /// GRBL's default `$30` (`S` at full power), used when a non-laser profile has no `[power]`.
 const DEFAULT_S_MAX: f64 = 1000.0;

@@ -45,6 +45,7 @@ mod coverage;
 mod execute;
 mod grid;
 mod parse;
+mod raster;
 mod render;
 mod report;
 

@@ -2,13 +2,17 @@
 //! by power in 32 steps (blue for the profile's lowest power through red for its highest; pen
 //! strokes in black), seen from above with the bed's front at the bottom.
 //!
+//! Travel and burns are drawn by [`super::raster`] in time linear in the moves; the bed outline
+//! by tiny-skia.
+//!
 //! Machine x runs to the right. Machine y runs up the image unless the bed is `y_flipped`
 //! (origin at the back), when it runs down. Moves outside the bed are drawn where they go,
 //! clipped by the image.
 
 use glam::DVec2;
-use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
+use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
 
+use super::raster::{Pen, draw_segment};
 use super::report::SimReport;
 use crate::machine::MachineProfile;
 use crate::render::{MAX_SIZE, MIN_SIZE, RenderError};
@@ -149,59 +153,29 @@ fn draw_bed(pixmap: &mut Pixmap, view: &View, machine: &MachineProfile, lw: f32)
     stroke_path(pixmap, pb, [60, 60, 60, 255], &stroke);
 }
 
-/// Most segments stroked as one path. The rasteriser keeps the edges crossing a scanline sorted
-/// by insertion, which costs the square of the edges drawn together; strokes of at most this
-/// many segments keep a picture of n moves at O(n) (10^5 moves drew in 9 s as one path).
-const SEGMENTS_PER_PATH: usize = 256;
-
-/// Strokes `segments` in paths of at most [`SEGMENTS_PER_PATH`] segments.
-fn stroke_segments(
-    pixmap: &mut Pixmap,
-    view: &View,
-    segments: impl Iterator<Item = (DVec2, DVec2)>,
-    color: [u8; 4],
-    stroke: &Stroke,
-) {
-    let mut pb = PathBuilder::new();
-    let mut count = 0;
-    for (a, b) in segments {
-        segment(&mut pb, view, a, b);
-        count += 1;
-        if count == SEGMENTS_PER_PATH {
-            stroke_path(pixmap, std::mem::take(&mut pb), color, stroke);
-            count = 0;
-        }
-    }
-    stroke_path(pixmap, pb, color, stroke);
-}
-
 fn draw_travel(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
-    let stroke = Stroke {
+    let pen = Pen {
+        color: [150, 150, 150, 200],
         width: lw * 0.5,
-        dash: StrokeDash::new(vec![3.0 * lw, 3.0 * lw], 0.0),
-        ..Stroke::default()
+        dash: Some(3.0 * lw),
     };
-    let segments = report.travels.iter().map(|t| (t.from, t.to));
-    stroke_segments(pixmap, view, segments, [150, 150, 150, 200], &stroke);
+    for t in &report.travels {
+        draw_segment(pixmap, view.px(t.from), view.px(t.to), &pen);
+    }
 }
 
 /// Colour steps from the lowest to the highest power.
 const POWER_STEPS: usize = 32;
 
-/// Burns grouped by colour step, stroked in bounded paths.
+/// Burns, each in the colour of its power step.
 fn draw_burns(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
-    let stroke = Stroke {
-        width: lw * 1.5,
-        line_cap: LineCap::Round,
-        ..Stroke::default()
-    };
-    let mut steps: Vec<Vec<(DVec2, DVec2)>> = vec![Vec::new(); POWER_STEPS];
     for b in &report.burns {
-        steps[power_step(report, b.power)].push((b.from, b.to));
-    }
-    for (step, segments) in steps.into_iter().enumerate() {
-        let color = step_color(report, step);
-        stroke_segments(pixmap, view, segments.into_iter(), color, &stroke);
+        let pen = Pen {
+            color: step_color(report, power_step(report, b.power)),
+            width: lw * 1.5,
+            dash: None,
+        };
+        draw_segment(pixmap, view.px(b.from), view.px(b.to), &pen);
     }
 }
 

@@ -22,9 +22,9 @@
 //! checked exactly for intersecting faces ([`intersect`]). Boundary non-overlap (eq. 2) is a
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
 
-pub mod estimate;
 pub mod boundary;
 pub mod constraints;
+pub mod estimate;
 pub mod fit;
 pub mod geometry;
 pub mod intersect;

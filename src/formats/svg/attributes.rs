@@ -149,7 +149,9 @@ pub fn check_values(doc: &roxmltree::Document) -> Result<Vec<String>, ParseError
                 transform(value)
             } else if LENIENT.contains(&name) {
                 let keyword = matches!(value.trim(), "inherit" | "initial" | "unset");
-                if let Err(why) = length(value, name).or_else(|e| if keyword { Ok(()) } else { Err(e) }) {
+                if let Err(why) =
+                    length(value, name).or_else(|e| if keyword { Ok(()) } else { Err(e) })
+                {
                     warnings.push(format!(
                         "{}: {name}=\"{}\" could not be read ({why}); its default was used",
                         element_at(doc, node),
@@ -302,7 +304,9 @@ fn transform(value: &str) -> Result<(), String> {
         if !NAMES.contains(&name) {
             return Err(format!("unknown transform \"{}\"", short(name)));
         }
-        let close = rest.find(')').ok_or("a transform without its closing bracket")?;
+        let close = rest
+            .find(')')
+            .ok_or("a transform without its closing bracket")?;
         if close < open {
             return Err("not a transform list".into());
         }

@@ -40,7 +40,10 @@ mod tests {
             nz: n / 2,
             depths: Vec::new(),
         };
-        let (a, b) = (conversion_estimate(&field(500)), conversion_estimate(&field(1000)));
+        let (a, b) = (
+            conversion_estimate(&field(500)),
+            conversion_estimate(&field(1000)),
+        );
         assert!((b.seconds / a.seconds - 8.0).abs() < 1e-9);
         assert!(b.bytes > a.bytes);
     }
