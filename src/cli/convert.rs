@@ -49,6 +49,14 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     args.scale
         .apply(&mut imported.pattern, imported.folded.as_mut())?;
-    input::save(&args.output, &imported.pattern, imported.folded.as_ref())?;
+    // Refuses an output that names the input, like every other command.
+    let mut outputs = formats::OutputSet::new();
+    input::stage(
+        &mut outputs,
+        &args.output,
+        &imported.pattern,
+        imported.folded.as_ref(),
+    )?;
+    input::commit(outputs, &[&args.input])?;
     Ok(Outcome::Done)
 }
