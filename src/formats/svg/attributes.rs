@@ -141,7 +141,7 @@ pub fn check_values(doc: &roxmltree::Document) -> Result<Vec<String>, ParseError
             }
             let problem = if LENGTHS.contains(&name) && !text {
                 length(value, name)
-            } else if name == "points" || name == "viewBox" {
+            } else if name == "points" || (name == "viewBox" && node.tag_name().name() == "svg") {
                 numbers(value)
             } else if name == "d" && value.trim() != "none" {
                 path_data(value)
