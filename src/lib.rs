@@ -29,6 +29,7 @@ pub mod design;
 pub mod fab;
 pub mod formats;
 pub mod geom;
+pub mod limits;
 pub mod machine;
 pub mod mesh;
 pub mod pattern;

@@ -50,8 +50,11 @@ pub fn run(args: Args) -> Result<Outcome> {
     let cp = &imported.pattern;
     let mut report = check_with_frame(cp, imported.folded.as_ref(), &args.limits.options());
     let layers = if args.limits.layers {
-        let outcome = check_layers(cp, &mut report, &args.limits.layer_options())
-            .map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
+        let bar = super::progress::spinner("searching layer orders");
+        let outcome = check_layers(cp, &mut report, &args.limits.layer_options());
+        bar.finish_and_clear();
+        let outcome =
+            outcome.map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
         Some(outcome)
     } else {
         None

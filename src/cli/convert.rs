@@ -26,7 +26,7 @@ pub struct Args {
     #[arg(long)]
     pub planarize: bool,
     /// Merge tolerance for --planarize, in the pattern's unit (default 1e-7 of the diagonal).
-    #[arg(long, value_parser = super::args::positive, requires = "planarize")]
+    #[arg(long, value_parser = |s: &str| foldcam::limits::TOLERANCE.parse(s), requires = "planarize")]
     pub tolerance: Option<f64>,
     #[command(flatten)]
     pub scale: ScaleArgs,
@@ -49,6 +49,14 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     args.scale
         .apply(&mut imported.pattern, imported.folded.as_mut())?;
-    input::save(&args.output, &imported.pattern, imported.folded.as_ref())?;
+    // Refuses an output that names the input, like every other command.
+    let mut outputs = formats::OutputSet::new();
+    input::stage(
+        &mut outputs,
+        &args.output,
+        &imported.pattern,
+        imported.folded.as_ref(),
+    )?;
+    input::commit(outputs, &[&args.input])?;
     Ok(Outcome::Done)
 }

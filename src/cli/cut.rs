@@ -4,7 +4,6 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use foldcam::fab::{FabPlan, Job};
-use foldcam::formats::write_atomic;
 use foldcam::machine::MachineProfile;
 use foldcam::post::{self, DxfVersion};
 
@@ -115,11 +114,12 @@ fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64
         simulated_clean(&text, machine).with_context(|| path.display().to_string())?;
         files.push((path, job, text));
     }
+    let mut outputs = foldcam::formats::OutputSet::new();
     for (path, _, text) in &files {
-        write_atomic(path, text.as_bytes()).with_context(|| path.display().to_string())?;
+        outputs.add(path.to_path_buf(), text.clone().into_bytes());
     }
-    for (path, job, _) in files {
-        eprintln!("foldcam: wrote {}", path.display());
+    super::input::commit(outputs, &[])?;
+    for (_, job, _) in files {
         if let Some((lo, hi)) = foldcam::fab::frame::bounds(job) {
             let how = if power > 0.0 && !machine.pen_tool() {
                 format!("at {:.0}% power", power * 100.0)
@@ -166,23 +166,23 @@ pub fn write_jobs(
     r12: bool,
     dasharray: bool,
 ) -> Result<()> {
-    let files = render_jobs(output, p, machine, r12, dasharray)?;
-    for (path, bytes) in &files {
-        write_atomic(path, bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
+    let mut outputs = foldcam::formats::OutputSet::new();
+    stage_jobs(&mut outputs, output, p, machine, r12, dasharray)?;
+    super::input::commit(outputs, &[])?;
     print!("{}", super::plan::summary(p));
     Ok(())
 }
 
-/// The files of the plan's jobs (see [`write_jobs`]), rendered and checked, not written.
-pub fn render_jobs(
+/// Renders every job of the plan (G-code read back by the simulated machine) and adds the
+/// files to `outputs`, written all together or not at all by [`super::input::commit`].
+pub fn stage_jobs(
+    outputs: &mut foldcam::formats::OutputSet,
     output: &Path,
     p: &FabPlan,
     machine: &MachineProfile,
     r12: bool,
     dasharray: bool,
-) -> Result<Vec<(PathBuf, Vec<u8>)>> {
+) -> Result<()> {
     let kind = output_kind(output)?;
     if dasharray && kind != Output::Svg {
         eprintln!("warning: --dasharray applies to SVG output only: ignored");
@@ -196,13 +196,12 @@ pub fn render_jobs(
         eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
     let paths = job_paths(output, p);
-    let mut files = Vec::new();
-    for (job, path) in p.jobs.iter().zip(paths) {
+    for (job, path) in p.jobs.iter().zip(&paths) {
         let bytes = render(kind, p, job, machine, r12, dasharray)
             .with_context(|| path.display().to_string())?;
-        files.push((path, bytes));
+        outputs.add(path, bytes);
     }
-    Ok(files)
+    Ok(())
 }
 
 fn render(

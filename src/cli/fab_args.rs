@@ -1,11 +1,11 @@
 //! Arguments shared by `cut` and `plan`: machine, material and plan overrides.
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use clap::Args;
 use foldcam::fab::{Operation, PlanOptions, Tabs};
 use foldcam::machine::{MachineProfile, Material, load_machine, load_material};
 
-use super::args::positive;
+use foldcam::limits;
 
 /// An operation, or `skip` (`None`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -74,27 +74,27 @@ pub struct FabArgs {
     #[arg(long, value_name = "OP", value_parser = operation)]
     pub boundary: Option<OpChoice>,
     /// Perforation dash length, mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::DASH.parse(s))]
     pub dash: Option<f64>,
     /// Perforation bridge: the material left between dashes, mm (the kerf is taken into
     /// account unless --no-kerf-offset).
-    #[arg(long, value_name = "MM", value_parser = positive, conflicts_with = "duty")]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::BRIDGE.parse(s), conflicts_with = "duty")]
     pub bridge: Option<f64>,
     /// Perforation duty cycle instead of a bridge length: the cut share of each dash period,
     /// between 0 and 1 (exclusive); the bridge becomes dash × (1 − duty) / duty.
     #[arg(long, value_name = "SHARE", value_parser = duty_cycle)]
     pub duty: Option<f64>,
     /// Shortest perforation dash worth cutting, mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::MIN_DASH.parse(s))]
     pub min_dash: Option<f64>,
     /// Least uncut material between two cuts (the web), mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::MIN_WEB.parse(s))]
     pub min_web: Option<f64>,
     /// Uncut clearance kept around every vertex at least, mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::CLEARANCE.parse(s))]
     pub clearance: Option<f64>,
     /// Kerf width, mm (default from the material).
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::KERF.parse(s))]
     pub kerf: Option<f64>,
     /// Do not offset contours by half the kerf.
     #[arg(long)]
@@ -104,16 +104,16 @@ pub struct FabArgs {
     #[arg(long)]
     pub two_sided: bool,
     /// Leave holding tabs of this width in closed contours, mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::TAB_WIDTH.parse(s))]
     pub tabs: Option<f64>,
     /// Spacing between holding tabs, mm.
-    #[arg(long, value_name = "MM", value_parser = positive, default_value_t = 50.0, requires = "tabs")]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::TAB_SPACING.parse(s), default_value_t = 50.0, requires = "tabs")]
     pub tab_spacing: f64,
     /// Lead-in length on the scrap side of closed contours, mm.
-    #[arg(long, value_name = "MM", value_parser = positive)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::LEAD_IN.parse(s))]
     pub lead_in: Option<f64>,
     /// Distance from the bed origin to the pattern, mm.
-    #[arg(long, value_name = "MM", default_value_t = 5.0)]
+    #[arg(long, value_name = "MM", default_value_t = 5.0, value_parser = |s: &str| limits::MARGIN.parse(s))]
     pub margin: f64,
     /// Keep the pattern's order (no travel optimisation).
     #[arg(long)]
@@ -190,18 +190,13 @@ impl FabArgs {
             spacing_mm: self.tab_spacing,
         });
         o.lead_in_mm = self.lead_in;
-        if !(self.margin.is_finite() && self.margin >= 0.0) {
-            bail!(
-                "--margin {}: must be a finite number of mm, at least 0",
-                self.margin
-            );
-        }
         o.margin_mm = self.margin;
         o.optimize = !self.no_optimize;
         o.placement = foldcam::fab::placement::Placement {
             centre: self.origin == OriginArg::Centre,
             offset_mm: self.offset.unwrap_or(glam::DVec2::ZERO),
         };
+        o.validate()?;
         Ok((machine, material, o))
     }
 }

@@ -109,7 +109,8 @@ fn check_picture_size(panels: usize, width: u32, what: &str) -> Result<()> {
     if total > MAX_PICTURE_PIXELS {
         let fits = ((MAX_PICTURE_PIXELS / panels) as f64).sqrt().floor();
         anyhow::bail!(
-            "--width {width}: the {what} of {panels} steps would hold {:.0} megapixels, over the              limit of {}; use --width {fits} or less",
+            "--width {width}: the {what} of {panels} steps would hold {:.0} megapixels, over the \
+             limit of {}; use --width {fits} or less",
             total as f64 / 1e6,
             MAX_PICTURE_PIXELS / 1_000_000
         );

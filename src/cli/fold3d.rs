@@ -116,7 +116,10 @@ pub fn run(args: Args) -> Result<Outcome> {
         frames: if args.gif.is_some() { GIF_FRAMES } else { 0 },
         ..FoldOptions::default()
     };
-    let result = fold(cp, &opts).map_err(|e| anyhow!("{name}: {e}"))?;
+    let bar = super::progress::spinner("folding");
+    let result = fold(cp, &opts);
+    bar.finish_and_clear();
+    let result = result.map_err(|e| anyhow!("{name}: {e}"))?;
     let mut outputs = vec![(
         args.output.clone(),
         write_string(cp, Some(&result.folded)).into_bytes(),

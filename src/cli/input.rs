@@ -17,7 +17,7 @@ pub struct FrameArg {
     pub fold_frame: Option<usize>,
     /// SVG and DXF input: join line ends that stop within this distance (mm) of a line or
     /// corner; default 1/1000 of the drawing's diagonal, 0 turns it off.
-    #[arg(long, value_name = "MM", value_parser = non_negative)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| foldcam::limits::SNAP.parse(s))]
     pub snap: Option<f64>,
     /// SVG input: what dashed lines mean in a drawing of one colour (auto: dashes valley,
     /// dash-dot mountain; or valley, mountain, cut, flat, unassigned, boundary).
@@ -32,15 +32,6 @@ impl FrameArg {
             snap: self.snap,
             dashed: self.dashed,
         }
-    }
-}
-
-fn non_negative(s: &str) -> Result<f64, String> {
-    let v: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
-    if v.is_finite() && v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(format!("{s} must be a finite number of at least 0"))
     }
 }
 

@@ -24,6 +24,7 @@ mod popup;
 mod popup_input;
 mod popup_poly;
 mod preview;
+mod progress;
 mod simulate;
 mod tessellate;
 mod testgrid;

@@ -152,9 +152,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         for (s, cp) in made.sheets.iter().enumerate() {
             let sheet = sheet_path(job, s);
             let p = plan(cp, &m, &x, &o).with_context(|| sheet.display().to_string())?;
-            for (path, bytes) in super::cut::render_jobs(&sheet, &p, &m, false, false)? {
-                outputs.add(path, bytes);
-            }
+            super::cut::stage_jobs(&mut outputs, &sheet, &p, &m, false, false)?;
             plans.push(p);
         }
     }

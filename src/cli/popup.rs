@@ -145,16 +145,22 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     if let Some(path) = &args.save_voxels {
         outputs.add(path, format_voxel_card(&card).into_bytes());
     }
+    let mut plan = None;
     match (&args.machine, &args.material) {
         (Some(machine), Some(material)) => {
             let (machine, material, options) = args.fab.resolve(machine, material)?;
-            let plan = foldcam::fab::plan(&cp, &machine, &material, &options)
+            let p = foldcam::fab::plan(&cp, &machine, &material, &options)
                 .with_context(|| args.input.display().to_string())?;
-            super::cut::write_jobs(&args.output, &plan, &machine, args.r12, args.dasharray)?;
+            let (r12, dashes) = (args.r12, args.dasharray);
+            super::cut::stage_jobs(&mut outputs, &args.output, &p, &machine, r12, dashes)?;
+            plan = Some(p);
         }
         _ => super::input::stage(&mut outputs, &args.output, &cp, None)?,
     }
     super::input::commit(outputs, &[&args.input])?;
+    if let Some(p) = &plan {
+        print!("{}", super::plan::summary(p));
+    }
     let (w, h) = card.sheet_mm();
     println!(
         "{}: {} × {} × {} cells of {:.3} mm, sheet {w:.1} × {h:.1} mm, pops up",

@@ -12,7 +12,7 @@ use foldcam::design::popup::voxel::{
 };
 use foldcam::formats::read_text;
 
-use super::args::positive;
+use foldcam::limits;
 
 /// The mesh's up axis.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -28,8 +28,8 @@ pub enum Up {
 #[command(next_help_heading = "From a mesh or height map")]
 pub struct ModelArgs {
     /// Mesh: cells along the fold (Mitani, Suzuki & Uno 2003 used 80).
-    #[arg(long, value_name = "CELLS", default_value_t = 80)]
-    pub resolution: usize,
+    #[arg(long, value_name = "CELLS", default_value_t = 80, value_parser = |s: &str| limits::RESOLUTION.parse(s))]
+    pub resolution: u64,
     /// Mesh: which axis points up.
     #[arg(long, value_enum, default_value = "z")]
     pub up: Up,
@@ -41,10 +41,10 @@ pub struct ModelArgs {
     #[arg(long, value_name = "CELLS", default_value_t = 40)]
     pub depth: usize,
     /// Cell size in mm (default: --card-width over the cells along the fold).
-    #[arg(long, value_name = "MM", value_parser = positive, conflicts_with = "card_width")]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::CELL.parse(s), conflicts_with = "card_width")]
     pub cell_mm: Option<f64>,
     /// Width of the cells along the fold in mm.
-    #[arg(long, value_name = "MM", value_parser = positive, default_value_t = 160.0)]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::CARD_WIDTH.parse(s), default_value_t = 160.0)]
     pub card_width: f64,
     /// Flat paper around the cells, in mm.
     #[arg(long, value_name = "MM", default_value_t = 10.0)]
@@ -94,7 +94,7 @@ pub fn load_card(path: &Path, args: &ModelArgs) -> Result<VoxelCard> {
                     Up::Z => UpAxis::Z,
                     Up::Y => UpAxis::Y,
                 },
-                resolution: args.resolution,
+                resolution: usize::try_from(args.resolution).unwrap_or(usize::MAX),
                 keep_depth: args.keep_depth,
             };
             let started = std::time::Instant::now();
@@ -115,13 +115,23 @@ pub fn load_card(path: &Path, args: &ModelArgs) -> Result<VoxelCard> {
         }
     };
     let cell_mm = args.cell_mm.unwrap_or(args.card_width / field.nx as f64);
+    eprintln!(
+        "foldcam: building a card of {} × {} × {} cells: {} (estimated)",
+        field.nx,
+        field.ny,
+        field.nz,
+        foldcam::design::popup::voxel::estimate::conversion_estimate(&field)
+    );
     let options = ConvertOptions {
         element: args.morphology,
         windows: !args.no_windows,
         window_gap: args.window_gap,
         thin_top: args.thin_top,
     };
-    let (mut card, report) = card_from_depths(&field, cell_mm, &options).map_err(|e| at(&e))?;
+    let bar = super::progress::spinner("building the card");
+    let built = card_from_depths(&field, cell_mm, &options);
+    bar.finish_and_clear();
+    let (mut card, report) = built.map_err(|e| at(&e))?;
     card.set_margin_mm(args.card_margin)
         .map_err(|e| anyhow!("--card-margin: {e}"))?;
     progress(&report);

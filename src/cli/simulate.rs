@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
 use foldcam::fab::plan;
-use foldcam::formats::{read_text, write_atomic};
+use foldcam::formats::write_atomic;
 use foldcam::machine::load_machine;
 use foldcam::sim::{self, CoverageReport, SimReport};
 
@@ -64,8 +64,18 @@ pub struct Args {
 /// Runs the simulation and prints the report.
 pub fn run(args: Args) -> Result<Outcome> {
     let machine = load_machine(&args.machine)?;
-    let text = read_text(&args.job)?;
-    let report = sim::run(&text, &machine).map_err(|e| anyhow!("{}: {e}", args.job.display()))?;
+    // Burns and travels are kept only where they are used; otherwise the run streams the
+    // file in memory independent of its length.
+    let keep_moves = args.png.is_some() || args.pattern.is_some() || args.json;
+    let file = std::fs::File::open(&args.job).with_context(|| args.job.display().to_string())?;
+    let size = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let bar = super::progress::bar(size, "simulating");
+    let reader = std::io::BufReader::with_capacity(1 << 16, file);
+    let report = sim::run_reader(reader, &machine, keep_moves, |bytes| {
+        bar.set_position(bytes)
+    })
+    .map_err(|e| anyhow!("{}: {e}", args.job.display()))?;
+    bar.finish_and_clear();
     let coverage = match (&args.pattern, &args.material) {
         (Some(pattern), Some(material)) => Some(check_coverage(&args, &report, pattern, material)?),
         _ => None,

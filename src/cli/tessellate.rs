@@ -171,6 +171,12 @@ pub fn run(args: Args) -> Result<Outcome> {
         corner = limits.min_vertex_angle.to_degrees(),
     );
     let shrinks = args.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
+    eprintln!(
+        "foldcam: estimate: {} per solve, up to {} solve(s) (one per face shrink tried)",
+        foldcam::design::tessellation::estimate::solve_estimate(mesh.faces().len()),
+        shrinks.len()
+    );
+    let bar = super::progress::bar(args.max_iterations as u64, "solving");
     let retry = |s: f64, t: &Tessellation| {
         if args.shrink.is_none() {
             let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
@@ -185,7 +191,8 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
     };
     let t = tessellate_shrinking(&mesh, &opts, &shrinks, retry, |it| {
-        eprintln!(
+        bar.set_position(it.index as u64);
+        bar.suspend(|| eprintln!(
             "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \
              active limits {}, corner penalties {}, step {}",
             it.index,
@@ -195,9 +202,10 @@ pub fn run(args: Args) -> Result<Outcome> {
             it.active[1] + it.active[2] + it.active[3],
             it.active[6],
             it.step
-        );
-    })
-    .map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
+        ));
+    });
+    bar.finish_and_clear();
+    let t = t.map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
     println!(
         "{}: {} layout, {} tucks, shrink {}, {} vertices, {} triangles, {} interior vertices",
         args.mesh.display(),

@@ -256,6 +256,24 @@ impl PlanOptions {
 }
 
 impl PlanOptions {
+    /// Checks every number against [`crate::limits`] (the ranges the material profiles
+    /// accept) and the perforation's lengths against each other, so that no option given on
+    /// the command line or by a library caller reaches the planner out of range.
+    pub fn validate(&self) -> Result<(), crate::limits::LimitError> {
+        use crate::limits::{self, check_length};
+        check_length(&limits::KERF, self.kerf_mm)?;
+        check_length(&limits::MARGIN, self.margin_mm)?;
+        limits::check_perforation(&self.perforation)?;
+        if let Some(t) = &self.tabs {
+            check_length(&limits::TAB_WIDTH, t.width_mm)?;
+            check_length(&limits::TAB_SPACING, t.spacing_mm)?;
+        }
+        if let Some(l) = self.lead_in_mm {
+            check_length(&limits::LEAD_IN, l)?;
+        }
+        Ok(())
+    }
+
     /// Fits the operation mapping to `machine`. A pen plotter draws what a laser would burn:
     /// scores and cuts become plots, marks stay marks (a second pen), perforations stay
     /// perforations (drawn as dashes); when mountains and valleys would share one operation,
@@ -314,6 +332,9 @@ impl PlanOptions {
 /// Why a plan could not be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FabError {
+    /// A setting is out of range (see [`crate::limits`]).
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
     /// The pattern has no physical size.
     #[error(transparent)]
     Unitless(#[from] crate::pattern::UnitlessError),

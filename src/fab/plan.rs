@@ -38,6 +38,7 @@ pub fn plan(
     opts: &PlanOptions,
 ) -> Result<FabPlan, FabError> {
     cp.require_millimetres()?;
+    opts.validate()?;
     let (paths, remarks) = geometry::toolpaths_with_warnings(cp, opts)?;
     let mut plan = plan_toolpaths(cp, paths, machine, material, opts)?;
     plan.warnings.extend(opts.notes.iter().cloned());

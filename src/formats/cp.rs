@@ -10,7 +10,7 @@
 //! | 2 | mountain | mountain `M` | mountain `M` |
 //! | 3 | valley | valley `V` | valley `V` |
 //! | 4 | auxiliary (later editors) | flat `F` | flat `F` |
-//! | 0, other | none / auxiliary | flat `F` | unassigned `U`, join `J` |
+//! | 0, other | none / auxiliary | flat `F` (types beyond 0–4 with a warning) | unassigned `U`, join `J` |
 //!
 //! ORIPA itself reads every type other than 1, 2 and 3 as an auxiliary line, which is what
 //! flat means here. The format has no unassigned, cut or join lines and no fold angles, so a
@@ -73,13 +73,18 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
         ..CreasePattern::default()
     };
     let mut zero_length = Vec::new();
+    let mut unusual: Vec<(usize, i64)> = Vec::new();
     for (index, line) in text.lines().enumerate() {
         let number = index + 1;
-        let Some((assignment, a, b)) = parse_line(line)
+        let Some((line_type, a, b)) = parse_line(line)
             .map_err(|message| ParseError::new(format!("line {number}"), message))?
         else {
             continue;
         };
+        if !KNOWN_TYPES.contains(&line_type) {
+            unusual.push((number, line_type));
+        }
+        let assignment = assignment_of(line_type);
         if a == b {
             zero_length.push(number);
             continue;
@@ -104,11 +109,22 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     if !zero_length.is_empty() {
         warnings.push(zero_length_warning(&zero_length));
     }
+    if let Some(&(first, line_type)) = unusual.first() {
+        warnings.push(format!(
+            "{} line(s) of a type other than 0-4 (the first: line {first}, type {line_type}) \
+             were read as auxiliary lines (flat), as ORIPA reads them",
+            unusual.len()
+        ));
+    }
     super::finish_drawing(pattern, None, None, "lying", warnings)
 }
 
-/// One text line: `None` when blank, else the assignment and the two end points (y up).
-fn parse_line(line: &str) -> Result<Option<(Assignment, DVec2, DVec2)>, String> {
+/// The types ORIPA and later editors define (see the module table); others are read as
+/// auxiliary lines with a warning.
+const KNOWN_TYPES: std::ops::RangeInclusive<i64> = 0..=4;
+
+/// One text line: `None` when blank, else the line type and the two end points (y up).
+fn parse_line(line: &str) -> Result<Option<(i64, DVec2, DVec2)>, String> {
     let fields: Vec<&str> = line.split_whitespace().collect();
     if fields.is_empty() {
         return Ok(None);
@@ -120,11 +136,14 @@ fn parse_line(line: &str) -> Result<Option<(Assignment, DVec2, DVec2)>, String> 
         ));
     };
     let line_type: i64 = kind.parse().map_err(|_| {
-        format!("line type {kind:?} is not an integer (1 cut, 2 mountain, 3 valley)")
+        format!(
+            "line type {kind:?} is not an integer (1 cut, 2 mountain, 3 valley; 0, 4 and any \
+             other whole number an auxiliary line, read as flat)"
+        )
     })?;
     let a = DVec2::new(coordinate("x0", x0)?, -coordinate("y0", y0)?);
     let b = DVec2::new(coordinate("x1", x1)?, -coordinate("y1", y1)?);
-    Ok(Some((assignment_of(line_type), a, b)))
+    Ok(Some((line_type, a, b)))
 }
 
 /// One coordinate field, finite and within ±[`MAX_COORDINATE`].
@@ -203,8 +222,8 @@ mod tests {
     #[test]
     fn lines_parse_with_y_negated() {
         let parsed = parse_line(" 2\t-200 0.5  1e2 200 ").ok().flatten();
-        let (a, p, q) = parsed.unwrap_or((Assignment::Join, DVec2::NAN, DVec2::NAN));
-        assert_eq!(a, Assignment::Mountain);
+        let (t, p, q) = parsed.unwrap_or((-1, DVec2::NAN, DVec2::NAN));
+        assert_eq!(assignment_of(t), Assignment::Mountain);
         assert_eq!(p, DVec2::new(-200.0, -0.5));
         assert_eq!(q, DVec2::new(100.0, -200.0));
         assert_eq!(parse_line("   "), Ok(None));

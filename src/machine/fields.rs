@@ -127,6 +127,29 @@ impl<'a> Fields<'a> {
         self.check_number(key, value, lo, hi, &expected)
     }
 
+    /// The real number `key`, within the range of `limit` (the range and message the command
+    /// line uses for the same setting).
+    pub(crate) fn limited(
+        &mut self,
+        key: &str,
+        limit: &crate::limits::Limit,
+    ) -> Result<f64, ProfileError> {
+        let expected = limit.expected();
+        let value = self.require(key, &expected)?;
+        self.check_number(key, value, limit.min, limit.max, &expected)
+    }
+
+    /// The whole number `key`, within the range of `limit`.
+    pub(crate) fn counted(
+        &mut self,
+        key: &str,
+        limit: &crate::limits::CountLimit,
+    ) -> Result<u64, ProfileError> {
+        let hi = i64::try_from(limit.max).unwrap_or(i64::MAX);
+        let lo = i64::try_from(limit.min).unwrap_or(i64::MAX);
+        self.integer(key, lo, hi).map(|v| v as u64)
+    }
+
     fn check_number(
         &self,
         key: &str,

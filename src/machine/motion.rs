@@ -230,7 +230,15 @@ pub struct Timeline {
     run: Vec<Move>,
     run_start: DVec2,
     at: DVec2,
+    /// Seconds of the pieces of the current run already timed (see [`MAX_RUN_MOVES`]).
+    banked_s: f64,
 }
+
+/// Most moves timed together: a longer run without a stop is timed in pieces of this many
+/// moves, each ending at rest, so memory stays bounded however long the job is. A real
+/// controller plans only a few dozen moves ahead (GRBL 1.1: 16), so the extra stop every
+/// 65,536 moves costs far less time than the estimate's own error.
+pub const MAX_RUN_MOVES: usize = 65_536;
 
 impl Timeline {
     /// At rest at `start`.
@@ -240,6 +248,7 @@ impl Timeline {
             run: Vec::new(),
             run_start: start,
             at: start,
+            banked_s: 0.0,
         }
     }
 
@@ -252,10 +261,20 @@ impl Timeline {
     pub fn push(&mut self, m: Move) {
         self.run.push(m);
         self.at = m.to;
+        if self.run.len() >= MAX_RUN_MOVES {
+            self.banked_s += self.time_run();
+        }
     }
 
     /// Brings the machine to rest; returns the seconds of the run since the last stop.
     pub fn stop(&mut self) -> f64 {
+        let t = self.time_run() + self.banked_s;
+        self.banked_s = 0.0;
+        t
+    }
+
+    /// Times the moves held, from rest to rest, and lets them go.
+    fn time_run(&mut self) -> f64 {
         let t = move_times(self.run_start, &self.run, &self.kin)
             .iter()
             .sum();

@@ -28,6 +28,7 @@ use super::fields::Fields;
 use super::profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
 };
+use crate::limits;
 
 /// GRBL's default `$30` (`S` at full power), used when a non-laser profile has no `[power]`.
 const DEFAULT_S_MAX: f64 = 1000.0;
@@ -46,7 +47,7 @@ pub(crate) fn machine_from_table(
     let needs_laser = kind == MachineKind::Laser && dialect != Dialect::FileOnly;
     let needs_pen = kind != MachineKind::Laser && dialect != Dialect::FileOnly;
     let bed = read_bed(f.table("bed")?)?;
-    let max_feed_mm_min = f.number("max_feed_mm_min", 1.0, 1e6, "mm/min")?;
+    let max_feed_mm_min = f.limited("max_feed_mm_min", &limits::FEED)?;
     let travel_feed_mm_min = f.number(
         "travel_feed_mm_min",
         1.0,
@@ -55,7 +56,7 @@ pub(crate) fn machine_from_table(
     )?;
     let acceleration_mm_s2 = f.number("acceleration_mm_s2", 1.0, 1e5, "mm/s²")?;
     let junction_deviation_mm = f.number("junction_deviation_mm", 0.0, 1.0, "mm")?;
-    let resolution_mm = f.number("resolution_mm", 1e-5, 0.1, "mm")?;
+    let resolution_mm = f.limited("resolution_mm", &limits::MACHINE_RESOLUTION)?;
     let power = read_power(&mut f, needs_laser)?;
     let laser_mode = read_laser_mode(&mut f, needs_laser)?;
     let dwell_unit = read_dwell_unit(&mut f, dialect)?;
@@ -98,8 +99,8 @@ fn check_kind_dialect(f: &Fields, kind: MachineKind, dialect: Dialect) -> Result
 }
 
 fn read_bed(mut t: Fields) -> Result<Bed, ProfileError> {
-    let width_mm = t.number("width_mm", 1.0, 1e4, "mm")?;
-    let height_mm = t.number("height_mm", 1.0, 1e4, "mm")?;
+    let width_mm = t.limited("width_mm", &limits::BED_SIZE)?;
+    let height_mm = t.limited("height_mm", &limits::BED_SIZE)?;
     let origin = Corner::ALL[t.choice("origin", &Corner::ALL.map(Corner::name))?];
     let y_flipped = t.bool_or("y_flipped", false)?;
     t.finish()?;

@@ -3,7 +3,8 @@
 //! Layout (all keys are listed in `machines/README.md`): top-level `description`,
 //! `thickness_mm`, `kerf_mm`; one table per operation `[settings.cut]`, `[settings.perforate]`,
 //! `[settings.score]`, `[settings.mark]`, `[settings.plot]` (all five required); then
-//! `[perforation]`, `[operations]` and `[limits]`. Ranges accepted:
+//! `[perforation]`, `[operations]` and `[limits]`. Ranges accepted (the numeric ones are those of
+//! [`crate::limits`], shared with the command line):
 //!
 //! | key | range |
 //! | --- | --- |
@@ -32,6 +33,7 @@ use super::material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
 use crate::fab::Operation;
+use crate::limits;
 
 /// The word that maps an assignment to no operation.
 const SKIP: &str = "skip";
@@ -44,8 +46,8 @@ pub(crate) fn material_from_table(
 ) -> Result<Material, ProfileError> {
     let mut f = Fields::root(source, table);
     let description = f.text_line("description")?;
-    let thickness_mm = f.number("thickness_mm", 0.01, 50.0, "mm")?;
-    let kerf_mm = f.number("kerf_mm", 0.0, 5.0, "mm")?;
+    let thickness_mm = f.limited("thickness_mm", &limits::THICKNESS)?;
+    let kerf_mm = f.limited("kerf_mm", &limits::KERF)?;
     let settings = read_settings(f.table("settings")?)?;
     let perforation = read_perforation(f.table("perforation")?)?;
     let mapping = read_mapping(f.table("operations")?)?;
@@ -77,9 +79,9 @@ fn read_settings(mut t: Fields) -> Result<SettingsByOperation, ProfileError> {
 }
 
 fn read_operation(mut t: Fields) -> Result<OperationSettings, ProfileError> {
-    let speed_mm_min = t.number("speed_mm_min", 1.0, 1e6, "mm/min")?;
-    let power = t.number("power", 0.0, 1.0, "(fraction of full power)")?;
-    let passes = t.integer("passes", 1, 100)? as u32;
+    let speed_mm_min = t.limited("speed_mm_min", &limits::SPEED)?;
+    let power = t.limited("power", &limits::POWER)?;
+    let passes = t.counted("passes", &limits::PASSES)? as u32;
     t.finish()?;
     Ok(OperationSettings {
         speed_mm_min,
@@ -89,11 +91,21 @@ fn read_operation(mut t: Fields) -> Result<OperationSettings, ProfileError> {
 }
 
 fn read_perforation(mut t: Fields) -> Result<Perforation, ProfileError> {
-    let cut_mm = t.number("cut_mm", 0.01, 1000.0, "mm")?;
-    let bridge_mm = t.number("bridge_mm", 0.01, 1000.0, "mm")?;
-    let min_dash_mm = t.number("min_dash_mm", 0.01, cut_mm, "mm (at most cut_mm)")?;
-    let min_web_mm = t.number("min_web_mm", 0.01, bridge_mm, "mm (at most bridge_mm)")?;
-    let vertex_clearance_mm = t.number("vertex_clearance_mm", 0.0, 100.0, "mm")?;
+    let cut_mm = t.limited("cut_mm", &limits::DASH)?;
+    let bridge_mm = t.limited("bridge_mm", &limits::BRIDGE)?;
+    let min_dash_mm = t.number(
+        "min_dash_mm",
+        limits::MIN_DASH.min,
+        cut_mm,
+        "mm (at most cut_mm)",
+    )?;
+    let min_web_mm = t.number(
+        "min_web_mm",
+        limits::MIN_WEB.min,
+        bridge_mm,
+        "mm (at most bridge_mm)",
+    )?;
+    let vertex_clearance_mm = t.limited("vertex_clearance_mm", &limits::CLEARANCE)?;
     t.finish()?;
     Ok(Perforation {
         cut_mm,

@@ -51,6 +51,8 @@ pub(crate) struct Machine<'a> {
     pub ended: bool,
     /// What was found so far.
     pub report: SimReport,
+    /// The profile's pen commands.
+    pub(super) pens: super::PenCommands,
 }
 
 impl<'a> Machine<'a> {
@@ -75,6 +77,7 @@ impl<'a> Machine<'a> {
             timeline: Timeline::new(Kinematics::of(profile), DVec2::ZERO),
             ended: false,
             report: SimReport::new(&profile.name, profile.dialect, profile.power),
+            pens: super::PenCommands::of(profile),
         }
     }
 

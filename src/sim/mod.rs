@@ -45,6 +45,7 @@ mod coverage;
 mod execute;
 mod grid;
 mod parse;
+mod raster;
 mod render;
 mod report;
 
@@ -84,6 +85,14 @@ pub enum SimError {
         /// The limit.
         limit: usize,
     },
+    /// The program could not be read.
+    #[error("line {line}: {message}")]
+    Read {
+        /// Line number, from 1.
+        line: usize,
+        /// What went wrong.
+        message: String,
+    },
     /// The profile takes no G-code.
     #[error("machine {machine} takes no G-code (dialect file-only)")]
     NoGcode {
@@ -92,37 +101,100 @@ pub enum SimError {
     },
 }
 
-/// Runs the G-code `text` on `machine` and reports what it does.
+/// Runs the G-code `text` on `machine` and reports what it does (every burn and travel kept
+/// in the report).
 pub fn run(text: &str, machine: &MachineProfile) -> Result<SimReport, SimError> {
+    let mut m = start(machine, true)?;
+    let mut last = 0;
+    for (i, raw) in text.lines().enumerate() {
+        last = i + 1;
+        feed(&mut m, last, raw)?;
+    }
+    Ok(end(m, last))
+}
+
+/// Runs the G-code read from `reader` line by line, without holding the program: with
+/// `keep_moves` false the report holds only totals (no [`SimReport::burns`] or
+/// [`SimReport::travels`]), so memory does not grow with the job's length. `on_line` is called
+/// with the bytes read so far every 65,536 lines (for a progress bar).
+pub fn run_reader<R: std::io::BufRead>(
+    mut reader: R,
+    machine: &MachineProfile,
+    keep_moves: bool,
+    mut on_line: impl FnMut(u64),
+) -> Result<SimReport, SimError> {
+    use std::io::BufRead as _;
+    let mut m = start(machine, keep_moves)?;
+    let mut buf = Vec::with_capacity(MAX_LINE_BYTES + 2);
+    let (mut last, mut bytes) = (0, 0u64);
+    loop {
+        buf.clear();
+        let limit = (MAX_LINE_BYTES + 2) as u64;
+        let n = std::io::Read::take(&mut reader, limit)
+            .read_until(b'\n', &mut buf)
+            .map_err(|e| SimError::Read {
+                line: last + 1,
+                message: e.to_string(),
+            })?;
+        if n == 0 {
+            break;
+        }
+        last += 1;
+        bytes += n as u64;
+        if last % 65_536 == 0 {
+            on_line(bytes);
+        }
+        let text = buf.strip_suffix(b"\n").unwrap_or(&buf);
+        if text.len() == buf.len() && n as u64 == limit {
+            let limit = MAX_LINE_BYTES;
+            return Err(SimError::LineTooLong { line: last, limit });
+        }
+        let text = text.strip_suffix(b"\r").unwrap_or(text);
+        let raw = std::str::from_utf8(text).map_err(|_| SimError::Read {
+            line: last,
+            message: "not UTF-8 text".into(),
+        })?;
+        feed(&mut m, last, raw)?;
+    }
+    Ok(end(m, last))
+}
+
+/// A machine ready to run on `machine`.
+fn start(machine: &MachineProfile, keep_moves: bool) -> Result<Machine<'_>, SimError> {
     if machine.dialect == Dialect::FileOnly {
         return Err(SimError::NoGcode {
             machine: machine.name.clone(),
         });
     }
-    let pens = PenCommands::of(machine);
     let mut m = Machine::new(machine);
-    let mut last = 0;
-    for (i, raw) in text.lines().enumerate() {
-        let line = i + 1;
-        if line > MAX_LINES {
-            return Err(SimError::TooManyLines { limit: MAX_LINES });
-        }
-        if raw.len() > MAX_LINE_BYTES {
-            let limit = MAX_LINE_BYTES;
-            return Err(SimError::LineTooLong { line, limit });
-        }
-        last = line;
-        if !m.ended {
-            step(&mut m, &pens, line, raw);
-        }
+    m.report.keep_moves = keep_moves;
+    Ok(m)
+}
+
+/// Runs line `line` (from 1), checking the line limits.
+fn feed(m: &mut Machine, line: usize, raw: &str) -> Result<(), SimError> {
+    if line > MAX_LINES {
+        return Err(SimError::TooManyLines { limit: MAX_LINES });
     }
+    if raw.len() > MAX_LINE_BYTES {
+        let limit = MAX_LINE_BYTES;
+        return Err(SimError::LineTooLong { line, limit });
+    }
+    if !m.ended {
+        step(m, line, raw);
+    }
+    Ok(())
+}
+
+/// The report after `last` lines.
+fn end(mut m: Machine, last: usize) -> SimReport {
     m.report.lines = last;
-    Ok(m.finish(last.max(1)))
+    m.finish(last.max(1))
 }
 
 /// Runs one line.
-fn step(m: &mut Machine, pens: &PenCommands, line: usize, raw: &str) {
-    if let Some(down) = pens.matches(raw) {
+fn step(m: &mut Machine, line: usize, raw: &str) {
+    if let Some(down) = m.pens.matches(raw) {
         m.set_pen(down);
         return;
     }
@@ -148,13 +220,13 @@ fn system(m: &mut Machine, line: usize, cmd: &str) {
 }
 
 /// The profile's pen commands, normalised, keeping the lines that tell up from down.
-struct PenCommands {
+pub(crate) struct PenCommands {
     down: Vec<String>,
     up: Vec<String>,
 }
 
 impl PenCommands {
-    fn of(machine: &MachineProfile) -> Self {
+    pub(crate) fn of(machine: &MachineProfile) -> Self {
         let norm = |v: &[String]| -> Vec<String> {
             v.iter()
                 .map(|s| parse::normalize(s))

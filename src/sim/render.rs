@@ -2,13 +2,17 @@
 //! by power in 32 steps (blue for the profile's lowest power through red for its highest; pen
 //! strokes in black), seen from above with the bed's front at the bottom.
 //!
+//! Travel and burns are drawn by [`super::raster`] in time linear in the moves; the bed outline
+//! by tiny-skia.
+//!
 //! Machine x runs to the right. Machine y runs up the image unless the bed is `y_flipped`
 //! (origin at the back), when it runs down. Moves outside the bed are drawn where they go,
 //! clipped by the image.
 
 use glam::DVec2;
-use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
+use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
 
+use super::raster::{Pen, draw_segment};
 use super::report::SimReport;
 use crate::machine::MachineProfile;
 use crate::render::{MAX_SIZE, MIN_SIZE, RenderError};
@@ -150,35 +154,28 @@ fn draw_bed(pixmap: &mut Pixmap, view: &View, machine: &MachineProfile, lw: f32)
 }
 
 fn draw_travel(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
-    let mut pb = PathBuilder::new();
-    for t in &report.travels {
-        segment(&mut pb, view, t.from, t.to);
-    }
-    let stroke = Stroke {
+    let pen = Pen {
+        color: [150, 150, 150, 200],
         width: lw * 0.5,
-        dash: StrokeDash::new(vec![3.0 * lw, 3.0 * lw], 0.0),
-        ..Stroke::default()
+        dash: Some(3.0 * lw),
     };
-    stroke_path(pixmap, pb, [150, 150, 150, 200], &stroke);
+    for t in &report.travels {
+        draw_segment(pixmap, view.px(t.from), view.px(t.to), &pen);
+    }
 }
 
 /// Colour steps from the lowest to the highest power.
 const POWER_STEPS: usize = 32;
 
-/// Burns in one path per colour step (one pass over the burns).
+/// Burns, each in the colour of its power step.
 fn draw_burns(pixmap: &mut Pixmap, view: &View, report: &SimReport, lw: f32) {
-    let stroke = Stroke {
-        width: lw * 1.5,
-        line_cap: LineCap::Round,
-        ..Stroke::default()
-    };
-    let mut paths: Vec<PathBuilder> = (0..POWER_STEPS).map(|_| PathBuilder::new()).collect();
     for b in &report.burns {
-        let step = power_step(report, b.power);
-        segment(&mut paths[step], view, b.from, b.to);
-    }
-    for (step, pb) in paths.into_iter().enumerate() {
-        stroke_path(pixmap, pb, step_color(report, step), &stroke);
+        let pen = Pen {
+            color: step_color(report, power_step(report, b.power)),
+            width: lw * 1.5,
+            dash: None,
+        };
+        draw_segment(pixmap, view.px(b.from), view.px(b.to), &pen);
     }
 }
 

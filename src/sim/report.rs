@@ -107,6 +107,12 @@ pub struct PowerLength {
     pub length_mm: f64,
 }
 
+/// A key ordering `f64` as [`f64::total_cmp`] does.
+fn total_order_key(x: f64) -> i64 {
+    let bits = x.to_bits() as i64;
+    bits ^ (((bits >> 63) as u64) >> 1) as i64
+}
+
 /// An axis-aligned box, mm.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Bounds {
@@ -166,6 +172,15 @@ pub struct SimReport {
     pub violation_count: usize,
     /// Where the tool is at the end, mm.
     pub end_position: DVec2,
+    /// Keep every burn and travel in [`SimReport::burns`] and [`SimReport::travels`]
+    /// (needed by coverage, pictures and JSON); without, the run takes memory independent of
+    /// the job's length and only the totals are filled.
+    #[serde(skip)]
+    pub(crate) keep_moves: bool,
+    /// Burn length per power, keyed by the power's bits in total order (see
+    /// [`SimReport::total_by_power`]).
+    #[serde(skip)]
+    power_totals: std::collections::BTreeMap<i64, (f64, f64)>,
 }
 
 impl SimReport {
@@ -189,6 +204,8 @@ impl SimReport {
             violations: Vec::new(),
             violation_count: 0,
             end_position: DVec2::ZERO,
+            keep_moves: true,
+            power_totals: std::collections::BTreeMap::new(),
         }
     }
 
@@ -220,29 +237,31 @@ impl SimReport {
         let bounds = self.burn_bounds.get_or_insert(Bounds::point(burn.from));
         bounds.include(burn.from);
         bounds.include(burn.to);
-        self.burns.push(burn);
+        let total = self
+            .power_totals
+            .entry(total_order_key(burn.power))
+            .or_insert((burn.power, 0.0));
+        total.1 += burn.length();
+        if self.keep_moves {
+            self.burns.push(burn);
+        }
     }
 
-    /// Sums the burn length per power level (once, at the end of a run).
+    /// Lists the burn length per power level, ascending (once, at the end of a run).
     pub(crate) fn total_by_power(&mut self) {
-        let mut pairs: Vec<(f64, f64)> = self.burns.iter().map(|b| (b.power, b.length())).collect();
-        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
-        self.burn_by_power.clear();
-        for (power, len) in pairs {
-            match self.burn_by_power.last_mut() {
-                Some(last) if last.power == power => last.length_mm += len,
-                _ => self.burn_by_power.push(PowerLength {
-                    power,
-                    length_mm: len,
-                }),
-            }
-        }
+        self.burn_by_power = self
+            .power_totals
+            .values()
+            .map(|&(power, length_mm)| PowerLength { power, length_mm })
+            .collect();
     }
 
     /// Records a tool-off move.
     pub(crate) fn add_travel(&mut self, travel: Travel) {
         self.travel_length_mm += travel.from.distance(travel.to);
-        self.travels.push(travel);
+        if self.keep_moves {
+            self.travels.push(travel);
+        }
     }
 
     /// Burn length per operation, mapping each burn's power back to the operation whose

@@ -24,6 +24,7 @@
 
 pub mod boundary;
 pub mod constraints;
+pub mod estimate;
 pub mod fit;
 pub mod geometry;
 pub mod intersect;

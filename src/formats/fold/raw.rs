@@ -301,7 +301,38 @@ fn parse_cycle(
         sub[last] = j;
         out.push(VertexId(index(x, n, "vertex", key, &sub)?));
     }
+    degenerate(&out, min, key, path)?;
     Ok(out)
+}
+
+/// Refuses a degenerate cycle: a vertex that follows itself (a side of zero length, as in
+/// `[0, 0, 0]`) or fewer than `min` distinct vertices.
+fn degenerate(cycle: &[VertexId], min: usize, key: Key, path: &[usize]) -> Result<(), ParseError> {
+    let len = cycle.len();
+    if let Some(j) = (0..len).find(|&j| cycle[j] == cycle[(j + 1) % len]) {
+        return Err(key.err(
+            path,
+            format!(
+                "vertex {} follows itself (positions {j} and {}): a degenerate cycle with a \
+                 side of zero length",
+                cycle[j].0,
+                (j + 1) % len
+            ),
+        ));
+    }
+    let mut distinct: Vec<u32> = cycle.iter().map(|v| v.0).collect();
+    distinct.sort_unstable();
+    distinct.dedup();
+    if distinct.len() < min {
+        return Err(key.err(
+            path,
+            format!(
+                "only {} distinct vertices: a degenerate cycle (at least {min} are needed)",
+                distinct.len()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// `faces_vertices`: a cycle of at least 3 existing vertices per face.

@@ -22,6 +22,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
 /// file-level keys except `file_frames` (whose parent ids refer to the original key frame).
 pub fn read_frame_str(text: &str, frame: usize) -> Result<Imported, ParseError> {
     let root = parse_root(text)?;
+    check_other_frames(&root, frame)?;
     let resolved = resolve_frame(&root, frame)?;
     let raw = parse_frame(&resolved, frame)?;
     let mut imported = shape::build(raw, frame)?;
@@ -41,6 +42,18 @@ pub fn read_frame_str(text: &str, frame: usize) -> Result<Imported, ParseError> 
         pin_inherited_unit(&mut imported.pattern.meta, unit);
     }
     Ok(imported)
+}
+
+/// Reads every frame but `frame` as well, so a broken frame (a missing parent, a key of the
+/// wrong type, an index past the vertices) is refused with its place rather than copied
+/// through to the output.
+fn check_other_frames(root: &Map<String, Value>, frame: usize) -> Result<(), ParseError> {
+    let count = file_frames(root)?.len();
+    for other in (1..=count).filter(|&f| f != frame) {
+        let resolved = resolve_frame(root, other)?;
+        parse_frame(&resolved, other)?;
+    }
+    Ok(())
 }
 
 /// The key frame's coordinates are converted to millimetres (and written with
@@ -71,7 +84,7 @@ pub fn parse_root(text: &str) -> Result<Map<String, Value>, ParseError> {
             "the file is empty (expected a FOLD JSON object)",
         ));
     }
-    match serde_json::from_str::<Value>(text) {
+    match super::strict::parse(text) {
         Ok(Value::Object(map)) => Ok(map),
         Ok(other) => Err(ParseError::new(
             "file",

@@ -18,7 +18,10 @@
 //!   lines no angle;
 //! - straight segments become edges; curves are flattened within 0.01 mm, with a warning;
 //! - elements without a stroke, with gradient strokes, images and text are skipped, with a
-//!   warning.
+//!   warning;
+//! - geometric attributes that are not numbers or beyond ±1e9, and elements with more than
+//!   1000 attributes, are refused with the element and line; a presentation attribute that
+//!   cannot be parsed is warned about ([`attributes`]).
 //!
 //! The result is in millimetres with y up (see [`frame`] for the units and the origin), then
 //! planarised so shared endpoints merge and crossings split, with a tolerance of
@@ -39,6 +42,7 @@
 //! title and description; join edges come back as unassigned; unitless patterns come back in
 //! millimetres (a user unit read as a CSS pixel, 25.4/96 mm).
 
+pub mod attributes;
 mod collect;
 pub mod flatten;
 pub mod frame;

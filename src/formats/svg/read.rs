@@ -4,7 +4,7 @@
 use usvg::roxmltree;
 
 use super::collect::Collector;
-use super::{frame, meaning};
+use super::{attributes, frame, meaning};
 use crate::formats::{Imported, ParseError, ReadOptions, snap};
 use crate::pattern::CreasePattern;
 
@@ -53,8 +53,10 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
         allow_dtd: true,
         ..Default::default()
     };
+    attributes::check_attribute_counts(text)?;
     let doc = roxmltree::Document::parse_with_options(text, parsing()).map_err(xml_error)?;
     check_root(doc.root_element())?;
+    let attribute_warnings = attributes::check_values(&doc)?;
     let scan = meaning::scan(&doc, text);
     let rewritten_doc;
     let source = match &scan.text {
@@ -75,7 +77,8 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
         return Err(ParseError::new("file", collector.empty_message()));
     }
     let dash_note = collector.apply_dashes(options.dashed);
-    let mut warnings = collector.warnings();
+    let mut warnings = attribute_warnings;
+    warnings.extend(collector.warnings());
     warnings.extend(text_warning(&doc));
     let declared = collector.declared();
     let mut pattern = collector.pattern;

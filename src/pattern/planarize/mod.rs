@@ -92,6 +92,9 @@ pub enum PlanarizeError {
         /// Edges at the time the limit was hit.
         edges: usize,
     },
+    /// The merge tolerance is too large for the pattern (see [`crate::limits::check_tolerance`]).
+    #[error(transparent)]
+    Tolerance(#[from] crate::limits::LimitError),
 }
 
 /// Most splits per edge on average (plus a million) before planarisation gives up: a real
@@ -118,6 +121,10 @@ pub fn planarize(
     cp: &mut CreasePattern,
     opts: &PlanarizeOptions,
 ) -> Result<PlanarizeReport, PlanarizeError> {
+    if let Some(tol) = opts.tolerance {
+        let diagonal = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
+        crate::limits::check_tolerance(tol, diagonal)?;
+    }
     let tol = opts.tolerance.unwrap_or_else(|| default_tolerance(cp));
     let mut report = PlanarizeReport {
         tolerance: tol,

@@ -8,6 +8,10 @@
 
 use super::{ConvertOptions, DepthField, VoxelCard, VoxelError, card_from_depths};
 
+/// Fewest pixels a height map has across and up: one pixel is one cell, and a card a few cells
+/// wide is stretched to the whole card width (a 1 × 1 map would become a single 160 mm cell).
+pub const MIN_MAP_SIDE: usize = 4;
+
 /// A depth map: `width × height` grey levels, top row first.
 #[derive(Clone, Copy, Debug)]
 pub struct DepthMap<'a> {
@@ -26,6 +30,13 @@ impl DepthField {
     /// so every face has base in front of it and back sheet above it.
     pub fn from_grey(map: DepthMap<'_>, depth_cells: usize) -> Result<DepthField, VoxelError> {
         let (nx, nz) = (map.width, map.height);
+        if nx < MIN_MAP_SIDE || nz < MIN_MAP_SIDE {
+            return Err(VoxelError::MapTooSmall {
+                width: nx,
+                height: nz,
+                min: MIN_MAP_SIDE,
+            });
+        }
         if map.levels.len() != nx * nz {
             return Err(VoxelError::MapSize {
                 expected: nx * nz,

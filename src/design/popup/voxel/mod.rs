@@ -42,6 +42,7 @@ mod check;
 mod convert;
 mod crease;
 mod depth_map;
+pub mod estimate;
 pub(crate) mod fold;
 mod format;
 mod model;
@@ -54,7 +55,7 @@ pub use convert::{
     card_from_depths, depth_field_from_mesh,
 };
 pub use crease::crease_pattern;
-pub use depth_map::{DepthMap, card_from_depth_map};
+pub use depth_map::{DepthMap, MIN_MAP_SIDE, card_from_depth_map};
 pub use fold::{FoldedCard, fold_card, open_transform};
 pub use format::{VoxelFormatError, format_voxel_card, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};

@@ -40,7 +40,7 @@ pub enum VoxelError {
     #[error("margin {0} mm must be finite, at least 0 and at most 1000 mm")]
     BadMargin(f64),
     /// The cell size is not a finite positive number of millimetres.
-    #[error("cell size {0} mm must be finite and positive (at most 1000 mm)")]
+    #[error("cell size {0} mm: expected {range} (--cell-mm)", range = crate::limits::CELL.expected())]
     BadCellSize(f64),
     /// A cell index is outside the card.
     #[error("cell ({x}, {y}, {z}) is outside the card")]
@@ -59,6 +59,19 @@ pub enum VoxelError {
         expected: usize,
         /// Samples given.
         got: usize,
+    },
+    /// A height map smaller than [`super::MIN_MAP_SIDE`] pixels across or up.
+    #[error(
+        "the height map is {width} × {height} pixels; at least {min} × {min} are needed (one \
+         pixel is one cell)"
+    )]
+    MapTooSmall {
+        /// Pixels across.
+        width: usize,
+        /// Pixels up.
+        height: usize,
+        /// The least accepted on either side.
+        min: usize,
     },
     /// The structuring element of §3.2 a) must have an odd side.
     #[error("the structuring element must be an odd number of cells across, got {0}")]
@@ -107,7 +120,7 @@ impl VoxelCard {
         if !(axis_ok(nx) && axis_ok(ny) && axis_ok(nz)) || nx * (ny + nz) > MAX_PATTERN_CELLS {
             return Err(VoxelError::BadSize { nx, ny, nz });
         }
-        if !(cell_mm.is_finite() && cell_mm > 0.0 && cell_mm <= 1000.0) {
+        if crate::limits::CELL.check(cell_mm).is_err() {
             return Err(VoxelError::BadCellSize(cell_mm));
         }
         Ok(VoxelCard {

@@ -1,0 +1,357 @@
+//! The accepted range of every number a user sets, in one place, shared by the command line
+//! and the machine and material profile readers.
+//!
+//! A [`Limit`] names a setting twice: as the command-line option (`--kerf`) and as the
+//! profile key (`kerf_mm`, dotted inside its table), so that the same value is refused with
+//! the same words whichever way it came in: "expected a number from 0 to 5 mm, got 1e300". The
+//! command line calls [`Limit::parse`] (clap then names the option), the profile readers
+//! [`Limit::check`] (they name the file and key). Settings that depend on each other (the
+//! shortest dash against the dash, the web against the bridge) are checked by
+//! [`check_perforation`] once the command line has been laid over the material.
+//!
+//! Ranges are inclusive. Lengths are millimetres, speeds mm/min, power a fraction of the
+//! machine's range; the upper bounds are far beyond any real sheet or machine, and are there
+//! so that no later step (offsets, dash layouts, rasters) meets a number it cannot work with.
+
+use crate::machine::Perforation;
+
+/// One real-valued setting: its option, its profile key, its range and unit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Limit {
+    /// Command-line option (`--kerf`), empty when there is none.
+    pub option: &'static str,
+    /// Profile key, dotted within its file (`perforation.cut_mm`), empty when there is none.
+    pub key: &'static str,
+    /// Smallest value accepted.
+    pub min: f64,
+    /// Largest value accepted.
+    pub max: f64,
+    /// Unit named in messages (`mm`, `mm/min`, …).
+    pub unit: &'static str,
+}
+
+/// One whole-number setting.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CountLimit {
+    /// Command-line option, empty when there is none.
+    pub option: &'static str,
+    /// Profile key, empty when there is none.
+    pub key: &'static str,
+    /// Smallest value accepted.
+    pub min: u64,
+    /// Largest value accepted.
+    pub max: u64,
+    /// What is counted, for messages (`cells`, `passes`).
+    pub unit: &'static str,
+}
+
+/// A setting outside its range, or two settings that contradict each other.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{setting} {value}: {message}")]
+pub struct LimitError {
+    /// The option or key (or both: `--dash (perforation.cut_mm)`).
+    pub setting: String,
+    /// The value given, as written.
+    pub value: String,
+    /// What was expected.
+    pub message: String,
+}
+
+impl Limit {
+    /// "a number from MIN to MAX UNIT".
+    pub fn expected(&self) -> String {
+        format!(
+            "a number from {} to {} {}",
+            show(self.min),
+            show(self.max),
+            self.unit
+        )
+    }
+
+    /// `value` when it is finite and inside the range; otherwise "expected …, got …".
+    pub fn check(&self, value: f64) -> Result<f64, String> {
+        if value.is_finite() && value >= self.min && value <= self.max {
+            Ok(value)
+        } else {
+            Err(format!("expected {}, got {}", self.expected(), show(value)))
+        }
+    }
+
+    /// Parses a command-line value and checks it (the message is the one [`Limit::check`]
+    /// gives, so clap prints the option, the value and the range).
+    pub fn parse(&self, text: &str) -> Result<f64, String> {
+        let value: f64 = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("expected {}, got {text:?}", self.expected()))?;
+        self.check(value)
+    }
+
+    /// The option and the key, for messages about either (`--dash (perforation.cut_mm)`).
+    pub fn name(&self) -> String {
+        match (self.option.is_empty(), self.key.is_empty()) {
+            (false, false) => format!("{} ({})", self.option, self.key),
+            (false, true) => self.option.to_string(),
+            _ => self.key.to_string(),
+        }
+    }
+}
+
+impl CountLimit {
+    /// "a whole number from MIN to MAX UNIT".
+    pub fn expected(&self) -> String {
+        format!(
+            "a whole number from {} to {} {}",
+            self.min, self.max, self.unit
+        )
+    }
+
+    /// `value` when it is inside the range; otherwise "expected …, got …".
+    pub fn check(&self, value: i64) -> Result<u64, String> {
+        match u64::try_from(value) {
+            Ok(v) if (self.min..=self.max).contains(&v) => Ok(v),
+            _ => Err(format!("expected {}, got {value}", self.expected())),
+        }
+    }
+
+    /// Parses a command-line value and checks it.
+    pub fn parse(&self, text: &str) -> Result<u64, String> {
+        let value: i64 = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("expected {}, got {text:?}", self.expected()))?;
+        self.check(value)
+    }
+}
+
+/// A number as a person writes it: plain between 1e-4 and 1e15, else in exponent form
+/// (`1e300`, not three hundred digits).
+pub fn show(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+        x.to_string()
+    } else {
+        format!("{x:e}")
+    }
+}
+
+const fn mm(option: &'static str, key: &'static str, min: f64, max: f64) -> Limit {
+    Limit {
+        option,
+        key,
+        min,
+        max,
+        unit: "mm",
+    }
+}
+
+/// Width of the cut: `--kerf`, material `kerf_mm`.
+pub const KERF: Limit = mm("--kerf", "kerf_mm", 0.0, 5.0);
+/// Sheet thickness: material `thickness_mm`.
+pub const THICKNESS: Limit = mm("", "thickness_mm", 0.01, 50.0);
+/// Perforation dash: `--dash`, material `perforation.cut_mm`.
+pub const DASH: Limit = mm("--dash", "perforation.cut_mm", 0.01, 1000.0);
+/// Perforation bridge (material left between dashes): `--bridge`, `perforation.bridge_mm`.
+pub const BRIDGE: Limit = mm("--bridge", "perforation.bridge_mm", 0.01, 1000.0);
+/// Shortest dash worth cutting: `--min-dash`, `perforation.min_dash_mm` (at most the dash).
+pub const MIN_DASH: Limit = mm("--min-dash", "perforation.min_dash_mm", 0.01, 1000.0);
+/// Least material between two cuts: `--min-web`, `perforation.min_web_mm` (at most the
+/// bridge).
+pub const MIN_WEB: Limit = mm("--min-web", "perforation.min_web_mm", 0.01, 1000.0);
+/// Uncut clearance around every vertex: `--clearance`, `perforation.vertex_clearance_mm`.
+pub const CLEARANCE: Limit = mm("--clearance", "perforation.vertex_clearance_mm", 0.0, 100.0);
+/// Holding-tab width: `--tabs`.
+pub const TAB_WIDTH: Limit = mm("--tabs", "", 0.01, 100.0);
+/// Spacing between holding tabs: `--tab-spacing`.
+pub const TAB_SPACING: Limit = mm("--tab-spacing", "", 1.0, 10_000.0);
+/// Lead-in length: `--lead-in`.
+pub const LEAD_IN: Limit = mm("--lead-in", "", 0.01, 100.0);
+/// Distance from the bed origin: `--margin`.
+pub const MARGIN: Limit = mm("--margin", "", 0.0, 10_000.0);
+
+/// Feed of one operation: material `settings.OP.speed_mm_min`.
+pub const SPEED: Limit = Limit {
+    option: "",
+    key: "speed_mm_min",
+    min: 1.0,
+    max: 1e6,
+    unit: "mm/min",
+};
+/// Power of one operation as a fraction of the machine's range: `settings.OP.power`.
+pub const POWER: Limit = Limit {
+    option: "",
+    key: "power",
+    min: 0.0,
+    max: 1.0,
+    unit: "(fraction of full power)",
+};
+/// Repetitions of one operation: `settings.OP.passes`.
+pub const PASSES: CountLimit = CountLimit {
+    option: "",
+    key: "passes",
+    min: 1,
+    max: 100,
+    unit: "passes",
+};
+/// Fastest feed of a machine: `max_feed_mm_min` (`travel_feed_mm_min` at most that).
+pub const FEED: Limit = Limit {
+    option: "",
+    key: "max_feed_mm_min",
+    min: 1.0,
+    max: 1e6,
+    unit: "mm/min",
+};
+/// Bed width and height: `bed.width_mm`, `bed.height_mm`.
+pub const BED_SIZE: Limit = mm("", "bed.width_mm", 1.0, 10_000.0);
+/// Smallest step of a machine: `resolution_mm`.
+pub const MACHINE_RESOLUTION: Limit = mm("", "resolution_mm", 1e-5, 0.1);
+
+/// Pop-up cell size: `popup voxel --cell-mm`.
+pub const CELL: Limit = mm("--cell-mm", "", 0.1, 1000.0);
+/// Pop-up card width: `popup voxel --card-width`.
+pub const CARD_WIDTH: Limit = mm("--card-width", "", 1.0, 10_000.0);
+/// Cells along the fold of a pop-up made from a mesh: `popup voxel --resolution`.
+pub const RESOLUTION: CountLimit = CountLimit {
+    option: "--resolution",
+    key: "",
+    min: 4,
+    max: 4000,
+    unit: "cells",
+};
+/// Merge tolerance of the cleaner: `convert --tolerance` (see also
+/// [`check_tolerance`] against the pattern's size).
+pub const TOLERANCE: Limit = Limit {
+    option: "--tolerance",
+    key: "",
+    min: 1e-12,
+    max: crate::pattern::MAX_COORDINATE,
+    unit: "(pattern units)",
+};
+/// Line-end snapping distance of drawings: `--snap` (0 turns it off).
+pub const SNAP: Limit = mm("--snap", "", 0.0, 1000.0);
+
+/// Largest merge tolerance as a share of the pattern's bounding-box diagonal: beyond it the
+/// cleaner merges whole creases into points.
+pub const MAX_RELATIVE_TOLERANCE: f64 = 0.01;
+
+/// Refuses a merge tolerance larger than [`MAX_RELATIVE_TOLERANCE`] of the pattern's
+/// bounding-box `diagonal` (same unit): the cleaner would merge the pattern away.
+pub fn check_tolerance(tolerance: f64, diagonal: f64) -> Result<(), LimitError> {
+    let largest = MAX_RELATIVE_TOLERANCE * diagonal;
+    if tolerance <= largest || !diagonal.is_finite() {
+        return Ok(());
+    }
+    Err(LimitError {
+        setting: TOLERANCE.option.to_string(),
+        value: show(tolerance),
+        message: format!(
+            "larger than {MAX_RELATIVE_TOLERANCE} of the pattern's diagonal ({diagonal:.6}), at \
+             most {largest:.6}: every vertex would merge and nothing would be left"
+        ),
+    })
+}
+
+/// Checks a perforation after the command line was laid over the material: every length in
+/// its range, the shortest dash at most the dash (a dash below it cannot be cut, so every
+/// perforated crease would become one continuous slot) and the web at most the bridge.
+pub fn check_perforation(p: &Perforation) -> Result<(), LimitError> {
+    for (limit, value) in [
+        (DASH, p.cut_mm),
+        (BRIDGE, p.bridge_mm),
+        (MIN_DASH, p.min_dash_mm),
+        (MIN_WEB, p.min_web_mm),
+        (CLEARANCE, p.vertex_clearance_mm),
+    ] {
+        limit.check(value).map_err(|message| LimitError {
+            setting: limit.name(),
+            value: show(value),
+            message,
+        })?;
+    }
+    if p.cut_mm < p.min_dash_mm {
+        return Err(LimitError {
+            setting: DASH.name(),
+            value: format!("{} mm", p.cut_mm),
+            message: format!(
+                "shorter than the shortest dash worth cutting, {} mm ({}): no dash could be \
+                 cut, so every perforated crease would become one continuous slot; give a \
+                 longer dash or a smaller --min-dash",
+                p.min_dash_mm,
+                MIN_DASH.name()
+            ),
+        });
+    }
+    if p.bridge_mm < p.min_web_mm {
+        return Err(LimitError {
+            setting: BRIDGE.name(),
+            value: format!("{} mm", p.bridge_mm),
+            message: format!(
+                "shorter than the least web, {} mm ({}); give a longer bridge or a smaller \
+                 --min-web",
+                p.min_web_mm,
+                MIN_WEB.name()
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// Checks a length that has no profile key (tabs, lead-in, margin) against `limit`.
+pub fn check_length(limit: &Limit, value: f64) -> Result<f64, LimitError> {
+    limit.check(value).map_err(|message| LimitError {
+        setting: limit.name(),
+        value: show(value),
+        message,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_message_names_the_range_whichever_way_the_value_came() {
+        let cli = KERF.parse("1e300").unwrap_err();
+        let profile = KERF.check(1e300).unwrap_err();
+        assert_eq!(cli, profile);
+        assert!(cli.contains("from 0 to 5 mm"), "{cli}");
+        assert!(KERF.parse("nan").is_err());
+        assert!(KERF.parse("inf").is_err());
+        assert_eq!(KERF.parse("0.2"), Ok(0.2));
+        assert_eq!(KERF.parse("5"), Ok(5.0));
+    }
+
+    #[test]
+    fn a_dash_below_the_shortest_dash_is_refused() {
+        let p = Perforation {
+            cut_mm: 0.01,
+            bridge_mm: 1.0,
+            min_dash_mm: 0.5,
+            min_web_mm: 0.5,
+            vertex_clearance_mm: 1.0,
+        };
+        let e = check_perforation(&p).unwrap_err();
+        assert!(e.to_string().contains("--dash"), "{e}");
+        assert!(e.to_string().contains("continuous slot"), "{e}");
+        let fine = Perforation { cut_mm: 2.0, ..p };
+        assert_eq!(check_perforation(&fine), Ok(()));
+        let thin = Perforation {
+            bridge_mm: 0.2,
+            ..fine
+        };
+        assert!(check_perforation(&thin).is_err());
+    }
+
+    #[test]
+    fn counts_refuse_negatives_and_beyond() {
+        assert!(RESOLUTION.parse("-1").is_err());
+        assert!(RESOLUTION.parse("4001").is_err());
+        assert_eq!(RESOLUTION.parse("80"), Ok(80));
+        assert!(PASSES.check(0).is_err());
+    }
+
+    #[test]
+    fn a_tolerance_beyond_a_hundredth_of_the_pattern_is_refused() {
+        assert!(check_tolerance(1e9, 100.0).is_err());
+        assert!(check_tolerance(1.0, 100.0).is_ok());
+    }
+}
