@@ -54,6 +54,7 @@ mod raw;
 mod read;
 mod relax;
 mod shape;
+mod strict;
 mod unfold;
 mod units;
 mod values;

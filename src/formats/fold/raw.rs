@@ -301,6 +301,23 @@ fn parse_cycle(
         sub[last] = j;
         out.push(VertexId(index(x, n, "vertex", key, &sub)?));
     }
+    // A vertex repeated next to itself is a zero-length side; too few distinct vertices
+    // leave no area (`[0, 0, 0]`).
+    if let Some(j) = (0..out.len()).find(|&j| out[j] == out[(j + 1) % out.len()]) {
+        return Err(key.err(
+            path,
+            format!("vertex {} follows itself (at positions {j} and {}): a degenerate cycle", out[j].0, (j + 1) % out.len()),
+        ));
+    }
+    let mut distinct: Vec<VertexId> = out.clone();
+    distinct.sort_unstable();
+    distinct.dedup();
+    if distinct.len() < min {
+        return Err(key.err(
+            path,
+            format!("needs at least {min} distinct vertices, found {}: a degenerate cycle", distinct.len()),
+        ));
+    }
     Ok(out)
 }
 
