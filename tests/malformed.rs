@@ -1,7 +1,8 @@
 //! Every file under `tests/data/malformed/` is run through the reader it is written for, in
 //! the release binary's own way (one subcommand per folder, below), and must end with the exit
 //! status recorded for it in `EXPECTED.toml` — never 101 (panic) or a signal (134, abort) —
-//! with a message that names the file and contains the recorded fragment, and without leaving
+//! with a message that names the file and contains the recorded fragment (and place, where
+//! recorded apart), and without leaving
 //! an output file behind. A file without an entry, or an entry without a file, fails the test.
 
 #[path = "common/bin.rs"]
@@ -29,6 +30,9 @@ struct Expected {
     exit: i32,
     /// A fragment of the message (stderr for exit 2; stdout or stderr for exit 1).
     message: String,
+    /// Where in the file, when the fragment does not say it (TOML errors give the line and
+    /// column on a line of their own).
+    place: Option<String>,
     /// The file the message must name, when it is not the input itself (a design naming a
     /// mesh that does not exist names that mesh).
     names: Option<String>,
@@ -173,6 +177,8 @@ fn every_malformed_file_is_refused_with_its_message_and_no_output() {
             ));
         } else if !said.contains(&want.message) {
             failures.push(format!("{rel}: message lacks {:?}: {said}", want.message));
+        } else if want.place.as_ref().is_some_and(|p| !said.contains(p.as_str())) {
+            failures.push(format!("{rel}: message lacks the place {:?}: {said}", want.place));
         } else if !said.contains(names) {
             failures.push(format!("{rel}: message does not name {names}: {said}"));
         }

@@ -71,6 +71,7 @@ pub fn parse_obj(bytes: &[u8]) -> Result<PolyMesh, MeshError> {
 
 /// Parses STL, ASCII or binary; identical corner positions are merged into one vertex.
 pub fn parse_stl(bytes: &[u8]) -> Result<PolyMesh, MeshError> {
+    check_binary_stl_length(bytes)?;
     let mesh = stl_io::read_stl(&mut Cursor::new(bytes)).map_err(|e| MeshError::Syntax {
         format: "STL",
         message: e.to_string(),
@@ -86,4 +87,39 @@ pub fn parse_stl(bytes: &[u8]) -> Result<PolyMesh, MeshError> {
         .map(|t| t.vertices.iter().map(|&i| i as u32).collect())
         .collect();
     PolyMesh::new(positions, faces)
+}
+
+/// Bytes of a binary STL before the triangles: an 80-byte header and a `u32` triangle count.
+const STL_HEADER_BYTES: usize = 84;
+
+/// Bytes per binary STL triangle: normal and three corners (12 `f32`) and a `u16`.
+const STL_TRIANGLE_BYTES: u64 = 50;
+
+/// For a binary STL (one that does not start with `solid`), refuses a file shorter than its
+/// header or than the triangles its count announces, with both sizes in the message.
+fn check_binary_stl_length(bytes: &[u8]) -> Result<(), MeshError> {
+    if bytes.trim_ascii_start().starts_with(b"solid") {
+        return Ok(());
+    }
+    let error = |message: String| MeshError::Syntax {
+        format: "STL",
+        message,
+    };
+    let Some(count) = bytes.get(80..STL_HEADER_BYTES) else {
+        return Err(error(format!(
+            "a binary STL starts with an 80-byte header and a 4-byte triangle count, but the \
+             file has {} bytes (and is not ASCII STL, which starts with `solid`)",
+            bytes.len()
+        )));
+    };
+    let count = u32::from_le_bytes(count.try_into().expect("4 bytes"));
+    let needed = STL_HEADER_BYTES as u64 + STL_TRIANGLE_BYTES * u64::from(count);
+    if (bytes.len() as u64) < needed {
+        return Err(error(format!(
+            "the binary STL header announces {count} triangles ({needed} bytes), but the file \
+             has {} bytes: it is truncated",
+            bytes.len()
+        )));
+    }
+    Ok(())
 }
