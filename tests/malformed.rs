@@ -124,7 +124,7 @@ fn every_malformed_file_has_an_expectation_and_every_expectation_a_file() {
     let expected = manifest();
     let files = inputs();
     let unlisted: Vec<&String> = files.iter().filter(|f| !expected.contains_key(*f)).collect();
-    let missing: Vec<&String> = expected.keys().filter(|k| !files.contains(k)).collect();
+    let missing: Vec<&String> = expected.keys().filter(|k| !files.contains(*k)).collect();
     assert!(
         unlisted.is_empty(),
         "files without an entry in EXPECTED.toml: {unlisted:?}"
