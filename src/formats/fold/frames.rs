@@ -120,6 +120,37 @@ fn inheritance_chain(frames: &[Value], frame: usize) -> Result<Vec<usize>, Parse
     Ok(chain)
 }
 
+/// Checks the `frame_parent` and `frame_inherit` of every frame, not only of the one read, so
+/// that a file whose other frames point at missing parents or inherit in a cycle is refused
+/// rather than copied through. Linear in the number of frames (each is walked once).
+pub(super) fn check_frame_links(root: &Map<String, Value>) -> Result<(), ParseError> {
+    let frames = file_frames(root)?;
+    // 0: not seen; 1: on the current walk; 2: its chain ends without a cycle.
+    let mut state = vec![0u8; frames.len() + 1];
+    for start in 1..=frames.len() {
+        let mut walk = Vec::new();
+        let mut f = start;
+        loop {
+            match state[f] {
+                2 => break,
+                // Back on the current walk: a cycle; the chain from here names it.
+                1 => return inheritance_chain(frames, f).map(|_| ()),
+                _ => {}
+            }
+            state[f] = 1;
+            walk.push(f);
+            match inherited_parent(frames, f)? {
+                Some(parent) => f = parent,
+                None => break,
+            }
+        }
+        for w in walk {
+            state[w] = 2;
+        }
+    }
+    Ok(())
+}
+
 /// The parent `frame` inherits from, if it has `frame_inherit: true` and a `frame_parent`.
 fn inherited_parent(frames: &[Value], frame: usize) -> Result<Option<usize>, ParseError> {
     let Some(obj) = frame

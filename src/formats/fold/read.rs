@@ -3,7 +3,7 @@
 
 use serde_json::{Map, Value};
 
-use super::frames::{FRAMES_KEY, file_frames, is_file_level, resolve_frame};
+use super::frames::{FRAMES_KEY, check_frame_links, file_frames, is_file_level, resolve_frame};
 use super::raw::{FRAME_TEXT_KEYS, parse_frame};
 use super::values::strings;
 use super::write::is_our_folded_frame;
@@ -22,6 +22,7 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
 /// file-level keys except `file_frames` (whose parent ids refer to the original key frame).
 pub fn read_frame_str(text: &str, frame: usize) -> Result<Imported, ParseError> {
     let root = parse_root(text)?;
+    check_frame_links(&root)?;
     check_other_frames(&root, frame)?;
     let resolved = resolve_frame(&root, frame)?;
     let raw = parse_frame(&resolved, frame)?;
@@ -107,6 +108,8 @@ fn json_error(e: &serde_json::Error) -> ParseError {
         "JSON nested too deeply (more than 128 levels of arrays and objects)".to_string()
     } else if message.contains("number out of range") {
         "invalid JSON: number out of range (beyond ±1.8e308)".to_string()
+    } else if message.starts_with("duplicate key") {
+        message.to_string()
     } else if e.is_eof() {
         format!("the JSON text ends too early ({message}): the file is truncated")
     } else {

@@ -57,6 +57,7 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
     let doc = roxmltree::Document::parse_with_options(text, parsing()).map_err(xml_error)?;
     check_root(doc.root_element())?;
     let attribute_warnings = attributes::check_values(&doc)?;
+    check_miter_limits(&doc)?;
     let scan = meaning::scan(&doc, text);
     let rewritten_doc;
     let source = match &scan.text {
@@ -172,4 +173,47 @@ fn usvg_error(e: usvg::Error) -> ParseError {
         ),
         other => ParseError::new("file", format!("not a usable SVG: {other}")),
     }
+}
+
+/// The largest `f32`, where usvg keeps its numbers.
+const USVG_MAX_NUMBER: f64 = f32::MAX as f64;
+
+/// Refuses a `stroke-miterlimit` (attribute, `style` attribute or `<style>` sheet) beyond
+/// [`USVG_MAX_NUMBER`]: usvg would turn it into infinity and stop on its own internal
+/// assertion (a panic in debug builds), so the reader names it first.
+fn check_miter_limits(doc: &roxmltree::Document) -> Result<(), ParseError> {
+    const NAME: &str = "stroke-miterlimit";
+    for node in doc.descendants() {
+        let texts = node
+            .attributes()
+            .filter(|a| a.name() == NAME || a.name() == "style")
+            .map(|a| (a.name() == NAME, a.value()))
+            .chain(node.text().filter(|_| is_svg_element(node.parent().unwrap_or(node), "style")).map(|t| (false, t)));
+        for (bare, text) in texts {
+            let values: Vec<&str> = if bare {
+                vec![text]
+            } else {
+                text.match_indices(NAME)
+                    .map(|(i, _)| text[i + NAME.len()..].trim_start_matches([' ', '\t', '\n', '\r', ':']))
+                    .collect()
+            };
+            for value in values {
+                let number: String = value
+                    .trim_start()
+                    .chars()
+                    .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-'))
+                    .collect();
+                if number.parse::<f64>().is_ok_and(|v| v.abs() > USVG_MAX_NUMBER) {
+                    let pos = doc.text_pos_at(node.range().start);
+                    return Err(ParseError::new(
+                        format!("line {}", pos.row),
+                        format!(
+                            "{NAME} {number} is beyond {USVG_MAX_NUMBER:.1e}, the largest number the SVG reader takes"
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
 }

@@ -36,6 +36,9 @@ pub enum VoxelFormatError {
     /// A header key is missing.
     #[error("missing key `{0}` before `rows`")]
     MissingKey(&'static str),
+    /// No line reads `rows`, so no elevation follows the header.
+    #[error("no line reads `rows`: the header (cell_mm, depth, height) must be followed by `rows` and the front elevation")]
+    NoRows,
     /// The card itself is invalid.
     #[error("line {line}: {source}")]
     Card {
@@ -70,7 +73,7 @@ pub fn parse_voxel_card(text: &str) -> Result<VoxelCard, VoxelFormatError> {
         }
         header_line(&mut header, n, line)?;
     }
-    let rows_line = rows_line.ok_or(VoxelFormatError::MissingKey("rows"))?;
+    let rows_line = rows_line.ok_or(VoxelFormatError::NoRows)?;
     let rows: Vec<(usize, Vec<Token>)> = lines
         .map(|(n, l)| row_line(n, l).map(|r| (n, r)))
         .collect::<Result<_, _>>()?;
