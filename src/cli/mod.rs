@@ -24,6 +24,7 @@ mod popup;
 mod popup_input;
 mod popup_poly;
 mod preview;
+mod serve;
 mod simulate;
 mod tessellate;
 
@@ -94,6 +95,8 @@ enum Command {
     Tessellate(tessellate::Args),
     /// List the shipped machine or material profiles.
     List(list::Args),
+    /// Open patterns in the browser: the local web studio (check, fold in 3D, plan, cut).
+    Serve(serve::Args),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
@@ -122,6 +125,7 @@ pub fn run() -> ExitCode {
         Command::List(a) => list::run(a),
         Command::FoldFlat(a) => fold_flat::run(a),
         Command::Fold3d(a) => fold3d::run(a),
+        Command::Serve(a) => serve::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
