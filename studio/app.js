@@ -93,6 +93,8 @@ async function opened(view) {
   state.doc = view;
   state.fold = null;
   state.planned = false;
+  delete document.body.dataset.foldPercent;
+  delete document.body.dataset.planned;
   showCounts(view);
   patternView.show(view, state.legend);
   $('fold-label').textContent = 'not folded yet';

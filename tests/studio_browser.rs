@@ -5,17 +5,20 @@
 //! Set `FOLDCAM_SCREENSHOTS=DIR` to keep the screenshots of each view (the README's pictures
 //! come from `FOLDCAM_SCREENSHOTS=docs cargo test --test studio_browser`).
 
-mod common;
+#[path = "common/bin.rs"]
+mod bin;
+#[path = "common/studio.rs"]
+mod studio;
 
 use std::net::TcpListener;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-use common::bin::{foldcam, repo_file};
-use common::studio::Server;
+use bin::{foldcam, repo_file};
 use fantoccini::{Client, ClientBuilder, Locator};
 use serde_json::{Value, json};
+use studio::Server;
 
 /// Longest wait for the page to reach a state (folding runs in a debug build here).
 const PAGE_TIMEOUT: Duration = Duration::from_secs(180);
@@ -59,7 +62,10 @@ fn start_driver() -> Driver {
         });
     let start = Instant::now();
     while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
-        assert!(start.elapsed() < Duration::from_secs(30), "chromedriver did not listen");
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "chromedriver did not listen"
+        );
         std::thread::sleep(Duration::from_millis(100));
     }
     Driver(child, port)
@@ -99,7 +105,10 @@ async fn wait_until(c: &Client, script: &str, what: &str) {
             return;
         }
         let error = c
-            .execute("return document.getElementById('error').textContent", vec![])
+            .execute(
+                "return document.getElementById('error').textContent",
+                vec![],
+            )
             .await
             .unwrap();
         assert!(
@@ -111,7 +120,12 @@ async fn wait_until(c: &Client, script: &str, what: &str) {
 }
 
 async fn text(c: &Client, css: &str) -> String {
-    c.find(Locator::Css(css)).await.expect(css).text().await.unwrap()
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .text()
+        .await
+        .unwrap()
 }
 
 /// Chooses `file` in the page's file picker and waits for the document to be shown.
@@ -154,7 +168,11 @@ fn changed_fraction(a: &[u8], b: &[u8]) -> f64 {
     let changed = a
         .pixels()
         .zip(b.pixels())
-        .filter(|(p, q)| p.0.iter().zip(q.0).any(|(x, y)| x.abs_diff(y) > PIXEL_TOLERANCE))
+        .filter(|(p, q)| {
+            p.0.iter()
+                .zip(q.0)
+                .any(|(x, y)| x.abs_diff(y) > PIXEL_TOLERANCE)
+        })
         .count();
     changed as f64 / (a.width() * a.height()) as f64
 }
@@ -187,7 +205,12 @@ async fn the_studio_works_in_a_real_browser() {
     let driver = start_driver();
     let c = browser(&driver).await;
     c.goto(&server.url()).await.unwrap();
-    wait_until(&c, "return document.body.dataset.ready === 'true'", "the page to start").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
 
     // 1. Upload a pattern: the page shows the counts the file holds.
     open(&c, &miura).await;
@@ -198,11 +221,20 @@ async fn the_studio_works_in_a_real_browser() {
     assert_eq!(text(&c, "#count-V").await, v.to_string());
     assert_eq!(text(&c, "#check-status").await, "passed");
     // Every edge is drawn, in its assignment's colour class.
-    let drawn = c.find_all(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
+    let drawn = c
+        .find_all(Locator::Css("#cp-lines line.edge-M"))
+        .await
+        .unwrap();
     assert_eq!(drawn.len(), m);
     // Hover over one mountain: the page names it with the length the file gives.
     let hit = c.find(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
-    let index: usize = hit.attr("data-edge").await.unwrap().unwrap().parse().unwrap();
+    let index: usize = hit
+        .attr("data-edge")
+        .await
+        .unwrap()
+        .unwrap()
+        .parse()
+        .unwrap();
     c.find(Locator::Css(&format!("#cp-hits line[data-edge='{index}']")))
         .await
         .unwrap()
@@ -223,7 +255,12 @@ async fn the_studio_works_in_a_real_browser() {
         "{info}"
     );
     // The layer order, as `foldcam check --layers` prints it.
-    c.find(Locator::Css("#layers-btn")).await.unwrap().click().await.unwrap();
+    c.find(Locator::Css("#layers-btn"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
     wait_until(
         &c,
         "return document.getElementById('layers-result').textContent.startsWith('layer order')",
@@ -232,7 +269,10 @@ async fn the_studio_works_in_a_real_browser() {
     .await;
     let cli = foldcam(&["check", "miura.fold", "--layers"], dir.path());
     let cli = String::from_utf8_lossy(&cli.stdout);
-    let expected = cli.lines().find(|l| l.starts_with("layer order")).expect("a layer line");
+    let expected = cli
+        .lines()
+        .find(|l| l.starts_with("layer order"))
+        .expect("a layer line");
     assert_eq!(text(&c, "#layers-result").await, expected);
     keep_screenshot(&c, "studio-pattern.png").await;
 
@@ -256,15 +296,32 @@ async fn the_studio_works_in_a_real_browser() {
     assert_eq!(listed, expected);
     let rings = c.find_all(Locator::Css("#cp-rings circle")).await.unwrap();
     assert_eq!(rings.len(), expected.len());
-    let home = c.find(Locator::Css("#cp-svg")).await.unwrap().attr("viewBox").await.unwrap();
+    let home = c
+        .find(Locator::Css("#cp-svg"))
+        .await
+        .unwrap()
+        .attr("viewBox")
+        .await
+        .unwrap();
     items[0].click().await.unwrap();
-    let zoomed = c.find(Locator::Css("#cp-svg")).await.unwrap().attr("viewBox").await.unwrap();
+    let zoomed = c
+        .find(Locator::Css("#cp-svg"))
+        .await
+        .unwrap()
+        .attr("viewBox")
+        .await
+        .unwrap();
     assert_ne!(home, zoomed, "clicking a finding zooms to it");
     keep_screenshot(&c, "studio-check.png").await;
 
     // 3. The folded form: moving the slider changes the 3D view.
     open(&c, &miura).await;
-    c.find(Locator::Css("#tabs button[data-view='fold']")).await.unwrap().click().await.unwrap();
+    c.find(Locator::Css("#tabs button[data-view='fold']"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
     wait_until(
         &c,
         "return document.body.dataset.foldPercent !== undefined && !document.body.dataset.busy",
@@ -276,10 +333,19 @@ async fn the_studio_works_in_a_real_browser() {
     let slider = c.find(Locator::Css("#fold-slider")).await.unwrap();
     // Keyboard on the range input, as a person would: End is 100%, then back to about 70%.
     slider.send_keys("\u{E010}").await.unwrap();
-    wait_until(&c, "return document.body.dataset.foldPercent === '100.0'", "100%").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.foldPercent === '100.0'",
+        "100%",
+    )
+    .await;
     let folded = canvas.screenshot().await.unwrap();
     let changed = changed_fraction(&flat, &folded);
-    assert!(changed > 0.02, "folding changed only {:.2}% of the view", 100.0 * changed);
+    assert!(
+        changed > 0.02,
+        "folding changed only {:.2}% of the view",
+        100.0 * changed
+    );
     for _ in 0..30 {
         slider.send_keys("\u{E012}").await.unwrap();
     }
@@ -288,10 +354,30 @@ async fn the_studio_works_in_a_real_browser() {
     keep_screenshot(&c, "studio-fold.png").await;
 
     // 4. Machine and material: the downloaded G-code is byte-identical to `foldcam cut`'s.
-    c.find(Locator::Css("#tabs button[data-view='machine']")).await.unwrap().click().await.unwrap();
-    c.find(Locator::Css("#machine")).await.unwrap().select_by_value("grbl-diode").await.unwrap();
-    c.find(Locator::Css("#material")).await.unwrap().select_by_value("card-300gsm").await.unwrap();
-    c.find(Locator::Css("#plan-btn")).await.unwrap().click().await.unwrap();
+    c.find(Locator::Css("#tabs button[data-view='machine']"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    c.find(Locator::Css("#machine"))
+        .await
+        .unwrap()
+        .select_by_value("grbl-diode")
+        .await
+        .unwrap();
+    c.find(Locator::Css("#material"))
+        .await
+        .unwrap()
+        .select_by_value("card-300gsm")
+        .await
+        .unwrap();
+    c.find(Locator::Css("#plan-btn"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
     wait_until(
         &c,
         "return document.body.dataset.planned === 'true' && !!document.getElementById('sim-result')",
@@ -300,7 +386,14 @@ async fn the_studio_works_in_a_real_browser() {
     .await;
     let travel = c.find_all(Locator::Css("#tp-travel line")).await.unwrap();
     assert!(!travel.is_empty(), "travel is drawn");
-    let href = c.find(Locator::Css("#dl-gcode")).await.unwrap().attr("href").await.unwrap().unwrap();
+    let href = c
+        .find(Locator::Css("#dl-gcode"))
+        .await
+        .unwrap()
+        .attr("href")
+        .await
+        .unwrap()
+        .unwrap();
     let served = c
         .execute_async(
             "const done = arguments[arguments.length - 1];
@@ -310,12 +403,28 @@ async fn the_studio_works_in_a_real_browser() {
         .await
         .unwrap();
     let out = foldcam(
-        &["cut", "miura.fold", "-m", "grbl-diode", "-x", "card-300gsm", "-o", "cli.gcode"],
+        &[
+            "cut",
+            "miura.fold",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "-o",
+            "cli.gcode",
+        ],
         dir.path(),
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let cli = std::fs::read_to_string(dir.path().join("cli.gcode")).unwrap();
-    assert!(served.as_str() == Some(cli.as_str()), "the page's G-code differs from foldcam cut's");
+    assert!(
+        served.as_str() == Some(cli.as_str()),
+        "the page's G-code differs from foldcam cut's"
+    );
     keep_screenshot(&c, "studio-machine.png").await;
 
     c.close().await.unwrap();

@@ -25,7 +25,7 @@ use axum::Router;
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, PathRejection, QueryRejection};
 use axum::extract::{DefaultBodyLimit, FromRequestParts, Path, Query, State};
-use axum::http::{StatusCode, Uri, header};
+use axum::http::{HeaderMap, StatusCode, Uri, header};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use serde::{Deserialize, Serialize};
@@ -198,7 +198,9 @@ async fn static_file(uri: Uri) -> Response {
     };
     match assets::get(name) {
         Some((bytes, mime)) => ([(header::CONTENT_TYPE, mime)], bytes).into_response(),
-        None => ApiError::new(StatusCode::NOT_FOUND, format!("{path}: no such page")).into_response(),
+        None => {
+            ApiError::new(StatusCode::NOT_FOUND, format!("{path}: no such page")).into_response()
+        }
     }
 }
 
@@ -262,6 +264,7 @@ struct UploadQuery {
 async fn upload(
     State(s): State<Arc<Studio>>,
     query: Result<Query<UploadQuery>, QueryRejection>,
+    headers: HeaderMap,
     body: Result<Bytes, BytesRejection>,
 ) -> ApiResult<Json<Opened>> {
     let Query(q) = query?;
@@ -272,13 +275,25 @@ async fn upload(
         .next()
         .unwrap_or_default()
         .to_string();
+    let limit = s.config.max_upload_bytes;
+    let too_large = || {
+        ApiError::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            format!("{name}: the upload is larger than the limit of {limit} bytes"),
+        )
+    };
+    // Refused on its declared length before any of the body is read (a client that sent
+    // `Expect: 100-continue` never sends it); bodies without a length stop at the limit.
+    let declared = headers
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.parse::<u64>().ok());
+    if declared.is_some_and(|n| n > limit as u64) {
+        return Err(too_large());
+    }
     let body = body.map_err(|r| {
-        let limit = s.config.max_upload_bytes;
         if r.status() == StatusCode::PAYLOAD_TOO_LARGE {
-            ApiError::new(
-                StatusCode::PAYLOAD_TOO_LARGE,
-                format!("{name}: the upload is larger than the limit of {limit} bytes"),
-            )
+            too_large()
         } else {
             ApiError::new(r.status(), format!("{name}: {}", r.body_text()))
         }
@@ -311,7 +326,9 @@ async fn layers(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
         };
         let outcome = check_layers(&c.pattern, &mut report, &options)
             .map_err(|e| ApiError::input(format!("{}: layer order: {e}", doc.name)))?;
-        Ok(Json(json!({ "text": outcome.to_text(), "layers": outcome, "check": report })))
+        Ok(Json(
+            json!({ "text": outcome.to_text(), "layers": outcome, "check": report }),
+        ))
     })
     .await
 }
@@ -348,7 +365,8 @@ async fn fold3d(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
             max_time: FOLD_TIME_LIMIT,
             ..FoldOptions::default()
         };
-        let f = fold(&c.pattern, &opts).map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+        let f =
+            fold(&c.pattern, &opts).map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
         let flat = |p: &[glam::DVec3]| -> Vec<f32> {
             p.iter()
                 .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
@@ -478,7 +496,13 @@ async fn cut(
         // The file name is ours (a stem of letters the user chose, quoted safely).
         let safe: String = file
             .chars()
-            .map(|c| if c.is_ascii_graphic() && c != '"' && c != '\\' { c } else { '_' })
+            .map(|c| {
+                if c.is_ascii_graphic() && c != '"' && c != '\\' {
+                    c
+                } else {
+                    '_'
+                }
+            })
             .collect();
         Ok((
             [
@@ -505,8 +529,14 @@ async fn simulate(
     blocking(move || {
         let p = plan_document(&doc, &q.choice()).map_err(ApiError::input)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
-        let bytes = job_file(JobKind::Gcode, &p.plan, job, &p.machine, JobFileOptions::default())
-            .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+        let bytes = job_file(
+            JobKind::Gcode,
+            &p.plan,
+            job,
+            &p.machine,
+            JobFileOptions::default(),
+        )
+        .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
         let text = String::from_utf8_lossy(&bytes);
         let r = crate::sim::run(&text, &p.machine)
             .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;

@@ -27,7 +27,10 @@ static ASSETS: &[Asset] = &[
     asset!("cp.js", "text/javascript; charset=utf-8"),
     asset!("fold.js", "text/javascript; charset=utf-8"),
     asset!("machine.js", "text/javascript; charset=utf-8"),
-    asset!("vendor/three.module.min.js", "text/javascript; charset=utf-8"),
+    asset!(
+        "vendor/three.module.min.js",
+        "text/javascript; charset=utf-8"
+    ),
     asset!("vendor/three-LICENSE", "text/plain; charset=utf-8"),
 ];
 
@@ -54,12 +57,19 @@ mod tests {
     fn every_module_the_page_imports_is_embedded() {
         let html = std::str::from_utf8(get("index.html").unwrap().0).unwrap();
         assert!(html.contains("app.js"));
-        for a in ASSETS.iter().filter(|a| a.mime == JS && !a.name.starts_with("vendor/")) {
+        for a in ASSETS
+            .iter()
+            .filter(|a| a.mime == JS && !a.name.starts_with("vendor/"))
+        {
             let text = std::str::from_utf8(a.bytes).unwrap();
             for line in text.lines().filter(|l| l.starts_with("import ")) {
                 let target = line.rsplit(['\'', '"']).nth(1).unwrap();
                 let name = target.trim_start_matches("./");
-                assert!(get(name).is_some(), "{} imports {target}, not embedded", a.name);
+                assert!(
+                    get(name).is_some(),
+                    "{} imports {target}, not embedded",
+                    a.name
+                );
             }
         }
     }

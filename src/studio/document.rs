@@ -8,9 +8,7 @@ use serde::Serialize;
 
 use crate::check::AssignmentCounts;
 use crate::formats::{self, Format, FormatError, Imported, ReadOptions};
-use crate::pattern::{
-    CreasePattern, FoldedState, PlanarizeOptions, Units, planarize,
-};
+use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions, Units, planarize};
 
 /// A pattern the studio holds: the import as read (warnings and notes included), named as the
 /// user named it.
@@ -39,7 +37,8 @@ impl Document {
     /// # Errors
     /// The message `foldcam` prints for the same file.
     pub fn open(path: &Path) -> Result<Document, String> {
-        let imported = formats::load_with(path, &ReadOptions::default()).map_err(|e| e.to_string())?;
+        let imported =
+            formats::load_with(path, &ReadOptions::default()).map_err(|e| e.to_string())?;
         Document::new(path.display().to_string(), imported)
     }
 

@@ -6,7 +6,9 @@ use serde::Serialize;
 
 use super::document::Document;
 use crate::fab::{FabPlan, PlanOptions, PlanStats};
-use crate::machine::{MachineProfile, load_machine, load_material, shipped_machines, shipped_materials};
+use crate::machine::{
+    MachineProfile, load_machine, load_material, shipped_machines, shipped_materials,
+};
 use crate::pattern::CreasePattern;
 
 /// What to plan for: shipped profile names only (the studio reads no profile from disk).
@@ -80,7 +82,9 @@ pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, Str
 /// Scales the pattern so the longer side of its bounding box is `size` mm (as `--size`).
 fn resize(cp: &mut CreasePattern, size: f64) -> Result<(), String> {
     if !(size.is_finite() && size > 0.0) {
-        return Err(format!("size {size}: must be a finite number greater than 0"));
+        return Err(format!(
+            "size {size}: must be a finite number greater than 0"
+        ));
     }
     let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
     let factor = if extent > 0.0 { size / extent } else { 1.0 };
@@ -154,10 +158,10 @@ impl PlanView {
                 let mut travel = Vec::new();
                 let mut last: Option<DVec2> = None;
                 for stroke in job.paths.iter().flat_map(|t| &t.strokes) {
-                    if let (Some(a), Some(b)) = (last, stroke.first()) {
-                        if a != *b {
-                            travel.push([a.x, a.y, b.x, b.y]);
-                        }
+                    if let (Some(a), Some(b)) = (last, stroke.first())
+                        && a != *b
+                    {
+                        travel.push([a.x, a.y, b.x, b.y]);
                     }
                     last = stroke.last().copied().or(last);
                 }

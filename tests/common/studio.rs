@@ -63,21 +63,36 @@ impl Server {
         let _ = s.write_all(&request);
         let mut reply = Vec::new();
         let _ = s.read_to_end(&mut reply);
-        let split = reply
-            .windows(4)
-            .position(|w| w == b"\r\n\r\n")
-            .unwrap_or_else(|| panic!("no HTTP reply to {head}: {reply:?}"));
-        let headers = String::from_utf8_lossy(&reply[..split]).into_owned();
-        let status = headers
-            .split_whitespace()
-            .nth(1)
-            .and_then(|s| s.parse().ok())
-            .expect("a status code");
-        let mut body = reply[split + 4..].to_vec();
-        if headers.to_ascii_lowercase().contains("transfer-encoding: chunked") {
-            body = dechunk(&body);
+        split_reply(&reply)
+    }
+    /// `POST path` with `Expect: 100-continue`: the body is sent only when the server asks
+    /// for it (so a refusal on the declared length is read before any body byte is sent).
+    pub fn post_expecting(&self, path: &str, body: &[u8]) -> (u16, Vec<u8>) {
+        let mut s = TcpStream::connect(self.addr).expect("connect");
+        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
+        let head = format!(
+            "POST {path} HTTP/1.1\r\nHost: {}\r\nConnection: close\r\nExpect: 100-continue\r\n\
+             Content-Length: {}\r\n\r\n",
+            self.addr,
+            body.len()
+        );
+        s.write_all(head.as_bytes()).unwrap();
+        let mut reply = Vec::new();
+        let mut byte = [0u8; 1];
+        while !reply.ends_with(b"\r\n\r\n") {
+            assert_eq!(
+                s.read(&mut byte).expect("a reply"),
+                1,
+                "the server closed early"
+            );
+            reply.push(byte[0]);
         }
-        (status, body)
+        if reply.starts_with(b"HTTP/1.1 100") {
+            s.write_all(body).unwrap();
+            reply.clear();
+        }
+        s.read_to_end(&mut reply).expect("the reply");
+        split_reply(&reply)
     }
 
     /// `GET path`.
@@ -102,6 +117,28 @@ impl Drop for Server {
         let _ = self.child.kill();
         let _ = self.child.wait();
     }
+}
+
+/// Status code and body (de-chunked) of a whole HTTP reply.
+fn split_reply(reply: &[u8]) -> (u16, Vec<u8>) {
+    let split = reply
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .unwrap_or_else(|| panic!("no HTTP reply: {reply:?}"));
+    let headers = String::from_utf8_lossy(&reply[..split]).into_owned();
+    let status = headers
+        .split_whitespace()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .expect("a status code");
+    let mut body = reply[split + 4..].to_vec();
+    if headers
+        .to_ascii_lowercase()
+        .contains("transfer-encoding: chunked")
+    {
+        body = dechunk(&body);
+    }
+    (status, body)
 }
 
 fn dechunk(mut body: &[u8]) -> Vec<u8> {
