@@ -16,6 +16,7 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use bin::{foldcam, repo_file};
+use fantoccini::actions::{InputSource, MouseActions, PointerAction};
 use fantoccini::{Client, ClientBuilder, Locator};
 use serde_json::{Value, json};
 use studio::Server;
@@ -235,12 +236,14 @@ async fn the_studio_works_in_a_real_browser() {
         .unwrap()
         .parse()
         .unwrap();
-    c.find(Locator::Css(&format!("#cp-hits line[data-edge='{index}']")))
-        .await
-        .unwrap()
-        .click()
-        .await
-        .unwrap();
+    // A real pointer move onto the line's middle (WebDriver actions).
+    let mouse = MouseActions::new("mouse".to_string()).then(PointerAction::MoveToElement {
+        element: hit.clone(),
+        duration: None,
+        x: 0.0,
+        y: 0.0,
+    });
+    c.perform_actions(mouse).await.unwrap();
     let file: Value = serde_json::from_slice(&std::fs::read(&miura).unwrap()).unwrap();
     let ends = &file["edges_vertices"][index];
     let p = |k: usize| {
