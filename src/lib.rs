@@ -36,5 +36,6 @@ pub mod pattern;
 pub mod post;
 pub mod render;
 pub mod sim;
+pub mod studio;
 #[cfg(test)]
 mod test_rng;

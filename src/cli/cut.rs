@@ -3,38 +3,22 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use foldcam::fab::{FabPlan, Job};
+use foldcam::fab::FabPlan;
 use foldcam::machine::MachineProfile;
-use foldcam::post::{self, DxfVersion};
+use foldcam::post::{JobFileOptions, JobKind, job_file};
 
 use super::Outcome;
 use super::fab_args::PlanRequest;
 
-/// Output kinds by extension.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Output {
-    Gcode,
-    Dxf,
-    Svg,
-    Lbrn2,
-}
-
-fn output_kind(path: &Path) -> Result<Output> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .unwrap_or_default();
-    Ok(match ext.as_str() {
-        "gcode" | "nc" | "ngc" | "gc" => Output::Gcode,
-        "dxf" => Output::Dxf,
-        "svg" => Output::Svg,
-        "lbrn2" => Output::Lbrn2,
-        _ => bail!(
-            "{}: unknown job type (expected .gcode, .nc, .ngc, .dxf, .svg or .lbrn2)",
-            path.display()
+fn output_kind(path: &Path) -> Result<JobKind> {
+    match JobKind::from_path(path) {
+        Some(kind) => Ok(kind),
+        None => bail!(
+            "{}: unknown job type (expected {})",
+            path.display(),
+            JobKind::EXTENSIONS
         ),
-    })
+    }
 }
 
 /// Plan a pattern for a machine and material and write the job.
@@ -99,7 +83,7 @@ pub fn run(args: Args) -> Result<Outcome> {
 /// Writes one framing job per job of the plan (G-code, read back by the simulated machine
 /// first), and says what each traces.
 fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64) -> Result<()> {
-    if output_kind(output)? != Output::Gcode {
+    if output_kind(output)? != JobKind::Gcode {
         bail!(
             "{}: --frame writes G-code (.gcode, .nc, .ngc); LightBurn and other job software \
              frame a drawing themselves",
@@ -184,7 +168,7 @@ pub fn stage_jobs(
     dasharray: bool,
 ) -> Result<()> {
     let kind = output_kind(output)?;
-    if dasharray && kind != Output::Svg {
+    if dasharray && kind != JobKind::Svg {
         eprintln!("warning: --dasharray applies to SVG output only: ignored");
     }
     let perforates = p
@@ -192,43 +176,16 @@ pub fn stage_jobs(
         .iter()
         .flat_map(|j| &j.paths)
         .any(|t| t.op == foldcam::fab::Operation::Perforate);
-    if dasharray && kind == Output::Svg && !perforates {
+    if dasharray && kind == JobKind::Svg && !perforates {
         eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
     let paths = job_paths(output, p);
     for (job, path) in p.jobs.iter().zip(&paths) {
-        let bytes = render(kind, p, job, machine, r12, dasharray)
+        let bytes = job_file(kind, p, job, machine, JobFileOptions { r12, dasharray })
             .with_context(|| path.display().to_string())?;
         outputs.add(path, bytes);
     }
     Ok(())
-}
-
-fn render(
-    kind: Output,
-    p: &FabPlan,
-    job: &Job,
-    m: &MachineProfile,
-    r12: bool,
-    dasharray: bool,
-) -> Result<Vec<u8>> {
-    Ok(match kind {
-        Output::Gcode => {
-            let text = post::gcode(p, job, m)?;
-            simulated_clean(&text, m)?;
-            text.into_bytes()
-        }
-        Output::Dxf => {
-            let version = if r12 {
-                DxfVersion::R12
-            } else {
-                DxfVersion::R2000
-            };
-            post::dxf(p, job, version)?
-        }
-        Output::Svg => post::svg(p, job, &m.bed, dasharray)?.into_bytes(),
-        Output::Lbrn2 => post::lbrn2(p, job, m)?.into_bytes(),
-    })
 }
 
 /// One path per job: the output itself, or NAME.JOB.EXT for several jobs.

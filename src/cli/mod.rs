@@ -25,6 +25,7 @@ mod popup_input;
 mod popup_poly;
 mod preview;
 mod progress;
+mod serve;
 mod simulate;
 mod tessellate;
 mod testgrid;
@@ -98,6 +99,8 @@ enum Command {
     List(list::Args),
     /// Write a calibration grid of perforated creases over dash, bridge, power and speed.
     Testgrid(testgrid::Args),
+    /// Open patterns in the browser: the local web studio (check, fold in 3D, plan, cut).
+    Serve(serve::Args),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
@@ -127,6 +130,7 @@ pub fn run() -> ExitCode {
         Command::FoldFlat(a) => fold_flat::run(a),
         Command::Fold3d(a) => fold3d::run(a),
         Command::Testgrid(a) => testgrid::run(a),
+        Command::Serve(a) => serve::run(a),
     };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,

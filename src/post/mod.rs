@@ -17,12 +17,14 @@ mod check;
 mod dxf;
 pub mod gcode;
 pub mod layers;
+mod job;
 pub mod lbrn;
 mod number;
 mod style;
 mod svg;
 
 pub use check::{MAX_COORD_MM, MAX_RESOLUTION_MM, MIN_RESOLUTION_MM};
+pub use job::{JobFileError, JobFileOptions, JobKind, job_file};
 pub use style::{LayerStyle, layer_style};
 
 use crate::fab::{FabPlan, Job};

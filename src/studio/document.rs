@@ -1,0 +1,226 @@
+//! A pattern opened in the studio: read from an upload's bytes or a file named on the command
+//! line, and cleaned for each use exactly as the matching `foldcam` subcommand cleans it.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec2;
+use serde::Serialize;
+
+use crate::check::AssignmentCounts;
+use crate::formats::{self, Format, FormatError, Imported, ReadOptions};
+use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions, Units, planarize};
+
+/// A pattern the studio holds: the import as read (warnings and notes included), named as the
+/// user named it.
+#[derive(Clone, Debug)]
+pub struct Document {
+    /// The file name (an upload's own name, or the path given on the command line).
+    pub name: String,
+    /// The pattern as read, before cleaning.
+    pub imported: Imported,
+}
+
+/// The pattern after cleaning, with what cleaning had to say.
+#[derive(Clone, Debug)]
+pub struct Cleaned {
+    /// The planar pattern.
+    pub pattern: CreasePattern,
+    /// The folded state, kept only when cleaning changed nothing.
+    pub folded: Option<FoldedState>,
+    /// What `foldcam` prints on stderr about the reading and cleaning, without `foldcam: `.
+    pub messages: Vec<String>,
+}
+
+impl Document {
+    /// Reads a file named on the command line, as `foldcam check FILE` reads it.
+    ///
+    /// # Errors
+    /// The message `foldcam` prints for the same file.
+    pub fn open(path: &Path) -> Result<Document, String> {
+        let imported =
+            formats::load_with(path, &ReadOptions::default()).map_err(|e| e.to_string())?;
+        Document::new(path.display().to_string(), imported)
+    }
+
+    /// Reads an upload: `name` chooses the format by its extension and names the file in
+    /// messages; nothing is read from disk.
+    ///
+    /// # Errors
+    /// The message `foldcam` prints for a file of that name and content.
+    pub fn from_upload(name: &str, bytes: &[u8]) -> Result<Document, String> {
+        let path = PathBuf::from(name);
+        let format = Format::from_path(&path).ok_or_else(|| {
+            FormatError::UnknownFormat {
+                path: path.clone(),
+                expected: Format::EXTENSIONS,
+            }
+            .to_string()
+        })?;
+        let text = match format {
+            // The DXF reader takes any 8-bit text (older drawings are not UTF-8).
+            Format::Dxf => String::from_utf8_lossy(bytes).into_owned(),
+            _ => String::from_utf8(bytes.to_vec()).map_err(|e| {
+                FormatError::Parse {
+                    path: path.clone(),
+                    source: formats::ParseError::new(
+                        format!("byte {}", e.utf8_error().valid_up_to()),
+                        "file is not valid UTF-8 text",
+                    ),
+                }
+                .to_string()
+            })?,
+        };
+        let imported = formats::parse_with(format, &text, &ReadOptions::default())
+            .map_err(|source| FormatError::Parse {
+                path: path.clone(),
+                source,
+            })
+            .and_then(|i| {
+                i.pattern
+                    .validate()
+                    .map_err(|source| FormatError::Pattern {
+                        path: path.clone(),
+                        source,
+                    })
+                    .map(|()| i)
+            })
+            .map_err(|e| e.to_string())?;
+        Document::new(name.to_string(), imported)
+    }
+
+    fn new(name: String, imported: Imported) -> Result<Document, String> {
+        if imported.pattern.edges.is_empty() {
+            return Err(format!(
+                "{name}: the pattern holds no edges (and no faces to derive them from): nothing \
+                 to check, draw or convert"
+            ));
+        }
+        Ok(Document { name, imported })
+    }
+
+    /// The pattern cleaned into a planar graph (faces traced when `faces`), as `foldcam check`
+    /// (`faces` false) or `foldcam fold3d` (`faces` true) cleans it.
+    ///
+    /// # Errors
+    /// The planariser's refusal, naming the file.
+    pub fn cleaned(&self, faces: bool) -> Result<Cleaned, String> {
+        let name = &self.name;
+        let mut messages: Vec<String> = self
+            .imported
+            .warnings
+            .iter()
+            .map(|w| format!("warning: {name}: {w}"))
+            .chain(self.imported.notes.iter().map(|n| format!("{name}: {n}")))
+            .collect();
+        let mut pattern = self.imported.pattern.clone();
+        let mut folded = self.imported.folded.clone();
+        let options = PlanarizeOptions {
+            tolerance: None,
+            faces,
+        };
+        let report = planarize(&mut pattern, &options).map_err(|e| format!("{name}: {e}"))?;
+        if report.assignment_conflicts > 0 {
+            messages.push(format!(
+                "warning: {name}: {} mountain and valley lines lie on top of each other; the \
+                 first of each pair was kept",
+                report.assignment_conflicts
+            ));
+        }
+        if !report.unchanged() {
+            if folded.take().is_some() {
+                messages.push(format!(
+                    "warning: {name}: the folded state was dropped: it does not match the \
+                     cleaned pattern"
+                ));
+            }
+            messages.push(format!(
+                "{name}: cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, \
+                 {} zero-length and {} duplicate edges removed",
+                report.merged_vertices,
+                report.crossings,
+                report.splits,
+                report.zero_length_removed,
+                report.duplicates_removed
+            ));
+        }
+        Ok(Cleaned {
+            pattern,
+            folded,
+            messages,
+        })
+    }
+}
+
+/// One edge as the front end draws it.
+#[derive(Clone, Debug, Serialize)]
+pub struct EdgeView {
+    /// End vertices (indices into [`PatternView::vertices`]).
+    pub v: [usize; 2],
+    /// FOLD assignment letter.
+    pub a: char,
+    /// Target fold angle, degrees (FOLD sign), when known.
+    pub angle: Option<f64>,
+}
+
+/// The cleaned pattern as the front end draws it: numbers match `foldcam check`'s.
+#[derive(Clone, Debug, Serialize)]
+pub struct PatternView {
+    /// The file name.
+    pub name: String,
+    /// `mm` or `units`.
+    pub units: &'static str,
+    /// Vertex positions (x right, y up).
+    pub vertices: Vec<[f64; 2]>,
+    /// Edges.
+    pub edges: Vec<EdgeView>,
+    /// Vertex and edge counts and edges per assignment.
+    pub counts: Counts,
+    /// What reading and cleaning reported.
+    pub messages: Vec<String>,
+}
+
+/// Counts shown in the page.
+#[derive(Clone, Debug, Serialize)]
+pub struct Counts {
+    /// Vertices.
+    pub vertices: usize,
+    /// Edges.
+    pub edges: usize,
+    /// Edges per assignment.
+    pub assignments: AssignmentCounts,
+}
+
+impl PatternView {
+    /// The view of a cleaned pattern.
+    pub fn new(name: &str, cleaned: &Cleaned) -> PatternView {
+        let cp = &cleaned.pattern;
+        PatternView {
+            name: name.to_string(),
+            units: unit_label(cp.units),
+            vertices: cp.vertices.iter().map(|p: &DVec2| [p.x, p.y]).collect(),
+            edges: cp
+                .edges
+                .iter()
+                .map(|e| EdgeView {
+                    v: [e.vertices[0].index(), e.vertices[1].index()],
+                    a: e.assignment.letter(),
+                    angle: e.fold_angle,
+                })
+                .collect(),
+            counts: Counts {
+                vertices: cp.vertices.len(),
+                edges: cp.edges.len(),
+                assignments: AssignmentCounts::of(cp),
+            },
+            messages: cleaned.messages.clone(),
+        }
+    }
+}
+
+/// The unit label of a pattern for messages (`mm` or `units`).
+pub fn unit_label(units: Units) -> &'static str {
+    match units {
+        Units::Millimetres => "mm",
+        Units::Unitless => "units",
+    }
+}

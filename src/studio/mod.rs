@@ -1,0 +1,104 @@
+//! `foldcam serve`: the local web studio. A small HTTP server (axum on tokio) serves a front
+//! end embedded in the binary ([`assets`]) and a JSON API over the library ([`api`]): open a
+//! pattern, check it, fold it in 3D, plan it for a machine and download the job files exactly
+//! as `foldcam cut` writes them.
+//!
+//! # What the server reads
+//! Only the files named on the command line (by their index in [`StudioConfig::files`]) and
+//! uploads (request bodies of at most [`StudioConfig::max_upload_bytes`]). No request names a
+//! path on disk: machine and material profiles are chosen among the shipped ones by name, and
+//! static files come from the embedded table, so `..` in a URL reaches nothing.
+//!
+//! # Errors
+//! Every API error is a JSON object `{"error": "..."}` whose text is the message `foldcam`
+//! would print for the same input (without the leading `foldcam: `), with the upload's file
+//! name where the command line names the file.
+
+pub mod api;
+pub mod assets;
+pub mod document;
+pub mod toolpath;
+
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// Largest upload accepted by default, bytes (32 MiB: the largest bundled pattern is far
+/// smaller; the command line reads up to [`crate::formats::MAX_INPUT_BYTES`]).
+pub const DEFAULT_MAX_UPLOAD_BYTES: usize = 32 * 1024 * 1024;
+
+/// The address served when none is given: this machine only.
+pub const DEFAULT_HOST: IpAddr = IpAddr::V4(Ipv4Addr::LOCALHOST);
+
+/// The port served when none is given.
+pub const DEFAULT_PORT: u16 = 8470;
+
+/// Most documents (opened files and uploads) kept at once; the oldest is dropped first.
+pub const MAX_DOCUMENTS: usize = 32;
+
+/// How to run the studio.
+#[derive(Clone, Debug)]
+pub struct StudioConfig {
+    /// Address to bind (loopback unless the user asks otherwise).
+    pub host: IpAddr,
+    /// Port to bind; 0 picks a free one.
+    pub port: u16,
+    /// Files the user named on the command line: the only paths the server reads.
+    pub files: Vec<PathBuf>,
+    /// Largest request body accepted, bytes.
+    pub max_upload_bytes: usize,
+}
+
+impl Default for StudioConfig {
+    fn default() -> Self {
+        StudioConfig {
+            host: DEFAULT_HOST,
+            port: DEFAULT_PORT,
+            files: Vec::new(),
+            max_upload_bytes: DEFAULT_MAX_UPLOAD_BYTES,
+        }
+    }
+}
+
+/// Why the studio could not start.
+#[derive(Debug, thiserror::Error)]
+pub enum StudioError {
+    /// The address could not be bound.
+    #[error("cannot listen on {addr}: {source}")]
+    Bind {
+        /// The address.
+        addr: SocketAddr,
+        /// What the system said.
+        source: std::io::Error,
+    },
+    /// The async runtime could not start or the server stopped with an error.
+    #[error("the web server stopped: {0}")]
+    Runtime(std::io::Error),
+}
+
+/// Binds the address and serves until the process ends. `on_ready` is called once with the
+/// address actually bound (useful with port 0) before the first request is taken.
+///
+/// # Errors
+/// [`StudioError::Bind`] when the address is taken or not allowed, [`StudioError::Runtime`]
+/// when the runtime cannot start.
+pub fn serve(config: StudioConfig, on_ready: impl FnOnce(SocketAddr)) -> Result<(), StudioError> {
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_io()
+        .build()
+        .map_err(StudioError::Runtime)?;
+    runtime.block_on(async move {
+        let addr = SocketAddr::new(config.host, config.port);
+        let listener = tokio::net::TcpListener::bind(addr)
+            .await
+            .map_err(|source| StudioError::Bind { addr, source })?;
+        let bound = listener
+            .local_addr()
+            .map_err(|source| StudioError::Bind { addr, source })?;
+        let state = Arc::new(api::Studio::new(config));
+        on_ready(bound);
+        axum::serve(listener, api::router(state))
+            .await
+            .map_err(StudioError::Runtime)
+    })
+}

@@ -1,0 +1,212 @@
+//! Planning an opened pattern for a shipped machine and material, as `foldcam cut` and
+//! `foldcam plan` do with no plan options given, and the plan as the front end draws it.
+
+use glam::DVec2;
+use serde::Serialize;
+
+use super::document::Document;
+use crate::fab::{FabPlan, PlanOptions, PlanStats};
+use crate::machine::{
+    MachineProfile, load_machine, load_material, shipped_machines, shipped_materials,
+};
+use crate::pattern::CreasePattern;
+
+/// What to plan for: shipped profile names only (the studio reads no profile from disk).
+#[derive(Clone, Debug, Default, serde::Deserialize)]
+pub struct PlanChoice {
+    /// A shipped machine profile name.
+    pub machine: String,
+    /// A shipped material profile name.
+    pub material: String,
+    /// Longer side of the pattern in millimetres (as `--size`), for unitless patterns or to
+    /// rescale; `None` keeps the file's size.
+    pub size: Option<f64>,
+}
+
+/// A plan with the profile and the pattern it was made from.
+#[derive(Clone, Debug)]
+pub struct Planned {
+    /// The machine.
+    pub machine: MachineProfile,
+    /// The plan.
+    pub plan: FabPlan,
+    /// The cleaned, sized pattern (pattern millimetres).
+    pub pattern: CreasePattern,
+}
+
+/// Refuses a name that is not a shipped profile (a path would make the server read a file a
+/// request names).
+fn shipped(name: &str, kind: &str, names: &[&str]) -> Result<(), String> {
+    if names.contains(&name) {
+        Ok(())
+    } else {
+        Err(format!(
+            "{kind} {name:?}: not a shipped profile (one of {}); the studio reads no profile \
+             files from disk",
+            names.join(", ")
+        ))
+    }
+}
+
+/// Plans `doc` as `foldcam cut DOC -m MACHINE -x MATERIAL [--size S]` would.
+///
+/// # Errors
+/// The message `foldcam cut` prints for the same input, or a refusal of a name that is not a
+/// shipped profile.
+pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, String> {
+    shipped(&choice.machine, "machine", &shipped_machines())?;
+    shipped(&choice.material, "material", &shipped_materials())?;
+    let machine = load_machine(&choice.machine).map_err(|e| e.to_string())?;
+    let material = load_material(&choice.material).map_err(|e| e.to_string())?;
+    let mut options = PlanOptions::from_material(&material);
+    options
+        .adapt_to_machine(&machine)
+        .map_err(|e| e.to_string())?;
+    let cleaned = doc.cleaned(false)?;
+    let mut pattern = cleaned.pattern;
+    if let Some(size) = choice.size {
+        resize(&mut pattern, size).map_err(|e| format!("{}: {e}", doc.name))?;
+    }
+    pattern
+        .require_millimetres()
+        .map_err(|e| format!("{}: {e}", doc.name))?;
+    let plan = crate::fab::plan(&pattern, &machine, &material, &options)
+        .map_err(|e| format!("{}: {e}", doc.name))?;
+    Ok(Planned {
+        machine,
+        plan,
+        pattern,
+    })
+}
+
+/// Scales the pattern so the longer side of its bounding box is `size` mm (as `--size`).
+fn resize(cp: &mut CreasePattern, size: f64) -> Result<(), String> {
+    if !(size.is_finite() && size > 0.0) {
+        return Err(format!(
+            "size {size}: must be a finite number greater than 0"
+        ));
+    }
+    let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
+    let factor = if extent > 0.0 { size / extent } else { 1.0 };
+    let reach = cp
+        .bounds()
+        .map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs()).max_element());
+    let limit = crate::pattern::MAX_COORDINATE;
+    if !(reach * factor).is_finite() || reach * factor > limit {
+        return Err(format!(
+            "a scale of {factor} puts coordinates at {:e} mm, beyond the limit of {limit:e} mm",
+            reach * factor
+        ));
+    }
+    cp.scale_to_mm(factor);
+    Ok(())
+}
+
+/// One toolpath as drawn: its operation, layer colour and strokes (machine mm).
+#[derive(Clone, Debug, Serialize)]
+pub struct PathView {
+    /// Operation name.
+    pub op: &'static str,
+    /// Layer colour of the operation (the colour of our SVG and LightBurn layers).
+    pub colour: &'static str,
+    /// Strokes, machine mm.
+    pub strokes: Vec<Vec<[f64; 2]>>,
+}
+
+/// One job as drawn.
+#[derive(Clone, Debug, Serialize)]
+pub struct JobView {
+    /// `front` or `back`.
+    pub name: String,
+    /// Toolpaths in execution order.
+    pub paths: Vec<PathView>,
+    /// Tool-off moves between consecutive strokes, each `[x0, y0, x1, y1]`, machine mm.
+    pub travel: Vec<[f64; 4]>,
+    /// The sheet's pattern edges placed on the bed, each `[x0, y0, x1, y1]`, machine mm.
+    pub sheet: Vec<[f64; 4]>,
+}
+
+/// The plan as the front end draws it.
+#[derive(Clone, Debug, Serialize)]
+pub struct PlanView {
+    /// Machine name.
+    pub machine: String,
+    /// Bed width and depth, mm.
+    pub bed: [f64; 2],
+    /// True when machine +y points down the drawing.
+    pub y_flipped: bool,
+    /// True when the machine takes G-code (else DXF/SVG/LightBurn only).
+    pub gcode: bool,
+    /// Jobs.
+    pub jobs: Vec<JobView>,
+    /// Lengths per operation, pierces, travel and time.
+    pub stats: PlanStats,
+    /// The plan's remarks.
+    pub warnings: Vec<String>,
+}
+
+impl PlanView {
+    /// The view of a plan.
+    pub fn new(p: &Planned) -> PlanView {
+        let m = &p.machine;
+        let jobs = p
+            .plan
+            .jobs
+            .iter()
+            .map(|job| {
+                let pt = |q: &DVec2| [q.x, q.y];
+                let mut travel = Vec::new();
+                let mut last: Option<DVec2> = None;
+                for stroke in job.paths.iter().flat_map(|t| &t.strokes) {
+                    if let (Some(a), Some(b)) = (last, stroke.first())
+                        && a != *b
+                    {
+                        travel.push([a.x, a.y, b.x, b.y]);
+                    }
+                    last = stroke.last().copied().or(last);
+                }
+                let sheet = p
+                    .pattern
+                    .edges
+                    .iter()
+                    .map(|e| {
+                        let a = job
+                            .to_machine
+                            .transform_point2(p.pattern.vertices[e.vertices[0].index()]);
+                        let b = job
+                            .to_machine
+                            .transform_point2(p.pattern.vertices[e.vertices[1].index()]);
+                        [a.x, a.y, b.x, b.y]
+                    })
+                    .collect();
+                JobView {
+                    name: job.name.clone(),
+                    paths: job
+                        .paths
+                        .iter()
+                        .map(|t| PathView {
+                            op: t.op.name(),
+                            colour: crate::post::layer_style(t.op).hex,
+                            strokes: t
+                                .strokes
+                                .iter()
+                                .map(|s| s.iter().map(pt).collect())
+                                .collect(),
+                        })
+                        .collect(),
+                    travel,
+                    sheet,
+                }
+            })
+            .collect();
+        PlanView {
+            machine: m.name.clone(),
+            bed: [m.bed.width_mm, m.bed.height_mm],
+            y_flipped: m.bed.y_flipped,
+            gcode: m.emits_gcode(),
+            jobs,
+            stats: p.plan.stats.clone(),
+            warnings: p.plan.warnings.clone(),
+        }
+    }
+}

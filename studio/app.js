@@ -1,0 +1,183 @@
+// The studio page: opens patterns (command-line files, the file picker, drag and drop),
+// shows counts, legend and check findings, and drives the three views.
+import { call, upload } from './api.js';
+import { PatternView } from './cp.js';
+import { FoldView } from './fold.js';
+import { MachineView } from './machine.js';
+
+const $ = (id) => document.getElementById(id);
+const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
+const patternView = new PatternView($('cp-svg'), $('hover-info'));
+const machineView = new MachineView($('view-machine'));
+
+function showError(e) {
+  $('error').textContent = e ? String(e.message || e) : '';
+  $('error').hidden = !e;
+}
+
+/** Runs an async action, showing its error (the server's message) in the page. */
+async function guarded(action) {
+  try {
+    showError(null);
+    document.body.dataset.busy = 'true';
+    return await action();
+  } catch (e) {
+    showError(e);
+  } finally {
+    delete document.body.dataset.busy;
+  }
+}
+
+function showLegend(legend) {
+  $('legend').replaceChildren(...legend.assignments.map((a) => {
+    const li = document.createElement('li');
+    const dash = a.dash ? a.dash.map((d) => d * 1.5).join(' ') : 'none';
+    li.innerHTML = `<svg width="46" height="10"><line x1="2" y1="5" x2="44" y2="5" stroke="${a.colour}" ` +
+      `stroke-width="${a.width * 1.5}" stroke-dasharray="${dash}"/></svg> ${a.name} (${a.letter})`;
+    return li;
+  }));
+}
+
+function showCounts(view) {
+  const a = view.counts.assignments;
+  $('count-vertices').textContent = view.counts.vertices;
+  $('count-edges').textContent = view.counts.edges;
+  $('count-M').textContent = a.mountain;
+  $('count-V').textContent = a.valley;
+  $('count-B').textContent = a.boundary;
+  $('count-other').textContent = `${a.flat}, ${a.unassigned}, ${a.cut}, ${a.join}`;
+  $('doc-name').textContent = view.name;
+  $('messages').replaceChildren(...view.messages.map((m) => {
+    const li = document.createElement('li');
+    li.textContent = m;
+    return li;
+  }));
+}
+
+function selectFinding(k) {
+  const f = state.findings[k];
+  document.querySelectorAll('#findings li').forEach((li, i) => li.classList.toggle('selected', i === k));
+  patternView.ring(state.findings, state.legend.fault, k);
+  patternView.zoomTo(f.position[0], f.position[1]);
+}
+
+async function runCheck() {
+  showFindings(await call(`/api/docs/${state.doc.id}/check`));
+}
+
+async function runLayers() {
+  $('layers-result').textContent = 'solving…';
+  const result = await call(`/api/docs/${state.doc.id}/layers`);
+  $('layers-result').textContent = result.text;
+  showFindings(result.check);
+}
+
+function showFindings(report) {
+  state.findings = report.findings;
+  const status = $('check-status');
+  status.textContent = report.findings.length ? `${report.findings.length} finding(s)` : 'passed';
+  status.className = report.findings.length ? 'fail' : 'pass';
+  $('findings').replaceChildren(...report.findings.map((f, k) => {
+    const li = document.createElement('li');
+    li.textContent = f.message;
+    li.title = f.hint;
+    li.className = `finding finding-${f.kind}`;
+    li.addEventListener('click', () => selectFinding(k));
+    return li;
+  }));
+  patternView.ring(report.findings, state.legend.fault);
+}
+
+/** Shows a newly opened document (the API's pattern view with its id). */
+async function opened(view) {
+  state.doc = view;
+  state.fold = null;
+  state.planned = false;
+  delete document.body.dataset.foldPercent;
+  delete document.body.dataset.planned;
+  showCounts(view);
+  patternView.show(view, state.legend);
+  $('fold-label').textContent = 'not folded yet';
+  $('fold-report').textContent = '';
+  $('layers-result').textContent = '';
+  $('plan-stats').replaceChildren();
+  $('downloads').replaceChildren();
+  $('toolpath-svg').replaceChildren();
+  await runCheck();
+  document.body.dataset.doc = view.id;
+  const active = document.querySelector('#tabs button.active').dataset.view;
+  await enterView(active);
+}
+
+async function foldNow() {
+  if (!state.foldView) state.foldView = new FoldView($('fold-canvas'));
+  $('fold-label').textContent = 'folding…';
+  const fold = await call(`/api/docs/${state.doc.id}/fold3d`);
+  state.fold = fold;
+  state.foldView.show(fold);
+  const r = fold.report;
+  $('fold-report').textContent = `Bar-and-hinge simulation (Ghassaei, Demaine & Gershenfeld 2018): ` +
+    `${r.triangles} triangles, ${r.steps} steps, ${r.stop.replace('_', ' ')}; largest bar strain ` +
+    `${(100 * r.max_strain).toFixed(3)}%; ${r.crossing_faces.length} pair(s) of faces passing through each other.`;
+  showFoldFrame();
+}
+
+function showFoldFrame() {
+  const frame = state.foldView.showPercent(Number($('fold-slider').value));
+  $('fold-label').textContent = `${frame.percent.toFixed(0)}% of every fold angle` +
+    (frame.settled ? '' : ' (while folding)');
+  document.body.dataset.foldPercent = frame.percent.toFixed(1);
+}
+
+async function enterView(name) {
+  if (!state.doc) return;
+  if (name === 'fold' && !state.fold) await guarded(foldNow);
+  if (name === 'fold' && state.foldView) state.foldView.draw();
+}
+
+function switchView(name) {
+  document.querySelectorAll('#tabs button').forEach((b) => b.classList.toggle('active', b.dataset.view === name));
+  document.querySelectorAll('.view').forEach((v) => { v.hidden = v.id !== `view-${name}`; });
+  return enterView(name);
+}
+
+async function start() {
+  state.legend = await call('/api/legend');
+  showLegend(state.legend);
+  await machineView.load();
+  const files = await call('/api/files');
+  $('cli-files').replaceChildren(...files.map((f) => {
+    const b = document.createElement('button');
+    b.textContent = f.name;
+    b.addEventListener('click', () => guarded(async () => opened(await call(`/api/files/${f.index}`, { method: 'POST' }))));
+    return b;
+  }));
+  document.querySelectorAll('#tabs button').forEach((b) => b.addEventListener('click', () => switchView(b.dataset.view)));
+  $('file-input').addEventListener('change', (e) => {
+    const file = e.target.files[0];
+    if (file) guarded(async () => opened(await upload(file)));
+  });
+  document.body.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dragging'); });
+  document.body.addEventListener('dragleave', () => document.body.classList.remove('dragging'));
+  document.body.addEventListener('drop', (e) => {
+    e.preventDefault();
+    document.body.classList.remove('dragging');
+    const file = e.dataTransfer.files[0];
+    if (file) guarded(async () => opened(await upload(file)));
+  });
+  $('layers-btn').addEventListener('click', () => guarded(async () => {
+    if (!state.doc) throw new Error('open a pattern first');
+    await runLayers();
+  }));
+  $('fold-slider').addEventListener('input', () => { if (state.fold) showFoldFrame(); });
+  $('plan-btn').addEventListener('click', () => guarded(async () => {
+    if (!state.doc) throw new Error('open a pattern first');
+    await machineView.plan(state.doc.id);
+    state.planned = true;
+    document.body.dataset.planned = 'true';
+  }));
+  if (files.length) await guarded(async () => opened(await call(`/api/files/0`, { method: 'POST' })));
+  document.body.dataset.ready = 'true';
+}
+
+guarded(start);

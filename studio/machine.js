@@ -1,0 +1,132 @@
+// The machine view: choose a shipped machine and material, draw the planned toolpath over
+// the sheet on the bed (travel in its own colour), show lengths, pierces and time, and offer
+// the job files exactly as `foldcam cut` writes them.
+import { call } from './api.js';
+import { panZoom } from './cp.js';
+
+const NS = 'http://www.w3.org/2000/svg';
+/** Colour of tool-off travel. */
+const TRAVEL = '#ff8c00';
+/** Colour of the sheet's lines under the toolpath. */
+const SHEET = '#c8c8c8';
+
+function el(name, attrs = {}, parent = null) {
+  const node = document.createElementNS(NS, name);
+  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
+  if (parent) parent.appendChild(node);
+  return node;
+}
+
+function clock(seconds) {
+  const t = Math.round(Math.max(0, seconds));
+  const pad = (n) => String(n).padStart(2, '0');
+  return `${Math.floor(t / 3600)}:${pad(Math.floor(t / 60) % 60)}:${pad(t % 60)}`;
+}
+
+export class MachineView {
+  constructor(root) {
+    this.svg = root.querySelector('#toolpath-svg');
+    this.stats = root.querySelector('#plan-stats');
+    this.downloads = root.querySelector('#downloads');
+    this.machine = root.querySelector('#machine');
+    this.material = root.querySelector('#material');
+    this.size = root.querySelector('#size');
+    this.box = [0, 0, 1, 1];
+    panZoom(this.svg, () => this.box, (b) => this.setBox(b));
+  }
+
+  setBox(box) {
+    this.box = box;
+    this.svg.setAttribute('viewBox', box.join(' '));
+  }
+
+  /** Fills the machine and material lists from the shipped profiles. */
+  async load() {
+    const [machines, materials] = await Promise.all([call('/api/machines'), call('/api/materials')]);
+    this.machines = Object.fromEntries(machines.map((m) => [m.name, m]));
+    for (const [select, list] of [[this.machine, machines], [this.material, materials]]) {
+      select.replaceChildren(...list.map((p) => new Option(`${p.name} — ${p.description}`, p.name)));
+    }
+  }
+
+  /** The query naming the current choice. */
+  query() {
+    const q = new URLSearchParams({ machine: this.machine.value, material: this.material.value });
+    if (this.size.value) q.set('size', this.size.value);
+    return q;
+  }
+
+  /** Plans document `id` and draws the result. */
+  async plan(id) {
+    const q = this.query();
+    const plan = await call(`/api/docs/${id}/plan?${q}`);
+    this.draw(plan);
+    this.showStats(plan);
+    this.offer(id, plan, q);
+    if (plan.gcode) {
+      const sim = await call(`/api/docs/${id}/simulate?${q}`);
+      const p = el('p', {});
+      p.id = 'sim-result';
+      p.textContent = `Simulated ${sim.machine}: ${sim.lines} lines, ${clock(sim.time_s)} with acceleration, ` +
+        `${sim.violation_count} problem(s).`;
+      this.stats.appendChild(p);
+    }
+    return plan;
+  }
+
+  draw(plan) {
+    const [bw, bh] = plan.bed;
+    const flip = plan.y_flipped ? 1 : -1;
+    this.svg.replaceChildren();
+    const pad = 0.03 * Math.max(bw, bh);
+    this.setBox(flip < 0 ? [-pad, -bh - pad, bw + 2 * pad, bh + 2 * pad] : [-pad, -pad, bw + 2 * pad, bh + 2 * pad]);
+    const root = el('g', { transform: `scale(1,${flip})` }, this.svg);
+    el('rect', { x: 0, y: 0, width: bw, height: bh, fill: '#fafafa', stroke: '#999',
+      'vector-effect': 'non-scaling-stroke' }, root);
+    const job = plan.jobs[0];
+    const line = (g, s, attrs) => el('line', { x1: s[0], y1: s[1], x2: s[2], y2: s[3],
+      'vector-effect': 'non-scaling-stroke', ...attrs }, g);
+    const sheet = el('g', { id: 'tp-sheet' }, root);
+    for (const s of job.sheet) line(sheet, s, { stroke: SHEET, 'stroke-width': 1 });
+    const burns = el('g', { id: 'tp-burns' }, root);
+    for (const path of job.paths) {
+      for (const stroke of path.strokes) {
+        el('polyline', { points: stroke.map((p) => p.join(',')).join(' '), fill: 'none',
+          stroke: path.colour, 'stroke-width': 1.6, 'vector-effect': 'non-scaling-stroke',
+          class: `op-${path.op}` }, burns);
+      }
+    }
+    const travel = el('g', { id: 'tp-travel' }, root);
+    for (const s of job.travel) {
+      line(travel, s, { stroke: TRAVEL, 'stroke-width': 1, 'stroke-dasharray': '4 3' });
+    }
+  }
+
+  showStats(plan) {
+    const s = plan.stats;
+    const rows = s.length_mm.map(([op, mm]) => `<tr><td>${op}</td><td>${mm.toFixed(1)} mm</td></tr>`);
+    rows.push(`<tr><td>pierces</td><td id="plan-pierces">${s.pierces}</td></tr>`);
+    rows.push(`<tr><td>travel <span style="color:${TRAVEL}">(dashed)</span></td><td>${s.travel_mm.toFixed(1)} mm</td></tr>`);
+    rows.push(`<tr><td>time (estimated)</td><td id="plan-time">${clock(s.time_s)}</td></tr>`);
+    this.stats.innerHTML = `<table>${rows.join('')}</table>` +
+      plan.warnings.map((w) => `<p class="muted">warning: ${w.replace(/</g, '&lt;')}</p>`).join('');
+  }
+
+  offer(id, plan, q) {
+    const kinds = plan.gcode ? ['gcode', 'dxf', 'svg', 'lbrn2'] : ['dxf', 'svg', 'lbrn2'];
+    this.downloads.replaceChildren();
+    for (const job of plan.jobs) {
+      for (const kind of kinds) {
+        const a = document.createElement('a');
+        const jq = new URLSearchParams(q);
+        jq.set('format', kind);
+        jq.set('job', job.name);
+        a.href = `/api/docs/${id}/cut?${jq}`;
+        a.id = plan.jobs.length > 1 ? `dl-${job.name}-${kind}` : `dl-${kind}`;
+        a.textContent = `${plan.jobs.length > 1 ? job.name + ' ' : ''}.${kind}`;
+        a.setAttribute('download', '');
+        this.downloads.appendChild(a);
+      }
+    }
+  }
+}

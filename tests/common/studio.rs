@@ -1,0 +1,170 @@
+//! Running `foldcam serve` from the studio tests: the binary on a free port, and plain HTTP/1.1
+//! over a TCP socket (so the requests are exactly the bytes written here, `..` included).
+#![allow(dead_code)]
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{SocketAddr, TcpStream};
+use std::path::Path;
+use std::process::{Child, Command, Stdio};
+use std::time::Duration;
+
+/// How long a test waits for one reply.
+pub const REPLY_TIMEOUT: Duration = Duration::from_secs(120);
+
+/// A running `foldcam serve`, stopped when dropped.
+pub struct Server {
+    child: Child,
+    /// The address it listens on.
+    pub addr: SocketAddr,
+}
+
+impl Server {
+    /// Starts `foldcam serve --port 0 ARGS` in `dir` and reads the address it prints first.
+    pub fn start(args: &[&str], dir: &Path) -> Server {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_foldcam"))
+            .arg("serve")
+            .args(["--port", "0"])
+            .args(args)
+            .current_dir(dir)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("foldcam serve starts");
+        let mut line = String::new();
+        BufReader::new(child.stdout.take().expect("stdout"))
+            .read_line(&mut line)
+            .expect("the server prints its address");
+        let url = line
+            .trim()
+            .strip_prefix("foldcam studio: http://")
+            .unwrap_or_else(|| panic!("unexpected first line {line:?}"));
+        let addr = url.trim_end_matches('/').parse().expect("an address");
+        Server { child, addr }
+    }
+
+    /// The page's URL.
+    pub fn url(&self) -> String {
+        format!("http://{}/", self.addr)
+    }
+
+    /// Sends `head` (request line and headers, without the blank line) and `body`; returns
+    /// the status code and the body.
+    pub fn raw(&self, head: &str, body: &[u8]) -> (u16, Vec<u8>) {
+        let mut s = TcpStream::connect(self.addr).expect("connect");
+        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
+        let mut request = format!(
+            "{head}\r\nHost: {}\r\nConnection: close\r\nContent-Length: {}\r\n\r\n",
+            self.addr,
+            body.len()
+        )
+        .into_bytes();
+        request.extend_from_slice(body);
+        // A server may answer (413) before the whole body is sent and close: that is fine.
+        let _ = s.write_all(&request);
+        let mut reply = Vec::new();
+        let _ = s.read_to_end(&mut reply);
+        split_reply(&reply)
+    }
+    /// `POST path` with `Expect: 100-continue`: the body is sent only when the server asks
+    /// for it (so a refusal on the declared length is read before any body byte is sent).
+    pub fn post_expecting(&self, path: &str, body: &[u8]) -> (u16, Vec<u8>) {
+        let mut s = TcpStream::connect(self.addr).expect("connect");
+        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
+        let head = format!(
+            "POST {path} HTTP/1.1\r\nHost: {}\r\nConnection: close\r\nExpect: 100-continue\r\n\
+             Content-Length: {}\r\n\r\n",
+            self.addr,
+            body.len()
+        );
+        s.write_all(head.as_bytes()).unwrap();
+        let mut reply = Vec::new();
+        let mut byte = [0u8; 1];
+        while !reply.ends_with(b"\r\n\r\n") {
+            assert_eq!(
+                s.read(&mut byte).expect("a reply"),
+                1,
+                "the server closed early"
+            );
+            reply.push(byte[0]);
+        }
+        if reply.starts_with(b"HTTP/1.1 100") {
+            s.write_all(body).unwrap();
+            reply.clear();
+        }
+        s.read_to_end(&mut reply).expect("the reply");
+        split_reply(&reply)
+    }
+
+    /// `GET path`.
+    pub fn get(&self, path: &str) -> (u16, Vec<u8>) {
+        self.raw(&format!("GET {path} HTTP/1.1"), b"")
+    }
+
+    /// `POST path` with a body.
+    pub fn post(&self, path: &str, body: &[u8]) -> (u16, Vec<u8>) {
+        self.raw(&format!("POST {path} HTTP/1.1"), body)
+    }
+
+    /// `POST path` expecting JSON back.
+    pub fn post_json(&self, path: &str, body: &[u8]) -> (u16, serde_json::Value) {
+        let (status, body) = self.post(path, body);
+        (status, serde_json::from_slice(&body).expect("a JSON reply"))
+    }
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Status code and body (de-chunked) of a whole HTTP reply.
+fn split_reply(reply: &[u8]) -> (u16, Vec<u8>) {
+    let split = reply
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .unwrap_or_else(|| panic!("no HTTP reply: {reply:?}"));
+    let headers = String::from_utf8_lossy(&reply[..split]).into_owned();
+    let status = headers
+        .split_whitespace()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .expect("a status code");
+    let mut body = reply[split + 4..].to_vec();
+    if headers
+        .to_ascii_lowercase()
+        .contains("transfer-encoding: chunked")
+    {
+        body = dechunk(&body);
+    }
+    (status, body)
+}
+
+fn dechunk(mut body: &[u8]) -> Vec<u8> {
+    let mut out = Vec::new();
+    loop {
+        let Some(end) = body.windows(2).position(|w| w == b"\r\n") else {
+            return out;
+        };
+        let size = usize::from_str_radix(std::str::from_utf8(&body[..end]).unwrap().trim(), 16)
+            .expect("a chunk size");
+        if size == 0 {
+            return out;
+        }
+        out.extend_from_slice(&body[end + 2..end + 2 + size]);
+        body = &body[end + 2 + size + 2..];
+    }
+}
+
+/// Percent-encodes a query value.
+pub fn encode(s: &str) -> String {
+    s.bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => {
+                (b as char).to_string()
+            }
+            _ => format!("%{b:02X}"),
+        })
+        .collect()
+}

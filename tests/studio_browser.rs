@@ -1,0 +1,434 @@
+//! The studio in a real browser: headless Chromium (Debian's `chromium` and
+//! `chromium-driver`, installed by `.ci/run`) driven over WebDriver. A machine without them
+//! fails this test: it does not pass quietly.
+//!
+//! Set `FOLDCAM_SCREENSHOTS=DIR` to keep the screenshots of each view (the README's pictures
+//! come from `FOLDCAM_SCREENSHOTS=docs cargo test --test studio_browser`).
+
+#[path = "common/bin.rs"]
+mod bin;
+#[path = "common/studio.rs"]
+mod studio;
+
+use std::net::TcpListener;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use bin::{foldcam, repo_file};
+use fantoccini::actions::{InputSource, MouseActions, PointerAction};
+use fantoccini::{Client, ClientBuilder, Locator};
+use serde_json::{Value, json};
+use studio::Server;
+
+/// Longest wait for the page to reach a state (folding runs in a debug build here).
+const PAGE_TIMEOUT: Duration = Duration::from_secs(180);
+
+/// Browser window size, pixels.
+const WINDOW: (u32, u32) = (1400, 860);
+
+/// A fold frame counts as changed where a pixel's channels differ by more than this.
+const PIXEL_TOLERANCE: u8 = 24;
+
+/// `chromedriver` on a free port, stopped when dropped.
+struct Driver(Child, u16);
+
+impl Drop for Driver {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+fn free_port() -> u16 {
+    TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port()
+}
+
+fn start_driver() -> Driver {
+    let port = free_port();
+    let child = Command::new("chromedriver")
+        .arg(format!("--port={port}"))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap_or_else(|e| {
+            panic!(
+                "chromedriver could not start ({e}): install Debian's chromium and \
+                 chromium-driver (`apt-get install -y chromium chromium-driver`, as .ci/run does)"
+            )
+        });
+    let start = Instant::now();
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "chromedriver did not listen"
+        );
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    Driver(child, port)
+}
+
+async fn browser(driver: &Driver) -> Client {
+    let mut caps = serde_json::Map::new();
+    caps.insert(
+        "goog:chromeOptions".into(),
+        json!({
+            "args": [
+                "--headless=new",
+                "--no-sandbox",
+                "--disable-dev-shm-usage",
+                "--disable-gpu-sandbox",
+                "--use-angle=swiftshader",
+                "--enable-unsafe-swiftshader",
+                "--hide-scrollbars",
+                format!("--window-size={},{}", WINDOW.0, WINDOW.1),
+            ]
+        }),
+    );
+    let connector = hyper_util::client::legacy::connect::HttpConnector::new();
+    ClientBuilder::new(connector)
+        .capabilities(caps)
+        .connect(&format!("http://127.0.0.1:{}", driver.1))
+        .await
+        .unwrap_or_else(|e| panic!("headless Chromium did not start: {e}"))
+}
+
+/// Waits until `script` (a function body) returns true; panics with `what` after the timeout.
+async fn wait_until(c: &Client, script: &str, what: &str) {
+    let start = Instant::now();
+    loop {
+        let done = c.execute(script, vec![]).await.expect("script runs");
+        if done == Value::Bool(true) {
+            return;
+        }
+        let error = c
+            .execute(
+                "return document.getElementById('error').textContent",
+                vec![],
+            )
+            .await
+            .unwrap();
+        assert!(
+            start.elapsed() < PAGE_TIMEOUT,
+            "timed out waiting for {what}; the page says {error}"
+        );
+        tokio::time::sleep(Duration::from_millis(150)).await;
+    }
+}
+
+async fn text(c: &Client, css: &str) -> String {
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .text()
+        .await
+        .unwrap()
+}
+
+/// Chooses `file` in the page's file picker and waits for the document to be shown.
+async fn open(c: &Client, file: &Path) {
+    let before = c
+        .execute("return document.body.dataset.doc ?? null", vec![])
+        .await
+        .unwrap();
+    let input = c.find(Locator::Css("#file-input")).await.unwrap();
+    input.send_keys(&file.to_string_lossy()).await.unwrap();
+    let script = format!(
+        "return document.body.dataset.doc !== undefined && document.body.dataset.doc !== {} \
+         && !document.body.dataset.busy",
+        serde_json::to_string(&before.as_str().unwrap_or("none")).unwrap()
+    );
+    wait_until(c, &script, "the pattern to open").await;
+}
+
+fn screenshots_dir() -> Option<PathBuf> {
+    std::env::var_os("FOLDCAM_SCREENSHOTS").map(|d| {
+        let d = Path::new(env!("CARGO_MANIFEST_DIR")).join(d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    })
+}
+
+async fn keep_screenshot(c: &Client, name: &str) {
+    let png = c.screenshot().await.unwrap();
+    assert!(png.starts_with(b"\x89PNG"), "a PNG screenshot");
+    if let Some(d) = screenshots_dir() {
+        std::fs::write(d.join(name), png).unwrap();
+    }
+}
+
+/// Pixels that differ between two screenshots of the same size, as a fraction.
+fn changed_fraction(a: &[u8], b: &[u8]) -> f64 {
+    let a = image::load_from_memory(a).unwrap().to_rgb8();
+    let b = image::load_from_memory(b).unwrap().to_rgb8();
+    assert_eq!(a.dimensions(), b.dimensions());
+    let changed = a
+        .pixels()
+        .zip(b.pixels())
+        .filter(|(p, q)| {
+            p.0.iter()
+                .zip(q.0)
+                .any(|(x, y)| x.abs_diff(y) > PIXEL_TOLERANCE)
+        })
+        .count();
+    changed as f64 / (a.width() * a.height()) as f64
+}
+
+/// Expected counts read from the FOLD file itself.
+fn fold_counts(path: &Path) -> (usize, usize, usize, usize) {
+    let v: Value = serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
+    let letters: Vec<&str> = v["edges_assignment"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a.as_str().unwrap())
+        .collect();
+    let count = |l: &str| letters.iter().filter(|a| a.eq_ignore_ascii_case(l)).count();
+    (
+        v["vertices_coords"].as_array().unwrap().len(),
+        letters.len(),
+        count("M"),
+        count("V"),
+    )
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_studio_works_in_a_real_browser() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = foldcam(&["generate", "miura", "-o", "miura.fold"], dir.path());
+    assert!(out.status.success());
+    let miura = dir.path().join("miura.fold");
+    let server = Server::start(&[], dir.path());
+    let driver = start_driver();
+    let c = browser(&driver).await;
+    c.goto(&server.url()).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
+
+    // 1. Upload a pattern: the page shows the counts the file holds.
+    open(&c, &miura).await;
+    let (vertices, edges, m, v) = fold_counts(&miura);
+    assert_eq!(text(&c, "#count-vertices").await, vertices.to_string());
+    assert_eq!(text(&c, "#count-edges").await, edges.to_string());
+    assert_eq!(text(&c, "#count-M").await, m.to_string());
+    assert_eq!(text(&c, "#count-V").await, v.to_string());
+    assert_eq!(text(&c, "#check-status").await, "passed");
+    // Every edge is drawn, in its assignment's colour class.
+    let drawn = c
+        .find_all(Locator::Css("#cp-lines line.edge-M"))
+        .await
+        .unwrap();
+    assert_eq!(drawn.len(), m);
+    // Hover over one mountain: the page names it with the length the file gives.
+    let hit = c.find(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
+    let index: usize = hit
+        .attr("data-edge")
+        .await
+        .unwrap()
+        .unwrap()
+        .parse()
+        .unwrap();
+    // A real pointer move onto the line's middle (WebDriver actions).
+    let mouse = MouseActions::new("mouse".to_string()).then(PointerAction::MoveToElement {
+        element: hit.clone(),
+        duration: None,
+        x: 0.0,
+        y: 0.0,
+    });
+    c.perform_actions(mouse).await.unwrap();
+    let file: Value = serde_json::from_slice(&std::fs::read(&miura).unwrap()).unwrap();
+    let ends = &file["edges_vertices"][index];
+    let p = |k: usize| {
+        let q = &file["vertices_coords"][ends[k].as_u64().unwrap() as usize];
+        (q[0].as_f64().unwrap(), q[1].as_f64().unwrap())
+    };
+    let length = ((p(0).0 - p(1).0).powi(2) + (p(0).1 - p(1).1).powi(2)).sqrt();
+    let info = text(&c, "#hover-info").await;
+    assert!(
+        info.starts_with(&format!("edge {index}: mountain (M)"))
+            && info.contains(&format!("length {length:.2} mm")),
+        "{info}"
+    );
+    // The layer order, as `foldcam check --layers` prints it.
+    c.find(Locator::Css("#layers-btn"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    wait_until(
+        &c,
+        "return document.getElementById('layers-result').textContent.startsWith('layer order')",
+        "the layer order",
+    )
+    .await;
+    let cli = foldcam(&["check", "miura.fold", "--layers"], dir.path());
+    let cli = String::from_utf8_lossy(&cli.stdout);
+    let expected = cli
+        .lines()
+        .find(|l| l.starts_with("layer order"))
+        .expect("a layer line");
+    assert_eq!(text(&c, "#layers-result").await, expected);
+    keep_screenshot(&c, "studio-pattern.png").await;
+
+    // 2. A broken pattern: the check's findings listed and ringed, as `foldcam check` finds them.
+    let broken = PathBuf::from(repo_file("examples/patterns/broken-vertex.fold"));
+    let cli = foldcam(&["check", &broken.to_string_lossy(), "--json"], dir.path());
+    let report: Value = serde_json::from_slice(&cli.stdout).unwrap();
+    let expected: Vec<&str> = report["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["message"].as_str().unwrap())
+        .collect();
+    assert!(!expected.is_empty(), "the example is broken");
+    open(&c, &broken).await;
+    let items = c.find_all(Locator::Css("#findings li")).await.unwrap();
+    let mut listed = Vec::new();
+    for item in &items {
+        listed.push(item.text().await.unwrap());
+    }
+    assert_eq!(listed, expected);
+    let rings = c.find_all(Locator::Css("#cp-rings circle")).await.unwrap();
+    assert_eq!(rings.len(), expected.len());
+    let home = c
+        .find(Locator::Css("#cp-svg"))
+        .await
+        .unwrap()
+        .attr("viewBox")
+        .await
+        .unwrap();
+    items[0].click().await.unwrap();
+    let zoomed = c
+        .find(Locator::Css("#cp-svg"))
+        .await
+        .unwrap()
+        .attr("viewBox")
+        .await
+        .unwrap();
+    assert_ne!(home, zoomed, "clicking a finding zooms to it");
+    keep_screenshot(&c, "studio-check.png").await;
+
+    // 3. The folded form: moving the slider changes the 3D view.
+    open(&c, &miura).await;
+    c.find(Locator::Css("#tabs button[data-view='fold']"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.foldPercent !== undefined && !document.body.dataset.busy",
+        "the fold simulation",
+    )
+    .await;
+    let canvas = c.find(Locator::Css("#fold-canvas canvas")).await.unwrap();
+    let flat = canvas.screenshot().await.unwrap();
+    let slider = c.find(Locator::Css("#fold-slider")).await.unwrap();
+    // Keyboard on the range input, as a person would: End is 100%, then back to about 70%.
+    slider.send_keys("\u{E010}").await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.foldPercent === '100.0'",
+        "100%",
+    )
+    .await;
+    let folded = canvas.screenshot().await.unwrap();
+    let changed = changed_fraction(&flat, &folded);
+    assert!(
+        changed > 0.02,
+        "folding changed only {:.2}% of the view",
+        100.0 * changed
+    );
+    for _ in 0..30 {
+        slider.send_keys("\u{E012}").await.unwrap();
+    }
+    let label = text(&c, "#fold-label").await;
+    assert!(label.contains('%'), "{label}");
+    keep_screenshot(&c, "studio-fold.png").await;
+
+    // 4. Machine and material: the downloaded G-code is byte-identical to `foldcam cut`'s.
+    c.find(Locator::Css("#tabs button[data-view='machine']"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    c.find(Locator::Css("#machine"))
+        .await
+        .unwrap()
+        .select_by_value("grbl-diode")
+        .await
+        .unwrap();
+    c.find(Locator::Css("#material"))
+        .await
+        .unwrap()
+        .select_by_value("card-300gsm")
+        .await
+        .unwrap();
+    c.find(Locator::Css("#plan-btn"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.planned === 'true' && !!document.getElementById('sim-result')",
+        "the plan",
+    )
+    .await;
+    let travel = c.find_all(Locator::Css("#tp-travel line")).await.unwrap();
+    assert!(!travel.is_empty(), "travel is drawn");
+    let href = c
+        .find(Locator::Css("#dl-gcode"))
+        .await
+        .unwrap()
+        .attr("href")
+        .await
+        .unwrap()
+        .unwrap();
+    let served = c
+        .execute_async(
+            "const done = arguments[arguments.length - 1];
+             fetch(arguments[0]).then(r => r.text()).then(done, e => done('ERROR ' + e));",
+            vec![json!(href)],
+        )
+        .await
+        .unwrap();
+    let out = foldcam(
+        &[
+            "cut",
+            "miura.fold",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "-o",
+            "cli.gcode",
+        ],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let cli = std::fs::read_to_string(dir.path().join("cli.gcode")).unwrap();
+    assert!(
+        served.as_str() == Some(cli.as_str()),
+        "the page's G-code differs from foldcam cut's"
+    );
+    keep_screenshot(&c, "studio-machine.png").await;
+
+    c.close().await.unwrap();
+}
