@@ -131,7 +131,9 @@ mod tests {
             width: 1.0,
             dash: Some(3.0),
         };
-        draw_segment(&mut p, (-1e30, 5.5), (1e30, 5.5), &pen);
+        // Far beyond the picture: clipped, drawn without a panic.
+        draw_segment(&mut p, (-1e30, 2.5), (1e30, 2.5), &pen);
+        draw_segment(&mut p, (-100.0, 5.5), (100.0, 5.5), &pen);
         let blue: Vec<bool> = (0..20)
             .map(|x| p.pixel(x, 5).unwrap().blue() == 255)
             .collect();

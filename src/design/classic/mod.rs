@@ -22,7 +22,7 @@ use crate::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 
 /// A generator parameter out of range.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{parameter} = {shown}: {expected}", shown = crate::limits::show(*value))]
+#[error("{parameter} = {value}: {expected}")]
 pub struct ClassicError {
     /// The parameter's name.
     pub parameter: &'static str,
