@@ -306,7 +306,11 @@ fn parse_cycle(
     if let Some(j) = (0..out.len()).find(|&j| out[j] == out[(j + 1) % out.len()]) {
         return Err(key.err(
             path,
-            format!("vertex {} follows itself (at positions {j} and {}): a degenerate cycle", out[j].0, (j + 1) % out.len()),
+            format!(
+                "vertex {} follows itself (at positions {j} and {}): a degenerate cycle",
+                out[j].0,
+                (j + 1) % out.len()
+            ),
         ));
     }
     let mut distinct: Vec<VertexId> = out.clone();
@@ -315,7 +319,10 @@ fn parse_cycle(
     if distinct.len() < min {
         return Err(key.err(
             path,
-            format!("needs at least {min} distinct vertices, found {}: a degenerate cycle", distinct.len()),
+            format!(
+                "needs at least {min} distinct vertices, found {}: a degenerate cycle",
+                distinct.len()
+            ),
         ));
     }
     Ok(out)
