@@ -25,15 +25,22 @@ fn fails(text: &str, place: &str, message: &str) -> ParseError {
     err
 }
 
-/// A valid triangle with the given extra keys spliced in (later keys override earlier ones).
+/// A valid triangle with the given extra keys (JSON object members) added, or replacing the
+/// triangle's own keys of the same name in place (the reader refuses a key given twice).
 fn triangle(extra: &str) -> String {
-    let sep = if extra.is_empty() { "" } else { "," };
-    format!(
-        r#"{{"vertices_coords": [[0, 0], [1, 0], [0, 1]],
+    let base = r#"{"vertices_coords": [[0, 0], [1, 0], [0, 1]],
             "edges_vertices": [[0, 1], [1, 2], [2, 0]],
             "edges_assignment": ["B", "B", "B"],
-            "faces_vertices": [[0, 1, 2]]{sep}{extra}}}"#
-    )
+            "faces_vertices": [[0, 1, 2]]}"#;
+    if extra.is_empty() {
+        return base.to_string();
+    }
+    let mut map: serde_json::Map<String, serde_json::Value> =
+        serde_json::from_str(base).expect("base parses");
+    let extra: serde_json::Map<String, serde_json::Value> =
+        serde_json::from_str(&format!("{{{extra}}}")).expect("extra keys parse");
+    map.extend(extra);
+    serde_json::to_string_pretty(&map).expect("serialises")
 }
 
 #[test]

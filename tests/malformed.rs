@@ -123,7 +123,10 @@ fn run(args: &[String], dir: &Path) -> Option<(Option<i32>, String, String)> {
 fn every_malformed_file_has_an_expectation_and_every_expectation_a_file() {
     let expected = manifest();
     let files = inputs();
-    let unlisted: Vec<&String> = files.iter().filter(|f| !expected.contains_key(*f)).collect();
+    let unlisted: Vec<&String> = files
+        .iter()
+        .filter(|f| !expected.contains_key(*f))
+        .collect();
     let missing: Vec<&String> = expected.keys().filter(|k| !files.contains(*k)).collect();
     assert!(
         unlisted.is_empty(),
@@ -136,8 +139,20 @@ fn every_malformed_file_has_an_expectation_and_every_expectation_a_file() {
     // The issue asks for at least 80, across every reader.
     assert!(files.len() >= 80, "only {} malformed files", files.len());
     for reader in [
-        "fold", "svg", "cp", "opx", "dxf", "obj", "stl", "voxel", "script", "popup", "papercraft",
-        "machine", "material", "gcode",
+        "fold",
+        "svg",
+        "cp",
+        "opx",
+        "dxf",
+        "obj",
+        "stl",
+        "voxel",
+        "script",
+        "popup",
+        "papercraft",
+        "machine",
+        "material",
+        "gcode",
     ] {
         assert!(
             files.iter().any(|f| f.starts_with(&format!("{reader}/"))),
@@ -177,8 +192,15 @@ fn every_malformed_file_is_refused_with_its_message_and_no_output() {
             ));
         } else if !said.contains(&want.message) {
             failures.push(format!("{rel}: message lacks {:?}: {said}", want.message));
-        } else if want.place.as_ref().is_some_and(|p| !said.contains(p.as_str())) {
-            failures.push(format!("{rel}: message lacks the place {:?}: {said}", want.place));
+        } else if want
+            .place
+            .as_ref()
+            .is_some_and(|p| !said.contains(p.as_str()))
+        {
+            failures.push(format!(
+                "{rel}: message lacks the place {:?}: {said}",
+                want.place
+            ));
         } else if !said.contains(names) {
             failures.push(format!("{rel}: message does not name {names}: {said}"));
         }

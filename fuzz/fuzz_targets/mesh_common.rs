@@ -7,7 +7,10 @@ pub fn check(result: Result<PolyMesh, MeshError>) {
     match result {
         Ok(mesh) => {
             let n = mesh.positions().len();
-            assert!(mesh.positions().iter().all(|p| p.is_finite()), "non-finite position");
+            assert!(
+                mesh.positions().iter().all(|p| p.is_finite()),
+                "non-finite position"
+            );
             for face in mesh.faces() {
                 assert!(face.len() >= 3, "a face of {} corners", face.len());
                 assert!(face.iter().all(|&i| (i as usize) < n), "index out of range");

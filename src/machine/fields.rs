@@ -39,8 +39,9 @@ impl<'a> Fields<'a> {
         }
     }
 
-    /// The dotted name of `key` in this table.
+    /// The dotted name of `key` in this table (the empty key, legal in TOML, spelt `""`).
     pub(crate) fn path(&self, key: &str) -> String {
+        let key = if key.is_empty() { "\"\"" } else { key };
         if self.prefix.is_empty() {
             key.to_string()
         } else {

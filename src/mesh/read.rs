@@ -134,7 +134,11 @@ const MAX_OBJ_INDEX: i64 = u32::MAX as i64;
 /// index beyond [`MAX_OBJ_INDEX`], or a relative (negative) index reaching before the first
 /// position, texture coordinate or normal defined so far. Names the line.
 fn check_obj_face_indices(bytes: &[u8]) -> Result<(), MeshError> {
-    const KINDS: [(&str, &str); 3] = [("v", "position"), ("vt", "texture coordinate"), ("vn", "normal")];
+    const KINDS: [(&str, &str); 3] = [
+        ("v", "position"),
+        ("vt", "texture coordinate"),
+        ("vn", "normal"),
+    ];
     let mut defined = [0i64; 3];
     let error = |n: usize, message: String| MeshError::Syntax {
         format: "OBJ",
@@ -161,7 +165,9 @@ fn check_obj_face_indices(bytes: &[u8]) -> Result<(), MeshError> {
                 if i.unsigned_abs() > MAX_OBJ_INDEX as u64 {
                     return Err(error(
                         n,
-                        format!("face index {i} is beyond ±{MAX_OBJ_INDEX}, the most vertices a mesh may have"),
+                        format!(
+                            "face index {i} is beyond ±{MAX_OBJ_INDEX}, the most vertices a mesh may have"
+                        ),
                     ));
                 }
                 if i < 0 && -i > defined[k] {

@@ -188,13 +188,19 @@ fn check_miter_limits(doc: &roxmltree::Document) -> Result<(), ParseError> {
             .attributes()
             .filter(|a| a.name() == NAME || a.name() == "style")
             .map(|a| (a.name() == NAME, a.value()))
-            .chain(node.text().filter(|_| is_svg_element(node.parent().unwrap_or(node), "style")).map(|t| (false, t)));
+            .chain(
+                node.text()
+                    .filter(|_| is_svg_element(node.parent().unwrap_or(node), "style"))
+                    .map(|t| (false, t)),
+            );
         for (bare, text) in texts {
             let values: Vec<&str> = if bare {
                 vec![text]
             } else {
                 text.match_indices(NAME)
-                    .map(|(i, _)| text[i + NAME.len()..].trim_start_matches([' ', '\t', '\n', '\r', ':']))
+                    .map(|(i, _)| {
+                        text[i + NAME.len()..].trim_start_matches([' ', '\t', '\n', '\r', ':'])
+                    })
                     .collect()
             };
             for value in values {
@@ -203,7 +209,10 @@ fn check_miter_limits(doc: &roxmltree::Document) -> Result<(), ParseError> {
                     .chars()
                     .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-'))
                     .collect();
-                if number.parse::<f64>().is_ok_and(|v| v.abs() > USVG_MAX_NUMBER) {
+                if number
+                    .parse::<f64>()
+                    .is_ok_and(|v| v.abs() > USVG_MAX_NUMBER)
+                {
                     let pos = doc.text_pos_at(node.range().start);
                     return Err(ParseError::new(
                         format!("line {}", pos.row),

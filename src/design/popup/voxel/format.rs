@@ -37,7 +37,9 @@ pub enum VoxelFormatError {
     #[error("missing key `{0}` before `rows`")]
     MissingKey(&'static str),
     /// No line reads `rows`, so no elevation follows the header.
-    #[error("no line reads `rows`: the header (cell_mm, depth, height) must be followed by `rows` and the front elevation")]
+    #[error(
+        "no line reads `rows`: the header (cell_mm, depth, height) must be followed by `rows` and the front elevation"
+    )]
     NoRows,
     /// The card itself is invalid.
     #[error("line {line}: {source}")]
