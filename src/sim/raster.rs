@@ -71,12 +71,7 @@ type Clipped = ((f32, f32), (f32, f32), f32);
 
 /// Clips `a`–`b` to the box `lo`–`hi` (Liang–Barsky); returns the clipped ends and the
 /// distance from `a` to the first (for dashes), or `None` when nothing is inside.
-fn clip(
-    a: (f32, f32),
-    b: (f32, f32),
-    lo: (f32, f32),
-    hi: (f32, f32),
-) -> Option<Clipped> {
+fn clip(a: (f32, f32), b: (f32, f32), lo: (f32, f32), hi: (f32, f32)) -> Option<Clipped> {
     if !(a.0.is_finite() && a.1.is_finite() && b.0.is_finite() && b.1.is_finite()) {
         return None;
     }
