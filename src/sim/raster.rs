@@ -66,14 +66,12 @@ fn blend(dst: &mut [u8], src: [u8; 4]) {
     }
 }
 
+/// A clipped segment's ends and the distance from the original start to the first.
+type Clipped = ((f32, f32), (f32, f32), f32);
+
 /// Clips `a`–`b` to the box `lo`–`hi` (Liang–Barsky); returns the clipped ends and the
 /// distance from `a` to the first (for dashes), or `None` when nothing is inside.
-fn clip(
-    a: (f32, f32),
-    b: (f32, f32),
-    lo: (f32, f32),
-    hi: (f32, f32),
-) -> Option<((f32, f32), (f32, f32), f32)> {
+fn clip(a: (f32, f32), b: (f32, f32), lo: (f32, f32), hi: (f32, f32)) -> Option<Clipped> {
     if !(a.0.is_finite() && a.1.is_finite() && b.0.is_finite() && b.1.is_finite()) {
         return None;
     }
