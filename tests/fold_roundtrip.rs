@@ -80,8 +80,9 @@ prop_compose! {
             0..40,
         ),
         faces in proptest::option::of(prop::collection::vec(
-            (prop::collection::vec(0..vertices.len() as u32, 3..7),
-             prop::collection::vec(prop::collection::vec(0..vertices.len() as u32, 2..5), 0..2)),
+            // Distinct corners: a cycle that repeats a vertex is degenerate and refused.
+            (proptest::sample::subsequence((0..vertices.len() as u32).collect::<Vec<_>>(), 3..=vertices.len().min(6)),
+             prop::collection::vec(proptest::sample::subsequence((0..vertices.len() as u32).collect::<Vec<_>>(), 3..=vertices.len().min(4)), 0..2)),
             0..6,
         )),
         units in prop_oneof![Just(Units::Millimetres), Just(Units::Unitless)],

@@ -177,8 +177,11 @@ fn a_dash_that_would_become_a_continuous_slot_is_refused_by_plan_cut_and_simulat
     let err = refused(&sim, d, &["--dash", "continuous slot"]);
     assert!(!err.contains("as planned"), "{err}");
     // A dash at the shortest dash is a perforation.
-    let mut fine = cut.clone();
-    fine.extend(["--dash", "0.5", "-o", "fine.gcode"]);
+    let mut fine: Vec<&str> = cut
+        .iter()
+        .map(|a| if *a == "d.gcode" { "fine.gcode" } else { a })
+        .collect();
+    fine.extend(["--dash", "0.5"]);
     let (code, out, err) = run(&fine, d);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("perforate"), "{out}");
@@ -271,7 +274,7 @@ fn a_height_map_smaller_than_four_pixels_is_refused_with_the_minimum() {
     refused(
         &["popup", "voxel", "one.png", "-o", "one.fold"],
         d,
-        &["one.png", "1 × 1 pixels", "at least 4 × 4"],
+        &["one.png", "1 × 1 pixels", "at least 3 × 3"],
     );
     assert!(!d.join("one.fold").exists());
 }

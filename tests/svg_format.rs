@@ -439,7 +439,11 @@ fn errors_name_the_problem() {
         "<line x1='0' y1='0' x2='1e30' y2='0' stroke='red' id='far'/>",
     ))
     .expect_err("beyond the coordinate limit");
-    assert!(huge.place.contains("far"), "{huge}");
+    assert!(
+        huge.place.contains("line 1") && huge.place.contains("<line>"),
+        "{huge}"
+    );
+    assert!(huge.message.contains("1e30"), "{huge}");
 }
 
 fn sample_pattern(units: Units) -> CreasePattern {

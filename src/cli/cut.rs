@@ -93,7 +93,7 @@ fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64
     let paths = job_paths(output, p);
     let mut files = Vec::new();
     for (job, path) in p.jobs.iter().zip(&paths) {
-        let text = post::gcode::frame(p, job, machine, power)
+        let text = foldcam::post::gcode::frame(p, job, machine, power)
             .with_context(|| path.display().to_string())?;
         simulated_clean(&text, machine).with_context(|| path.display().to_string())?;
         files.push((path, job, text));

@@ -16,8 +16,8 @@
 mod check;
 mod dxf;
 pub mod gcode;
-pub mod layers;
 mod job;
+pub mod layers;
 pub mod lbrn;
 mod number;
 mod style;

@@ -10,7 +10,7 @@ use super::{ConvertOptions, DepthField, VoxelCard, VoxelError, card_from_depths}
 
 /// Fewest pixels a height map has across and up: one pixel is one cell, and a card a few cells
 /// wide is stretched to the whole card width (a 1 × 1 map would become a single 160 mm cell).
-pub const MIN_MAP_SIDE: usize = 4;
+pub const MIN_MAP_SIDE: usize = 3;
 
 /// A depth map: `width × height` grey levels, top row first.
 #[derive(Clone, Copy, Debug)]
