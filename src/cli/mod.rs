@@ -47,11 +47,13 @@ pub enum Outcome {
     name = "foldcam",
     version,
     about = "Crease patterns to machine files: import, convert, check and preview fold designs",
-    long_about = "foldcam reads crease patterns (FOLD 1.2, Origami Simulator SVG, ORIPA .cp), \
-                  cleans them into planar graphs, checks local flat-foldability and fabrication \
-                  limits, draws previews and writes them back in any of those formats; it plans \
-                  them for laser cutters and pen plotters (perforations, scores, cuts with kerf) \
-                  and writes G-code, DXF or SVG, checked on a simulated machine.\n\n\
+    long_about = "foldcam reads crease patterns (FOLD 1.2, Origami Simulator and Rabbit Ear SVG, \
+                  ORIPA .cp and .opx, DXF), cleans them into planar graphs, checks flat-foldability \
+                  (per vertex and by global layer order) and fabrication limits, folds them in 3D, \
+                  draws previews and writes them back; it plans them for laser cutters and pen \
+                  plotters (perforations, scores, cuts with kerf) and writes G-code, DXF, SVG or \
+                  LightBurn projects, checked on a simulated machine. `foldcam serve` opens the \
+                  same in the browser.\n\n\
                   Exit status: 0 success, 1 a check failed, 2 bad usage or bad input.",
     after_help = "Examples:\n  foldcam demo\n  foldcam generate miura -o miura.fold\n  \
                   foldcam convert pattern.cp pattern.fold\n  foldcam check pattern.fold --min-vertex-angle 30\n  \
