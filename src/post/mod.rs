@@ -16,7 +16,6 @@
 mod check;
 mod dxf;
 pub mod gcode;
-mod job;
 pub mod layers;
 pub mod lbrn;
 mod number;
@@ -24,7 +23,6 @@ mod style;
 mod svg;
 
 pub use check::{MAX_COORD_MM, MAX_RESOLUTION_MM, MIN_RESOLUTION_MM};
-pub use job::{JobFileError, JobFileOptions, JobKind, job_file};
 pub use style::{LayerStyle, layer_style};
 
 use crate::fab::{FabPlan, Job};

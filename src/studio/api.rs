@@ -40,7 +40,7 @@ use crate::check::layers::{LayerOptions, check_layers};
 use crate::check::{CheckOptions, check_with_frame};
 use crate::machine::{ProfileKind, load_machine, profile_catalogue};
 use crate::pattern::Assignment;
-use crate::post::{JobFileOptions, JobKind, job_file};
+use crate::sim::{JobFileOptions, JobKind, job_file};
 
 /// Frames of the fold sent to the page while folding (plus the flat sheet and the settled end).
 pub const FOLD_FRAMES: usize = 40;

@@ -57,6 +57,26 @@ struct Burn {
     passes: u32,
 }
 
+impl<'a> Program<'a> {
+    /// An empty program for `machine` in `flavour`, tool off, position unknown.
+    fn new(flavour: &'a dyn Flavour, grid: Grid, machine: &MachineProfile) -> Self {
+        Program {
+            lines: Vec::new(),
+            flavour,
+            grid,
+            at: None,
+            feed: None,
+            burned: 0,
+            travel_feed: if flavour.travel_sets_feed() {
+                format!(" F{}", travel_feed(machine))
+            } else {
+                String::new()
+            },
+            air: false,
+        }
+    }
+}
+
 /// The whole program for `job`; inputs already validated.
 pub fn write(
     plan: &FabPlan,
@@ -65,20 +85,7 @@ pub fn write(
     flavour: &dyn Flavour,
     grid: Grid,
 ) -> Result<String, PostError> {
-    let mut p = Program {
-        lines: Vec::new(),
-        flavour,
-        grid,
-        at: None,
-        feed: None,
-        burned: 0,
-        travel_feed: if flavour.travel_sets_feed() {
-            format!(" F{}", travel_feed(machine))
-        } else {
-            String::new()
-        },
-        air: false,
-    };
+    let mut p = Program::new(flavour, grid, machine);
     p.header(job, machine);
     let mut group = None;
     for path in &job.paths {
@@ -105,20 +112,7 @@ pub fn write_frame(
     flavour: &dyn Flavour,
     grid: Grid,
 ) -> Result<String, PostError> {
-    let mut p = Program {
-        lines: Vec::new(),
-        flavour,
-        grid,
-        at: None,
-        feed: None,
-        burned: 0,
-        travel_feed: if flavour.travel_sets_feed() {
-            format!(" F{}", travel_feed(machine))
-        } else {
-            String::new()
-        },
-        air: false,
-    };
+    let mut p = Program::new(flavour, grid, machine);
     p.header(job, machine);
     let Some(points) = p.snap(outline) else {
         return Err(PostError::EmptyJob {

@@ -1,13 +1,13 @@
 //! One job file from a plan, by kind: the bytes `foldcam cut` writes and the studio serves.
 //!
-//! G-code is read back by the simulated machine ([`crate::sim::run`]) before it is returned;
+//! G-code is read back by the simulated machine ([`super::run`], see [`check_gcode`]) before it is returned;
 //! a violation refuses the job, so no caller can hand out a program the machine would reject.
 
 use std::path::Path;
 
-use super::{DxfVersion, PostError};
 use crate::fab::{FabPlan, Job};
 use crate::machine::MachineProfile;
+use crate::post::{self, DxfVersion, PostError};
 
 /// The kind of job file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,7 +70,7 @@ pub enum JobFileError {
     Post(#[from] PostError),
     /// The simulated machine could not read the program.
     #[error(transparent)]
-    Sim(#[from] crate::sim::SimError),
+    Sim(#[from] super::SimError),
     /// The simulated machine found problems in the program.
     #[error(
         "the simulated {machine} found {count} problem(s) in the job, first at line {line}: \
@@ -101,16 +101,8 @@ pub fn job_file(
 ) -> Result<Vec<u8>, JobFileError> {
     Ok(match kind {
         JobKind::Gcode => {
-            let text = super::gcode(plan, job, machine)?;
-            let report = crate::sim::run(&text, machine)?;
-            if let Some(v) = report.violations.first() {
-                return Err(JobFileError::Violations {
-                    machine: machine.name.clone(),
-                    count: report.violation_count,
-                    line: v.line,
-                    message: v.message.clone(),
-                });
-            }
+            let text = post::gcode(plan, job, machine)?;
+            check_gcode(&text, machine)?;
             text.into_bytes()
         }
         JobKind::Dxf => {
@@ -119,9 +111,27 @@ pub fn job_file(
             } else {
                 DxfVersion::R2000
             };
-            super::dxf(plan, job, version)?
+            post::dxf(plan, job, version)?
         }
-        JobKind::Svg => super::svg(plan, job, &machine.bed, options.dasharray)?.into_bytes(),
-        JobKind::Lbrn2 => super::lbrn2(plan, job, machine)?.into_bytes(),
+        JobKind::Svg => post::svg(plan, job, &machine.bed, options.dasharray)?.into_bytes(),
+        JobKind::Lbrn2 => post::lbrn2(plan, job, machine)?.into_bytes(),
     })
+}
+
+/// Runs G-code `text` on the simulated `machine`.
+///
+/// # Errors
+/// [`JobFileError::Sim`] if the machine cannot read it, [`JobFileError::Violations`] naming the
+/// first violation if it breaks the machine's limits.
+pub fn check_gcode(text: &str, machine: &MachineProfile) -> Result<(), JobFileError> {
+    let report = super::run(text, machine)?;
+    match report.violations.first() {
+        Some(v) => Err(JobFileError::Violations {
+            machine: machine.name.clone(),
+            count: report.violation_count,
+            line: v.line,
+            message: v.message.clone(),
+        }),
+        None => Ok(()),
+    }
 }
