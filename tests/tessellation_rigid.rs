@@ -325,3 +325,18 @@ fn cli_reports_the_rigid_simulation() {
         String::from_utf8_lossy(&bad.stderr)
     );
 }
+
+#[test]
+fn progress_counts_the_steps_asked_for_and_no_more() {
+    let m = RigidModel::new(&flat_foldable_vertex()).unwrap();
+    let opts = RigidOptions {
+        steps: 7,
+        ..RigidOptions::default()
+    };
+    let mut heard = Vec::new();
+    let r = simulate(&m, &degree4_targets(1.2), &opts, |s, _| heard.push(s)).unwrap();
+    assert!(r.reached, "{}", r.summary());
+    assert_eq!(heard, (1..=7).collect::<Vec<_>>());
+    assert_eq!(r.steps, 7);
+    assert!(r.summary().contains("after 7 steps"), "{}", r.summary());
+}

@@ -3,40 +3,12 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use foldcam::fab::{FabPlan, Job};
-use foldcam::formats::write_atomic;
-use foldcam::machine::MachineProfile;
-use foldcam::post::{self, DxfVersion};
+use foldcam::fab::Operation;
+use foldcam::formats::OutputSet;
+use foldcam::job::{JOB_EXTENSIONS, Job, JobFormat};
 
 use super::Outcome;
 use super::fab_args::PlanRequest;
-
-/// Output kinds by extension.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Output {
-    Gcode,
-    Dxf,
-    Svg,
-    Lbrn2,
-}
-
-fn output_kind(path: &Path) -> Result<Output> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .unwrap_or_default();
-    Ok(match ext.as_str() {
-        "gcode" | "nc" | "ngc" | "gc" => Output::Gcode,
-        "dxf" => Output::Dxf,
-        "svg" => Output::Svg,
-        "lbrn2" => Output::Lbrn2,
-        _ => bail!(
-            "{}: unknown job type (expected .gcode, .nc, .ngc, .dxf, .svg or .lbrn2)",
-            path.display()
-        ),
-    })
-}
 
 /// Plan a pattern for a machine and material and write the job.
 #[derive(clap::Args)]
@@ -67,99 +39,68 @@ pub struct Args {
 
 /// Plans and writes the job files.
 pub fn run(args: Args) -> Result<Outcome> {
-    let (machine, p) = args.request.plan()?;
-    write_jobs(&args.output, &p, &machine, args.r12, args.dasharray)?;
+    let l = args.request.load()?;
+    let job = Job::plan_with(&l.pattern, &l.machine, &l.material, l.options)
+        .with_context(|| args.request.input.display().to_string())?;
+    let mut outputs = OutputSet::new();
+    stage_job(&mut outputs, &args.output, job, args.r12, args.dasharray)?;
+    super::input::commit(outputs, &[&args.request.input])?;
     Ok(Outcome::Done)
 }
 
-/// Writes the plan's jobs as the output's extension says (G-code read back by the simulated
-/// machine first, DXF R2000 or `r12`, SVG with `dasharray` perforations), then its summary.
-/// Nothing is written unless every job renders and checks.
-pub fn write_jobs(
+/// The job format `output`'s extension asks for, with the DXF and SVG choices.
+pub fn job_format(output: &Path, r12: bool, dasharray: bool) -> Result<JobFormat> {
+    let Some(format) = JobFormat::from_path(output) else {
+        bail!(
+            "{}: unknown job type (expected {JOB_EXTENSIONS})",
+            output.display()
+        );
+    };
+    if dasharray && !matches!(format, JobFormat::Svg { .. }) {
+        eprintln!("warning: --dasharray applies to SVG output only: ignored");
+    }
+    Ok(format.with_choices(r12, dasharray))
+}
+
+/// Renders a planned job as `output`'s extension says (G-code first read back by the
+/// simulated machine: a violation stops the run) and adds its files to `outputs`; prints the
+/// plan's summary. Nothing is staged unless every job renders and checks.
+pub fn stage_job(
+    outputs: &mut OutputSet,
     output: &Path,
-    p: &FabPlan,
-    machine: &MachineProfile,
+    job: Job<'_>,
     r12: bool,
     dasharray: bool,
 ) -> Result<()> {
-    let kind = output_kind(output)?;
-    if dasharray && kind != Output::Svg {
-        eprintln!("warning: --dasharray applies to SVG output only: ignored");
-    }
-    let perforates = p
+    let format = job_format(output, r12, dasharray)?;
+    let perforates = job
+        .plan
         .jobs
         .iter()
         .flat_map(|j| &j.paths)
-        .any(|t| t.op == foldcam::fab::Operation::Perforate);
-    if dasharray && kind == Output::Svg && !perforates {
+        .any(|t| t.op == Operation::Perforate);
+    if format == (JobFormat::Svg { dasharray: true }) && !perforates {
         eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
-    let paths = job_paths(output, p);
-    let mut files = Vec::new();
-    for (job, path) in p.jobs.iter().zip(&paths) {
-        let bytes = render(kind, p, job, machine, r12, dasharray)
-            .with_context(|| path.display().to_string())?;
-        files.push((path, bytes));
-    }
-    for (path, bytes) in &files {
-        write_atomic(path, bytes).with_context(|| path.display().to_string())?;
-        eprintln!("foldcam: wrote {}", path.display());
-    }
-    print!("{}", super::plan::summary(p));
-    Ok(())
-}
-
-fn render(
-    kind: Output,
-    p: &FabPlan,
-    job: &Job,
-    m: &MachineProfile,
-    r12: bool,
-    dasharray: bool,
-) -> Result<Vec<u8>> {
-    Ok(match kind {
-        Output::Gcode => {
-            let text = post::gcode(p, job, m)?;
-            let report = foldcam::sim::run(&text, m)?;
-            if let Some(v) = report.violations.first() {
+    let mut job = job
+        .post(format)
+        .with_context(|| output.display().to_string())?;
+    if format == JobFormat::Gcode {
+        job = job.verify().with_context(|| output.display().to_string())?;
+        let m = job.machine;
+        for r in &job.readback {
+            if let Some(v) = r.sim.violations.first() {
                 bail!(
                     "the simulated {} found {} problem(s) in the job, first at line {}: {}",
                     m.name,
-                    report.violation_count,
+                    r.sim.violation_count,
                     v.line,
                     v.message
                 );
             }
-            text.into_bytes()
         }
-        Output::Dxf => {
-            let version = if r12 {
-                DxfVersion::R12
-            } else {
-                DxfVersion::R2000
-            };
-            post::dxf(p, job, version)?
-        }
-        Output::Svg => post::svg(p, job, &m.bed, dasharray)?.into_bytes(),
-        Output::Lbrn2 => post::lbrn2(p, job, m)?.into_bytes(),
-    })
-}
-
-/// One path per job: the output itself, or NAME.JOB.EXT for several jobs.
-fn job_paths(output: &Path, p: &FabPlan) -> Vec<PathBuf> {
-    if p.jobs.len() <= 1 {
-        return vec![output.to_path_buf()];
     }
-    let stem = output
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let ext = output
-        .extension()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    p.jobs
-        .iter()
-        .map(|j| output.with_file_name(format!("{stem}.{}.{ext}", j.name)))
-        .collect()
+    job.stage(output, outputs)?;
+    print!("{}", super::plan::summary(&job.plan));
+    Ok(())
 }

@@ -28,9 +28,8 @@ use super::Outcome;
 pub struct Args {
     /// Design file (`.craft.toml`).
     pub design: PathBuf,
-    /// Crease pattern of the sheets (.fold, .svg or .cp), millimetres.
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     /// Also write the sheets as SVG.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -92,7 +91,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     // Every sheet's files are made first and written together: all of them, or none.
     let mut outputs = OutputSet::new();
     for (s, cp) in made.sheets.iter().enumerate() {
-        super::input::stage(&mut outputs, &sheet_path(&args.output, s), cp, None)?;
+        args.out
+            .stage_at(&mut outputs, &sheet_path(&args.out.output, s), cp, None)?;
         if let Some(svg) = &args.svg {
             super::input::stage(&mut outputs, &sheet_path(svg, s), cp, None)?;
         }

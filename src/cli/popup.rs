@@ -2,14 +2,13 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, anyhow};
+use anyhow::{Result, anyhow};
 use clap::Subcommand;
 use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, format_voxel_card};
 use foldcam::formats::OutputSet;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
-use super::fab_args::FabArgs;
 
 /// Pop-up card designers.
 #[derive(Subcommand)]
@@ -44,10 +43,8 @@ pub enum Command {
 pub struct VoxelArgs {
     /// `.voxel.txt` model, height-map `.png`, or `.obj`/`.stl` mesh.
     pub input: PathBuf,
-    /// Crease pattern to write (.fold, .svg or .cp, millimetres); with --machine, the job
-    /// (.gcode/.nc/.ngc, .dxf or .svg).
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     #[command(flatten)]
     pub model: super::popup_input::ModelArgs,
     /// Also write the final voxel model (windows, left-out tops) as a `.voxel.txt` to edit.
@@ -62,20 +59,6 @@ pub struct VoxelArgs {
     /// Image width in pixels for --png and --gif.
     #[arg(long, default_value_t = 640)]
     pub width: u32,
-    /// Cut the card directly: machine profile (name or TOML path); needs --material.
-    #[arg(long, short = 'm', requires = "material", help_heading = "Cutting")]
-    pub machine: Option<String>,
-    /// Material profile (name or TOML path); needs --machine.
-    #[arg(long, short = 'x', requires = "machine", help_heading = "Cutting")]
-    pub material: Option<String>,
-    #[command(flatten, next_help_heading = "Cutting")]
-    pub fab: FabArgs,
-    /// With --machine and .dxf output: DXF R12 instead of R2000.
-    #[arg(long, help_heading = "Cutting")]
-    pub r12: bool,
-    /// With --machine and .svg output: perforations as dashed strokes.
-    #[arg(long, help_heading = "Cutting")]
-    pub dasharray: bool,
     /// Refuse (exit 1) a card that reaches beyond its own outline when folded shut, instead
     /// of warning, and say how much smaller the model must be.
     #[arg(long)]
@@ -129,15 +112,7 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     if let Some(path) = &args.save_voxels {
         outputs.add(path, format_voxel_card(&card).into_bytes());
     }
-    match (&args.machine, &args.material) {
-        (Some(machine), Some(material)) => {
-            let (machine, material, options) = args.fab.resolve(machine, material)?;
-            let plan = foldcam::fab::plan(&cp, &machine, &material, &options)
-                .with_context(|| args.input.display().to_string())?;
-            super::cut::write_jobs(&args.output, &plan, &machine, args.r12, args.dasharray)?;
-        }
-        _ => super::input::stage(&mut outputs, &args.output, &cp, None)?,
-    }
+    args.out.stage(&mut outputs, &cp, None)?;
     super::input::commit(outputs, &[&args.input])?;
     let (w, h) = card.sheet_mm();
     println!(

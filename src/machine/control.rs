@@ -21,7 +21,7 @@
 use serde::Serialize;
 
 use super::profile::{Dialect, MachineKind, MachineProfile};
-use crate::fab::Operation;
+use super::Operation;
 
 /// How a LinuxCNC laser's beam is switched (the profile key `laser_output`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Default)]

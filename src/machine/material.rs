@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::MachineProfile;
 use crate::check::CheckOptions;
-use crate::fab::Operation;
+use super::Operation;
 use crate::pattern::Assignment;
 
 /// Speed, power and passes for one operation.

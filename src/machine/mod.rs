@@ -21,12 +21,14 @@ mod fields;
 mod load;
 mod locate;
 mod material;
+mod operation;
 pub mod motion;
 mod profile;
 mod read_machine;
 mod read_material;
 mod shipped;
 
+pub use operation::Operation;
 pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use load::{
     CatalogueEntry, ProfileKind, load_machine, load_material, parse_machine, parse_material,

@@ -14,7 +14,7 @@ use glam::{DAffine2, DVec2};
 use serde::Serialize;
 
 use super::control::MachineControl;
-use crate::fab::Operation;
+use super::Operation;
 
 /// What the machine does to the sheet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -31,7 +31,7 @@ use super::fields::Fields;
 use super::material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
-use crate::fab::Operation;
+use super::Operation;
 
 /// The word that maps an assignment to no operation.
 const SKIP: &str = "skip";

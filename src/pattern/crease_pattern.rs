@@ -216,12 +216,7 @@ impl CreasePattern {
 
     /// Axis-aligned bounds `(min, max)` of the vertices, `None` when there are none.
     pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
-        let first = *self.vertices.first()?;
-        Some(
-            self.vertices
-                .iter()
-                .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
-        )
+        crate::geom::Rect::of(self.vertices.iter().copied()).map(crate::geom::Rect::corners)
     }
 
     /// Number of edges with each assignment, in [`Assignment::ALL`] order.
