@@ -14,8 +14,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use foldcam::{
-    CheckOptions, Job, JobFormat, OutputSet, PlanOverrides, PlanarizeOptions, Scale, Units, check, load,
-    load_machine, load_material, planarize,
+    CheckOptions, Job, JobFormat, OutputSet, PlanOverrides, PlanarizeOptions, Scale, Units, check,
+    load, load_machine, load_material, planarize,
 };
 
 fn main() -> ExitCode {

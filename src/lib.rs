@@ -59,7 +59,8 @@ pub use job::{Job, JobError, JobFormat};
 pub use machine::{MachineProfile, Material, Operation, load_machine, load_material};
 pub use pattern::planarize::planarize;
 pub use pattern::{
-    Assignment, CreasePattern, EdgeId, FaceId, FoldedState, PlanarizeOptions, Scale, Units, VertexId,
+    Assignment, CreasePattern, EdgeId, FaceId, FoldedState, PlanarizeOptions, Scale, Units,
+    VertexId,
 };
 pub use post::DxfVersion;
 pub use sim::{CoverageReport, SimReport};

@@ -84,7 +84,9 @@ fn violations() -> Vec<String> {
                     continue;
                 }
                 for target in crate_paths(line) {
-                    let Some(other) = layer(&target) else { continue };
+                    let Some(other) = layer(&target) else {
+                        continue;
+                    };
                     if target != module && other >= rank {
                         found.push(format!(
                             "{}:{}: {module} uses {target}",
@@ -127,5 +129,10 @@ fn every_library_module_is_listed_in_a_layer() {
 #[test]
 fn no_module_imports_from_a_layer_above_it() {
     let v = violations();
-    assert!(v.is_empty(), "{} imports against the layers:\n{}", v.len(), v.join("\n"));
+    assert!(
+        v.is_empty(),
+        "{} imports against the layers:\n{}",
+        v.len(),
+        v.join("\n")
+    );
 }

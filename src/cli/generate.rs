@@ -1,6 +1,5 @@
 //! `foldcam generate KIND -o OUT`.
 
-
 use anyhow::Result;
 use clap::ValueEnum;
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};

@@ -99,7 +99,9 @@ impl PlanOptions {
             if !(duty > 0.0 && duty < 1.0) {
                 return Err(FabError::BadOption {
                     option: "duty",
-                    message: format!("{duty} must be between 0 and 1 (the cut share of each period)"),
+                    message: format!(
+                        "{duty} must be between 0 and 1 (the cut share of each period)"
+                    ),
                 });
             }
             p.bridge_mm = p.cut_mm * (1.0 - duty) / duty;

@@ -143,7 +143,9 @@ impl<'a> Job<'a> {
         let mut readback = Vec::with_capacity(self.plan.jobs.len());
         for (i, job) in self.plan.jobs.iter().enumerate() {
             let text = match (self.format, self.outputs.get(i)) {
-                (Some(JobFormat::Gcode), Some(bytes)) => String::from_utf8_lossy(bytes).into_owned(),
+                (Some(JobFormat::Gcode), Some(bytes)) => {
+                    String::from_utf8_lossy(bytes).into_owned()
+                }
                 _ => post::gcode(&self.plan, job, self.machine)?,
             };
             let sim = sim::run(&text, self.machine)?;

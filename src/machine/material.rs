@@ -10,8 +10,8 @@
 use serde::Serialize;
 
 use super::MachineProfile;
-use crate::check::CheckOptions;
 use super::Operation;
+use crate::check::CheckOptions;
 use crate::pattern::Assignment;
 
 /// Speed, power and passes for one operation.

@@ -21,14 +21,13 @@ mod fields;
 mod load;
 mod locate;
 mod material;
-mod operation;
 pub mod motion;
+mod operation;
 mod profile;
 mod read_machine;
 mod read_material;
 mod shipped;
 
-pub use operation::Operation;
 pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use load::{
     CatalogueEntry, ProfileKind, load_machine, load_material, parse_machine, parse_material,
@@ -37,6 +36,7 @@ pub use load::{
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
+pub use operation::Operation;
 pub use profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
 };

@@ -26,12 +26,12 @@
 
 use toml::Table;
 
+use super::Operation;
 use super::ProfileError;
 use super::fields::Fields;
 use super::material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
-use super::Operation;
 
 /// The word that maps an assignment to no operation.
 const SKIP: &str = "skip";

@@ -25,5 +25,5 @@ pub use crease_pattern::{
 pub use error::PatternError;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};
-pub use scale::{Scale, ScaleError, Scaled};
 pub use planarize::{PlanarizeError, PlanarizeOptions, PlanarizeReport, planarize};
+pub use scale::{Scale, ScaleError, Scaled};
