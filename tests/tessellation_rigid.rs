@@ -310,6 +310,14 @@ fn cli_reports_the_rigid_simulation() {
         stdout.contains("rigid folding: reached the target after 20 steps"),
         "{stdout}"
     );
+    // Progress names each of the 20 steps and no step beyond them.
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let steps: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("rigid step"))
+        .collect();
+    assert_eq!(steps.len(), 20, "{stderr}");
+    assert!(steps[19].contains("rigid step   20:"), "{stderr}");
     let bad = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
         .arg("tessellate")
         .arg(&mesh)
