@@ -24,9 +24,10 @@ impl Stopwatch {
     /// Time since the start (zero without a clock).
     pub fn elapsed(&self) -> Duration {
         #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
-        return self.start.elapsed();
+        let elapsed = self.start.elapsed();
         #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
-        return Duration::ZERO;
+        let elapsed = Duration::ZERO;
+        elapsed
     }
 }
 
