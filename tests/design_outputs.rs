@@ -14,8 +14,7 @@ fn same_job_both_ways(name: &str, design: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
     let pattern = format!("{name}.fold");
     let run = |extra: &[&str]| {
-        let mut args: Vec<&str> = design.to_vec();
-        args.extend_from_slice(extra);
+        let args: Vec<&str> = design.iter().chain(extra).copied().collect();
         let out = foldcam(&args, dir.path());
         assert!(
             out.status.success(),
@@ -70,13 +69,13 @@ fn generate_writes_the_job_cut_would_write() {
 #[test]
 fn popup_poly_writes_the_job_cut_would_write() {
     let design = repo_file("examples/popup/house-door.popup.toml");
-    same_job_both_ways("house", &["popup", "poly", &design]);
+    same_job_both_ways("house", &["popup", "poly", design.as_str()]);
 }
 
 #[test]
 fn fold_writes_the_job_cut_would_write() {
     let script = repo_file("examples/folding/waterbomb-base.toml");
-    same_job_both_ways("waterbomb", &["fold", &script]);
+    same_job_both_ways("waterbomb", &["fold", script.as_str()]);
 }
 
 #[test]
