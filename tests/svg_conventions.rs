@@ -270,10 +270,11 @@ fn raw_kawasaki_error(lines: &[RawLine], p: [f64; 2], near: f64) -> f64 {
 /// colour (red mountain, blue valley, yellow flat, black outline; counted from the file's
 /// own numbers), and every fault `check` still reports is one of the drawing itself: at each,
 /// the lines as drawn miss Kawasaki's theorem by more than 0.2° (coordinates carry three
-/// decimals of a px: rounding moves a 20 px crease by under 0.003°). Eight vertices miss it
-/// by more than 15°: the crane as drawn does not fold flat there, which no reading of the
-/// file can change. (At four merged junctions snapping leaves about 0.68° where the lines as
-/// drawn miss by 0.26°: the junction goes to the crossing of an overshooting stub.)
+/// decimals of a px: rounding moves a 20 px crease by under 0.003°), and snapping adds at most
+/// 0.1° to that. Eight vertices miss it by more than 15°: the crane as drawn does not fold
+/// flat there, which no reading of the file can change. Where several lines meet a little
+/// apart, the junction goes where they come closest to meeting (before, it went to one of
+/// the crossings, and four junctions got worse than drawn: 0.68° against 0.26°).
 #[test]
 fn the_crane_keeps_its_colours_and_only_the_drawing_s_own_faults() {
     let (lines, outline) = raw_crane();
@@ -338,7 +339,7 @@ fn the_crane_keeps_its_colours_and_only_the_drawing_s_own_faults() {
         let px = [f.position.x / PX_MM, -f.position.y / PX_MM];
         let raw = raw_kawasaki_error(&lines, px, 1.0);
         assert!(
-            raw.is_finite() && raw > 0.2,
+            raw.is_finite() && raw > 0.2 && f.value < raw + 0.1,
             "{}: the drawing's own error {raw}°",
             f.message
         );
