@@ -157,24 +157,13 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrange
         return (Arrangement::default(), tol);
     }
     let traced = find_faces(&sheet);
-    let face_boxes: Vec<(DVec2, DVec2)> = folded.faces.iter().map(|f| f.bounds).collect();
-    let face_grid = BoxGrid::new(&face_boxes);
     let mut arr = Arrangement::default();
     for cell in &traced.faces {
         let rings: Vec<Vec<DVec2>> = std::iter::once(&cell.outer)
             .chain(&cell.holes)
             .map(|r| r.iter().map(|&v| sheet.position(v)).collect())
             .collect();
-        let p = interior_point(&rings);
-        let mut covering: Vec<u32> = face_grid
-            .at(p)
-            .iter()
-            .copied()
-            .filter(|&f| folded.faces[f as usize].contains(p))
-            .collect();
-        covering.sort_unstable();
-        arr.cell_faces.push(covering);
-        arr.cell_points.push(p);
+        arr.cell_points.push(interior_point(&rings));
         arr.cell_rings.push(rings);
     }
     let mut side_of = std::collections::HashMap::new();
@@ -215,7 +204,152 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrange
         arr.segment_ends.push(ends);
         arr.segment_edges.push(along);
     }
+    arr.cell_faces = coverage(cp, folded, &arr, tol);
     (arr, tol)
+}
+
+/// Largest difference between a face's area and the area of the cells its flood fill
+/// reached, relative to the face's area, before the fill is distrusted (on top of what
+/// merging points within the arrangement's distance can move: that distance times the
+/// face's perimeter, twice).
+const FILL_AREA_AGREEMENT: f64 = 1e-6;
+
+/// The pattern faces covering each cell, sorted.
+///
+/// Each face is flood-filled through the arrangement from the cell beside one of its edges,
+/// never crossing a segment that carries one of its own edges: the cells reached are the
+/// face's, decided by the arrangement's topology rather than by testing points against the
+/// face's outline (a point of a thin cell can fall on the wrong side of an outline that the
+/// arrangement merged with a neighbouring line). A fill that leaks out of the paper or whose
+/// cells' area differs from the face's (an edge of the face not found along its segments)
+/// falls back to testing each cell's interior point.
+fn coverage(
+    cp: &CreasePattern,
+    folded: &FoldedFaces,
+    arr: &Arrangement,
+    tol: f64,
+) -> Vec<Vec<u32>> {
+    let n_cells = arr.cell_rings.len();
+    let mut cell_segments: Vec<Vec<u32>> = vec![Vec::new(); n_cells];
+    let mut edge_segments: Vec<Vec<u32>> = vec![Vec::new(); cp.edges.len()];
+    for (s, sides) in arr.segment_cells.iter().enumerate() {
+        for c in sides.iter().flatten() {
+            cell_segments[*c as usize].push(s as u32);
+        }
+        for &e in &arr.segment_edges[s] {
+            edge_segments[e as usize].push(s as u32);
+        }
+    }
+    let cell_area: Vec<f64> = arr
+        .cell_rings
+        .iter()
+        .map(|rings| rings.iter().map(|r| signed_area(r)).sum::<f64>().abs())
+        .collect();
+    let mut face_edges: Vec<Vec<u32>> = vec![Vec::new(); folded.faces.len()];
+    for (e, sides) in folded.edge_faces.iter().enumerate() {
+        for f in sides.iter().flatten() {
+            face_edges[*f as usize].push(e as u32);
+        }
+    }
+    let mut out: Vec<Vec<u32>> = vec![Vec::new(); n_cells];
+    let mut mark = vec![u32::MAX; n_cells];
+    let mut fallback = Vec::new();
+    for (f, face) in folded.faces.iter().enumerate() {
+        let fid = f as u32;
+        let borders = |s: u32| {
+            arr.segment_edges[s as usize]
+                .iter()
+                .any(|&e| folded.edge_faces[e as usize].contains(&Some(fid)))
+        };
+        let seed = face_edges[f].iter().find_map(|&e| {
+            let e = e as usize;
+            let side = folded.edge_faces[e].iter().position(|&g| g == Some(fid))?;
+            let &s = edge_segments[e].first()?;
+            let [p, q] = arr.segment_ends[s as usize];
+            let [a, b] = cp.edges[e]
+                .vertices
+                .map(|v| face.transform.transform_point2(cp.position(v)));
+            // The face lies on the left of its edge (side 0) in the pattern; a reflection
+            // swaps left and right.
+            let left = (side == 0) != face.flipped;
+            let same = (q - p).dot(b - a) > 0.0;
+            arr.segment_cells[s as usize][usize::from(left != same)]
+        });
+        let area = signed_area(&face.outer).abs()
+            - face.holes.iter().map(|h| signed_area(h).abs()).sum::<f64>();
+        let mut reached = Vec::new();
+        let mut leaked = seed.is_none();
+        if let Some(seed) = seed {
+            mark[seed as usize] = fid;
+            reached.push(seed);
+            let mut k = 0;
+            while k < reached.len() && !leaked {
+                let c = reached[k];
+                k += 1;
+                for &s in &cell_segments[c as usize] {
+                    if borders(s) {
+                        continue;
+                    }
+                    let sides = arr.segment_cells[s as usize];
+                    let other = if sides[0] == Some(c) {
+                        sides[1]
+                    } else {
+                        sides[0]
+                    };
+                    match other {
+                        None => {
+                            leaked = true;
+                            break;
+                        }
+                        Some(o) if mark[o as usize] != fid => {
+                            mark[o as usize] = fid;
+                            reached.push(o);
+                        }
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+        let filled: f64 = reached.iter().map(|&c| cell_area[c as usize]).sum();
+        let perimeter: f64 = std::iter::once(&face.outer)
+            .chain(&face.holes)
+            .flat_map(|r| (0..r.len()).map(move |i| r[i].distance(r[(i + 1) % r.len()])))
+            .sum();
+        if leaked || (filled - area).abs() > FILL_AREA_AGREEMENT * area + 2.0 * tol * perimeter {
+            fallback.push(fid);
+            continue;
+        }
+        for c in reached {
+            out[c as usize].push(fid);
+        }
+    }
+    if !fallback.is_empty() {
+        let boxes: Vec<(DVec2, DVec2)> = fallback
+            .iter()
+            .map(|&f| folded.faces[f as usize].bounds)
+            .collect();
+        let grid = BoxGrid::new(&boxes);
+        for (c, &p) in arr.cell_points.iter().enumerate() {
+            for &i in grid.at(p) {
+                let f = fallback[i as usize];
+                if folded.faces[f as usize].contains(p) {
+                    out[c].push(f);
+                }
+            }
+        }
+    }
+    for faces in &mut out {
+        faces.sort_unstable();
+    }
+    out
+}
+
+/// Signed area of a closed ring (positive counter-clockwise).
+fn signed_area(ring: &[DVec2]) -> f64 {
+    (0..ring.len())
+        .map(|i| ring[i].perp_dot(ring[(i + 1) % ring.len()]))
+        .sum::<f64>()
+        * 0.5
 }
 
 /// The folded segment of every edge that borders a face (`None` for edges on no face).

@@ -40,8 +40,8 @@ pub enum Kind {
 /// Where a constraint comes from, in the arrangement.
 #[derive(Clone, Copy, Debug)]
 pub enum Place {
-    /// A cell (transitivity).
-    Cell(u32),
+    /// A cell that all the constraint's faces cover (transitivity; found when needed).
+    Common,
     /// A segment (the others).
     Segment(u32),
 }
@@ -125,12 +125,13 @@ pub fn build(
     folded: &FoldedFaces,
     arr: &Arrangement,
 ) -> Result<System, LayerError> {
+    let maximal = maximal_cells(arr);
     let mut sys = System {
-        pairs: pairs(arr),
+        pairs: pairs(arr, &maximal),
         ..Default::default()
     };
     edge_constraints(cp, folded, arr, &mut sys);
-    transitivity(arr, &mut sys)?;
+    transitivity(arr, &maximal, &mut sys)?;
     for (e, edge) in cp.edges.iter().enumerate() {
         let [Some(f), Some(g)] = folded.edge_faces[e] else {
             continue;
@@ -147,9 +148,27 @@ pub fn build(
     Ok(sys)
 }
 
-fn pairs(arr: &Arrangement) -> Vec<u64> {
+/// Cells whose faces are not a strict subset of a neighbouring cell's. Every pair or triple of
+/// faces of a cell is one of a maximal cell's: along a chain of strict supersets the sizes
+/// grow, so it ends at a maximal cell.
+fn maximal_cells(arr: &Arrangement) -> Vec<bool> {
+    let mut maximal = vec![true; arr.cell_faces.len()];
+    for &[l, r] in &arr.segment_cells {
+        if let (Some(l), Some(r)) = (l, r) {
+            let (a, b) = (&arr.cell_faces[l as usize], &arr.cell_faces[r as usize]);
+            if a.len() < b.len() && is_subset(a, b) {
+                maximal[l as usize] = false;
+            } else if b.len() < a.len() && is_subset(b, a) {
+                maximal[r as usize] = false;
+            }
+        }
+    }
+    maximal
+}
+
+fn pairs(arr: &Arrangement, maximal: &[bool]) -> Vec<u64> {
     let mut keys = Vec::new();
-    for faces in &arr.cell_faces {
+    for (faces, _) in arr.cell_faces.iter().zip(maximal).filter(|(_, m)| **m) {
         for (i, &a) in faces.iter().enumerate() {
             for &b in &faces[i + 1..] {
                 keys.push((u64::from(a) << 32) | u64::from(b));
@@ -165,27 +184,28 @@ fn pairs(arr: &Arrangement) -> Vec<u64> {
     keys
 }
 
-fn transitivity(arr: &Arrangement, sys: &mut System) -> Result<(), LayerError> {
+fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result<(), LayerError> {
     let mut seen: HashSet<&[u32]> = HashSet::new();
-    let mut triples: Vec<(u64, u32)> = Vec::new();
+    let mut triples: Vec<u64> = Vec::new();
     let mut dedup_at = 1 << 20;
     for (c, faces) in arr.cell_faces.iter().enumerate() {
-        if faces.len() < 3 || !seen.insert(faces.as_slice()) {
+        if faces.len() < 3 || !maximal[c] || !seen.insert(faces.as_slice()) {
             continue;
         }
         for i in 0..faces.len() {
             for j in i + 1..faces.len() {
                 for k in j + 1..faces.len() {
-                    let key = (u64::from(faces[i]) << 42)
-                        | (u64::from(faces[j]) << 21)
-                        | u64::from(faces[k]);
-                    triples.push((key, c as u32));
+                    triples.push(
+                        (u64::from(faces[i]) << 42)
+                            | (u64::from(faces[j]) << 21)
+                            | u64::from(faces[k]),
+                    );
                 }
             }
         }
         if triples.len() > dedup_at {
-            triples.sort_unstable_by_key(|t| t.0);
-            triples.dedup_by_key(|t| t.0);
+            triples.sort_unstable();
+            triples.dedup();
             if triples.len() > MAX_TRIPLES {
                 return Err(LayerError::TooLarge {
                     what: "transitivity constraints",
@@ -196,10 +216,10 @@ fn transitivity(arr: &Arrangement, sys: &mut System) -> Result<(), LayerError> {
             dedup_at = 2 * triples.len().max(1 << 20);
         }
     }
-    triples.sort_unstable_by_key(|t| t.0);
-    triples.dedup_by_key(|t| t.0);
+    triples.sort_unstable();
+    triples.dedup();
     let mask = (1u64 << 21) - 1;
-    for (key, c) in triples {
+    for key in triples {
         let (a, b, d) = (
             (key >> 42) as u32,
             ((key >> 21) & mask) as u32,
@@ -209,10 +229,25 @@ fn transitivity(arr: &Arrangement, sys: &mut System) -> Result<(), LayerError> {
             Kind::Transitivity,
             &[a, b, d],
             &[(a, b), (a, d), (b, d)],
-            Place::Cell(c),
+            Place::Common,
         );
     }
     Ok(())
+}
+
+/// True when every element of sorted `a` is in sorted `b`.
+fn is_subset(a: &[u32], b: &[u32]) -> bool {
+    let mut j = 0;
+    for &x in a {
+        while j < b.len() && b[j] < x {
+            j += 1;
+        }
+        if j == b.len() || b[j] != x {
+            return false;
+        }
+        j += 1;
+    }
+    true
 }
 
 /// Which side of segment `s` face `f` lies on (0 left, 1 right), if it borders it.
