@@ -35,6 +35,9 @@ pub fn main() -> ExitCode {
     if args.first().map(String::as_str) == Some("--one") {
         return one(Path::new(args.get(1).map_or("", String::as_str)));
     }
+    if args.first().map(String::as_str) == Some("--explain") {
+        return explain(Path::new(args.get(1).map_or("", String::as_str)));
+    }
     let mut timeout = 30.0;
     let mut filter = String::new();
     let mut dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/testdata/flat-folder");
@@ -275,4 +278,71 @@ fn one(path: &Path) -> ExitCode {
         Err(e) => println!("error: {e}"),
     }
     ExitCode::SUCCESS
+}
+
+/// Prints, for one file, how the folded arrangement's numbers of points and segments change as
+/// the merge distance is halved (Flat-Folder's CSV column `eps` is the divisor it settled on),
+/// the distance the solver chose, and the solver's counts.
+fn explain(path: &Path) -> ExitCode {
+    let mut cp = match formats::load(path) {
+        Ok(i) => i.pattern,
+        Err(e) => {
+            println!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let options = PlanarizeOptions {
+        tolerance: None,
+        faces: true,
+    };
+    if let Err(e) = planarize(&mut cp, &options) {
+        println!("error: {e}");
+        return ExitCode::from(2);
+    }
+    // Any gap between two placements of a vertex is let through: this only looks at geometry.
+    let folded = match foldcam::check::layers::folded::fold_faces(&cp, f64::MAX) {
+        Ok(f) => f,
+        Err(e) => {
+            println!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let mut raw = foldcam::pattern::CreasePattern::new();
+    let mut shortest = f64::MAX;
+    for (e, sides) in cp.edges.iter().zip(&folded.edge_faces) {
+        let Some(f) = sides.iter().flatten().next() else {
+            continue;
+        };
+        let t = folded.faces[*f as usize].transform;
+        let [a, b] = e.vertices.map(|v| t.transform_point2(cp.position(v)));
+        shortest = shortest.min(a.distance(b));
+        raw.add_segment(a, b, foldcam::pattern::Assignment::Boundary);
+    }
+    println!("shortest folded edge {shortest:e}");
+    for i in 3..=30 {
+        let tol = shortest / 2f64.powi(i);
+        let mut sheet = raw.clone();
+        let o = PlanarizeOptions {
+            tolerance: Some(tol),
+            faces: false,
+        };
+        match planarize(&mut sheet, &o) {
+            Ok(_) => println!(
+                "  2^{i:<2} tol {tol:.3e}: {} points, {} segments",
+                sheet.vertices.len(),
+                sheet.edges.len()
+            ),
+            Err(e) => println!("  2^{i:<2} tol {tol:.3e}: error {e}"),
+        }
+    }
+    let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
+    let floor = (diag * foldcam::check::layers::RELATIVE_TOLERANCE).max(1e-12);
+    let (arr, tol) = foldcam::check::layers::cells::arrange(&cp, &folded, floor);
+    println!(
+        "chosen tol {tol:.3e} (shortest / {:.0}): {} cells, {} segments",
+        shortest / tol,
+        arr.cell_faces.len(),
+        arr.segment_cells.len()
+    );
+    one(path)
 }
