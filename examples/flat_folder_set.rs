@@ -4,6 +4,7 @@
 //!
 //! ```text
 //! cargo run --release --example flat_folder_set -- [--timeout SECONDS] [--filter TEXT] [DIR]
+//! cargo run --release --example flat_folder_set -- --explain FILE
 //! ```
 //!
 //! Each pattern runs in a child process (this program with `--one FILE`) so a pattern that
@@ -146,6 +147,18 @@ pub fn main() -> ExitCode {
     println!("time out: {} {:?}", timeouts.len(), timeouts);
     println!("limited by Flat-Folder (not compared): {capped}");
     println!("total time: {:.1} s", start.elapsed().as_secs_f64());
+    let slow: Vec<String> = times
+        .iter()
+        .filter(|(t, _, ff)| *ff <= 60.0 && *t > 5.0)
+        .map(|(t, n, ff)| format!("{n} ({t:.1} s; Flat-Folder {ff:.1} s)"))
+        .collect();
+    println!(
+        "over 5 s here among the designs Flat-Folder finished within 60 s: {}",
+        slow.len()
+    );
+    for s in &slow {
+        println!("  {s}");
+    }
     println!("ten slowest:");
     for (t, n, ff) in times.iter().take(10) {
         println!("  {t:8.3} s  {n} (Flat-Folder's published time {ff:.2} s)");
@@ -280,9 +293,9 @@ fn one(path: &Path) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// Prints, for one file, how the folded arrangement's numbers of points and segments change as
-/// the merge distance is halved (Flat-Folder's CSV column `eps` is the divisor it settled on),
-/// the distance the solver chose, and the solver's counts.
+/// Prints, for one file, the merge distance the arrangement settled on as a divisor of the
+/// shortest folded edge (Flat-Folder's CSV column `eps` is the divisor it settled on), the
+/// numbers of cells and segments, and the solver's counts.
 fn explain(path: &Path) -> ExitCode {
     let mut cp = match formats::load(path) {
         Ok(i) => i.pattern,
@@ -307,34 +320,16 @@ fn explain(path: &Path) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let mut raw = foldcam::pattern::CreasePattern::new();
-    let mut shortest = f64::MAX;
-    for (e, sides) in cp.edges.iter().zip(&folded.edge_faces) {
-        let Some(f) = sides.iter().flatten().next() else {
-            continue;
-        };
-        let t = folded.faces[*f as usize].transform;
-        let [a, b] = e.vertices.map(|v| t.transform_point2(cp.position(v)));
-        shortest = shortest.min(a.distance(b));
-        raw.add_segment(a, b, foldcam::pattern::Assignment::Boundary);
-    }
-    println!("shortest folded edge {shortest:e}");
-    for i in 3..=30 {
-        let tol = shortest / 2f64.powi(i);
-        let mut sheet = raw.clone();
-        let o = PlanarizeOptions {
-            tolerance: Some(tol),
-            faces: false,
-        };
-        match planarize(&mut sheet, &o) {
-            Ok(_) => println!(
-                "  2^{i:<2} tol {tol:.3e}: {} points, {} segments",
-                sheet.vertices.len(),
-                sheet.edges.len()
-            ),
-            Err(e) => println!("  2^{i:<2} tol {tol:.3e}: error {e}"),
-        }
-    }
+    let shortest = cp
+        .edges
+        .iter()
+        .zip(&folded.edge_faces)
+        .filter_map(|(e, sides)| {
+            let f = *sides.iter().flatten().next()?;
+            let [a, b] = e.vertices.map(|v| folded.point(&cp, f, v));
+            Some(a.distance(b))
+        })
+        .fold(f64::MAX, f64::min);
     let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
     let floor = (diag * foldcam::check::layers::RELATIVE_TOLERANCE).max(1e-12);
     let (arr, tol) = foldcam::check::layers::cells::arrange(&cp, &folded, floor);

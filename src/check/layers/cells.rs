@@ -83,6 +83,18 @@ impl BoxGrid {
         )
     }
 
+    /// Calls `visit` with every id whose box may meet the box `lo`..`hi` (an id may come
+    /// more than once).
+    fn near(&self, lo: DVec2, hi: DVec2, mut visit: impl FnMut(u32)) {
+        let (x0, y0) = self.bin(lo);
+        let (x1, y1) = self.bin(hi);
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                self.bins[y * self.nx + x].iter().for_each(|&i| visit(i));
+            }
+        }
+    }
+
     /// Ids whose box may hold `p`.
     pub(crate) fn at(&self, p: DVec2) -> &[u32] {
         let (x, y) = self.bin(p);
@@ -96,54 +108,164 @@ const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=50;
 /// How many successive halvings must give the same numbers of points and segments.
 const STABLE_REPEATS: usize = 3;
 
+/// Folded segments that lie along one line to within `tol` (each end of either within `tol`
+/// of the other's line, overlapping by more than `tol` along it), moved onto one line: the line of the
+/// longest segment of each such group, each end projected onto it when it lies within twice
+/// `tol` of it. Creases of different faces that fold onto one line differ by the rounding of
+/// the file's coordinates (often single precision); left apart they cross at a very small
+/// angle at places that move with every merge distance, and the arrangement never settles.
+fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
+    let n = segments.len();
+    let boxes: Vec<(DVec2, DVec2)> = segments
+        .iter()
+        .map(|[a, b]| (a.min(*b) - tol, a.max(*b) + tol))
+        .collect();
+    let grid = BoxGrid::new(&boxes);
+    let line_distance = |[a, b]: [DVec2; 2], p: DVec2| {
+        let d = b - a;
+        let len = d.length();
+        if len == 0.0 {
+            a.distance(p)
+        } else {
+            d.perp_dot(p - a).abs() / len
+        }
+    };
+    // Both ends of each within `tol` of the other's line, and overlapping by more than `tol`
+    // along it: segments that only meet end to end at a small angle are a real bend.
+    let along = |s: [DVec2; 2], t: [DVec2; 2]| {
+        let u = (s[1] - s[0]).normalize_or_zero();
+        let (t0, t1) = ((t[0] - s[0]).dot(u), (t[1] - s[0]).dot(u));
+        let overlap = t0.max(t1).min(s[0].distance(s[1])) - t0.min(t1).max(0.0);
+        overlap > 0.0
+            && t.iter().all(|&p| line_distance(s, p) <= tol)
+            && s.iter().all(|&p| line_distance(t, p) <= tol)
+    };
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn root(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            parent[x as usize] = parent[parent[x as usize] as usize];
+            x = parent[x as usize];
+        }
+        x
+    }
+    for i in 0..n {
+        let (lo, hi) = boxes[i];
+        let mut close = Vec::new();
+        grid.near(lo, hi, |j| {
+            if (j as usize) > i {
+                close.push(j);
+            }
+        });
+        close.sort_unstable();
+        close.dedup();
+        for j in close {
+            let (jlo, jhi) = boxes[j as usize];
+            if jlo.cmple(hi).all()
+                && lo.cmple(jhi).all()
+                && along(segments[i], segments[j as usize])
+            {
+                let (a, b) = (root(&mut parent, i as u32), root(&mut parent, j));
+                if a != b {
+                    parent[a.max(b) as usize] = a.min(b);
+                }
+            }
+        }
+    }
+    // The longest segment of each group gives its line.
+    let mut longest: Vec<Option<u32>> = vec![None; n];
+    let length = |i: u32| segments[i as usize][0].distance(segments[i as usize][1]);
+    let mut grouped = vec![false; n];
+    for i in 0..n as u32 {
+        let r = root(&mut parent, i) as usize;
+        if r != i as usize {
+            grouped[r] = true;
+            grouped[i as usize] = true;
+        }
+        if longest[r].is_none_or(|k| length(k) < length(i)) {
+            longest[r] = Some(i);
+        }
+    }
+    (0..n as u32)
+        .map(|i| {
+            let s = segments[i as usize];
+            if !grouped[i as usize] {
+                return s;
+            }
+            let r = root(&mut parent, i) as usize;
+            let Some(k) = longest[r] else {
+                return s;
+            };
+            let [a, b] = segments[k as usize];
+            let u = (b - a).normalize_or_zero();
+            s.map(|p| {
+                let q = a + u * (p - a).dot(u);
+                if q.distance(p) <= 2.0 * tol { q } else { p }
+            })
+        })
+        .collect()
+}
+
 /// The folded edges cut into a planar graph, and the merge distance chosen for it.
 ///
 /// Like Flat-Folder, the distance is the shortest folded edge divided by 2^i for i = 3, 4, …,
 /// halved until the numbers of points and segments stay the same [`STABLE_REPEATS`] times;
-/// the largest distance of that stable run is used. Coordinates written to single precision
+/// the largest distance of that stable run is used (when no run gets that long before
+/// `floor`, the largest distance of the first longest run). Coordinates written to single precision
 /// by other tools then still meet where they should, and fine details are not merged away.
 /// `floor` is the smallest distance tried.
 fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePattern, f64)> {
-    let mut raw = CreasePattern::new();
-    for s in segments.iter().flatten() {
-        raw.add_segment(s[0], s[1], Assignment::Boundary);
-    }
+    let segments: Vec<[DVec2; 2]> = segments.iter().flatten().copied().collect();
+    let raw = |tol: f64| {
+        let mut raw = CreasePattern::new();
+        for s in snap_to_common_lines(&segments, tol) {
+            raw.add_segment(s[0], s[1], Assignment::Boundary);
+        }
+        raw
+    };
     let shortest = segments
         .iter()
-        .flatten()
         .map(|[a, b]| a.distance(*b))
         .filter(|&d| d > 0.0)
         .fold(f64::MAX, f64::min);
     if shortest == f64::MAX {
         return None;
     }
-    let mut run: Vec<(CreasePattern, f64)> = Vec::new();
+    // The current run of equal counts (its coarsest sheet, counts, length) and the longest
+    // run met so far (the first of that length).
+    let mut run: Option<(CreasePattern, f64)> = None;
     let mut last = (usize::MAX, usize::MAX);
+    let mut length = 0;
+    let mut best: Option<(CreasePattern, f64)> = None;
+    let mut best_length = 0;
     for i in TOLERANCE_STEPS {
         let tol = shortest / 2f64.powi(i);
         if tol < floor {
             break;
         }
-        let mut sheet = raw.clone();
+        let mut sheet = raw(tol);
         let options = PlanarizeOptions {
             tolerance: Some(tol),
             faces: false,
         };
         if planarize(&mut sheet, &options).is_err() {
+            (run, last, length) = (None, (usize::MAX, usize::MAX), 0);
             continue;
         }
         let counts = (sheet.vertices.len(), sheet.edges.len());
-        if counts != last {
-            run.clear();
-            last = counts;
+        if counts == last {
+            length += 1;
+        } else {
+            (run, last, length) = (Some((sheet, tol)), counts, 1);
         }
-        run.push((sheet, tol));
-        if run.len() >= STABLE_REPEATS {
-            break;
+        if length > best_length {
+            best_length = length;
+            best.clone_from(&run);
+            if best_length >= STABLE_REPEATS {
+                break;
+            }
         }
     }
-    // Stable for STABLE_REPEATS steps, or else the last counts reached: their coarsest sheet.
-    run.into_iter().next()
+    best
 }
 
 /// Builds the arrangement of `folded` (the folded form of `cp`); `floor` is the smallest merge
@@ -352,15 +474,15 @@ fn signed_area(ring: &[DVec2]) -> f64 {
         * 0.5
 }
 
-/// The folded segment of every edge that borders a face (`None` for edges on no face).
+/// The folded segment of every edge that borders a face (`None` for edges on no face), drawn
+/// through the vertices' shared folded places.
 fn folded_segments(cp: &CreasePattern, folded: &FoldedFaces) -> Vec<Option<[DVec2; 2]>> {
     cp.edges
         .iter()
         .zip(&folded.edge_faces)
         .map(|(e, sides)| {
-            let f = sides.iter().flatten().next()?;
-            let t = folded.faces[*f as usize].transform;
-            Some(e.vertices.map(|v| t.transform_point2(cp.position(v))))
+            let f = *sides.iter().flatten().next()?;
+            Some(e.vertices.map(|v| folded.point(cp, f, v)))
         })
         .collect()
 }
