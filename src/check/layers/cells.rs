@@ -102,8 +102,9 @@ impl BoxGrid {
     }
 }
 
-/// Halvings of the merge distance tried, from 1/8 of the shortest edge down.
-const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=50;
+/// Halvings of the merge distance tried, from 1/8 of the shortest edge down to 1/2^27 of it
+/// (Flat-Folder's 25 steps; each is a planarisation of every folded edge).
+const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=27;
 
 /// How many successive halvings must give the same numbers of points and segments.
 const STABLE_REPEATS: usize = 3;
