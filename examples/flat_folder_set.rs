@@ -4,11 +4,13 @@
 //!
 //! ```text
 //! cargo run --release --example flat_folder_set -- [--timeout SECONDS] [--filter TEXT] [DIR]
+//! cargo run --release --example flat_folder_set -- --explain FILE
 //! ```
 //!
 //! Each pattern runs in a child process (this program with `--one FILE`) so a pattern that
 //! exceeds the time cap is stopped cleanly. Prints one line per pattern, then the matches,
-//! the differences (listed), the time-outs, the total time and the ten slowest designs.
+//! the differences (listed), the patterns the local checks refuse (with what the layer solver
+//! alone finds), the time-outs, the total time and the ten slowest designs.
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -29,10 +31,13 @@ struct Row {
     ff_seconds: f64,
 }
 
-fn main() -> ExitCode {
+pub fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("--one") {
         return one(Path::new(args.get(1).map_or("", String::as_str)));
+    }
+    if args.first().map(String::as_str) == Some("--explain") {
+        return explain(Path::new(args.get(1).map_or("", String::as_str)));
     }
     let mut timeout = 30.0;
     let mut filter = String::new();
@@ -80,7 +85,8 @@ fn main() -> ExitCode {
         }
     };
     let (mut matches, mut differ, mut timeouts, mut capped) = (0, Vec::new(), Vec::new(), 0);
-    let mut times: Vec<(f64, String)> = Vec::new();
+    let mut local = Vec::new();
+    let mut times: Vec<(f64, String, f64)> = Vec::new();
     let start = Instant::now();
     for row in &rows {
         let t0 = Instant::now();
@@ -97,7 +103,10 @@ fn main() -> ExitCode {
             }
             Some(line) => {
                 let ours = line.split_whitespace().next().unwrap_or("?").to_string();
-                if !row.exact {
+                if line.starts_with("local-fail") {
+                    println!("LOCAL    {name}: ours {line}, Flat-Folder {}", row.states);
+                    local.push(format!("{name}: {line}; Flat-Folder {}", row.states));
+                } else if !row.exact {
                     capped += 1;
                     println!(
                         "capped   {name}: ours {line}, Flat-Folder ≥ {} (limited)",
@@ -118,7 +127,7 @@ fn main() -> ExitCode {
                 }
             }
         }
-        times.push((secs, name));
+        times.push((secs, name, row.ff_seconds));
         let _ = std::io::stdout().flush();
     }
     times.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -128,12 +137,31 @@ fn main() -> ExitCode {
     for d in &differ {
         println!("  {d}");
     }
+    println!(
+        "refused by the local checks (Kawasaki or Maekawa beyond foldcam's tolerance): {}",
+        local.len()
+    );
+    for l in &local {
+        println!("  {l}");
+    }
     println!("time out: {} {:?}", timeouts.len(), timeouts);
     println!("limited by Flat-Folder (not compared): {capped}");
     println!("total time: {:.1} s", start.elapsed().as_secs_f64());
+    let slow: Vec<String> = times
+        .iter()
+        .filter(|(t, _, ff)| *ff <= 60.0 && *t > 5.0)
+        .map(|(t, n, ff)| format!("{n} ({t:.1} s; Flat-Folder {ff:.1} s)"))
+        .collect();
+    println!(
+        "over 5 s here among the designs Flat-Folder finished within 60 s: {}",
+        slow.len()
+    );
+    for s in &slow {
+        println!("  {s}");
+    }
     println!("ten slowest:");
-    for (t, n) in times.iter().take(10) {
-        println!("  {t:8.3} s  {n}");
+    for (t, n, ff) in times.iter().take(10) {
+        println!("  {t:8.3} s  {n} (Flat-Folder's published time {ff:.2} s)");
     }
     ExitCode::SUCCESS
 }
@@ -234,7 +262,17 @@ fn one(path: &Path) -> ExitCode {
     }
     let local = check(&cp, &CheckOptions::default());
     if !local.passed() {
-        println!("local-fail {} findings", local.findings.len());
+        // Say what the layer solver alone makes of it (it checks that the folded form
+        // closes up, to an eighth of the shortest edge), for the report.
+        let worst = local.findings.iter().map(|f| f.value).fold(0.0, f64::max);
+        let alone = match solve_layers(&cp, &LayerOptions::default()) {
+            Ok(r) => r.states,
+            Err(e) => format!("error: {e}"),
+        };
+        println!(
+            "local-fail {} findings (worst {worst:.4}); the layer solver alone: {alone}",
+            local.findings.len()
+        );
         return ExitCode::SUCCESS;
     }
     match solve_layers(&cp, &LayerOptions::default()) {
@@ -253,4 +291,53 @@ fn one(path: &Path) -> ExitCode {
         Err(e) => println!("error: {e}"),
     }
     ExitCode::SUCCESS
+}
+
+/// Prints, for one file, the merge distance the arrangement settled on as a divisor of the
+/// shortest folded edge (Flat-Folder's CSV column `eps` is the divisor it settled on), the
+/// numbers of cells and segments, and the solver's counts.
+fn explain(path: &Path) -> ExitCode {
+    let mut cp = match formats::load(path) {
+        Ok(i) => i.pattern,
+        Err(e) => {
+            println!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let options = PlanarizeOptions {
+        tolerance: None,
+        faces: true,
+    };
+    if let Err(e) = planarize(&mut cp, &options) {
+        println!("error: {e}");
+        return ExitCode::from(2);
+    }
+    // Any gap between two placements of a vertex is let through: this only looks at geometry.
+    let folded = match foldcam::check::layers::folded::fold_faces(&cp, f64::MAX) {
+        Ok(f) => f,
+        Err(e) => {
+            println!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let shortest = cp
+        .edges
+        .iter()
+        .zip(&folded.edge_faces)
+        .filter_map(|(e, sides)| {
+            let f = *sides.iter().flatten().next()?;
+            let [a, b] = e.vertices.map(|v| folded.point(&cp, f, v));
+            Some(a.distance(b))
+        })
+        .fold(f64::MAX, f64::min);
+    let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
+    let floor = (diag * foldcam::check::layers::RELATIVE_TOLERANCE).max(1e-12);
+    let (arr, tol) = foldcam::check::layers::cells::arrange(&cp, &folded, floor);
+    println!(
+        "chosen tol {tol:.3e} (shortest / {:.0}): {} cells, {} segments",
+        shortest / tol,
+        arr.cell_faces.len(),
+        arr.segment_cells.len()
+    );
+    one(path)
 }

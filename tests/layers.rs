@@ -423,33 +423,52 @@ fn file_numbered(dir: &Path, number: &str) -> Option<PathBuf> {
         })
 }
 
-/// Patterns with few faces and a small Flat-Folder time: the subset that stays well under two
-/// minutes in a debug build (the whole set runs in `examples/flat_folder_set.rs`).
+/// Designs whose counts differ from Flat-Folder's for a known reason, left out of the
+/// comparison: 041 (Lang's 5-fold 2-layer weave) is refused because two routes around the
+/// pattern place one vertex 2.2e-5 apart, more than an eighth of its shortest edge (1.4e-4):
+/// its coordinates are too coarse for that edge length.
+const KNOWN_DIFFERENCES: [&str; 1] = ["041_lang_5-Fold_2-Layer_Weave.fold"];
+
+/// Every pattern with `no limit`, at most 400 faces and at most 1.5 s of Flat-Folder's own time
+/// gives exactly Flat-Folder's count (patterns the local checks refuse, Kawasaki beyond
+/// foldcam's 0.01°, are counted and left out). This subset stays under two minutes in a debug
+/// build; the whole set runs in `examples/flat_folder_set.rs`.
 #[test]
 #[ignore = "needs ../shared"]
 fn flat_folder_counts_match_on_small_patterns() {
     let Some(dir) = shared() else {
         panic!("../shared/testdata/flat-folder is absent");
     };
-    let mut compared = 0;
-    for (csv, sub, max_faces) in [
-        ("grids_data.csv", "grids", 120),
-        ("instagram_data.csv", "instagram", 90),
+    let (mut compared, mut refused_locally) = (0, Vec::new());
+    for (csv, sub) in [
+        ("grids_data.csv", "grids"),
+        ("instagram_data.csv", "instagram"),
     ] {
         for (number, faces, exact, expected, seconds) in rows(&dir, csv) {
-            if !exact || faces > max_faces || seconds > 0.05 || expected.len() > 5 {
+            if !exact || faces > 400 || seconds > 1.5 {
                 continue;
             }
             let Some(path) = file_numbered(&dir.join(sub), &number) else {
                 continue;
             };
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+            if name.is_some_and(|n| KNOWN_DIFFERENCES.contains(&n.as_str())) {
+                continue;
+            }
             let cp = load(&path);
-            assert!(locally_flat(&cp), "{}", path.display());
+            if !locally_flat(&cp) {
+                refused_locally.push(path.display().to_string());
+                continue;
+            }
             assert_eq!(states(&cp), expected, "{}", path.display());
             compared += 1;
         }
     }
-    assert!(compared >= 100, "only {compared} patterns compared");
+    assert!(
+        refused_locally.len() <= 1,
+        "refused by the local checks: {refused_locally:?}"
+    );
+    assert!(compared >= 500, "only {compared} patterns compared");
 }
 
 #[test]

@@ -83,6 +83,18 @@ impl BoxGrid {
         )
     }
 
+    /// Calls `visit` with every id whose box may meet the box `lo`..`hi` (an id may come
+    /// more than once).
+    fn near(&self, lo: DVec2, hi: DVec2, mut visit: impl FnMut(u32)) {
+        let (x0, y0) = self.bin(lo);
+        let (x1, y1) = self.bin(hi);
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                self.bins[y * self.nx + x].iter().for_each(|&i| visit(i));
+            }
+        }
+    }
+
     /// Ids whose box may hold `p`.
     pub(crate) fn at(&self, p: DVec2) -> &[u32] {
         let (x, y) = self.bin(p);
@@ -90,60 +102,171 @@ impl BoxGrid {
     }
 }
 
-/// Halvings of the merge distance tried, from 1/8 of the shortest edge down.
-const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=50;
+/// Halvings of the merge distance tried, from 1/8 of the shortest edge down to 1/2^27 of it
+/// (Flat-Folder's 25 steps; each is a planarisation of every folded edge).
+const TOLERANCE_STEPS: std::ops::RangeInclusive<i32> = 3..=27;
 
 /// How many successive halvings must give the same numbers of points and segments.
 const STABLE_REPEATS: usize = 3;
+
+/// Folded segments that lie along one line to within `tol` (each end of either within `tol`
+/// of the other's line, overlapping by more than `tol` along it), moved onto one line: the line of the
+/// longest segment of each such group, each end projected onto it when it lies within twice
+/// `tol` of it. Creases of different faces that fold onto one line differ by the rounding of
+/// the file's coordinates (often single precision); left apart they cross at a very small
+/// angle at places that move with every merge distance, and the arrangement never settles.
+fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
+    let n = segments.len();
+    let boxes: Vec<(DVec2, DVec2)> = segments
+        .iter()
+        .map(|[a, b]| (a.min(*b) - tol, a.max(*b) + tol))
+        .collect();
+    let grid = BoxGrid::new(&boxes);
+    let line_distance = |[a, b]: [DVec2; 2], p: DVec2| {
+        let d = b - a;
+        let len = d.length();
+        if len == 0.0 {
+            a.distance(p)
+        } else {
+            d.perp_dot(p - a).abs() / len
+        }
+    };
+    // Both ends of each within `tol` of the other's line, and overlapping by more than `tol`
+    // along it: segments that only meet end to end at a small angle are a real bend.
+    let along = |s: [DVec2; 2], t: [DVec2; 2]| {
+        let u = (s[1] - s[0]).normalize_or_zero();
+        let (t0, t1) = ((t[0] - s[0]).dot(u), (t[1] - s[0]).dot(u));
+        let overlap = t0.max(t1).min(s[0].distance(s[1])) - t0.min(t1).max(0.0);
+        overlap > 0.0
+            && t.iter().all(|&p| line_distance(s, p) <= tol)
+            && s.iter().all(|&p| line_distance(t, p) <= tol)
+    };
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn root(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            parent[x as usize] = parent[parent[x as usize] as usize];
+            x = parent[x as usize];
+        }
+        x
+    }
+    for i in 0..n {
+        let (lo, hi) = boxes[i];
+        let mut close = Vec::new();
+        grid.near(lo, hi, |j| {
+            if (j as usize) > i {
+                close.push(j);
+            }
+        });
+        close.sort_unstable();
+        close.dedup();
+        for j in close {
+            let (jlo, jhi) = boxes[j as usize];
+            if jlo.cmple(hi).all()
+                && lo.cmple(jhi).all()
+                && along(segments[i], segments[j as usize])
+            {
+                let (a, b) = (root(&mut parent, i as u32), root(&mut parent, j));
+                if a != b {
+                    parent[a.max(b) as usize] = a.min(b);
+                }
+            }
+        }
+    }
+    // The longest segment of each group gives its line.
+    let mut longest: Vec<Option<u32>> = vec![None; n];
+    let length = |i: u32| segments[i as usize][0].distance(segments[i as usize][1]);
+    let mut grouped = vec![false; n];
+    for i in 0..n as u32 {
+        let r = root(&mut parent, i) as usize;
+        if r != i as usize {
+            grouped[r] = true;
+            grouped[i as usize] = true;
+        }
+        if longest[r].is_none_or(|k| length(k) < length(i)) {
+            longest[r] = Some(i);
+        }
+    }
+    (0..n as u32)
+        .map(|i| {
+            let s = segments[i as usize];
+            if !grouped[i as usize] {
+                return s;
+            }
+            let r = root(&mut parent, i) as usize;
+            let Some(k) = longest[r] else {
+                return s;
+            };
+            let [a, b] = segments[k as usize];
+            let u = (b - a).normalize_or_zero();
+            s.map(|p| {
+                let q = a + u * (p - a).dot(u);
+                if q.distance(p) <= 2.0 * tol { q } else { p }
+            })
+        })
+        .collect()
+}
 
 /// The folded edges cut into a planar graph, and the merge distance chosen for it.
 ///
 /// Like Flat-Folder, the distance is the shortest folded edge divided by 2^i for i = 3, 4, …,
 /// halved until the numbers of points and segments stay the same [`STABLE_REPEATS`] times;
-/// the largest distance of that stable run is used. Coordinates written to single precision
+/// the largest distance of that stable run is used (when no run gets that long before
+/// `floor`, the largest distance of the first longest run). Coordinates written to single precision
 /// by other tools then still meet where they should, and fine details are not merged away.
 /// `floor` is the smallest distance tried.
 fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePattern, f64)> {
-    let mut raw = CreasePattern::new();
-    for s in segments.iter().flatten() {
-        raw.add_segment(s[0], s[1], Assignment::Boundary);
-    }
+    let segments: Vec<[DVec2; 2]> = segments.iter().flatten().copied().collect();
+    let raw = |tol: f64| {
+        let mut raw = CreasePattern::new();
+        for s in snap_to_common_lines(&segments, tol) {
+            raw.add_segment(s[0], s[1], Assignment::Boundary);
+        }
+        raw
+    };
     let shortest = segments
         .iter()
-        .flatten()
         .map(|[a, b]| a.distance(*b))
         .filter(|&d| d > 0.0)
         .fold(f64::MAX, f64::min);
     if shortest == f64::MAX {
         return None;
     }
-    let mut run: Vec<(CreasePattern, f64)> = Vec::new();
+    // The current run of equal counts (its coarsest sheet, counts, length) and the longest
+    // run met so far (the first of that length).
+    let mut run: Option<(CreasePattern, f64)> = None;
     let mut last = (usize::MAX, usize::MAX);
+    let mut length = 0;
+    let mut best: Option<(CreasePattern, f64)> = None;
+    let mut best_length = 0;
     for i in TOLERANCE_STEPS {
         let tol = shortest / 2f64.powi(i);
         if tol < floor {
             break;
         }
-        let mut sheet = raw.clone();
+        let mut sheet = raw(tol);
         let options = PlanarizeOptions {
             tolerance: Some(tol),
             faces: false,
         };
         if planarize(&mut sheet, &options).is_err() {
+            (run, last, length) = (None, (usize::MAX, usize::MAX), 0);
             continue;
         }
         let counts = (sheet.vertices.len(), sheet.edges.len());
-        if counts != last {
-            run.clear();
-            last = counts;
+        if counts == last {
+            length += 1;
+        } else {
+            (run, last, length) = (Some((sheet, tol)), counts, 1);
         }
-        run.push((sheet, tol));
-        if run.len() >= STABLE_REPEATS {
-            break;
+        if length > best_length {
+            best_length = length;
+            best.clone_from(&run);
+            if best_length >= STABLE_REPEATS {
+                break;
+            }
         }
     }
-    // Stable for STABLE_REPEATS steps, or else the last counts reached: their coarsest sheet.
-    run.into_iter().next()
+    best
 }
 
 /// Builds the arrangement of `folded` (the folded form of `cp`); `floor` is the smallest merge
@@ -157,24 +280,13 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrange
         return (Arrangement::default(), tol);
     }
     let traced = find_faces(&sheet);
-    let face_boxes: Vec<(DVec2, DVec2)> = folded.faces.iter().map(|f| f.bounds).collect();
-    let face_grid = BoxGrid::new(&face_boxes);
     let mut arr = Arrangement::default();
     for cell in &traced.faces {
         let rings: Vec<Vec<DVec2>> = std::iter::once(&cell.outer)
             .chain(&cell.holes)
             .map(|r| r.iter().map(|&v| sheet.position(v)).collect())
             .collect();
-        let p = interior_point(&rings);
-        let mut covering: Vec<u32> = face_grid
-            .at(p)
-            .iter()
-            .copied()
-            .filter(|&f| folded.faces[f as usize].contains(p))
-            .collect();
-        covering.sort_unstable();
-        arr.cell_faces.push(covering);
-        arr.cell_points.push(p);
+        arr.cell_points.push(interior_point(&rings));
         arr.cell_rings.push(rings);
     }
     let mut side_of = std::collections::HashMap::new();
@@ -215,18 +327,163 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrange
         arr.segment_ends.push(ends);
         arr.segment_edges.push(along);
     }
+    arr.cell_faces = coverage(cp, folded, &arr, tol);
     (arr, tol)
 }
 
-/// The folded segment of every edge that borders a face (`None` for edges on no face).
+/// Largest difference between a face's area and the area of the cells its flood fill
+/// reached, relative to the face's area, before the fill is distrusted (on top of what
+/// merging points within the arrangement's distance can move: that distance times the
+/// face's perimeter, twice).
+const FILL_AREA_AGREEMENT: f64 = 1e-6;
+
+/// The pattern faces covering each cell, sorted.
+///
+/// Each face is flood-filled through the arrangement from the cell beside one of its edges,
+/// never crossing a segment that carries one of its own edges: the cells reached are the
+/// face's, decided by the arrangement's topology rather than by testing points against the
+/// face's outline (a point of a thin cell can fall on the wrong side of an outline that the
+/// arrangement merged with a neighbouring line). A fill that leaks out of the paper or whose
+/// cells' area differs from the face's (an edge of the face not found along its segments)
+/// falls back to testing each cell's interior point.
+fn coverage(
+    cp: &CreasePattern,
+    folded: &FoldedFaces,
+    arr: &Arrangement,
+    tol: f64,
+) -> Vec<Vec<u32>> {
+    let n_cells = arr.cell_rings.len();
+    let mut cell_segments: Vec<Vec<u32>> = vec![Vec::new(); n_cells];
+    let mut edge_segments: Vec<Vec<u32>> = vec![Vec::new(); cp.edges.len()];
+    for (s, sides) in arr.segment_cells.iter().enumerate() {
+        for c in sides.iter().flatten() {
+            cell_segments[*c as usize].push(s as u32);
+        }
+        for &e in &arr.segment_edges[s] {
+            edge_segments[e as usize].push(s as u32);
+        }
+    }
+    let cell_area: Vec<f64> = arr
+        .cell_rings
+        .iter()
+        .map(|rings| rings.iter().map(|r| signed_area(r)).sum::<f64>().abs())
+        .collect();
+    let mut face_edges: Vec<Vec<u32>> = vec![Vec::new(); folded.faces.len()];
+    for (e, sides) in folded.edge_faces.iter().enumerate() {
+        for f in sides.iter().flatten() {
+            face_edges[*f as usize].push(e as u32);
+        }
+    }
+    let mut out: Vec<Vec<u32>> = vec![Vec::new(); n_cells];
+    let mut mark = vec![u32::MAX; n_cells];
+    let mut fallback = Vec::new();
+    for (f, face) in folded.faces.iter().enumerate() {
+        let fid = f as u32;
+        let borders = |s: u32| {
+            arr.segment_edges[s as usize]
+                .iter()
+                .any(|&e| folded.edge_faces[e as usize].contains(&Some(fid)))
+        };
+        let seed = face_edges[f].iter().find_map(|&e| {
+            let e = e as usize;
+            let side = folded.edge_faces[e].iter().position(|&g| g == Some(fid))?;
+            let &s = edge_segments[e].first()?;
+            let [p, q] = arr.segment_ends[s as usize];
+            let [a, b] = cp.edges[e]
+                .vertices
+                .map(|v| face.transform.transform_point2(cp.position(v)));
+            // The face lies on the left of its edge (side 0) in the pattern; a reflection
+            // swaps left and right.
+            let left = (side == 0) != face.flipped;
+            let same = (q - p).dot(b - a) > 0.0;
+            arr.segment_cells[s as usize][usize::from(left != same)]
+        });
+        let area = signed_area(&face.outer).abs()
+            - face.holes.iter().map(|h| signed_area(h).abs()).sum::<f64>();
+        let mut reached = Vec::new();
+        let mut leaked = seed.is_none();
+        if let Some(seed) = seed {
+            mark[seed as usize] = fid;
+            reached.push(seed);
+            let mut k = 0;
+            while k < reached.len() && !leaked {
+                let c = reached[k];
+                k += 1;
+                for &s in &cell_segments[c as usize] {
+                    if borders(s) {
+                        continue;
+                    }
+                    let sides = arr.segment_cells[s as usize];
+                    let other = if sides[0] == Some(c) {
+                        sides[1]
+                    } else {
+                        sides[0]
+                    };
+                    match other {
+                        None => {
+                            leaked = true;
+                            break;
+                        }
+                        Some(o) if mark[o as usize] != fid => {
+                            mark[o as usize] = fid;
+                            reached.push(o);
+                        }
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+        let filled: f64 = reached.iter().map(|&c| cell_area[c as usize]).sum();
+        let perimeter: f64 = std::iter::once(&face.outer)
+            .chain(&face.holes)
+            .flat_map(|r| (0..r.len()).map(move |i| r[i].distance(r[(i + 1) % r.len()])))
+            .sum();
+        if leaked || (filled - area).abs() > FILL_AREA_AGREEMENT * area + 2.0 * tol * perimeter {
+            fallback.push(fid);
+            continue;
+        }
+        for c in reached {
+            out[c as usize].push(fid);
+        }
+    }
+    if !fallback.is_empty() {
+        let boxes: Vec<(DVec2, DVec2)> = fallback
+            .iter()
+            .map(|&f| folded.faces[f as usize].bounds)
+            .collect();
+        let grid = BoxGrid::new(&boxes);
+        for (c, &p) in arr.cell_points.iter().enumerate() {
+            for &i in grid.at(p) {
+                let f = fallback[i as usize];
+                if folded.faces[f as usize].contains(p) {
+                    out[c].push(f);
+                }
+            }
+        }
+    }
+    for faces in &mut out {
+        faces.sort_unstable();
+    }
+    out
+}
+
+/// Signed area of a closed ring (positive counter-clockwise).
+fn signed_area(ring: &[DVec2]) -> f64 {
+    (0..ring.len())
+        .map(|i| ring[i].perp_dot(ring[(i + 1) % ring.len()]))
+        .sum::<f64>()
+        * 0.5
+}
+
+/// The folded segment of every edge that borders a face (`None` for edges on no face), drawn
+/// through the vertices' shared folded places.
 fn folded_segments(cp: &CreasePattern, folded: &FoldedFaces) -> Vec<Option<[DVec2; 2]>> {
     cp.edges
         .iter()
         .zip(&folded.edge_faces)
         .map(|(e, sides)| {
-            let f = sides.iter().flatten().next()?;
-            let t = folded.faces[*f as usize].transform;
-            Some(e.vertices.map(|v| t.transform_point2(cp.position(v))))
+            let f = *sides.iter().flatten().next()?;
+            Some(e.vertices.map(|v| folded.point(cp, f, v)))
         })
         .collect()
 }

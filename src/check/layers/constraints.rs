@@ -40,8 +40,8 @@ pub enum Kind {
 /// Where a constraint comes from, in the arrangement.
 #[derive(Clone, Copy, Debug)]
 pub enum Place {
-    /// A cell (transitivity).
-    Cell(u32),
+    /// A cell that all the constraint's faces cover (transitivity; found when needed).
+    Common,
     /// A segment (the others).
     Segment(u32),
 }
@@ -125,12 +125,13 @@ pub fn build(
     folded: &FoldedFaces,
     arr: &Arrangement,
 ) -> Result<System, LayerError> {
+    let maximal = maximal_cells(arr);
     let mut sys = System {
-        pairs: pairs(arr),
+        pairs: pairs(arr, &maximal),
         ..Default::default()
     };
     edge_constraints(cp, folded, arr, &mut sys);
-    transitivity(arr, &mut sys)?;
+    transitivity(arr, &maximal, &mut sys)?;
     for (e, edge) in cp.edges.iter().enumerate() {
         let [Some(f), Some(g)] = folded.edge_faces[e] else {
             continue;
@@ -147,72 +148,151 @@ pub fn build(
     Ok(sys)
 }
 
-fn pairs(arr: &Arrangement) -> Vec<u64> {
-    let mut keys = Vec::new();
-    for faces in &arr.cell_faces {
-        for (i, &a) in faces.iter().enumerate() {
-            for &b in &faces[i + 1..] {
-                keys.push((u64::from(a) << 32) | u64::from(b));
+/// Cells whose faces are not a strict subset of a neighbouring cell's. Every pair or triple of
+/// faces of a cell is one of a maximal cell's: along a chain of strict supersets the sizes
+/// grow, so it ends at a maximal cell.
+fn maximal_cells(arr: &Arrangement) -> Vec<bool> {
+    let mut maximal = vec![true; arr.cell_faces.len()];
+    for &[l, r] in &arr.segment_cells {
+        if let (Some(l), Some(r)) = (l, r) {
+            let (a, b) = (&arr.cell_faces[l as usize], &arr.cell_faces[r as usize]);
+            if a.len() < b.len() && is_subset(a, b) {
+                maximal[l as usize] = false;
+            } else if b.len() < a.len() && is_subset(b, a) {
+                maximal[r as usize] = false;
             }
         }
-        if keys.len() > 4 * MAX_TRIPLES {
-            keys.sort_unstable();
-            keys.dedup();
-        }
     }
-    keys.sort_unstable();
-    keys.dedup();
-    keys
+    maximal
 }
 
-fn transitivity(arr: &Arrangement, sys: &mut System) -> Result<(), LayerError> {
+/// Every pair of faces that cover a common cell, packed as `lo << 32 | hi`, ascending: for each
+/// face, the higher faces of the maximal cells that hold it (marks, not a sort of every pair
+/// met).
+fn pairs(arr: &Arrangement, maximal: &[bool]) -> Vec<u64> {
     let mut seen: HashSet<&[u32]> = HashSet::new();
-    let mut triples: Vec<(u64, u32)> = Vec::new();
-    let mut dedup_at = 1 << 20;
-    for (c, faces) in arr.cell_faces.iter().enumerate() {
-        if faces.len() < 3 || !seen.insert(faces.as_slice()) {
-            continue;
-        }
-        for i in 0..faces.len() {
-            for j in i + 1..faces.len() {
-                for k in j + 1..faces.len() {
-                    let key = (u64::from(faces[i]) << 42)
-                        | (u64::from(faces[j]) << 21)
-                        | u64::from(faces[k]);
-                    triples.push((key, c as u32));
+    let cells: Vec<&[u32]> = arr
+        .cell_faces
+        .iter()
+        .enumerate()
+        .filter(|(c, faces)| faces.len() >= 2 && maximal[*c])
+        .map(|(_, faces)| faces.as_slice())
+        .filter(|faces| seen.insert(faces))
+        .collect();
+    let (face_cells, n_faces) = face_cells(&cells);
+    let mut mark = vec![u32::MAX; n_faces];
+    let mut keys = Vec::new();
+    let mut higher: Vec<u32> = Vec::new();
+    for (a, holding) in face_cells.iter().enumerate() {
+        higher.clear();
+        for &c in holding {
+            for &b in cells[c as usize] {
+                if b as usize > a && mark[b as usize] != a as u32 {
+                    mark[b as usize] = a as u32;
+                    higher.push(b);
                 }
             }
         }
-        if triples.len() > dedup_at {
-            triples.sort_unstable_by_key(|t| t.0);
-            triples.dedup_by_key(|t| t.0);
-            if triples.len() > MAX_TRIPLES {
-                return Err(LayerError::TooLarge {
-                    what: "transitivity constraints",
-                    count: triples.len(),
-                    limit: MAX_TRIPLES,
-                });
-            }
-            dedup_at = 2 * triples.len().max(1 << 20);
+        higher.sort_unstable();
+        keys.extend(higher.iter().map(|&b| ((a as u64) << 32) | u64::from(b)));
+    }
+    keys
+}
+
+/// For each face, the indices of the `cells` that hold it (ascending), and the number of
+/// faces (one more than the highest face met).
+fn face_cells(cells: &[&[u32]]) -> (Vec<Vec<u32>>, usize) {
+    let n_faces = cells
+        .iter()
+        .flat_map(|f| f.iter())
+        .map(|&f| f as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let mut face_cells: Vec<Vec<u32>> = vec![Vec::new(); n_faces];
+    for (c, faces) in cells.iter().enumerate() {
+        for &f in *faces {
+            face_cells[f as usize].push(c as u32);
         }
     }
-    triples.sort_unstable_by_key(|t| t.0);
-    triples.dedup_by_key(|t| t.0);
-    let mask = (1u64 << 21) - 1;
-    for (key, c) in triples {
-        let (a, b, d) = (
-            (key >> 42) as u32,
-            ((key >> 21) & mask) as u32,
-            (key & mask) as u32,
-        );
+    (face_cells, n_faces)
+}
+
+/// One transitivity constraint for every three faces that cover a common cell, found pair by
+/// pair: for each overlapping pair `a < b`, the faces `c > b` of the maximal cells that hold
+/// both (marks instead of a sort of every triple met, which repeats each triple once per cell
+/// that holds it). Listed in ascending order of `(a, b, c)`.
+fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result<(), LayerError> {
+    let mut seen: HashSet<&[u32]> = HashSet::new();
+    let cells: Vec<&[u32]> = arr
+        .cell_faces
+        .iter()
+        .enumerate()
+        .filter(|(c, faces)| faces.len() >= 3 && maximal[*c])
+        .map(|(_, faces)| faces.as_slice())
+        .filter(|faces| seen.insert(faces))
+        .collect();
+    let (face_cells, n_faces) = face_cells(&cells);
+    let mut mark = vec![u32::MAX; n_faces];
+    let mut thirds: Vec<u32> = Vec::new();
+    let mut triples: Vec<[u32; 3]> = Vec::new();
+    for (i, &key) in sys.pairs.iter().enumerate() {
+        let (a, b) = ((key >> 32) as usize, (key & 0xffff_ffff) as usize);
+        if b >= n_faces {
+            continue;
+        }
+        thirds.clear();
+        let (ca, cb) = (&face_cells[a], &face_cells[b]);
+        let (mut x, mut y) = (0, 0);
+        while x < ca.len() && y < cb.len() {
+            match ca[x].cmp(&cb[y]) {
+                std::cmp::Ordering::Less => x += 1,
+                std::cmp::Ordering::Greater => y += 1,
+                std::cmp::Ordering::Equal => {
+                    for &c in cells[ca[x] as usize] {
+                        if c as usize > b && mark[c as usize] != i as u32 {
+                            mark[c as usize] = i as u32;
+                            thirds.push(c);
+                        }
+                    }
+                    x += 1;
+                    y += 1;
+                }
+            }
+        }
+        thirds.sort_unstable();
+        triples.extend(thirds.iter().map(|&c| [a as u32, b as u32, c]));
+        if triples.len() > MAX_TRIPLES {
+            return Err(LayerError::TooLarge {
+                what: "transitivity constraints",
+                count: triples.len(),
+                limit: MAX_TRIPLES,
+            });
+        }
+    }
+    for [a, b, d] in triples {
         sys.push(
             Kind::Transitivity,
             &[a, b, d],
             &[(a, b), (a, d), (b, d)],
-            Place::Cell(c),
+            Place::Common,
         );
     }
     Ok(())
+}
+
+/// True when every element of sorted `a` is in sorted `b`.
+fn is_subset(a: &[u32], b: &[u32]) -> bool {
+    let mut j = 0;
+    for &x in a {
+        while j < b.len() && b[j] < x {
+            j += 1;
+        }
+        if j == b.len() || b[j] != x {
+            return false;
+        }
+        j += 1;
+    }
+    true
 }
 
 /// Which side of segment `s` face `f` lies on (0 left, 1 right), if it borders it.

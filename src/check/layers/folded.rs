@@ -17,7 +17,8 @@ use super::LayerError;
 use crate::geom::polygon::contains_point;
 use crate::pattern::{Assignment, CreasePattern, FaceId, VertexId};
 
-/// A face placed in its folded position: polygons in folded coordinates.
+/// A face placed in its folded position: polygons in folded coordinates, drawn through the
+/// vertices' shared folded places (see [`FoldedFaces::point`]).
 #[derive(Clone, Debug)]
 pub struct FoldedFace {
     /// Maps crease-pattern coordinates to folded coordinates (an isometry).
@@ -54,6 +55,8 @@ pub struct FoldedFaces {
     /// Folded position of every vertex (from the first face that holds it; a vertex on no face
     /// keeps its pattern position).
     pub vertices: Vec<DVec2>,
+    /// Vertices on a cut (placed by each face on their own, see [`FoldedFaces::point`]).
+    pub on_cut: Vec<bool>,
 }
 
 /// The reflection of the plane across the line through `a` and `b`.
@@ -92,19 +95,15 @@ pub fn fold_faces(cp: &CreasePattern, tol: f64) -> Result<FoldedFaces, LayerErro
         }
     }
     let transforms = place(cp, faces, &edge_of, &edge_faces);
-    let mut vertices: Vec<Option<(DVec2, u32)>> = vec![None; cp.vertices.len()];
     let on_cut = cut_vertices(cp);
-    let mut out = Vec::with_capacity(faces.len());
-    for (f, (face, &(t, flipped))) in faces.iter().zip(&transforms).enumerate() {
-        let map = |ring: &Vec<VertexId>| -> Vec<DVec2> {
-            ring.iter()
-                .map(|&v| t.transform_point2(cp.position(v)))
-                .collect()
-        };
-        let outer = map(&face.outer);
-        for (&v, &p) in face.outer.iter().zip(&outer) {
-            match vertices[v.index()] {
-                None => vertices[v.index()] = Some((p, f as u32)),
+    // Each vertex's folded place: where the first face holding it puts it, checked against
+    // every other face holding it.
+    let mut placed: Vec<Option<(DVec2, u32)>> = vec![None; cp.vertices.len()];
+    for (f, (face, &(t, _))) in faces.iter().zip(&transforms).enumerate() {
+        for &v in &face.outer {
+            let p = t.transform_point2(cp.position(v));
+            match placed[v.index()] {
+                None => placed[v.index()] = Some((p, f as u32)),
                 Some((q, g)) if !on_cut[v.index()] && q.distance(p) > tol => {
                     return Err(LayerError::NotFlat {
                         faces: [FaceId(g), FaceId::new(f)],
@@ -116,6 +115,29 @@ pub fn fold_faces(cp: &CreasePattern, tol: f64) -> Result<FoldedFaces, LayerErro
                 _ => {}
             }
         }
+    }
+    let vertices: Vec<DVec2> = placed
+        .iter()
+        .zip(&cp.vertices)
+        .map(|(v, &p)| v.map_or(p, |(q, _)| q))
+        .collect();
+    let mut out = Vec::with_capacity(faces.len());
+    for (face, &(t, flipped)) in faces.iter().zip(&transforms) {
+        // Every face draws a shared vertex at the vertex's one folded place (as Flat-Folder
+        // does), so the folded edges meeting at a vertex meet exactly there and rounding in
+        // the reflections leaves no slivers; a vertex on a cut belongs to each side apart.
+        let map = |ring: &Vec<VertexId>| -> Vec<DVec2> {
+            ring.iter()
+                .map(|&v| {
+                    if on_cut[v.index()] {
+                        t.transform_point2(cp.position(v))
+                    } else {
+                        vertices[v.index()]
+                    }
+                })
+                .collect()
+        };
+        let outer = map(&face.outer);
         let holes: Vec<Vec<DVec2>> = face.holes.iter().map(map).collect();
         let bounds = outer.iter().fold(
             (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN)),
@@ -129,16 +151,26 @@ pub fn fold_faces(cp: &CreasePattern, tol: f64) -> Result<FoldedFaces, LayerErro
             bounds,
         });
     }
-    let vertices = vertices
-        .iter()
-        .zip(&cp.vertices)
-        .map(|(v, &p)| v.map_or(p, |(q, _)| q))
-        .collect();
     Ok(FoldedFaces {
         faces: out,
         edge_faces,
         vertices,
+        on_cut,
     })
+}
+
+impl FoldedFaces {
+    /// The folded place of vertex `v` as face `f` draws it: the vertex's one folded place,
+    /// or for a vertex on a cut, where `f`'s own reflection puts it.
+    pub fn point(&self, cp: &CreasePattern, f: u32, v: VertexId) -> DVec2 {
+        if self.on_cut[v.index()] {
+            self.faces[f as usize]
+                .transform
+                .transform_point2(cp.position(v))
+        } else {
+            self.vertices[v.index()]
+        }
+    }
 }
 
 /// Breadth-first placement from the lowest face of each piece.

@@ -471,9 +471,14 @@ impl LayerSolver {
             .collect()
     }
 
-    fn place_point(&self, place: Place) -> DVec2 {
-        match place {
-            Place::Cell(c) => self.arr.cell_points[c as usize],
+    fn place_point(&self, con: &constraints::Constraint) -> DVec2 {
+        match con.place {
+            Place::Common => self
+                .arr
+                .cell_faces
+                .iter()
+                .position(|faces| con.faces.iter().all(|f| faces.binary_search(f).is_ok()))
+                .map_or(DVec2::ZERO, |c| self.arr.cell_points[c]),
             Place::Segment(s) => {
                 let [a, b] = self.arr.segment_ends[s as usize];
                 (a + b) * 0.5
@@ -554,6 +559,6 @@ impl LayerSolver {
                 "three faces would have to be stacked in a cycle",
             ),
         };
-        self.contradiction(kind, faces, self.place_point(con.place), why)
+        self.contradiction(kind, faces, self.place_point(con), why)
     }
 }
