@@ -151,6 +151,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             truncation: args.truncation,
             twist: args.twist.to_radians(),
         },
+        max_star_points: None,
     };
     opts.solve.max_iterations = args.max_iterations;
     opts.ground = args.ground;
@@ -217,6 +218,16 @@ pub fn run(args: Args) -> Result<Outcome> {
         t.mesh.interior_count()
     );
     println!("{}", t.summary());
+    for v in &t.infeasible {
+        println!("  cannot meet the limits: {}", v.describe());
+    }
+    const SHOWN: usize = 12;
+    for v in t.unmet.iter().take(SHOWN) {
+        println!("  unmet: {}", v.describe());
+    }
+    if t.unmet.len() > SHOWN {
+        println!("  ... and {} more", t.unmet.len() - SHOWN);
+    }
     if let Some(fit) = &t.fit {
         println!(
             "surface fit: distance {:.4e} -> {:.4e} in {} rounds",
