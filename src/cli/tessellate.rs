@@ -73,8 +73,8 @@ pub struct Args {
     /// Gap layout of the star tucks.
     #[arg(long, value_enum, default_value = "auto")]
     pub layout: Layout,
-    /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6 and
-    /// 0.5 are tried in turn until the result converges without face collisions.
+    /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6, 0.5,
+    /// 0.45 and 0.4 are tried in turn until the result converges without face collisions.
     #[arg(long)]
     pub shrink: Option<f64>,
     /// Truncated star and twist fold: initial size of the flat n-gon, the fraction in (0, 1)
@@ -221,12 +221,15 @@ pub fn run(args: Args) -> Result<Outcome> {
     for v in &t.infeasible {
         println!("  cannot meet the limits: {}", v.describe());
     }
-    const SHOWN: usize = 12;
-    for v in t.unmet.iter().take(SHOWN) {
-        println!("  unmet: {}", v.describe());
-    }
-    if t.unmet.len() > SHOWN {
-        println!("  ... and {} more", t.unmet.len() - SHOWN);
+    // The worst few places of each unmet condition (the list is sorted by condition).
+    const SHOWN: usize = 4;
+    for group in t.unmet.chunk_by(|a, b| a.condition == b.condition) {
+        for v in group.iter().take(SHOWN) {
+            println!("  unmet: {}", v.describe());
+        }
+        if group.len() > SHOWN {
+            println!("  ... and {} more input vertices", group.len() - SHOWN);
+        }
     }
     if let Some(fit) = &t.fit {
         println!(

@@ -161,7 +161,13 @@ pub fn after_solving(
     };
     for (v, d) in angle_defects(mesh, x).iter().enumerate() {
         if d.abs() > tolerance {
-            record(v as u32, Condition::Developability, d.abs(), tolerance, true);
+            record(
+                v as u32,
+                Condition::Developability,
+                d.abs(),
+                tolerance,
+                true,
+            );
         }
     }
     for e in mesh.edges.iter().filter(|e| e.interior) {
@@ -173,7 +179,13 @@ pub fn after_solving(
             _ => continue,
         };
         if rho.abs() > limits.max_fold {
-            record(e.vertices[0], Condition::FoldAngle, rho.abs(), limits.max_fold, true);
+            record(
+                e.vertices[0],
+                Condition::FoldAngle,
+                rho.abs(),
+                limits.max_fold,
+                true,
+            );
         }
         if sigma * rho < 0.0 {
             record(e.vertices[0], Condition::FoldSign, rho.abs(), 0.0, true);

@@ -116,7 +116,7 @@ impl Tessellation {
 }
 
 /// The face shrinks [`tessellate_shrinking`] tries by default, largest first.
-pub const SHRINK_LADDER: [f64; 4] = [0.8, 0.7, 0.6, 0.5];
+pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 
 /// [`tessellate`] with each face shrink of `shrinks` in turn (overriding `opts.star.shrink`)
 /// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one

@@ -150,7 +150,10 @@ mod tests {
                 let c = he.face_centroid(f);
                 let [a, b, d] = [0, 1, 2].map(|k| mesh.positions()[mesh.faces()[f][k] as usize]);
                 let normal = (b - a).cross(d - a);
-                assert!(normal.dot(c - DVec3::new(0.0, 0.0, -100.0)) > 0.0, "face {f}");
+                assert!(
+                    normal.dot(c - DVec3::new(0.0, 0.0, -100.0)) > 0.0,
+                    "face {f}"
+                );
             }
         }
     }
