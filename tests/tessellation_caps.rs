@@ -4,6 +4,7 @@
 //! re-measurement, the unfolded pattern and the cut on the fiber laser.
 
 #[path = "tessellation/checks.rs"]
+#[allow(dead_code)]
 mod checks;
 #[path = "common/cuts_clean.rs"]
 mod cuts_clean;
