@@ -62,7 +62,7 @@ impl Violation {
             Condition::TooManySectors => format!(
                 "{at}: {} creases meet at one point, so some angle between them is at most \
                  {:.1} deg < {:.1} deg; a truncated star or twist fold there (Tachi 2014), or \
-                 a mesh without this high-valence vertex (--remesh), fixes it",
+                 a mesh without this high-valence vertex (valence near 6) fixes it",
                 self.value,
                 360.0 / self.value,
                 deg(self.bound)
