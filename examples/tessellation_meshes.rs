@@ -2,16 +2,24 @@
 //! hexagonal patch of 54 equilateral triangles (edge 20 mm, interior valence 6) lifted onto
 //! the surface (`foldcam::design::tessellation::sample_surface`).
 //!
+//! It also writes `cap.obj`, a 60° spherical cap of radius 100 mm as modelling programs
+//! export one: a 12-valent pole and rings of 12, 24, …, 72 vertices (432 faces,
+//! `foldcam::design::tessellation::spherical_cap`).
+//!
 //! Run with `cargo run --example tessellation_meshes`; `-- RINGS DIR` writes patches of
-//! `6·RINGS²` faces into DIR instead (larger meshes for timing).
+//! `6·RINGS²` faces into DIR instead (larger meshes for timing);
+//! `-- cap N RINGS DEGREES RADIUS DIR` writes one cap of `N·RINGS²` faces into DIR.
 
 use std::path::Path;
 
-use foldcam::design::tessellation::{SampleSurface, sample_surface};
+use foldcam::design::tessellation::{SampleSurface, sample_surface, spherical_cap};
 use foldcam::formats::write_atomic;
 
 fn main() -> std::io::Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("cap") {
+        return cap(&args[1..]);
+    }
     let rings: usize = match args.first() {
         Some(r) => r
             .parse()
@@ -37,5 +45,31 @@ fn main() -> std::io::Result<()> {
         write_atomic(&path, mesh.to_obj().as_bytes())?;
         println!("wrote {} ({} faces)", path.display(), mesh.faces().len());
     }
+    if rings == 3 {
+        let mesh = spherical_cap(12, 6, 60.0, 100.0);
+        let path = dir.join("cap.obj");
+        write_atomic(&path, mesh.to_obj().as_bytes())?;
+        println!("wrote {} ({} faces)", path.display(), mesh.faces().len());
+    }
+    Ok(())
+}
+
+/// `cap N RINGS DEGREES RADIUS DIR`: one spherical cap, `DIR/cap-N-RINGS-DEGREES.obj`.
+fn cap(args: &[String]) -> std::io::Result<()> {
+    let [n, rings, degrees, radius, dir] = args else {
+        return Err(std::io::Error::other(
+            "usage: cap N RINGS DEGREES RADIUS DIR (e.g. cap 12 6 60 100 /tmp)",
+        ));
+    };
+    let number = |s: &String| -> std::io::Result<f64> {
+        s.parse()
+            .map_err(|_| std::io::Error::other(format!("{s:?} is not a number")))
+    };
+    let (n, rings) = (number(n)? as usize, number(rings)? as usize);
+    let mesh = spherical_cap(n, rings, number(degrees)?, number(radius)?);
+    std::fs::create_dir_all(dir)?;
+    let path = Path::new(dir).join(format!("cap-{n}-{rings}-{degrees}.obj"));
+    write_atomic(&path, mesh.to_obj().as_bytes())?;
+    println!("wrote {} ({} faces)", path.display(), mesh.faces().len());
     Ok(())
 }

@@ -72,8 +72,8 @@ pub struct Args {
     /// Gap layout of the star tucks.
     #[arg(long, value_enum, default_value = "auto")]
     pub layout: Layout,
-    /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6 and
-    /// 0.5 are tried in turn until the result converges without face collisions.
+    /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6, 0.5,
+    /// 0.45 and 0.4 are tried in turn until the result converges without face collisions.
     #[arg(long)]
     pub shrink: Option<f64>,
     /// Truncated star and twist fold: initial size of the flat n-gon, the fraction in (0, 1)
@@ -147,6 +147,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             truncation: args.truncation,
             twist: args.twist.to_radians(),
         },
+        max_star_points: None,
     };
     opts.solve.max_iterations = args.max_iterations;
     opts.ground = args.ground;
@@ -213,6 +214,19 @@ pub fn run(args: Args) -> Result<Outcome> {
         t.mesh.interior_count()
     );
     println!("{}", t.summary());
+    for v in &t.infeasible {
+        println!("  cannot meet the limits: {}", v.describe());
+    }
+    // The worst few places of each unmet condition (the list is sorted by condition).
+    const SHOWN: usize = 4;
+    for group in t.unmet.chunk_by(|a, b| a.condition == b.condition) {
+        for v in group.iter().take(SHOWN) {
+            println!("  unmet: {}", v.describe());
+        }
+        if group.len() > SHOWN {
+            println!("  ... and {} more input vertices", group.len() - SHOWN);
+        }
+    }
     if let Some(fit) = &t.fit {
         println!(
             "surface fit: distance {:.4e} -> {:.4e} in {} rounds",

@@ -24,6 +24,7 @@
 
 pub mod boundary;
 pub mod constraints;
+pub mod diagnose;
 pub mod estimate;
 pub mod fit;
 pub mod geometry;
@@ -43,15 +44,16 @@ pub mod vertex_penalty;
 use thiserror::Error;
 
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use diagnose::{Condition, Violation};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
     SHRINK_LADDER, TessellateOptions, Tessellation, disk, tessellate, tessellate_shrinking,
 };
-pub use samples::{SampleSurface, sample_surface};
+pub use samples::{SampleSurface, sample_surface, spherical_cap};
 pub use solver::{Iteration, SolveOptions, SolveReport, solve};
-pub use star::{InitialPattern, StarOptions, TuckLayout, star_tucks};
+pub use star::{InitialPattern, StarOptions, TuckLayout, max_star_points, star_tucks};
 pub use tuck::{TuckKind, TuckShape};
 pub use unfold::{Unfolded, unfold};
 

@@ -1,10 +1,11 @@
 //! The whole design in one call: mesh → star tucks → solve → unfold → face-intersection check.
 
 use super::constraints::{Limits, assign_folds};
+use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
-use super::star::{InitialPattern, StarOptions, star_tucks};
+use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks};
 use super::unfold::{Unfolded, unfold};
 use super::{TessError, TessMesh};
 use crate::mesh::{HalfEdgeMesh, PolyMesh};
@@ -64,6 +65,12 @@ pub struct Tessellation {
     pub intersections: Vec<(usize, usize)>,
     /// The tolerance they were found with, mm.
     pub intersection_tolerance: f64,
+    /// Limits the initial pattern cannot meet whatever the solve does (then the solve is
+    /// skipped), see [`diagnose::before_solving`].
+    pub infeasible: Vec<Violation>,
+    /// The conditions left unmet by a solve that did not converge, per input vertex, see
+    /// [`diagnose::after_solving`].
+    pub unmet: Vec<Violation>,
 }
 
 impl Tessellation {
@@ -88,6 +95,13 @@ impl Tessellation {
     /// Why the result cannot be used (not converged, a self-intersecting folded form, an
     /// overlapping pattern), or `None` when it can.
     pub fn problem(&self) -> Option<String> {
+        if let Some(v) = self.infeasible.first() {
+            return Some(format!(
+                "the limits cannot be met at {} input vertices, not solved (first: {})",
+                self.infeasible.len(),
+                v.describe()
+            ));
+        }
         if !self.report.converged {
             return Some("the solver did not reach every condition".into());
         }
@@ -102,7 +116,7 @@ impl Tessellation {
 }
 
 /// The face shrinks [`tessellate_shrinking`] tries by default, largest first.
-pub const SHRINK_LADDER: [f64; 4] = [0.8, 0.7, 0.6, 0.5];
+pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 
 /// [`tessellate`] with each face shrink of `shrinks` in turn (overriding `opts.star.shrink`)
 /// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one
@@ -181,7 +195,12 @@ pub fn tessellate(
     progress: impl FnMut(&Iteration),
 ) -> Result<Tessellation, TessError> {
     let he = disk(mesh)?;
-    let mut initial = star_tucks(&he, &opts.star)?;
+    let mut star = opts.star;
+    let l = opts.solve.limits;
+    star.max_star_points = star
+        .max_star_points
+        .or(Some(max_star_points(l.min_vertex_angle + l.margin)));
+    let mut initial = star_tucks(&he, &star)?;
     assign_folds(&mut initial.mesh);
     let mut solved = initial.mesh.clone();
     let mut solve_opts = opts.solve;
@@ -194,7 +213,26 @@ pub fn tessellate(
             .map(|(p, _)| p.z)
             .reduce(f64::min);
     }
+    let infeasible = diagnose::before_solving(
+        &initial.mesh,
+        mesh.positions(),
+        l.min_vertex_angle + l.margin,
+    );
+    if !infeasible.is_empty() {
+        solve_opts.max_iterations = 0;
+    }
     let report = solve(&mut solved, &solve_opts, progress)?;
+    let unmet = if report.converged {
+        Vec::new()
+    } else {
+        diagnose::after_solving(
+            &solved,
+            mesh.positions(),
+            &solved.positions,
+            &solve_opts.limits,
+            solve_opts.tolerance,
+        )
+    };
     let fit = match opts.fit {
         Some(fit) if report.converged => {
             let targets = corner_targets(&initial.mesh, &he);
@@ -216,6 +254,8 @@ pub fn tessellate(
         unfolded,
         intersections,
         intersection_tolerance: opts.intersection_tolerance,
+        infeasible,
+        unmet,
     })
 }
 

@@ -66,3 +66,95 @@ pub fn sample_surface(surface: SampleSurface, rings: usize, edge: f64) -> PolyMe
     }
     PolyMesh::new(positions, faces).expect("a sample patch is a valid mesh")
 }
+
+/// A spherical cap triangulated the way modelling programs export a geodesic/UV-style
+/// sphere: a pole vertex joined to a first ring of `n` vertices, ring `k` (1..=`rings`)
+/// with `n·k` vertices at polar angle `k·cap/rings`, so `n·rings²` triangles; every vertex
+/// but the pole has valence 6 (interior) and the pole has valence `n`. `radius` is the
+/// sphere radius (mesh units), `cap_deg` the polar angle of the rim in degrees (a 60° cap
+/// spans 120° of arc). The pole sits at the origin, the cap opens towards −z; faces are
+/// counter-clockwise seen from outside. Clamps: `n` to 3..=64, `rings` to 1..=128,
+/// `cap_deg` to (0, 180).
+pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyMesh {
+    let n = n.clamp(3, 64);
+    let rings = rings.clamp(1, 128);
+    let cap = cap_deg.clamp(1e-3, 179.0).to_radians();
+    let mut positions = vec![DVec3::ZERO];
+    // First index of ring k (ring 0 is the pole).
+    let mut start = vec![0usize];
+    for k in 1..=rings {
+        start.push(positions.len());
+        let phi = cap * k as f64 / rings as f64;
+        let count = n * k;
+        for i in 0..count {
+            let a = 2.0 * std::f64::consts::PI * i as f64 / count as f64;
+            positions.push(DVec3::new(
+                radius * phi.sin() * a.cos(),
+                radius * phi.sin() * a.sin(),
+                radius * (phi.cos() - 1.0),
+            ));
+        }
+    }
+    let at = |k: usize, i: usize| -> u32 {
+        if k == 0 {
+            0
+        } else {
+            (start[k] + i % (n * k)) as u32
+        }
+    };
+    let mut faces: Vec<Vec<u32>> = Vec::with_capacity(n * rings * rings);
+    for k in 1..=rings {
+        for j in 0..n {
+            // Sector j: ring k−1 from j(k−1) over k−1 segments, ring k from jk over k.
+            let (a0, b0) = (j * (k - 1), j * k);
+            for m in 0..k {
+                faces.push(vec![at(k, b0 + m), at(k, b0 + m + 1), at(k - 1, a0 + m)]);
+                if m + 1 < k {
+                    faces.push(vec![
+                        at(k - 1, a0 + m),
+                        at(k, b0 + m + 1),
+                        at(k - 1, a0 + m + 1),
+                    ]);
+                }
+            }
+        }
+    }
+    PolyMesh::new(positions, faces).expect("a spherical cap is a valid mesh")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::HalfEdgeMesh;
+
+    #[test]
+    fn spherical_cap_is_a_disk_with_the_published_counts() {
+        for (n, rings) in [(6, 3), (12, 6), (7, 4)] {
+            let mesh = spherical_cap(n, rings, 60.0, 100.0);
+            // Faces n·K², vertices 1 + n·K(K+1)/2, all on the sphere of radius 100 about
+            // (0, 0, −100).
+            assert_eq!(mesh.faces().len(), n * rings * rings);
+            assert_eq!(mesh.positions().len(), 1 + n * rings * (rings + 1) / 2);
+            for p in mesh.positions() {
+                assert!((p.distance(DVec3::new(0.0, 0.0, -100.0)) - 100.0).abs() < 1e-9);
+            }
+            let he = HalfEdgeMesh::new(&mesh, 1e-9).expect("manifold");
+            assert_eq!(he.fan(0).len(), n, "pole valence");
+            for v in 1..mesh.positions().len() {
+                if !he.is_boundary(v) {
+                    assert_eq!(he.fan(v).len(), 6, "vertex {v}");
+                }
+            }
+            // Outward normals: every face's normal points away from the sphere's centre.
+            for f in 0..mesh.faces().len() {
+                let c = he.face_centroid(f);
+                let [a, b, d] = [0, 1, 2].map(|k| mesh.positions()[mesh.faces()[f][k] as usize]);
+                let normal = (b - a).cross(d - a);
+                assert!(
+                    normal.dot(c - DVec3::new(0.0, 0.0, -100.0)) > 0.0,
+                    "face {f}"
+                );
+            }
+        }
+    }
+}

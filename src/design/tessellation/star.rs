@@ -37,7 +37,7 @@ use glam::DVec3;
 
 use super::TessError;
 use super::model::{EdgeRole, TessMesh};
-use super::tuck::{self, Arm, Builder, TuckShape};
+use super::tuck::{self, Arm, Builder, TuckKind, TuckShape};
 use crate::mesh::HalfEdgeMesh;
 
 /// How gaps are chosen (§2.1).
@@ -72,6 +72,24 @@ pub struct StarOptions {
     pub layout: TuckLayout,
     /// Tuck structure (§2.1 star or a §2.2 variation) and its parameters.
     pub tuck: TuckShape,
+    /// Interior tucks with more points than this get a flat n-gon instead of a key vertex
+    /// (a star becomes a truncated star, a twisted star a twist fold; Tachi 2014, §2.2),
+    /// whatever [`StarOptions::tuck`] asks for. `None`: [`star_tucks`] caps nothing and
+    /// [`tessellate`](super::tessellate) uses [`max_star_points`] of its vertex-angle limit;
+    /// `Some(usize::MAX)` turns the cap off there too.
+    pub max_star_points: Option<usize>,
+}
+
+/// The most points a star tuck (or twisted star) can have and still meet the vertex-angle
+/// limit `min_angle` (radians, margin included): its key vertex is an interior vertex with
+/// `2p` angles between neighbouring creases that sum to 360° once developable (Tachi 2014,
+/// eq. 1), so the smallest is at most `180°/p`, and `p ≤ 180°/min_angle` is necessary.
+/// A 12-valent pole in the checkerboard layout (a 6-pointed star) cannot keep 30°.
+pub fn max_star_points(min_angle: f64) -> usize {
+    if min_angle <= 0.0 {
+        return usize::MAX;
+    }
+    (PI / min_angle).floor() as usize
 }
 
 impl Default for StarOptions {
@@ -80,6 +98,7 @@ impl Default for StarOptions {
             shrink: 0.8,
             layout: TuckLayout::Auto,
             tuck: TuckShape::default(),
+            max_star_points: None,
         }
     }
 }
@@ -97,6 +116,9 @@ pub struct InitialPattern {
     pub points: Vec<usize>,
     /// The face shrink s used.
     pub shrink: f64,
+    /// Input vertices whose tuck was truncated because its star would have had more than
+    /// [`StarOptions::max_star_points`] points.
+    pub truncated: Vec<u32>,
 }
 
 /// Inserts star tucks into `mesh` (§2.1). Errors: `shrink` outside (0, 1], a checkerboard
@@ -183,6 +205,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
     let mut key_of_input = vec![None; nv];
     let mut depth = vec![None; nv];
     let mut points = vec![0; nv];
+    let mut truncated = Vec::new();
     for v in 0..nv {
         let arms: Vec<Arm> = mesh
             .fan(v)
@@ -212,7 +235,18 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         let d = l / (PI / n).tan();
         let normal = mesh.vertex_normal(v);
         let key = mesh.positions()[v] - d * normal;
-        key_of_input[v] = tuck::insert(&mut b, v as u32, key, normal, &arms, cyclic, &opts.tuck);
+        let mut shape = opts.tuck;
+        if cyclic && !shape.kind.truncated() && opts.max_star_points.is_some_and(|m| arms.len() > m)
+        {
+            shape.kind = if shape.kind.twisted() {
+                TuckKind::TwistFold
+            } else {
+                TuckKind::Truncated
+            };
+            shape.validate().map_err(TessError::BadParameter)?;
+            truncated.push(v as u32);
+        }
+        key_of_input[v] = tuck::insert(&mut b, v as u32, key, normal, &arms, cyclic, &shape);
         depth[v] = Some(d);
         points[v] = arms.len();
         if layout == TuckLayout::Digon {
@@ -235,6 +269,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         depth,
         points,
         shrink: opts.shrink,
+        truncated,
     })
 }
 
