@@ -10,11 +10,13 @@
 
 mod assignment;
 mod crease_pattern;
+pub mod edit;
 mod error;
 pub mod faces;
 mod folded;
 mod ids;
 pub mod planarize;
+pub mod snap;
 pub mod vertex_fan;
 
 pub use assignment::{Assignment, UnknownAssignment};

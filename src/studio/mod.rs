@@ -17,6 +17,8 @@
 pub mod api;
 pub mod assets;
 pub mod document;
+pub mod flat;
+pub mod settings;
 pub mod toolpath;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
