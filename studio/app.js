@@ -13,6 +13,7 @@ const patternView = new PatternView($('cp-svg'), $('hover-info'));
 const machineView = new MachineView($('view-machine'));
 const editor = new Editor(patternView, $('edit-tools'), (view) => guarded(() => edited(view)));
 const flatView = new FlatView($('view-flat'));
+machineView.onError = (promise) => guarded(() => promise);
 let edits = 0;
 
 function showError(e) {

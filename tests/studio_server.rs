@@ -569,3 +569,66 @@ fn the_flat_folded_view_keeps_the_paper_area_and_counts_as_fold_flat() {
     let cli = cli.lines().next().unwrap().strip_prefix("foldcam: ").unwrap();
     assert_eq!(format!("{}; nothing written", reply["error"].as_str().unwrap()), cli);
 }
+
+#[test]
+fn plan_options_and_uploaded_profiles_give_foldcam_cuts_file() {
+    let dir = tempfile::tempdir().unwrap();
+    generate_miura(dir.path());
+    let pattern = std::fs::read(dir.path().join("miura.fold")).unwrap();
+    // A machine profile of the user's: the shipped diode laser with a smaller bed and feed.
+    let text = std::fs::read_to_string(repo_file("machines/grbl-diode.toml"))
+        .unwrap()
+        .replace("acceleration_mm_s2 = 1000", "acceleration_mm_s2 = 800");
+    assert!(text.contains("= 800"));
+    std::fs::write(dir.path().join("my-diode.toml"), &text).unwrap();
+    let server = Server::start(&[], dir.path());
+    let (status, reply) = server.post_json("/api/profiles/machine?name=my-diode.toml", text.as_bytes());
+    assert_eq!(status, 200, "{reply}");
+    let key = reply["name"].as_str().unwrap().to_string();
+    let (_, opened) = server.post_json("/api/upload?name=miura.fold", &pattern);
+    let id = opened["id"].as_u64().unwrap();
+    let cli_args = [
+        "--mountain", "perforate", "--valley", "score", "--dash", "2", "--bridge", "0.8",
+        "--margin", "12", "--origin", "centre", "--two-sided",
+    ];
+    let query = "mountain=perforate&valley=score&dash=2&bridge=0.8&margin=12&origin=centre&two_sided=true";
+    let mut args = vec!["cut", "miura.fold", "-m", "my-diode.toml", "-x", "card-300gsm", "-o", "cli.gcode"];
+    args.extend(cli_args);
+    let out = foldcam(&args, dir.path());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for job in ["front", "back"] {
+        let cli = std::fs::read(dir.path().join(format!("cli.{job}.gcode"))).unwrap();
+        let (status, served) = server.get(&format!(
+            "/api/docs/{id}/cut?machine={}&material=card-300gsm&format=gcode&job={job}&{query}",
+            encode(&key)
+        ));
+        assert_eq!(status, 200, "{}", String::from_utf8_lossy(&served));
+        assert!(served == cli, "{job}: the served G-code differs from foldcam cut's");
+    }
+    // Without the options the file differs (so the options were used).
+    let (_, plain) = server.get(&format!(
+        "/api/docs/{id}/cut?machine={}&material=card-300gsm&format=gcode",
+        encode(&key)
+    ));
+    assert!(plain != std::fs::read(dir.path().join("cli.front.gcode")).unwrap());
+    // An option out of range names the option.
+    let (status, body) = server.get(&format!(
+        "/api/docs/{id}/plan?machine=grbl-diode&material=card-300gsm&dash=-1"
+    ));
+    assert_eq!(status, 422);
+    assert!(String::from_utf8_lossy(&body).contains("dash"), "{}", String::from_utf8_lossy(&body));
+    // A broken profile gets the command line's message; an oversized one is refused.
+    let bad = text.replace("max_feed_mm_min = 6000", "max_feed_mm_min = \"fast\"");
+    std::fs::write(dir.path().join("bad.toml"), &bad).unwrap();
+    let out = foldcam(&["plan", "miura.fold", "-m", "bad.toml", "-x", "card-300gsm"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (status, reply) = server.post_json("/api/profiles/machine?name=bad.toml", bad.as_bytes());
+    assert_eq!(status, 422);
+    let message = reply["error"].as_str().unwrap();
+    assert!(message.starts_with("bad.toml: max_feed_mm_min"), "{message}");
+    assert!(stderr.contains(message), "{stderr} vs {message}");
+    let huge = format!("{text}\n# {}\n", "x".repeat(70 * 1024));
+    let (status, reply) = server.post_json("/api/profiles/machine?name=huge.toml", huge.as_bytes());
+    assert_eq!(status, 413, "{reply}");
+}
