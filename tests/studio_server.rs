@@ -9,7 +9,7 @@ mod studio;
 
 use bin::{foldcam, repo_file};
 use serde_json::Value;
-use studio::{Server, encode};
+use studio::{Server, encode, flat_vertex_folded_flat};
 
 /// A text no reply may ever contain: it is only in a file the server was not given.
 const SECRET: &str = "studio-test-secret-0f3a9c";
@@ -321,7 +321,7 @@ fn findings(server: &Server, id: u64) -> Vec<Value> {
 fn moving_a_vertex_breaks_kawasaki_and_undo_restores_the_pattern() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    let bytes = std::fs::read(repo_file("examples/patterns/flat-vertex.fold")).unwrap();
+    let bytes = flat_vertex_folded_flat();
     let (status, opened) = server.post_json("/api/upload?name=flat-vertex.fold", &bytes);
     assert_eq!(status, 200, "{opened}");
     let id = opened["id"].as_u64().unwrap();

@@ -285,9 +285,20 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/profiles/{kind}", post(upload_profile))
         .route("/api/materials", get(materials))
         .route("/api/legend", get(legend))
+        .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))
         .with_state(state)
+}
+
+/// API replies describe the document as it is now (edits change it under the same URL):
+/// never cached.
+async fn no_store(mut response: Response) -> Response {
+    response.headers_mut().insert(
+        header::CACHE_CONTROL,
+        axum::http::HeaderValue::from_static("no-store"),
+    );
+    response
 }
 
 /// An embedded front-end file by exact name; anything else is 404.
