@@ -16,6 +16,7 @@ pub mod faces;
 mod folded;
 mod ids;
 pub mod planarize;
+mod scale;
 pub mod snap;
 pub mod vertex_fan;
 
@@ -27,3 +28,4 @@ pub use error::PatternError;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};
 pub use planarize::{PlanarizeError, PlanarizeOptions, PlanarizeReport, planarize};
+pub use scale::{Scale, ScaleError, Scaled};

@@ -4,7 +4,7 @@
 
 use serde::Deserialize;
 
-use crate::fab::{Operation, PlanOptions, Tabs};
+use crate::fab::{Operation, PlanOptions, PlanOverrides, Tabs};
 use crate::limits;
 use crate::machine::{
     MachineProfile, Material, load_machine, load_material, parse_machine, parse_material,
@@ -92,69 +92,57 @@ fn checked(option: &str, limit: &limits::Limit, value: Option<f64>) -> Result<Op
 }
 
 impl PlanSettings {
-    /// The plan options for `material` on `machine` with these overrides, resolved in the
-    /// order `foldcam cut` resolves its options.
+    /// The plan options for `material` on `machine` with these overrides, resolved as
+    /// `foldcam cut` resolves its options ([`PlanOptions::for_machine`]).
     ///
     /// # Errors
     /// The option and the range it must lie in, or the planner's cross-check message.
-    pub fn options(&self, machine: &MachineProfile, material: &Material) -> Result<PlanOptions, String> {
-        let mut o = PlanOptions::from_material(material);
-        let m = &mut o.mapping;
-        for (slot, option, value) in [
-            (&mut m.mountain, "mountain", &self.mountain),
-            (&mut m.valley, "valley", &self.valley),
-            (&mut m.unassigned, "unassigned", &self.unassigned),
-            (&mut m.flat, "flat", &self.flat),
-            (&mut m.boundary, "boundary", &self.boundary),
-        ] {
-            if let Some(name) = value {
-                *slot = operation(option, name)?;
-            }
-        }
-        o.adapt_to_machine(machine).map_err(|e| e.to_string())?;
+    pub fn options(
+        &self,
+        machine: &MachineProfile,
+        material: &Material,
+    ) -> Result<PlanOptions, String> {
+        let op = |option: &str, value: &Option<String>| {
+            value.as_deref().map(|name| operation(option, name)).transpose()
+        };
         if self.bridge.is_some() && self.duty.is_some() {
             return Err("bridge and duty: give one of them, not both".to_string());
         }
-        if let Some(duty) = self.duty
-            && !(duty > 0.0 && duty < 1.0)
-        {
-            return Err(format!(
-                "duty: {duty} must be between 0 and 1 (the cut share of each period)"
-            ));
-        }
-        let p = &mut o.perforation;
-        p.cut_mm = checked("dash", &limits::DASH, self.dash)?.unwrap_or(p.cut_mm);
-        p.bridge_mm = checked("bridge", &limits::BRIDGE, self.bridge)?.unwrap_or(p.bridge_mm);
-        if let Some(duty) = self.duty {
-            p.bridge_mm = p.cut_mm * (1.0 - duty) / duty;
-        }
-        p.min_dash_mm = checked("min_dash", &limits::MIN_DASH, self.min_dash)?.unwrap_or(p.min_dash_mm);
-        p.min_web_mm = checked("min_web", &limits::MIN_WEB, self.min_web)?.unwrap_or(p.min_web_mm);
-        p.vertex_clearance_mm =
-            checked("clearance", &limits::CLEARANCE, self.clearance)?.unwrap_or(p.vertex_clearance_mm);
-        o.kerf_mm = checked("kerf", &limits::KERF, self.kerf)?.unwrap_or(o.kerf_mm);
-        o.kerf_offset = !self.no_kerf_offset;
-        o.two_sided = self.two_sided;
         let spacing = checked("tab_spacing", &limits::TAB_SPACING, self.tab_spacing)?
             .unwrap_or(DEFAULT_TAB_SPACING_MM);
-        o.tabs = checked("tabs", &limits::TAB_WIDTH, self.tabs)?.map(|width_mm| Tabs {
-            width_mm,
-            spacing_mm: spacing,
-        });
-        o.lead_in_mm = checked("lead_in", &limits::LEAD_IN, self.lead_in)?;
-        o.margin_mm = checked("margin", &limits::MARGIN, self.margin)?.unwrap_or(DEFAULT_MARGIN_MM);
-        o.optimize = !self.no_optimize;
         let centre = match self.origin.as_deref() {
-            None | Some("corner") => false,
+            None | Some("" | "corner") => false,
             Some("centre" | "center") => true,
             Some(other) => return Err(format!("origin: {other:?} is not corner or centre")),
         };
-        o.placement = crate::fab::placement::Placement {
+        let overrides = PlanOverrides {
+            mountain: op("mountain", &self.mountain)?,
+            valley: op("valley", &self.valley)?,
+            unassigned: op("unassigned", &self.unassigned)?,
+            flat: op("flat", &self.flat)?,
+            boundary: op("boundary", &self.boundary)?,
+            dash_mm: checked("dash", &limits::DASH, self.dash)?,
+            bridge_mm: checked("bridge", &limits::BRIDGE, self.bridge)?,
+            duty: self.duty,
+            min_dash_mm: checked("min_dash", &limits::MIN_DASH, self.min_dash)?,
+            min_web_mm: checked("min_web", &limits::MIN_WEB, self.min_web)?,
+            vertex_clearance_mm: checked("clearance", &limits::CLEARANCE, self.clearance)?,
+            kerf_mm: checked("kerf", &limits::KERF, self.kerf)?,
+            kerf_offset: Some(!self.no_kerf_offset),
+            two_sided: self.two_sided,
+            tabs: checked("tabs", &limits::TAB_WIDTH, self.tabs)?.map(|width_mm| Tabs {
+                width_mm,
+                spacing_mm: spacing,
+            }),
+            lead_in_mm: checked("lead_in", &limits::LEAD_IN, self.lead_in)?,
+            margin_mm: Some(
+                checked("margin", &limits::MARGIN, self.margin)?.unwrap_or(DEFAULT_MARGIN_MM),
+            ),
+            optimize: Some(!self.no_optimize),
             centre,
-            offset_mm: glam::DVec2::ZERO,
+            offset_mm: None,
         };
-        o.validate().map_err(|e| e.to_string())?;
-        Ok(o)
+        PlanOptions::for_machine(machine, material, &overrides).map_err(|e| e.to_string())
     }
 }
 
