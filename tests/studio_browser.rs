@@ -458,7 +458,12 @@ async fn edits_done(c: &Client, n: usize) {
 }
 
 async fn click(c: &Client, css: &str) {
-    c.find(Locator::Css(css)).await.expect(css).click().await.unwrap();
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .click()
+        .await
+        .unwrap();
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -468,7 +473,12 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     let driver = start_driver();
     let c = browser(&driver).await;
     c.goto(&server.url()).await.unwrap();
-    wait_until(&c, "return document.body.dataset.ready === 'true'", "the page to start").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
     // A degree-4 vertex at (50, 50) that folds flat (the example's description: opposite
     // sectors sum to 180°, Kawasaki 1989), its creases folded all the way.
     let file = dir.path().join("flat-vertex.fold");
@@ -479,23 +489,42 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     // The hover label names an edge only while the pointer is on it.
     let hit = c.find(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
     let (x0, y0) = screen_of(&c, 5.0, 95.0).await; // empty paper near a corner
-    let hover = MouseActions::new("mouse".to_string())
-        .then(PointerAction::MoveToElement { element: hit, duration: None, x: 0.0, y: 0.0 });
+    let hover = MouseActions::new("mouse".to_string()).then(PointerAction::MoveToElement {
+        element: hit,
+        duration: None,
+        x: 0.0,
+        y: 0.0,
+    });
     c.perform_actions(hover).await.unwrap();
     assert!(text(&c, "#hover-info").await.starts_with("edge "));
-    let away = MouseActions::new("mouse".to_string())
-        .then(PointerAction::MoveTo { duration: None, x: x0, y: y0 });
+    let away = MouseActions::new("mouse".to_string()).then(PointerAction::MoveTo {
+        duration: None,
+        x: x0,
+        y: y0,
+    });
     c.perform_actions(away).await.unwrap();
-    assert_eq!(text(&c, "#hover-info").await, "Hover over a line to see it.");
+    assert_eq!(
+        text(&c, "#hover-info").await,
+        "Hover over a line to see it."
+    );
 
     // Drag the vertex to (40, 40) with snapping off: the sectors change and Kawasaki fails.
     click(&c, "#edit-tools button[data-tool='move']").await;
-    c.find(Locator::Css("#snap-grid")).await.unwrap().select_by_value("0").await.unwrap();
+    c.find(Locator::Css("#snap-grid"))
+        .await
+        .unwrap()
+        .select_by_value("0")
+        .await
+        .unwrap();
     click(&c, "#snap-angles").await;
     let (sx, sy) = screen_of(&c, 50.0, 50.0).await;
     let (tx, ty) = screen_of(&c, 40.0, 40.0).await;
     let mut drag = MouseActions::new("mouse".to_string())
-        .then(PointerAction::MoveTo { duration: None, x: sx, y: sy })
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: sx,
+            y: sy,
+        })
         .then(PointerAction::Down { button: 0 });
     for k in 1..=8 {
         let t = f64::from(k) / 8.0;
@@ -509,7 +538,10 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     c.perform_actions(drag).await.unwrap();
     edits_done(&c, 1).await;
     assert!(text(&c, "#check-status").await.contains("finding"));
-    let kawasaki = c.find_all(Locator::Css("#findings li.finding-kawasaki")).await.unwrap();
+    let kawasaki = c
+        .find_all(Locator::Css("#findings li.finding-kawasaki"))
+        .await
+        .unwrap();
     assert_eq!(kawasaki.len(), 1, "one Kawasaki fault, at the moved vertex");
     // The vertex is where it was dropped (to a pixel): read back from the page's pattern.
     let moved = c

@@ -280,8 +280,11 @@ mod tests {
         assert_eq!((cp.vertices.len(), cp.edges.len()), (7, 12));
         assert_eq!(count(&cp, Assignment::Mountain), 2);
         assert_eq!(r.splits, 3);
-        assert!(cp.edges.iter().all(|e| e.assignment != Assignment::Mountain
-            || e.fold_angle == Some(-180.0)));
+        assert!(
+            cp.edges
+                .iter()
+                .all(|e| e.assignment != Assignment::Mountain || e.fold_angle == Some(-180.0))
+        );
     }
 
     #[test]

@@ -147,10 +147,16 @@ pub fn snap(cp: &CreasePattern, p: DVec2, options: &SnapOptions) -> Snapped {
             let g = lo + ((p - lo) / cell).round() * cell;
             offer(SnapKind::Grid, g, None);
             if (p.x - g.x).abs() <= r {
-                lines.push((Line::Infinite(DVec2::new(g.x, 0.0), DVec2::Y), SnapKind::Grid));
+                lines.push((
+                    Line::Infinite(DVec2::new(g.x, 0.0), DVec2::Y),
+                    SnapKind::Grid,
+                ));
             }
             if (p.y - g.y).abs() <= r {
-                lines.push((Line::Infinite(DVec2::new(0.0, g.y), DVec2::X), SnapKind::Grid));
+                lines.push((
+                    Line::Infinite(DVec2::new(0.0, g.y), DVec2::X),
+                    SnapKind::Grid,
+                ));
             }
         }
     }
@@ -254,7 +260,11 @@ mod tests {
         assert_eq!(s.kind, SnapKind::Crossing);
         assert!((s.point[0] - 16.0).abs() < 1e-9 && (s.point[1] - y).abs() < 1e-9);
         // Away from the side: on the line itself, at the foot of the perpendicular.
-        let s = snap(&cp, DVec2::new(8.0, 8.0 * 22.5_f64.to_radians().tan() + 0.1), &o);
+        let s = snap(
+            &cp,
+            DVec2::new(8.0, 8.0 * 22.5_f64.to_radians().tan() + 0.1),
+            &o,
+        );
         assert_eq!(s.kind, SnapKind::Angle);
         let angle = s.point[1].atan2(s.point[0]).to_degrees();
         assert!((angle - 22.5).abs() < 1e-9, "{angle}");

@@ -843,9 +843,7 @@ async fn upload_profile(
     if body.len() > MAX_PROFILE_BYTES {
         return Err(ApiError::new(
             StatusCode::PAYLOAD_TOO_LARGE,
-            format!(
-                "{name}: the profile is larger than the limit of {MAX_PROFILE_BYTES} bytes"
-            ),
+            format!("{name}: the profile is larger than the limit of {MAX_PROFILE_BYTES} bytes"),
         ));
     }
     let key = s

@@ -103,7 +103,10 @@ impl PlanSettings {
         material: &Material,
     ) -> Result<PlanOptions, String> {
         let op = |option: &str, value: &Option<String>| {
-            value.as_deref().map(|name| operation(option, name)).transpose()
+            value
+                .as_deref()
+                .map(|name| operation(option, name))
+                .transpose()
         };
         if self.bridge.is_some() && self.duty.is_some() {
             return Err("bridge and duty: give one of them, not both".to_string());
