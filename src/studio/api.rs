@@ -39,6 +39,7 @@ use serde_json::{Value, json};
 use super::StudioConfig;
 use super::assets;
 use super::document::{Document, PatternView};
+use super::edit_api;
 use super::flat::{FlatView, flat_view};
 use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings, UploadedProfiles};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
@@ -48,8 +49,7 @@ use crate::check::{CheckOptions, check_with_frame};
 use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
 use crate::machine::{ProfileKind, load_machine, profile_catalogue};
 use crate::pattern::Assignment;
-use crate::pattern::edit::{Edit, EditReport, apply as apply_edit};
-use crate::pattern::snap::{SnapOptions, Snapped, snap};
+use crate::pattern::edit::EditReport;
 
 /// Frames of the fold sent to the page while folding (plus the flat sheet and the settled end).
 pub const FOLD_FRAMES: usize = 40;
@@ -97,14 +97,14 @@ impl History {
 
 /// Whether the document has edits to undo and redo.
 #[derive(Clone, Copy, Debug, Serialize)]
-struct Undo {
+pub(super) struct Undo {
     undo: bool,
     redo: bool,
 }
 
 /// Where to move in a document's history.
 #[derive(Clone, Copy)]
-enum Step {
+pub(super) enum Step {
     Back,
     Forward,
 }
@@ -152,13 +152,13 @@ impl Studio {
             })
     }
 
-    fn get(&self, id: u64) -> Result<Arc<Document>, ApiError> {
+    pub(super) fn get(&self, id: u64) -> Result<Arc<Document>, ApiError> {
         self.with(id, |h| Arc::clone(h.current()))
     }
 
     /// Makes `next` the current version of `id`, made from `base`; refused when another
     /// edit came first. Versions after the current one (undone edits) are dropped.
-    fn push(&self, id: u64, base: &Arc<Document>, next: Document) -> ApiResult<Undo> {
+    pub(super) fn push(&self, id: u64, base: &Arc<Document>, next: Document) -> ApiResult<Undo> {
         self.with(id, |h| {
             if !Arc::ptr_eq(h.current(), base) {
                 return Err(ApiError::new(
@@ -177,7 +177,7 @@ impl Studio {
     }
 
     /// Moves in `id`'s history; refused when there is nothing to undo or redo.
-    fn step(&self, id: u64, step: Step) -> ApiResult<(Arc<Document>, Undo)> {
+    pub(super) fn step(&self, id: u64, step: Step) -> ApiResult<(Arc<Document>, Undo)> {
         self.with(id, |h| {
             let next = match step {
                 Step::Back => h.at.checked_sub(1),
@@ -203,7 +203,7 @@ pub struct ApiError {
 }
 
 impl ApiError {
-    fn new(status: StatusCode, message: impl Into<String>) -> ApiError {
+    pub(super) fn new(status: StatusCode, message: impl Into<String>) -> ApiError {
         ApiError {
             status,
             message: message.into(),
@@ -211,7 +211,7 @@ impl ApiError {
     }
 
     /// Bad input: 422 with the message.
-    fn input(message: String) -> ApiError {
+    pub(super) fn input(message: String) -> ApiError {
         ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, message)
     }
 }
@@ -234,10 +234,10 @@ impl From<PathRejection> for ApiError {
     }
 }
 
-type ApiResult<T> = Result<T, ApiError>;
+pub(super) type ApiResult<T> = Result<T, ApiError>;
 
 /// A document id from the path (a JSON error when it is not a number).
-struct PathId(u64);
+pub(super) struct PathId(pub(super) u64);
 
 impl<S: Send + Sync> FromRequestParts<S> for PathId {
     type Rejection = ApiError;
@@ -252,7 +252,7 @@ impl<S: Send + Sync> FromRequestParts<S> for PathId {
 }
 
 /// Runs CPU work off the async threads.
-async fn blocking<T: Send + 'static>(
+pub(super) async fn blocking<T: Send + 'static>(
     work: impl FnOnce() -> ApiResult<T> + Send + 'static,
 ) -> ApiResult<T> {
     tokio::task::spawn_blocking(work).await.map_err(|e| {
@@ -270,10 +270,10 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/files", get(files))
         .route("/api/files/{index}", post(open_file))
         .route("/api/upload", post(upload))
-        .route("/api/docs/{id}/edit", post(edit))
-        .route("/api/docs/{id}/undo", post(undo))
-        .route("/api/docs/{id}/redo", post(redo))
-        .route("/api/docs/{id}/snap", post(snap_point))
+        .route("/api/docs/{id}/edit", post(edit_api::edit))
+        .route("/api/docs/{id}/undo", post(edit_api::undo))
+        .route("/api/docs/{id}/redo", post(edit_api::redo))
+        .route("/api/docs/{id}/snap", post(edit_api::snap_point))
         .route("/api/docs/{id}/check", get(check))
         .route("/api/docs/{id}/layers", get(layers))
         .route("/api/docs/{id}/fold3d", get(fold3d))
@@ -338,15 +338,15 @@ async fn files(State(s): State<Arc<Studio>>) -> Json<Vec<FileEntry>> {
 }
 
 #[derive(Serialize)]
-struct Opened {
-    id: u64,
+pub(super) struct Opened {
+    pub(super) id: u64,
     #[serde(flatten)]
-    view: PatternView,
+    pub(super) view: PatternView,
     /// What can be undone and redone.
-    history: Undo,
+    pub(super) history: Undo,
     /// What the edit did, after an edit.
     #[serde(skip_serializing_if = "Option::is_none")]
-    edit: Option<EditReport>,
+    pub(super) edit: Option<EditReport>,
 }
 
 fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
@@ -361,89 +361,6 @@ fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
         },
         edit: None,
     }))
-}
-
-/// A JSON request body (any content type): 400 naming `what` and the place of the error.
-fn json_body<T: serde::de::DeserializeOwned>(
-    body: Result<Bytes, BytesRejection>,
-    what: &str,
-) -> ApiResult<T> {
-    let body = body.map_err(|r| ApiError::new(r.status(), r.body_text()))?;
-    serde_json::from_slice(&body)
-        .map_err(|e| ApiError::new(StatusCode::BAD_REQUEST, format!("{what} request: {e}")))
-}
-
-/// Applies an edit ([`crate::pattern::edit`]) to the current version: the new version's
-/// view. Refused edits leave the document as it was.
-async fn edit(
-    State(s): State<Arc<Studio>>,
-    PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
-) -> ApiResult<Json<Opened>> {
-    let edit: Edit = json_body(body, "edit")?;
-    let base = s.get(id)?;
-    blocking(move || {
-        let mut pattern = base.planar().map_err(ApiError::input)?.pattern.clone();
-        let report = apply_edit(&mut pattern, &edit, None)
-            .map_err(|e| ApiError::input(format!("{}: {e}", base.name)))?;
-        let next = base.edited(pattern);
-        let view = PatternView::new(&next.name, next.planar().map_err(ApiError::input)?);
-        let history = s.push(id, &base, next)?;
-        Ok(Json(Opened {
-            id,
-            view,
-            history,
-            edit: Some(report),
-        }))
-    })
-    .await
-}
-
-async fn undo(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<Json<Opened>> {
-    moved(&s, id, Step::Back)
-}
-
-async fn redo(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<Json<Opened>> {
-    moved(&s, id, Step::Forward)
-}
-
-fn moved(s: &Studio, id: u64, step: Step) -> ApiResult<Json<Opened>> {
-    let (doc, history) = s.step(id, step)?;
-    // Every version was cleaned when it was made: this takes no time.
-    let view = PatternView::new(&doc.name, doc.planar().map_err(ApiError::input)?);
-    Ok(Json(Opened {
-        id,
-        view,
-        history,
-        edit: None,
-    }))
-}
-
-/// The request of `snap`: the pointer and what to snap to.
-#[derive(Deserialize)]
-struct SnapRequest {
-    point: [f64; 2],
-    #[serde(flatten)]
-    options: SnapOptions,
-}
-
-/// Snaps a pointer position ([`crate::pattern::snap`]) on the current version.
-async fn snap_point(
-    State(s): State<Arc<Studio>>,
-    PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
-) -> ApiResult<Json<Snapped>> {
-    let q: SnapRequest = json_body(body, "snap")?;
-    let doc = s.get(id)?;
-    blocking(move || {
-        let c = doc.planar().map_err(ApiError::input)?;
-        Ok(Json(snap(
-            &c.pattern,
-            glam::DVec2::from(q.point),
-            &q.options,
-        )))
-    })
-    .await
 }
 
 async fn open_file(
