@@ -4,11 +4,17 @@ import { call, upload } from './api.js';
 import { PatternView } from './cp.js';
 import { FoldView } from './fold.js';
 import { MachineView } from './machine.js';
+import { Editor } from './edit.js';
+import { FlatView } from './flat.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
 const patternView = new PatternView($('cp-svg'), $('hover-info'));
 const machineView = new MachineView($('view-machine'));
+const editor = new Editor(patternView, $('edit-tools'), (view) => guarded(() => edited(view)));
+const flatView = new FlatView($('view-flat'));
+machineView.onError = (promise) => guarded(() => promise);
+let edits = 0;
 
 function showError(e) {
   $('error').textContent = e ? String(e.message || e) : '';
@@ -88,21 +94,42 @@ function showFindings(report) {
   patternView.ring(report.findings, state.legend.fault);
 }
 
-/** Shows a newly opened document (the API's pattern view with its id). */
-async function opened(view) {
-  state.doc = view;
+/** Forgets what was computed from the previous pattern (fold, plan, layer order). */
+function forgetDerived() {
   state.fold = null;
+  state.flat = false;
+  flatView.clear();
+  delete document.body.dataset.flat;
   state.planned = false;
   delete document.body.dataset.foldPercent;
   delete document.body.dataset.planned;
-  showCounts(view);
-  patternView.show(view, state.legend);
   $('fold-label').textContent = 'not folded yet';
   $('fold-report').textContent = '';
   $('layers-result').textContent = '';
   $('plan-stats').replaceChildren();
   $('downloads').replaceChildren();
   $('toolpath-svg').replaceChildren();
+}
+
+/** Shows the pattern after an edit, undo or redo, and checks it again. */
+async function edited(view) {
+  state.doc = view;
+  forgetDerived();
+  showCounts(view);
+  patternView.show(view, null, true);
+  editor.setDoc(view);
+  await runCheck();
+  edits += 1;
+  document.body.dataset.edits = String(edits);
+}
+
+/** Shows a newly opened document (the API's pattern view with its id). */
+async function opened(view) {
+  state.doc = view;
+  forgetDerived();
+  showCounts(view);
+  patternView.show(view, state.legend);
+  editor.setDoc(view);
   await runCheck();
   document.body.dataset.doc = view.id;
   const active = document.querySelector('#tabs button.active').dataset.view;
@@ -133,6 +160,13 @@ async function enterView(name) {
   if (!state.doc) return;
   if (name === 'fold' && !state.fold) await guarded(foldNow);
   if (name === 'fold' && state.foldView) state.foldView.draw();
+  if (name === 'flat' && !state.flat) await guarded(showFlat);
+}
+
+async function showFlat() {
+  state.flat = true;
+  const view = await flatView.load(state.doc.id);
+  document.body.dataset.flat = `${view.state}/${view.states}`;
 }
 
 function switchView(name) {
@@ -168,6 +202,10 @@ async function start() {
   $('layers-btn').addEventListener('click', () => guarded(async () => {
     if (!state.doc) throw new Error('open a pattern first');
     await runLayers();
+  }));
+  $('flat-btn').addEventListener('click', () => guarded(async () => {
+    if (!state.doc) throw new Error('open a pattern first');
+    await showFlat();
   }));
   $('fold-slider').addEventListener('input', () => { if (state.fold) showFoldFrame(); });
   $('plan-btn').addEventListener('click', () => guarded(async () => {

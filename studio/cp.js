@@ -1,5 +1,5 @@
 // The crease-pattern view: an SVG in pattern coordinates (y up), pan by drag, zoom by wheel,
-// hover to read an edge, findings ringed.
+// hover to read an edge, findings ringed; previews of edits (see edit.js).
 
 const NS = 'http://www.w3.org/2000/svg';
 /** Screen width of the base line, pixels (legend widths and dashes are multiples of it). */
@@ -14,8 +14,9 @@ function el(name, attrs = {}, parent = null) {
   return node;
 }
 
-/** Pan/zoom over an SVG's viewBox; `box` is [x, y, w, h] in SVG units. */
-export function panZoom(svg, getBox, setBox) {
+/** Pan/zoom over an SVG's viewBox; `box` is [x, y, w, h] in SVG units. Dragging pans
+ * while `canPan()` says so. */
+export function panZoom(svg, getBox, setBox, canPan = () => true) {
   let drag = null;
   svg.addEventListener('wheel', (e) => {
     e.preventDefault();
@@ -25,7 +26,7 @@ export function panZoom(svg, getBox, setBox) {
     const k = Math.exp(e.deltaY * 0.0015);
     setBox([x + fx * w * (1 - k), y + fy * h * (1 - k), w * k, h * k]);
   }, { passive: false });
-  svg.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY, getBox()]; });
+  svg.addEventListener('pointerdown', (e) => { drag = canPan() ? [e.clientX, e.clientY, getBox()] : null; });
   svg.addEventListener('pointermove', (e) => {
     if (!drag) return;
     const [sx, sy, [x, y, w, h]] = drag;
@@ -41,7 +42,65 @@ export class PatternView {
     this.svg = svg;
     this.info = info;
     this.box = [0, 0, 1, 1];
-    panZoom(svg, () => this.box, (b) => this.setBox(b));
+    this.canPan = () => true;
+    this.onEdgeClick = () => {};
+    panZoom(svg, () => this.box, (b) => this.setBox(b), () => this.canPan());
+  }
+
+  /** Pattern coordinates (y up) of a pointer event. */
+  toPattern(e) {
+    const p = this.svg.createSVGPoint();
+    p.x = e.clientX;
+    p.y = e.clientY;
+    const q = p.matrixTransform(this.root.getScreenCTM().inverse());
+    return [q.x, q.y];
+  }
+
+  /** Pattern units per screen pixel at the current zoom. */
+  unitsPerPixel() {
+    const m = this.root.getScreenCTM();
+    return 1 / Math.hypot(m.a, m.b);
+  }
+
+  /** The vertex nearest to `p` within `reach` (pattern units), or null. */
+  nearestVertex(p, reach) {
+    let best = null, bestD = reach;
+    this.pattern.vertices.forEach((q, i) => {
+      const d = Math.hypot(q[0] - p[0], q[1] - p[1]);
+      if (d <= bestD) { best = i; bestD = d; }
+    });
+    return best;
+  }
+
+  /** Marks the snapped point `s` and the crease from `start` (if any) to it. */
+  previewCrease(start, s) {
+    this.clearPreview();
+    if (start) {
+      el('line', { x1: start[0], y1: start[1], x2: s.point[0], y2: s.point[1], class: 'preview-line',
+        'vector-effect': 'non-scaling-stroke' }, this.previewLayer);
+    }
+    this.marker(s);
+  }
+
+  /** Draws vertex `v`'s edges as if it stood at the snapped point `s`. */
+  previewMove(v, s) {
+    this.clearPreview();
+    for (const e of this.pattern.edges) {
+      if (!e.v.includes(v)) continue;
+      const other = this.pattern.vertices[e.v[0] === v ? e.v[1] : e.v[0]];
+      el('line', { x1: other[0], y1: other[1], x2: s.point[0], y2: s.point[1], class: 'preview-line',
+        'vector-effect': 'non-scaling-stroke' }, this.previewLayer);
+    }
+    this.marker(s);
+  }
+
+  marker(s) {
+    el('circle', { cx: s.point[0], cy: s.point[1], r: 5 * this.unitsPerPixel(),
+      class: `snap-marker snap-${s.kind}`, 'vector-effect': 'non-scaling-stroke' }, this.previewLayer);
+  }
+
+  clearPreview() {
+    if (this.previewLayer) this.previewLayer.replaceChildren();
   }
 
   setBox(box) {
@@ -49,22 +108,27 @@ export class PatternView {
     this.svg.setAttribute('viewBox', box.join(' '));
   }
 
-  /** Draws `pattern` (the API's pattern view) with the `legend` styles. */
-  show(pattern, legend) {
+  /** Draws `pattern` (the API's pattern view) with the `legend` styles (the last ones when
+   * null); `keep` keeps the zoom (after an edit). */
+  show(pattern, legend, keep = false) {
     this.pattern = pattern;
-    const styles = Object.fromEntries(legend.assignments.map((a) => [a.letter, a]));
+    if (legend) this.styles = Object.fromEntries(legend.assignments.map((a) => [a.letter, a]));
+    const styles = this.styles;
     this.svg.replaceChildren();
+    this.leave();
     const xs = pattern.vertices.map((p) => p[0]), ys = pattern.vertices.map((p) => p[1]);
     const lo = [Math.min(...xs), Math.min(...ys)], hi = [Math.max(...xs), Math.max(...ys)];
     this.diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1]) || 1;
     const pad = 0.05 * this.diagonal;
     this.home = [lo[0] - pad, -hi[1] - pad, hi[0] - lo[0] + 2 * pad, hi[1] - lo[1] + 2 * pad];
-    this.setBox(this.home);
+    if (!keep) this.setBox(this.home);
     // y up: flip once, so pattern coordinates go in as they are.
     const root = el('g', { transform: 'scale(1,-1)' }, this.svg);
+    this.root = root;
     const lines = el('g', { id: 'cp-lines' }, root);
     const hits = el('g', { id: 'cp-hits' }, root);
     this.rings = el('g', { id: 'cp-rings' }, root);
+    this.previewLayer = el('g', { id: 'cp-preview' }, root);
     const order = pattern.edges.map((e, i) => i)
       .sort((a, b) => ORDER.indexOf(pattern.edges[a].a) - ORDER.indexOf(pattern.edges[b].a));
     for (const i of order) {
@@ -80,12 +144,23 @@ export class PatternView {
       const hit = el('line', { ...at, stroke: 'transparent', 'stroke-width': 9,
         'vector-effect': 'non-scaling-stroke', 'data-edge': i }, hits);
       hit.addEventListener('mouseenter', () => this.hover(i));
+      hit.addEventListener('mouseleave', () => this.leave(i));
+      hit.addEventListener('click', () => this.onEdgeClick(i));
     }
+  }
+
+  /** The pointer left edge `i` (or any edge when undefined): the label no longer names it. */
+  leave(i) {
+    if (i !== undefined && this.hovered !== i) return;
+    this.hovered = null;
+    this.info.textContent = 'Hover over a line to see it.';
+    this.info.classList.add('muted');
   }
 
   /** Shows edge `i`'s assignment, fold angle and length. */
   hover(i) {
     const pt = this.pattern, e = pt.edges[i];
+    this.hovered = i;
     const [p, q] = [pt.vertices[e.v[0]], pt.vertices[e.v[1]]];
     const names = { M: 'mountain', V: 'valley', B: 'boundary', F: 'flat', U: 'unassigned', C: 'cut', J: 'join' };
     const angle = e.angle == null ? 'no fold angle' : `fold angle ${e.angle.toFixed(1)}°`;

@@ -31,6 +31,18 @@ export class MachineView {
     this.machine = root.querySelector('#machine');
     this.material = root.querySelector('#material');
     this.size = root.querySelector('#size');
+    this.options = [...root.querySelectorAll('[data-option]')];
+    const ops = ['', 'mark', 'score', 'perforate', 'cut', 'plot', 'skip'];
+    for (const select of this.options.filter((o) => o.tagName === 'SELECT' && o.dataset.option !== 'origin')) {
+      select.replaceChildren(...ops.map((op) => new Option(op || 'material default', op)));
+    }
+    for (const kind of ['machine', 'material']) {
+      root.querySelector(`#${kind}-file`).addEventListener('change', (e) => {
+        const file = e.target.files[0];
+        if (file) this.onError(this.uploadProfile(kind, file));
+      });
+    }
+    this.onError = (promise) => promise;
     this.box = [0, 0, 1, 1];
     panZoom(this.svg, () => this.box, (b) => this.setBox(b));
   }
@@ -40,19 +52,38 @@ export class MachineView {
     this.svg.setAttribute('viewBox', box.join(' '));
   }
 
-  /** Fills the machine and material lists from the shipped profiles. */
+  /** Reads a TOML profile as the command line reads a profile file, and chooses it. */
+  async uploadProfile(kind, file) {
+    const reply = await call(`/api/profiles/${kind}?name=${encodeURIComponent(file.name)}`,
+      { method: 'POST', body: file });
+    await this.load();
+    (kind === 'machine' ? this.machine : this.material).value = reply.name;
+    document.body.dataset.profile = reply.name;
+  }
+
+  /** Fills the machine and material lists from the shipped and uploaded profiles. */
   async load() {
+    const chosen = [this.machine.value, this.material.value];
     const [machines, materials] = await Promise.all([call('/api/machines'), call('/api/materials')]);
     this.machines = Object.fromEntries(machines.map((m) => [m.name, m]));
     for (const [select, list] of [[this.machine, machines], [this.material, materials]]) {
       select.replaceChildren(...list.map((p) => new Option(`${p.name} — ${p.description}`, p.name)));
     }
+    if (chosen[0]) this.machine.value = chosen[0];
+    if (chosen[1]) this.material.value = chosen[1];
   }
 
   /** The query naming the current choice. */
   query() {
     const q = new URLSearchParams({ machine: this.machine.value, material: this.material.value });
     if (this.size.value) q.set('size', this.size.value);
+    for (const o of this.options) {
+      if (o.type === 'checkbox') {
+        if (o.checked) q.set(o.dataset.option, 'true');
+      } else if (o.value !== '') {
+        q.set(o.dataset.option, o.value);
+      }
+    }
     return q;
   }
 

@@ -432,3 +432,137 @@ async fn the_studio_works_in_a_real_browser() {
 
     c.close().await.unwrap();
 }
+
+/// Viewport position (CSS pixels) of pattern point `(x, y)` in the crease-pattern view.
+async fn screen_of(c: &Client, x: f64, y: f64) -> (f64, f64) {
+    let at = c
+        .execute(
+            "const svg = document.getElementById('cp-svg');
+             const m = svg.querySelector('g').getScreenCTM();
+             const p = svg.createSVGPoint(); p.x = arguments[0]; p.y = arguments[1];
+             const q = p.matrixTransform(m); return [q.x, q.y];",
+            vec![json!(x), json!(y)],
+        )
+        .await
+        .unwrap();
+    (at[0].as_f64().unwrap(), at[1].as_f64().unwrap())
+}
+
+async fn edits_done(c: &Client, n: usize) {
+    wait_until(
+        c,
+        &format!("return document.body.dataset.edits === '{n}' && !document.body.dataset.busy"),
+        "the edit and its check",
+    )
+    .await;
+}
+
+async fn click(c: &Client, css: &str) {
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .click()
+        .await
+        .unwrap();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let driver = start_driver();
+    let c = browser(&driver).await;
+    c.goto(&server.url()).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
+    // A degree-4 vertex at (50, 50) that folds flat (the example's description: opposite
+    // sectors sum to 180°, Kawasaki 1989), its creases folded all the way.
+    let file = dir.path().join("flat-vertex.fold");
+    std::fs::write(&file, studio::flat_vertex_folded_flat()).unwrap();
+    open(&c, &file).await;
+    assert_eq!(text(&c, "#check-status").await, "passed");
+
+    // The hover label names an edge only while the pointer is on it.
+    let hit = c.find(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
+    let (x0, y0) = screen_of(&c, 5.0, 95.0).await; // empty paper near a corner
+    let hover = MouseActions::new("mouse".to_string()).then(PointerAction::MoveToElement {
+        element: hit,
+        duration: None,
+        x: 0.0,
+        y: 0.0,
+    });
+    c.perform_actions(hover).await.unwrap();
+    assert!(text(&c, "#hover-info").await.starts_with("edge "));
+    let away = MouseActions::new("mouse".to_string()).then(PointerAction::MoveTo {
+        duration: None,
+        x: x0,
+        y: y0,
+    });
+    c.perform_actions(away).await.unwrap();
+    assert_eq!(
+        text(&c, "#hover-info").await,
+        "Hover over a line to see it."
+    );
+
+    // Drag the vertex to (40, 40) with snapping off: the sectors change and Kawasaki fails.
+    click(&c, "#edit-tools button[data-tool='move']").await;
+    c.find(Locator::Css("#snap-grid"))
+        .await
+        .unwrap()
+        .select_by_value("0")
+        .await
+        .unwrap();
+    click(&c, "#snap-angles").await;
+    let (sx, sy) = screen_of(&c, 50.0, 50.0).await;
+    let (tx, ty) = screen_of(&c, 40.0, 40.0).await;
+    let mut drag = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: sx,
+            y: sy,
+        })
+        .then(PointerAction::Down { button: 0 });
+    for k in 1..=8 {
+        let t = f64::from(k) / 8.0;
+        drag = drag.then(PointerAction::MoveTo {
+            duration: Some(Duration::from_millis(60)),
+            x: sx + (tx - sx) * t,
+            y: sy + (ty - sy) * t,
+        });
+    }
+    drag = drag.then(PointerAction::Up { button: 0 });
+    c.perform_actions(drag).await.unwrap();
+    edits_done(&c, 1).await;
+    assert!(text(&c, "#check-status").await.contains("finding"));
+    let kawasaki = c
+        .find_all(Locator::Css("#findings li.finding-kawasaki"))
+        .await
+        .unwrap();
+    assert_eq!(kawasaki.len(), 1, "one Kawasaki fault, at the moved vertex");
+    // The vertex is where it was dropped (to a pixel): read back from the page's pattern.
+    let moved = c
+        .execute(
+            "return [...document.querySelectorAll('#cp-lines line')].flatMap((l) => \
+             [[+l.getAttribute('x1'), +l.getAttribute('y1')], [+l.getAttribute('x2'), +l.getAttribute('y2')]])",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let near = moved.as_array().unwrap().iter().any(|p| {
+        (p[0].as_f64().unwrap() - 40.0).abs() < 1.0 && (p[1].as_f64().unwrap() - 40.0).abs() < 1.0
+    });
+    assert!(near, "no line ends near (40, 40)");
+    keep_screenshot(&c, "studio-edit.png").await;
+
+    // Undo: the file's pattern again, and the check passes.
+    click(&c, "#undo-btn").await;
+    edits_done(&c, 2).await;
+    assert_eq!(text(&c, "#check-status").await, "passed");
+    let still = c.find_all(Locator::Css("#findings li")).await.unwrap();
+    assert!(still.is_empty());
+    c.close().await.unwrap();
+}

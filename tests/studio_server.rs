@@ -9,7 +9,7 @@ mod studio;
 
 use bin::{foldcam, repo_file};
 use serde_json::Value;
-use studio::{Server, encode};
+use studio::{Server, encode, flat_vertex_folded_flat};
 
 /// A text no reply may ever contain: it is only in a file the server was not given.
 const SECRET: &str = "studio-test-secret-0f3a9c";
@@ -261,4 +261,523 @@ fn every_format_foldcam_reads_opens_with_the_clis_counts() {
         let served: Value = serde_json::from_slice(&body).unwrap();
         assert_eq!(served["findings"], report["findings"], "{rel}");
     }
+}
+
+/// Kawasaki's theorem (Kawasaki 1989) at `centre`: the alternating sum of the sector angles
+/// between the creases to `ends`, degrees (zero where the vertex folds flat).
+fn kawasaki_sum(centre: [f64; 2], ends: &[[f64; 2]]) -> f64 {
+    let mut angles: Vec<f64> = ends
+        .iter()
+        .map(|p| (p[1] - centre[1]).atan2(p[0] - centre[0]))
+        .collect();
+    angles.sort_by(f64::total_cmp);
+    let n = angles.len();
+    (0..n)
+        .map(|k| {
+            let next = if k + 1 < n {
+                angles[k + 1]
+            } else {
+                angles[0] + std::f64::consts::TAU
+            };
+            let sector = (next - angles[k]).to_degrees();
+            if k % 2 == 0 { sector } else { -sector }
+        })
+        .sum()
+}
+
+fn point(v: &Value) -> [f64; 2] {
+    [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()]
+}
+
+/// The vertex of a pattern view at `p`, and the other ends of its creases (not boundary).
+fn crease_fan(view: &Value, p: [f64; 2]) -> (usize, Vec<[f64; 2]>) {
+    let vertices: Vec<[f64; 2]> = view["vertices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(point)
+        .collect();
+    let v = vertices
+        .iter()
+        .position(|q| (q[0] - p[0]).abs() < 1e-9 && (q[1] - p[1]).abs() < 1e-9)
+        .unwrap_or_else(|| panic!("no vertex at {p:?}"));
+    let ends = view["edges"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["a"] != "B")
+        .filter_map(|e| {
+            let (a, b) = (e["v"][0].as_u64()? as usize, e["v"][1].as_u64()? as usize);
+            (a == v).then_some(b).or((b == v).then_some(a))
+        })
+        .map(|w| vertices[w])
+        .collect();
+    (v, ends)
+}
+
+fn findings(server: &Server, id: u64) -> Vec<Value> {
+    let (status, body) = server.get(&format!("/api/docs/{id}/check"));
+    assert_eq!(status, 200);
+    let report: Value = serde_json::from_slice(&body).unwrap();
+    report["findings"].as_array().unwrap().clone()
+}
+
+#[test]
+fn moving_a_vertex_breaks_kawasaki_and_undo_restores_the_pattern() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let bytes = flat_vertex_folded_flat();
+    let (status, opened) = server.post_json("/api/upload?name=flat-vertex.fold", &bytes);
+    assert_eq!(status, 200, "{opened}");
+    let id = opened["id"].as_u64().unwrap();
+    assert_eq!(
+        opened["history"],
+        serde_json::json!({"undo": false, "redo": false})
+    );
+    // The file's vertex folds flat (the control): Kawasaki's sum is zero and the check passes.
+    let (v, ends) = crease_fan(&opened, [50.0, 50.0]);
+    assert!(kawasaki_sum([50.0, 50.0], &ends).abs() < 1e-6);
+    assert!(findings(&server, id).is_empty());
+
+    let to = [40.0, 40.0];
+    let body = format!(
+        r#"{{"op": "move", "vertex": {v}, "to": [{}, {}]}}"#,
+        to[0], to[1]
+    );
+    let (status, moved) = server.post_json(&format!("/api/docs/{id}/edit"), body.as_bytes());
+    assert_eq!(status, 200, "{moved}");
+    assert_eq!(moved["id"].as_u64(), Some(id));
+    assert_eq!(
+        moved["history"],
+        serde_json::json!({"undo": true, "redo": false})
+    );
+    let (_, ends) = crease_fan(&moved, to);
+    let sum = kawasaki_sum(to, &ends);
+    assert!(
+        sum.abs() > 1.0,
+        "the moved vertex still folds flat ({sum}°)"
+    );
+    let found = findings(&server, id);
+    let kawasaki: Vec<&Value> = found.iter().filter(|f| f["kind"] == "kawasaki").collect();
+    assert_eq!(kawasaki.len(), 1, "{found:?}");
+    let at = &kawasaki[0]["position"];
+    let at = [
+        at["x"].as_f64().unwrap_or_else(|| at[0].as_f64().unwrap()),
+        at["y"].as_f64().unwrap_or_else(|| at[1].as_f64().unwrap()),
+    ];
+    assert!(
+        (at[0] - to[0]).abs() < 1e-9 && (at[1] - to[1]).abs() < 1e-9,
+        "{at:?}"
+    );
+
+    // Undo: the pattern as opened, and the check passes again; redo: moved again.
+    let (status, undone) = server.post_json(&format!("/api/docs/{id}/undo"), b"");
+    assert_eq!(status, 200, "{undone}");
+    assert_eq!(undone["vertices"], opened["vertices"]);
+    assert_eq!(undone["edges"], opened["edges"]);
+    assert_eq!(
+        undone["history"],
+        serde_json::json!({"undo": false, "redo": true})
+    );
+    assert!(findings(&server, id).is_empty());
+    let (status, redone) = server.post_json(&format!("/api/docs/{id}/redo"), b"");
+    assert_eq!(status, 200);
+    assert_eq!(redone["vertices"], moved["vertices"]);
+    assert_eq!(findings(&server, id).len(), found.len());
+}
+
+/// A 100 mm square sheet: four corners and four boundary edges.
+const SQUARE: &str = r#"{"file_spec": 1.2, "frame_unit": "mm",
+  "vertices_coords": [[0,0],[100,0],[100,100],[0,100]],
+  "edges_vertices": [[0,1],[1,2],[2,3],[3,0]],
+  "edges_assignment": ["B","B","B","B"]}"#;
+
+fn count(view: &Value, letter: &str) -> usize {
+    view["edges"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["a"] == letter)
+        .count()
+}
+
+#[test]
+fn drawn_creases_split_at_their_crossing_and_maekawa_judges_the_assignments() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let (status, opened) = server.post_json("/api/upload?name=square.fold", SQUARE.as_bytes());
+    assert_eq!(status, 200, "{opened}");
+    let id = opened["id"].as_u64().unwrap();
+    let edit = |body: &str| {
+        let (status, view) = server.post_json(&format!("/api/docs/{id}/edit"), body.as_bytes());
+        assert_eq!(status, 200, "{body}: {view}");
+        view
+    };
+    // One diagonal: ends on the corners (merged), no new vertex.
+    let view = edit(r#"{"op": "add", "from": [0, 0], "to": [100, 100], "assignment": "V"}"#);
+    assert_eq!(
+        (
+            view["counts"]["vertices"].as_u64(),
+            view["counts"]["edges"].as_u64()
+        ),
+        (Some(4), Some(5))
+    );
+    // The other crosses it: one new vertex at the centre, both diagonals split in two.
+    let view = edit(r#"{"op": "add", "from": [100, 0], "to": [0, 100], "assignment": "M"}"#);
+    assert_eq!(
+        (
+            view["counts"]["vertices"].as_u64(),
+            view["counts"]["edges"].as_u64()
+        ),
+        (Some(5), Some(8))
+    );
+    assert_eq!((count(&view, "V"), count(&view, "M")), (2, 2));
+    // Drawn creases fold fully: mountains at -180°, valleys at +180° (FOLD's sign).
+    for e in view["edges"].as_array().unwrap() {
+        match e["a"].as_str().unwrap() {
+            "M" => assert_eq!(e["angle"].as_f64(), Some(-180.0)),
+            "V" => assert_eq!(e["angle"].as_f64(), Some(180.0)),
+            _ => {}
+        }
+    }
+    // Maekawa (Maekawa 1987; Kasahara & Takahama 1987): mountains and valleys at a flat vertex
+    // differ by two. Two and two at the centre is a fault there.
+    let (centre, _) = crease_fan(&view, [50.0, 50.0]);
+    let found = findings(&server, id);
+    assert!(
+        found.iter().any(|f| f["kind"] == "maekawa"),
+        "two mountains and two valleys pass: {found:?}"
+    );
+    // Making one mountain a valley (3 V, 1 M, four right angles) satisfies both theorems.
+    let m = view["edges"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .position(|e| e["a"] == "M")
+        .unwrap();
+    let view = edit(&format!(
+        r#"{{"op": "assign", "edge": {m}, "assignment": "V"}}"#
+    ));
+    assert_eq!((count(&view, "V"), count(&view, "M")), (3, 1));
+    assert_eq!(view["edges"][m]["angle"].as_f64(), Some(180.0));
+    assert!(
+        findings(&server, id).is_empty(),
+        "{:?}",
+        findings(&server, id)
+    );
+    // Deleting a crease at the centre leaves three: an odd number never folds flat.
+    let crease = view["edges"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .position(|e| {
+            e["a"] != "B"
+                && e["v"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .any(|v| v.as_u64() == Some(centre as u64))
+        })
+        .unwrap();
+    let view = edit(&format!(r#"{{"op": "delete", "edge": {crease}}}"#));
+    assert_eq!(view["counts"]["edges"].as_u64(), Some(7));
+    assert!(!findings(&server, id).is_empty());
+}
+
+#[test]
+fn refused_edits_name_the_problem_and_change_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let (status, opened) = server.post_json("/api/upload?name=square.fold", SQUARE.as_bytes());
+    assert_eq!(status, 200, "{opened}");
+    let id = opened["id"].as_u64().unwrap();
+    let path = format!("/api/docs/{id}/edit");
+    let cases: [(&str, u16, &str); 6] = [
+        (
+            r#"{"op": "delete", "edge": 9}"#,
+            422,
+            "edge 9: the pattern has 4 edges (0 to 3)",
+        ),
+        (
+            r#"{"op": "move", "vertex": 4, "to": [0, 0]}"#,
+            422,
+            "vertex 4: the pattern has 4 vertices",
+        ),
+        (
+            r#"{"op": "assign", "edge": 0, "assignment": "X"}"#,
+            422,
+            "assignment 'X'",
+        ),
+        (
+            r#"{"op": "add", "from": [0, 0], "to": [1e300, 0], "assignment": "M"}"#,
+            422,
+            "coordinates must be finite",
+        ),
+        (
+            r#"{"op": "fold", "edge": 0}"#,
+            400,
+            "edit request: unknown variant `fold`",
+        ),
+        (r#"{"op": "delete""#, 400, "edit request: EOF"),
+    ];
+    for (body, expected_status, message) in cases {
+        let (status, reply) = server.post_json(&path, body.as_bytes());
+        assert_eq!(status, expected_status, "{body}: {reply}");
+        let error = reply["error"].as_str().unwrap();
+        assert!(error.contains(message), "{body}: {error}");
+    }
+    // Nothing changed: no edit to undo, the same pattern.
+    let (status, reply) = server.post_json(&format!("/api/docs/{id}/undo"), b"");
+    assert_eq!(status, 422);
+    assert_eq!(reply["error"], "nothing to undo");
+    // A valid edit on the same document (the control) is taken.
+    let (status, _) = server.post_json(&path, br#"{"op": "delete", "edge": 0}"#);
+    assert_eq!(status, 200);
+}
+
+#[test]
+fn snapping_finds_vertices_and_22_5_degree_lines_but_not_the_dragged_vertex() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let (status, opened) = server.post_json("/api/upload?name=square.fold", SQUARE.as_bytes());
+    assert_eq!(status, 200, "{opened}");
+    let id = opened["id"].as_u64().unwrap();
+    let path = format!("/api/docs/{id}/snap");
+    let (status, s) = server.post_json(&path, br#"{"point": [97, 102], "radius": 5}"#);
+    assert_eq!(status, 200, "{s}");
+    assert_eq!(
+        (s["kind"].as_str(), point(&s["point"])),
+        (Some("vertex"), [100.0, 100.0])
+    );
+    let corner = s["vertex"].as_u64().unwrap();
+    let body = format!(r#"{{"point": [97, 102], "radius": 5, "exclude_vertex": {corner}}}"#);
+    let (_, s) = server.post_json(&path, body.as_bytes());
+    assert_ne!(s["kind"], "vertex", "{s}");
+    // The 22.5° line from corner (0, 0) meets the side x = 100 at y = 100 tan 22.5° = 100 (√2 − 1).
+    let (_, s) = server.post_json(
+        &path,
+        br#"{"point": [99, 43], "radius": 5, "angle_step_deg": 22.5, "anchors": [[0, 0]]}"#,
+    );
+    assert_eq!(s["kind"], "crossing", "{s}");
+    let p = point(&s["point"]);
+    assert!(
+        (p[0] - 100.0).abs() < 1e-9 && (p[1] - 100.0 * (2f64.sqrt() - 1.0)).abs() < 1e-9,
+        "{p:?}"
+    );
+}
+
+/// Area of a ring (shoelace formula), absolute.
+fn ring_area(ring: &[Value]) -> f64 {
+    let p: Vec<[f64; 2]> = ring.iter().map(point).collect();
+    (0..p.len())
+        .map(|k| {
+            let (a, b) = (p[k], p[(k + 1) % p.len()]);
+            a[0] * b[1] - b[0] * a[1]
+        })
+        .sum::<f64>()
+        .abs()
+        / 2.0
+}
+
+#[test]
+fn the_flat_folded_view_keeps_the_paper_area_and_counts_as_fold_flat() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let file = repo_file("examples/patterns/flat-vertex.fold");
+    let bytes = std::fs::read(&file).unwrap();
+    let (status, opened) = server.post_json("/api/upload?name=flat-vertex.fold", &bytes);
+    assert_eq!(status, 200, "{opened}");
+    let id = opened["id"].as_u64().unwrap();
+    let (status, body) = server.get(&format!("/api/docs/{id}/flat"));
+    assert_eq!(status, 200, "{}", String::from_utf8_lossy(&body));
+    let view: Value = serde_json::from_slice(&body).unwrap();
+    // Folding moves paper without stretching it: the layers over every cell add up to the
+    // 100 mm × 100 mm sheet.
+    let covered: f64 = view["cells"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let rings = c["rings"].as_array().unwrap();
+            let outer = ring_area(rings[0].as_array().unwrap());
+            let holes: f64 = rings[1..]
+                .iter()
+                .map(|r| ring_area(r.as_array().unwrap()))
+                .sum();
+            (outer - holes) * c["layers"].as_f64().unwrap()
+        })
+        .sum();
+    assert!((covered - 100.0 * 100.0).abs() < 1e-6, "{covered}");
+    // Deeper cells are darker: fills ordered by layer count.
+    let mut by_depth: Vec<(u64, u32, bool)> = view["cells"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let fill = c["xray"].as_str().unwrap();
+            (
+                c["layers"].as_u64().unwrap(),
+                u32::from_str_radix(&fill[1..3], 16).unwrap(),
+                c["flipped"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    by_depth.sort();
+    assert!(
+        by_depth
+            .windows(2)
+            .all(|w| w[0].0 == w[1].0 || w[0].1 > w[1].1),
+        "{by_depth:?}"
+    );
+    assert!(
+        by_depth.last().unwrap().0 >= 2,
+        "the sheet folds over itself"
+    );
+    // The same count as `foldcam fold-flat` prints ("state 0 of N").
+    let out = foldcam(&["fold-flat", &file, "-o", "folded.fold"], dir.path());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(&format!("state 0 of {}", view["states"].as_str().unwrap())),
+        "{stderr} vs {view}"
+    );
+    // A state past the count is refused, naming the count.
+    let (status, body) = server.get(&format!("/api/docs/{id}/flat?state=1000000"));
+    assert_eq!(status, 422);
+    assert!(String::from_utf8_lossy(&body).contains("there is no state 1000000"));
+
+    // A pattern that does not fold flat gets fold-flat's message.
+    let broken = repo_file("examples/patterns/broken-vertex.fold");
+    let (status, opened) = server.post_json(
+        "/api/upload?name=broken-vertex.fold",
+        &std::fs::read(&broken).unwrap(),
+    );
+    assert_eq!(status, 200);
+    let id = opened["id"].as_u64().unwrap();
+    let (status, body) = server.get(&format!("/api/docs/{id}/flat"));
+    assert_eq!(status, 422);
+    let reply: Value = serde_json::from_slice(&body).unwrap();
+    std::fs::copy(&broken, dir.path().join("broken-vertex.fold")).unwrap();
+    let out = foldcam(
+        &["fold-flat", "broken-vertex.fold", "-o", "b.fold"],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let cli = String::from_utf8_lossy(&out.stderr);
+    let cli = cli
+        .lines()
+        .next()
+        .unwrap()
+        .strip_prefix("foldcam: ")
+        .unwrap();
+    assert_eq!(
+        format!("{}; nothing written", reply["error"].as_str().unwrap()),
+        cli
+    );
+}
+
+#[test]
+fn plan_options_and_uploaded_profiles_give_foldcam_cuts_file() {
+    let dir = tempfile::tempdir().unwrap();
+    generate_miura(dir.path());
+    let pattern = std::fs::read(dir.path().join("miura.fold")).unwrap();
+    // A machine profile of the user's: the shipped diode laser with a smaller bed and feed.
+    let text = std::fs::read_to_string(repo_file("machines/grbl-diode.toml"))
+        .unwrap()
+        .replace("acceleration_mm_s2 = 1000", "acceleration_mm_s2 = 800");
+    assert!(text.contains("= 800"));
+    std::fs::write(dir.path().join("my-diode.toml"), &text).unwrap();
+    let server = Server::start(&[], dir.path());
+    let (status, reply) =
+        server.post_json("/api/profiles/machine?name=my-diode.toml", text.as_bytes());
+    assert_eq!(status, 200, "{reply}");
+    let key = reply["name"].as_str().unwrap().to_string();
+    let (_, opened) = server.post_json("/api/upload?name=miura.fold", &pattern);
+    let id = opened["id"].as_u64().unwrap();
+    let cli_args = [
+        "--mountain",
+        "perforate",
+        "--valley",
+        "score",
+        "--dash",
+        "2",
+        "--bridge",
+        "0.8",
+        "--margin",
+        "12",
+        "--origin",
+        "centre",
+        "--two-sided",
+    ];
+    let query =
+        "mountain=perforate&valley=score&dash=2&bridge=0.8&margin=12&origin=centre&two_sided=true";
+    let mut args = vec![
+        "cut",
+        "miura.fold",
+        "-m",
+        "my-diode.toml",
+        "-x",
+        "card-300gsm",
+        "-o",
+        "cli.gcode",
+    ];
+    args.extend(cli_args);
+    let out = foldcam(&args, dir.path());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for job in ["front", "back"] {
+        let cli = std::fs::read(dir.path().join(format!("cli.{job}.gcode"))).unwrap();
+        let (status, served) = server.get(&format!(
+            "/api/docs/{id}/cut?machine={}&material=card-300gsm&format=gcode&job={job}&{query}",
+            encode(&key)
+        ));
+        assert_eq!(status, 200, "{}", String::from_utf8_lossy(&served));
+        assert!(
+            served == cli,
+            "{job}: the served G-code differs from foldcam cut's"
+        );
+    }
+    // Without the options the file differs (so the options were used).
+    let (_, plain) = server.get(&format!(
+        "/api/docs/{id}/cut?machine={}&material=card-300gsm&format=gcode",
+        encode(&key)
+    ));
+    assert!(plain != std::fs::read(dir.path().join("cli.front.gcode")).unwrap());
+    // An option out of range names the option.
+    let (status, body) = server.get(&format!(
+        "/api/docs/{id}/plan?machine=grbl-diode&material=card-300gsm&dash=-1"
+    ));
+    assert_eq!(status, 422);
+    assert!(
+        String::from_utf8_lossy(&body).contains("dash"),
+        "{}",
+        String::from_utf8_lossy(&body)
+    );
+    // A broken profile gets the command line's message; an oversized one is refused.
+    let bad = text.replace("max_feed_mm_min = 6000", "max_feed_mm_min = \"fast\"");
+    std::fs::write(dir.path().join("bad.toml"), &bad).unwrap();
+    let out = foldcam(
+        &["plan", "miura.fold", "-m", "bad.toml", "-x", "card-300gsm"],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (status, reply) = server.post_json("/api/profiles/machine?name=bad.toml", bad.as_bytes());
+    assert_eq!(status, 422);
+    let message = reply["error"].as_str().unwrap();
+    assert!(
+        message.starts_with("bad.toml: max_feed_mm_min"),
+        "{message}"
+    );
+    assert!(stderr.contains(message), "{stderr} vs {message}");
+    let huge = format!("{text}\n# {}\n", "x".repeat(70 * 1024));
+    let (status, reply) = server.post_json("/api/profiles/machine?name=huge.toml", huge.as_bytes());
+    assert_eq!(status, 413, "{reply}");
 }

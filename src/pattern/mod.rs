@@ -10,12 +10,14 @@
 
 mod assignment;
 mod crease_pattern;
+pub mod edit;
 mod error;
 pub mod faces;
 mod folded;
 mod ids;
 pub mod planarize;
 mod scale;
+pub mod snap;
 pub mod vertex_fan;
 
 pub use assignment::{Assignment, UnknownAssignment};

@@ -9,7 +9,7 @@ use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, Stroke, Transform};
 
 use super::RenderError;
 use super::layout::{Layout, MAX_SIZE, MIN_SIZE};
-use crate::check::layers::TopView;
+use crate::check::layers::{TopCell, TopView};
 
 /// Colour of the paper's front side (the crease pattern's upper side).
 const FRONT: [u8; 3] = [250, 236, 200];
@@ -19,6 +19,32 @@ const BACK: [u8; 3] = [120, 170, 215];
 const DEEPEST: f64 = 0.45;
 /// Margin around the drawing, pixels.
 const MARGIN: u32 = 24;
+
+/// The most layers in any cell of `view` (at least 2, so one layer is never the deepest).
+pub fn deepest_layers(view: &TopView) -> usize {
+    view.cells
+        .iter()
+        .map(|c| c.layers)
+        .max()
+        .unwrap_or(1)
+        .max(2)
+}
+
+/// The fill of `cell`: the colour of the face on top (front cream, back blue; light grey in
+/// the X-ray view), darkened linearly with the number of layers down to [`DEEPEST`] of it in
+/// the cell of `deepest` layers ([`deepest_layers`]).
+pub fn cell_colour(cell: &TopCell, deepest: usize, xray: bool) -> [u8; 3] {
+    let depth = (cell.layers.saturating_sub(1)) as f64 / (deepest.max(2) - 1) as f64;
+    let keep = 1.0 - (1.0 - DEEPEST) * depth.min(1.0);
+    let base = if xray {
+        [235, 235, 235]
+    } else if cell.top_flipped {
+        BACK
+    } else {
+        FRONT
+    };
+    base.map(|c| (f64::from(c) * keep).round() as u8)
+}
 
 /// Draws `view` as a PNG `width` pixels wide; with `xray`, cells are shaded by their number of
 /// layers instead of by the face on top.
@@ -40,24 +66,9 @@ pub fn render_top_view_png(view: &TopView, width: u32, xray: bool) -> Result<Vec
         height: layout.height,
     })?;
     pixmap.fill(tiny_skia::Color::WHITE);
-    let deepest = view
-        .cells
-        .iter()
-        .map(|c| c.layers)
-        .max()
-        .unwrap_or(1)
-        .max(2);
+    let deepest = deepest_layers(view);
     for cell in &view.cells {
-        let depth = (cell.layers.saturating_sub(1)) as f64 / (deepest - 1) as f64;
-        let keep = 1.0 - (1.0 - DEEPEST) * depth;
-        let base = if xray {
-            [235, 235, 235]
-        } else if cell.top_flipped {
-            BACK
-        } else {
-            FRONT
-        };
-        let rgb = base.map(|c| (f64::from(c) * keep).round() as u8);
+        let rgb = cell_colour(cell, deepest, xray);
         let mut pb = PathBuilder::new();
         for ring in &cell.rings {
             for (i, &p) in ring.iter().enumerate() {

@@ -5,13 +5,18 @@
 //! | `GET /api/files` | the files named on the command line (index and name) |
 //! | `POST /api/files/{index}` | opens one of them: the pattern view |
 //! | `POST /api/upload?name=N` | reads the body as a file named `N`: the pattern view |
+//! | `POST /api/docs/{id}/edit` | applies one edit (JSON [`Edit`]): the new version's view |
+//! | `POST /api/docs/{id}/undo`, `…/redo` | steps back or forward through the edits |
+//! | `POST /api/docs/{id}/snap` | snaps a pointer position (JSON `point` and [`SnapOptions`]) |
 //! | `GET /api/docs/{id}/check` | `foldcam check --json`'s report |
 //! | `GET /api/docs/{id}/layers` | the layer-order check (`foldcam check --layers`) |
+//! | `GET /api/docs/{id}/flat[?state=K]` | the flat-folded state K seen from above (`foldcam fold-flat --png`) |
 //! | `GET /api/docs/{id}/fold3d` | the 3D fold (bar-and-hinge model) as frames from flat to 100% |
-//! | `GET /api/docs/{id}/plan?machine&material[&size]` | the plan drawn: toolpaths, travel, totals |
+//! | `GET /api/docs/{id}/plan?machine&material[&size][&options]` | the plan drawn: toolpaths, travel, totals |
 //! | `GET /api/docs/{id}/cut?machine&material&format[&job][&size]` | the job file `foldcam cut` writes |
 //! | `GET /api/docs/{id}/simulate?machine&material[&job][&size]` | the G-code run on the simulated machine |
-//! | `GET /api/machines`, `GET /api/materials` | the shipped profiles |
+//! | `GET /api/machines`, `GET /api/materials` | the shipped profiles and the uploaded ones |
+//! | `POST /api/profiles/{machine,material}?name=N` | reads a TOML profile as `cut -m N.toml` would |
 //! | `GET /api/legend` | line colours and dashes of each assignment (as in our previews) |
 //!
 //! Work that takes time (checks, folding, planning) runs on tokio's blocking pool.
@@ -34,6 +39,9 @@ use serde_json::{Value, json};
 use super::StudioConfig;
 use super::assets;
 use super::document::{Document, PatternView};
+use super::edit_api;
+use super::flat::{FlatView, flat_view};
+use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings, UploadedProfiles};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
 use crate::check::fold3d::{FoldOptions, fold};
 use crate::check::layers::{LayerOptions, check_layers};
@@ -41,6 +49,7 @@ use crate::check::{CheckOptions, check_with_frame};
 use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
 use crate::machine::{ProfileKind, load_machine, profile_catalogue};
 use crate::pattern::Assignment;
+use crate::pattern::edit::EditReport;
 
 /// Frames of the fold sent to the page while folding (plus the flat sheet and the settled end).
 pub const FOLD_FRAMES: usize = 40;
@@ -55,12 +64,49 @@ pub const LAYER_MAX_STATES: u64 = 1_000_000;
 pub struct Studio {
     config: StudioConfig,
     docs: Mutex<Documents>,
+    profiles: Mutex<UploadedProfiles>,
 }
+
+/// Most versions of one document kept for undo.
+pub const MAX_UNDO: usize = 100;
 
 #[derive(Default)]
 struct Documents {
     next: u64,
-    open: VecDeque<(u64, Arc<Document>)>,
+    open: VecDeque<(u64, History)>,
+}
+
+/// The versions of one document: the file as opened, then one per edit; `at` is shown.
+struct History {
+    versions: Vec<Arc<Document>>,
+    at: usize,
+}
+
+impl History {
+    fn current(&self) -> &Arc<Document> {
+        &self.versions[self.at]
+    }
+
+    fn state(&self) -> Undo {
+        Undo {
+            undo: self.at > 0,
+            redo: self.at + 1 < self.versions.len(),
+        }
+    }
+}
+
+/// Whether the document has edits to undo and redo.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub(super) struct Undo {
+    undo: bool,
+    redo: bool,
+}
+
+/// Where to move in a document's history.
+#[derive(Clone, Copy)]
+pub(super) enum Step {
+    Back,
+    Forward,
 }
 
 impl Studio {
@@ -69,6 +115,7 @@ impl Studio {
         Studio {
             config,
             docs: Mutex::new(Documents::default()),
+            profiles: Mutex::new(UploadedProfiles::default()),
         }
     }
 
@@ -77,25 +124,74 @@ impl Studio {
         let id = docs.next;
         docs.next += 1;
         let doc = Arc::new(doc);
-        docs.open.push_back((id, Arc::clone(&doc)));
+        docs.open.push_back((
+            id,
+            History {
+                versions: vec![Arc::clone(&doc)],
+                at: 0,
+            },
+        ));
         while docs.open.len() > super::MAX_DOCUMENTS {
             docs.open.pop_front();
         }
         (id, doc)
     }
 
-    fn get(&self, id: u64) -> Result<Arc<Document>, ApiError> {
-        let docs = self.docs.lock().unwrap_or_else(PoisonError::into_inner);
+    /// Runs `f` on document `id`'s history.
+    fn with<T>(&self, id: u64, f: impl FnOnce(&mut History) -> T) -> Result<T, ApiError> {
+        let mut docs = self.docs.lock().unwrap_or_else(PoisonError::into_inner);
         docs.open
-            .iter()
+            .iter_mut()
             .find(|(i, _)| *i == id)
-            .map(|(_, d)| Arc::clone(d))
+            .map(|(_, h)| f(h))
             .ok_or_else(|| {
                 ApiError::new(
                     StatusCode::NOT_FOUND,
                     format!("document {id} is not open (open the file again)"),
                 )
             })
+    }
+
+    pub(super) fn get(&self, id: u64) -> Result<Arc<Document>, ApiError> {
+        self.with(id, |h| Arc::clone(h.current()))
+    }
+
+    /// Makes `next` the current version of `id`, made from `base`; refused when another
+    /// edit came first. Versions after the current one (undone edits) are dropped.
+    pub(super) fn push(&self, id: u64, base: &Arc<Document>, next: Document) -> ApiResult<Undo> {
+        self.with(id, |h| {
+            if !Arc::ptr_eq(h.current(), base) {
+                return Err(ApiError::new(
+                    StatusCode::CONFLICT,
+                    "the document changed while the edit was made: try again",
+                ));
+            }
+            h.versions.truncate(h.at + 1);
+            h.versions.push(Arc::new(next));
+            if h.versions.len() > MAX_UNDO {
+                h.versions.remove(0);
+            }
+            h.at = h.versions.len() - 1;
+            Ok(h.state())
+        })?
+    }
+
+    /// Moves in `id`'s history; refused when there is nothing to undo or redo.
+    pub(super) fn step(&self, id: u64, step: Step) -> ApiResult<(Arc<Document>, Undo)> {
+        self.with(id, |h| {
+            let next = match step {
+                Step::Back => h.at.checked_sub(1),
+                Step::Forward => Some(h.at + 1).filter(|&n| n < h.versions.len()),
+            };
+            let Some(at) = next else {
+                return Err(ApiError::input(match step {
+                    Step::Back => "nothing to undo".to_string(),
+                    Step::Forward => "nothing to redo".to_string(),
+                }));
+            };
+            h.at = at;
+            Ok((Arc::clone(h.current()), h.state()))
+        })?
     }
 }
 
@@ -107,7 +203,7 @@ pub struct ApiError {
 }
 
 impl ApiError {
-    fn new(status: StatusCode, message: impl Into<String>) -> ApiError {
+    pub(super) fn new(status: StatusCode, message: impl Into<String>) -> ApiError {
         ApiError {
             status,
             message: message.into(),
@@ -115,7 +211,7 @@ impl ApiError {
     }
 
     /// Bad input: 422 with the message.
-    fn input(message: String) -> ApiError {
+    pub(super) fn input(message: String) -> ApiError {
         ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, message)
     }
 }
@@ -138,10 +234,10 @@ impl From<PathRejection> for ApiError {
     }
 }
 
-type ApiResult<T> = Result<T, ApiError>;
+pub(super) type ApiResult<T> = Result<T, ApiError>;
 
 /// A document id from the path (a JSON error when it is not a number).
-struct PathId(u64);
+pub(super) struct PathId(pub(super) u64);
 
 impl<S: Send + Sync> FromRequestParts<S> for PathId {
     type Rejection = ApiError;
@@ -156,7 +252,7 @@ impl<S: Send + Sync> FromRequestParts<S> for PathId {
 }
 
 /// Runs CPU work off the async threads.
-async fn blocking<T: Send + 'static>(
+pub(super) async fn blocking<T: Send + 'static>(
     work: impl FnOnce() -> ApiResult<T> + Send + 'static,
 ) -> ApiResult<T> {
     tokio::task::spawn_blocking(work).await.map_err(|e| {
@@ -174,18 +270,35 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/files", get(files))
         .route("/api/files/{index}", post(open_file))
         .route("/api/upload", post(upload))
+        .route("/api/docs/{id}/edit", post(edit_api::edit))
+        .route("/api/docs/{id}/undo", post(edit_api::undo))
+        .route("/api/docs/{id}/redo", post(edit_api::redo))
+        .route("/api/docs/{id}/snap", post(edit_api::snap_point))
         .route("/api/docs/{id}/check", get(check))
         .route("/api/docs/{id}/layers", get(layers))
         .route("/api/docs/{id}/fold3d", get(fold3d))
+        .route("/api/docs/{id}/flat", get(flat))
         .route("/api/docs/{id}/plan", get(plan))
         .route("/api/docs/{id}/cut", get(cut))
         .route("/api/docs/{id}/simulate", get(simulate))
         .route("/api/machines", get(machines))
+        .route("/api/profiles/{kind}", post(upload_profile))
         .route("/api/materials", get(materials))
         .route("/api/legend", get(legend))
+        .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))
         .with_state(state)
+}
+
+/// API replies describe the document as it is now (edits change it under the same URL):
+/// never cached.
+async fn no_store(mut response: Response) -> Response {
+    response.headers_mut().insert(
+        header::CACHE_CONTROL,
+        axum::http::HeaderValue::from_static("no-store"),
+    );
+    response
 }
 
 /// An embedded front-end file by exact name; anything else is 404.
@@ -225,17 +338,29 @@ async fn files(State(s): State<Arc<Studio>>) -> Json<Vec<FileEntry>> {
 }
 
 #[derive(Serialize)]
-struct Opened {
-    id: u64,
+pub(super) struct Opened {
+    pub(super) id: u64,
     #[serde(flatten)]
-    view: PatternView,
+    pub(super) view: PatternView,
+    /// What can be undone and redone.
+    pub(super) history: Undo,
+    /// What the edit did, after an edit.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) edit: Option<EditReport>,
 }
 
 fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
-    let cleaned = doc.cleaned(false).map_err(ApiError::input)?;
-    let view = PatternView::new(&doc.name, &cleaned);
+    let view = PatternView::new(&doc.name, doc.planar().map_err(ApiError::input)?);
     let (id, _) = s.add(doc);
-    Ok(Json(Opened { id, view }))
+    Ok(Json(Opened {
+        id,
+        view,
+        history: Undo {
+            undo: false,
+            redo: false,
+        },
+        edit: None,
+    }))
 }
 
 async fn open_file(
@@ -333,6 +458,26 @@ async fn layers(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
     .await
 }
 
+#[derive(Deserialize)]
+struct FlatQuery {
+    state: Option<u64>,
+}
+
+async fn flat(
+    State(s): State<Arc<Studio>>,
+    PathId(id): PathId,
+    query: Result<Query<FlatQuery>, QueryRejection>,
+) -> ApiResult<Json<FlatView>> {
+    let Query(q) = query?;
+    let doc = s.get(id)?;
+    blocking(move || {
+        flat_view(&doc, q.state.unwrap_or(0))
+            .map(Json)
+            .map_err(ApiError::input)
+    })
+    .await
+}
+
 /// The fold sent to the page: triangles on model vertices and frames of positions.
 #[derive(Serialize)]
 struct FoldView {
@@ -409,11 +554,13 @@ async fn plan(
     State(s): State<Arc<Studio>>,
     PathId(id): PathId,
     query: Result<Query<JobQuery>, QueryRejection>,
+    settings: Result<Query<PlanSettings>, QueryRejection>,
 ) -> ApiResult<Json<PlanView>> {
     let Query(q) = query?;
+    let choice = q.choice(&s, settings?.0)?;
     let doc = s.get(id)?;
     blocking(move || {
-        let p = plan_document(&doc, &q.choice()).map_err(ApiError::input)?;
+        let p = plan_document(&doc, &choice).map_err(ApiError::input)?;
         Ok(Json(PlanView::new(&p)))
     })
     .await
@@ -436,12 +583,15 @@ struct JobQuery {
 }
 
 impl JobQuery {
-    fn choice(&self) -> PlanChoice {
-        PlanChoice {
-            machine: self.machine.clone(),
-            material: self.material.clone(),
+    /// The profiles chosen (shipped or uploaded), the size and `settings`.
+    fn choice(&self, s: &Studio, settings: PlanSettings) -> ApiResult<PlanChoice> {
+        let profiles = s.profiles.lock().unwrap_or_else(PoisonError::into_inner);
+        Ok(PlanChoice {
+            machine: profiles.machine(&self.machine).map_err(ApiError::input)?,
+            material: profiles.material(&self.material).map_err(ApiError::input)?,
             size: self.size,
-        }
+            settings,
+        })
     }
 }
 
@@ -470,8 +620,10 @@ async fn cut(
     State(s): State<Arc<Studio>>,
     PathId(id): PathId,
     query: Result<Query<JobQuery>, QueryRejection>,
+    settings: Result<Query<PlanSettings>, QueryRejection>,
 ) -> ApiResult<Response> {
     let Query(q) = query?;
+    let choice = q.choice(&s, settings?.0)?;
     let doc = s.get(id)?;
     blocking(move || {
         let format = q.format.clone().unwrap_or_default();
@@ -480,7 +632,7 @@ async fn cut(
                 "format {format:?}: unknown job type (expected {JOB_EXTENSIONS})"
             ))
         })?;
-        let p = plan_document(&doc, &q.choice()).map_err(ApiError::input)?;
+        let p = plan_document(&doc, &choice).map_err(ApiError::input)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
         let bytes = job_file(kind, &p.plan, job, &p.machine)
             .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
@@ -522,11 +674,13 @@ async fn simulate(
     State(s): State<Arc<Studio>>,
     PathId(id): PathId,
     query: Result<Query<JobQuery>, QueryRejection>,
+    settings: Result<Query<PlanSettings>, QueryRejection>,
 ) -> ApiResult<Json<Value>> {
     let Query(q) = query?;
+    let choice = q.choice(&s, settings?.0)?;
     let doc = s.get(id)?;
     blocking(move || {
-        let p = plan_document(&doc, &q.choice()).map_err(ApiError::input)?;
+        let p = plan_document(&doc, &choice).map_err(ApiError::input)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
         let failed = |e: &dyn std::fmt::Display| ApiError::input(format!("{}: {e}", doc.name));
         let text = crate::post::gcode(&p.plan, job, &p.machine).map_err(|e| failed(&e))?;
@@ -545,7 +699,7 @@ async fn simulate(
     .await
 }
 
-async fn machines() -> ApiResult<Json<Value>> {
+async fn machines(State(s): State<Arc<Studio>>) -> ApiResult<Json<Value>> {
     let entries = profile_catalogue(ProfileKind::Machine)
         .map_err(|e| ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?;
     let mut out = Vec::new();
@@ -559,18 +713,80 @@ async fn machines() -> ApiResult<Json<Value>> {
             "gcode": m.emits_gcode(),
         }));
     }
+    let profiles = s.profiles.lock().unwrap_or_else(PoisonError::into_inner);
+    for (key, m) in profiles.machines() {
+        out.push(json!({
+            "name": key,
+            "description": "uploaded",
+            "bed": [m.bed.width_mm, m.bed.height_mm],
+            "gcode": m.emits_gcode(),
+        }));
+    }
     Ok(Json(json!(out)))
 }
 
-async fn materials() -> ApiResult<Json<Value>> {
+#[derive(Deserialize)]
+struct ProfileQuery {
+    name: String,
+}
+
+/// Reads an uploaded machine or material profile (TOML) with the command line's parser and
+/// keeps it for this run: its key (`upload:NAME`) chooses it in `plan`, `cut`, `simulate`.
+async fn upload_profile(
+    State(s): State<Arc<Studio>>,
+    kind: Result<Path<String>, PathRejection>,
+    query: Result<Query<ProfileQuery>, QueryRejection>,
+    body: Result<Bytes, BytesRejection>,
+) -> ApiResult<Json<Value>> {
+    let Path(kind) = kind?;
+    let Query(q) = query?;
+    let kind = match kind.as_str() {
+        "machine" => Kind::Machine,
+        "material" => Kind::Material,
+        other => {
+            return Err(ApiError::new(
+                StatusCode::NOT_FOUND,
+                format!("{other}: profiles are of kind machine or material"),
+            ));
+        }
+    };
+    let name = q
+        .name
+        .rsplit(['/', '\\'])
+        .next()
+        .unwrap_or_default()
+        .to_string();
+    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    if body.len() > MAX_PROFILE_BYTES {
+        return Err(ApiError::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            format!("{name}: the profile is larger than the limit of {MAX_PROFILE_BYTES} bytes"),
+        ));
+    }
+    let key = s
+        .profiles
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .add(kind, &name, &body)
+        .map_err(ApiError::input)?;
+    Ok(Json(json!({ "name": key })))
+}
+
+async fn materials(State(s): State<Arc<Studio>>) -> ApiResult<Json<Value>> {
     let entries = profile_catalogue(ProfileKind::Material)
         .map_err(|e| ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?;
-    Ok(Json(json!(
-        entries
+    let mut out: Vec<Value> = entries
+        .iter()
+        .map(|e| json!({ "name": e.name, "description": e.description }))
+        .collect();
+    let profiles = s.profiles.lock().unwrap_or_else(PoisonError::into_inner);
+    out.extend(
+        profiles
+            .materials()
             .iter()
-            .map(|e| json!({ "name": e.name, "description": e.description }))
-            .collect::<Vec<_>>()
-    )))
+            .map(|(key, _)| json!({ "name": key, "description": "uploaded" })),
+    );
+    Ok(Json(json!(out)))
 }
 
 /// Line styles of the previews ([`crate::render::style::line_style`]) with a base width of 1:

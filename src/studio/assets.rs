@@ -25,6 +25,8 @@ static ASSETS: &[Asset] = &[
     asset!("app.js", "text/javascript; charset=utf-8"),
     asset!("api.js", "text/javascript; charset=utf-8"),
     asset!("cp.js", "text/javascript; charset=utf-8"),
+    asset!("edit.js", "text/javascript; charset=utf-8"),
+    asset!("flat.js", "text/javascript; charset=utf-8"),
     asset!("fold.js", "text/javascript; charset=utf-8"),
     asset!("machine.js", "text/javascript; charset=utf-8"),
     asset!(

@@ -2,6 +2,7 @@
 //! line, and cleaned for each use exactly as the matching `foldcam` subcommand cleans it.
 
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 
 use glam::DVec2;
 use serde::Serialize;
@@ -18,6 +19,8 @@ pub struct Document {
     pub name: String,
     /// The pattern as read, before cleaning.
     pub imported: Imported,
+    /// The cleaning without faces, done once (snapping asks for it on every pointer move).
+    clean: OnceLock<Result<Cleaned, String>>,
 }
 
 /// The pattern after cleaning, with what cleaning had to say.
@@ -88,6 +91,21 @@ impl Document {
         Document::new(name.to_string(), imported)
     }
 
+    /// The document after an edit: `pattern` (planar, from [`crate::pattern::edit`]) replaces
+    /// the pattern as read; the folded state read with the file no longer applies and goes.
+    pub fn edited(&self, pattern: CreasePattern) -> Document {
+        Document {
+            name: self.name.clone(),
+            imported: Imported {
+                pattern,
+                folded: None,
+                warnings: self.imported.warnings.clone(),
+                notes: self.imported.notes.clone(),
+            },
+            clean: OnceLock::new(),
+        }
+    }
+
     fn new(name: String, imported: Imported) -> Result<Document, String> {
         if imported.pattern.edges.is_empty() {
             return Err(format!(
@@ -95,7 +113,11 @@ impl Document {
                  to check, draw or convert"
             ));
         }
-        Ok(Document { name, imported })
+        Ok(Document {
+            name,
+            imported,
+            clean: OnceLock::new(),
+        })
     }
 
     /// The pattern cleaned into a planar graph (faces traced when `faces`), as `foldcam check`
@@ -104,6 +126,25 @@ impl Document {
     /// # Errors
     /// The planariser's refusal, naming the file.
     pub fn cleaned(&self, faces: bool) -> Result<Cleaned, String> {
+        if faces {
+            self.clean_now(true)
+        } else {
+            self.planar().cloned()
+        }
+    }
+
+    /// [`Document::cleaned`] without faces, by reference (cleaned once per document).
+    ///
+    /// # Errors
+    /// The planariser's refusal, naming the file.
+    pub fn planar(&self) -> Result<&Cleaned, String> {
+        self.clean
+            .get_or_init(|| self.clean_now(false))
+            .as_ref()
+            .map_err(Clone::clone)
+    }
+
+    fn clean_now(&self, faces: bool) -> Result<Cleaned, String> {
         let name = &self.name;
         let mut messages: Vec<String> = self
             .imported

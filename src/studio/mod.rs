@@ -17,6 +17,9 @@
 pub mod api;
 pub mod assets;
 pub mod document;
+mod edit_api;
+pub mod flat;
+pub mod settings;
 pub mod toolpath;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};

@@ -1,26 +1,28 @@
-//! Planning an opened pattern for a shipped machine and material, as `foldcam cut` and
-//! `foldcam plan` do with no plan options given, and the plan as the front end draws it.
+//! Planning an opened pattern for a machine and material, as `foldcam cut` and `foldcam plan`
+//! do with the same options, and the plan as the front end draws it.
 
 use glam::DVec2;
 use serde::Serialize;
 
 use super::document::Document;
-use crate::fab::{FabPlan, PlanOptions, PlanStats};
-use crate::machine::{
-    MachineProfile, load_machine, load_material, shipped_machines, shipped_materials,
-};
+use super::settings::PlanSettings;
+use crate::fab::{FabPlan, PlanStats};
+use crate::machine::{MachineProfile, Material};
 use crate::pattern::CreasePattern;
 
-/// What to plan for: shipped profile names only (the studio reads no profile from disk).
-#[derive(Clone, Debug, Default, serde::Deserialize)]
+/// What to plan for: the profiles (shipped or uploaded, never read from a path a request
+/// names), the size and the plan overrides.
+#[derive(Clone, Debug)]
 pub struct PlanChoice {
-    /// A shipped machine profile name.
-    pub machine: String,
-    /// A shipped material profile name.
-    pub material: String,
+    /// The machine.
+    pub machine: MachineProfile,
+    /// The material.
+    pub material: Material,
     /// Longer side of the pattern in millimetres (as `--size`), for unitless patterns or to
     /// rescale; `None` keeps the file's size.
     pub size: Option<f64>,
+    /// The overrides of `cut`'s options.
+    pub settings: PlanSettings,
 }
 
 /// A plan with the profile and the pattern it was made from.
@@ -34,34 +36,15 @@ pub struct Planned {
     pub pattern: CreasePattern,
 }
 
-/// Refuses a name that is not a shipped profile (a path would make the server read a file a
-/// request names).
-fn shipped(name: &str, kind: &str, names: &[&str]) -> Result<(), String> {
-    if names.contains(&name) {
-        Ok(())
-    } else {
-        Err(format!(
-            "{kind} {name:?}: not a shipped profile (one of {}); the studio reads no profile \
-             files from disk",
-            names.join(", ")
-        ))
-    }
-}
-
-/// Plans `doc` as `foldcam cut DOC -m MACHINE -x MATERIAL [--size S]` would.
+/// Plans `doc` as `foldcam cut DOC -m MACHINE -x MATERIAL [--size S] [options]` would.
 ///
 /// # Errors
-/// The message `foldcam cut` prints for the same input, or a refusal of a name that is not a
-/// shipped profile.
+/// The message `foldcam cut` prints for the same input, naming the option for a setting out
+/// of range.
 pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, String> {
-    shipped(&choice.machine, "machine", &shipped_machines())?;
-    shipped(&choice.material, "material", &shipped_materials())?;
-    let machine = load_machine(&choice.machine).map_err(|e| e.to_string())?;
-    let material = load_material(&choice.material).map_err(|e| e.to_string())?;
-    let mut options = PlanOptions::from_material(&material);
-    options
-        .adapt_to_machine(&machine)
-        .map_err(|e| e.to_string())?;
+    let machine = choice.machine.clone();
+    let material = &choice.material;
+    let options = choice.settings.options(&machine, material)?;
     let cleaned = doc.cleaned(false)?;
     let mut pattern = cleaned.pattern;
     if let Some(size) = choice.size {
@@ -70,7 +53,7 @@ pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, Str
     pattern
         .require_millimetres()
         .map_err(|e| format!("{}: {e}", doc.name))?;
-    let plan = crate::fab::plan(&pattern, &machine, &material, &options)
+    let plan = crate::fab::plan(&pattern, &machine, material, &options)
         .map_err(|e| format!("{}: {e}", doc.name))?;
     Ok(Planned {
         machine,

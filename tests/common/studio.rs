@@ -168,3 +168,24 @@ pub fn encode(s: &str) -> String {
         })
         .collect()
 }
+
+/// `examples/patterns/flat-vertex.fold` folded all the way (its creases carry ±150°, a 3D
+/// target the flat-foldability checks leave alone): mountains −180°, valleys +180°.
+pub fn flat_vertex_folded_flat() -> Vec<u8> {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/patterns/flat-vertex.fold");
+    let mut fold: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
+    let angles: Vec<f64> = fold["edges_assignment"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| match a.as_str().unwrap() {
+            "M" => -180.0,
+            "V" => 180.0,
+            _ => 0.0,
+        })
+        .collect();
+    fold["edges_foldAngle"] = serde_json::json!(angles);
+    serde_json::to_vec_pretty(&fold).unwrap()
+}
