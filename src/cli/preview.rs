@@ -66,10 +66,13 @@ pub fn run(args: Args) -> Result<Outcome> {
             eprint!("foldcam: {}: {}", args.input.display(), layers.to_text());
         }
         eprintln!(
-            "foldcam: {}: {} fault(s) ringed",
+            "foldcam: {}: {} fault(s) ringed, numbered as listed:",
             args.input.display(),
             report.findings.len()
         );
+        for (i, f) in report.findings.iter().enumerate() {
+            eprintln!("  {}", foldcam::check::finding_line(i + 1, f));
+        }
         report.findings
     } else {
         Vec::new()
