@@ -88,9 +88,9 @@ fn toolpath_shows_the_whole_bed_with_a_legend_and_a_scale_bar() {
             "-o",
             "m.fold",
             "--columns",
-            "6",
+            "12",
             "--rows",
-            "4",
+            "8",
         ],
         d,
     ));
@@ -199,6 +199,41 @@ fn toolpath_shows_the_whole_bed_with_a_legend_and_a_scale_bar() {
         round.iter().any(|r| (mm - r).abs() < 2.0 / scale + 0.5),
         "bar of {bar} px = {mm:.1} mm"
     );
+}
+
+#[test]
+fn a_small_job_on_a_large_bed_is_drawn_on_the_bed_corner() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    ok(&foldcam(&["generate", "miura", "-o", "m.fold"], d));
+    ok(&foldcam(
+        &[
+            "cut",
+            "m.fold",
+            "-m",
+            "linuxcnc-fiber",
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "m.ngc",
+        ],
+        d,
+    ));
+    let args = [
+        "simulate",
+        "m.ngc",
+        "-m",
+        "linuxcnc-fiber",
+        "--png",
+        "p.png",
+    ];
+    ok(&foldcam(&args, d));
+    let img = open(d, "p.png");
+    // The perforations take a visible share of the picture, not a speck on a 1.5 × 3 m bed.
+    let all = count(&img, 0..img.height(), 0..img.width(), |p| {
+        near(p, PERFORATE_GREEN, 10)
+    });
+    assert!(all > 3000, "{all} perforation pixels");
 }
 
 #[test]

@@ -1,5 +1,6 @@
-//! A PNG of a simulated run: the whole bed, seen from above with its front at the bottom, the
-//! burns, the travel, and under it a key ([`crate::render::legend`]): a scale bar in
+//! A PNG of a simulated run: the whole bed (or, for a job under a quarter of the bed both ways,
+//! the corner of the bed from its origin to just past the job, said in the key), seen from
+//! above with its front at the bottom, the burns, the travel, and under it a key ([`crate::render::legend`]): a scale bar in
 //! millimetres and what every colour means.
 //!
 //! **Colours.** Where the program heads its groups with comments naming the operation (`;
@@ -40,8 +41,10 @@ pub const BED_COLOR: [u8; 4] = [110, 110, 110, 255];
 struct View {
     scale: f64,
     margin: f64,
-    /// Bed height, mm.
+    /// Height of the region drawn (from the bed's origin), mm.
     height: f64,
+    /// Width of the region drawn, mm.
+    width: f64,
     y_flipped: bool,
 }
 
@@ -88,7 +91,7 @@ fn colouring(report: &SimReport) -> Colouring {
     }
 }
 
-/// Draws `report` on the whole bed of `machine` as PNG bytes, `width` pixels wide (16 to
+/// Draws `report` on the bed of `machine` (see the module docs for the region) as PNG bytes, `width` pixels wide (16 to
 /// 16384); the height follows the bed's aspect ratio plus the key's band, at most 16384
 /// pixels.
 pub fn render_png(
@@ -112,7 +115,7 @@ pub fn render_pixmap(
     }
     let colouring = colouring(report);
     let font_px = legend::font_px_for(width);
-    let view = layout(machine, width)?;
+    let view = layout(machine, report, width)?;
     let inner = (f64::from(width) - 2.0 * view.margin).max(1.0) as u32;
     let key = key(report, machine, &view, colouring);
     let band = key.height(inner, font_px);
@@ -138,7 +141,31 @@ pub fn render_pixmap(
     Ok(pixmap)
 }
 
-fn layout(machine: &MachineProfile, width: u32) -> Result<View, RenderError> {
+/// Share of the bed, both ways, under which a job is drawn on the bed's corner only.
+const SMALL_JOB_SHARE: f64 = 0.25;
+
+/// The region drawn, from the bed's origin: the whole bed, or, for a job under
+/// [`SMALL_JOB_SHARE`] of the bed both ways, the corner of the bed that holds it (with a 5 %
+/// border), so a small job on a large bed is not a speck.
+fn region(report: &SimReport, bed: &crate::machine::Bed) -> DVec2 {
+    let whole = DVec2::new(bed.width_mm, bed.height_mm);
+    let points = report
+        .burns
+        .iter()
+        .flat_map(|b| [b.from, b.to])
+        .chain(report.travels.iter().flat_map(|t| [t.from, t.to]))
+        .filter(|p| p.is_finite());
+    let hi = points.fold(DVec2::ZERO, |hi, p| hi.max(p));
+    if hi.x > SMALL_JOB_SHARE * whole.x
+        || hi.y > SMALL_JOB_SHARE * whole.y
+        || hi.max_element() <= 0.0
+    {
+        return whole;
+    }
+    (hi + DVec2::splat(0.05 * hi.max_element())).min(whole)
+}
+
+fn layout(machine: &MachineProfile, report: &SimReport, width: u32) -> Result<View, RenderError> {
     let bed = machine.bed;
     let valid = |v: f64| v.is_finite() && v > 0.0;
     if !(valid(bed.width_mm) && valid(bed.height_mm)) {
@@ -149,13 +176,15 @@ fn layout(machine: &MachineProfile, width: u32) -> Result<View, RenderError> {
         });
     }
     let margin = (f64::from(width) * MARGIN_SHARE).round();
-    let scale = (f64::from(width) - 2.0 * margin) / bed.width_mm;
+    let size = region(report, &bed);
+    let scale = (f64::from(width) - 2.0 * margin) / size.x;
     // Leave a quarter of the largest height for the key.
     let max_h = 0.75 * f64::from(MAX_SIZE) - 2.0 * margin;
     Ok(View {
-        scale: scale.min(max_h / bed.height_mm),
+        scale: scale.min(max_h / size.y),
         margin,
-        height: bed.height_mm,
+        height: size.y,
+        width: size.x,
         y_flipped: bed.y_flipped,
     })
 }
@@ -164,8 +193,10 @@ fn layout(machine: &MachineProfile, width: u32) -> Result<View, RenderError> {
 fn key(report: &SimReport, machine: &MachineProfile, view: &View, colouring: Colouring) -> Key {
     let lw = 2.0;
     let bed = &machine.bed;
+    let whole = view.width >= bed.width_mm && view.height >= bed.height_mm;
+    let part = if whole { "" } else { ", its corner" };
     let mut entries = vec![LegendEntry::line(
-        &format!("bed {} × {} mm", bed.width_mm, bed.height_mm),
+        &format!("bed {} × {} mm{part}", bed.width_mm, bed.height_mm),
         BED_COLOR,
         lw,
         None,
@@ -207,7 +238,7 @@ fn key(report: &SimReport, machine: &MachineProfile, view: &View, colouring: Col
             dash,
         ));
     }
-    let width = view.scale * machine.bed.width_mm;
+    let width = view.scale * view.width;
     Key {
         scale_bar: Some(ScaleBar {
             px_per_unit: view.scale,
