@@ -7,13 +7,16 @@
 //! command line calls [`Limit::parse`] (clap then names the option), the profile readers
 //! [`Limit::check`] (they name the file and key). Settings that depend on each other (the
 //! shortest dash against the dash, the web against the bridge) are checked by
-//! [`check_perforation`] once the command line has been laid over the material.
+//! `machine::Perforation::check_limits` once the command line has been laid over the material.
 //!
 //! Ranges are inclusive. Lengths are millimetres, speeds mm/min, power a fraction of the
 //! machine's range; the upper bounds are far beyond any real sheet or machine, and are there
 //! so that no later step (offsets, dash layouts, rasters) meets a number it cannot work with.
 
-use crate::machine::Perforation;
+/// Largest coordinate magnitude accepted anywhere, in millimetres (or units for unitless
+/// patterns): 1e9 mm is a thousand kilometres, far beyond any sheet, and keeps products of
+/// coordinates well inside f64 precision.
+pub const MAX_COORDINATE: f64 = 1e9;
 
 /// One real-valued setting: its option, its profile key, its range and unit.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -223,7 +226,7 @@ pub const TOLERANCE: Limit = Limit {
     option: "--tolerance",
     key: "",
     min: 1e-12,
-    max: crate::pattern::MAX_COORDINATE,
+    max: MAX_COORDINATE,
     unit: "(pattern units)",
 };
 /// Line-end snapping distance of drawings: `--snap` (0 turns it off).
@@ -250,51 +253,6 @@ pub fn check_tolerance(tolerance: f64, diagonal: f64) -> Result<(), LimitError> 
     })
 }
 
-/// Checks a perforation after the command line was laid over the material: every length in
-/// its range, the shortest dash at most the dash (a dash below it cannot be cut, so every
-/// perforated crease would become one continuous slot) and the web at most the bridge.
-pub fn check_perforation(p: &Perforation) -> Result<(), LimitError> {
-    for (limit, value) in [
-        (DASH, p.cut_mm),
-        (BRIDGE, p.bridge_mm),
-        (MIN_DASH, p.min_dash_mm),
-        (MIN_WEB, p.min_web_mm),
-        (CLEARANCE, p.vertex_clearance_mm),
-    ] {
-        limit.check(value).map_err(|message| LimitError {
-            setting: limit.name(),
-            value: show(value),
-            message,
-        })?;
-    }
-    if p.cut_mm < p.min_dash_mm {
-        return Err(LimitError {
-            setting: DASH.name(),
-            value: format!("{} mm", p.cut_mm),
-            message: format!(
-                "shorter than the shortest dash worth cutting, {} mm ({}): no dash could be \
-                 cut, so every perforated crease would become one continuous slot; give a \
-                 longer dash or a smaller --min-dash",
-                p.min_dash_mm,
-                MIN_DASH.name()
-            ),
-        });
-    }
-    if p.bridge_mm < p.min_web_mm {
-        return Err(LimitError {
-            setting: BRIDGE.name(),
-            value: format!("{} mm", p.bridge_mm),
-            message: format!(
-                "shorter than the least web, {} mm ({}); give a longer bridge or a smaller \
-                 --min-web",
-                p.min_web_mm,
-                MIN_WEB.name()
-            ),
-        });
-    }
-    Ok(())
-}
-
 /// Checks a length that has no profile key (tabs, lead-in, margin) against `limit`.
 pub fn check_length(limit: &Limit, value: f64) -> Result<f64, LimitError> {
     limit.check(value).map_err(|message| LimitError {
@@ -318,27 +276,6 @@ mod tests {
         assert!(KERF.parse("inf").is_err());
         assert_eq!(KERF.parse("0.2"), Ok(0.2));
         assert_eq!(KERF.parse("5"), Ok(5.0));
-    }
-
-    #[test]
-    fn a_dash_below_the_shortest_dash_is_refused() {
-        let p = Perforation {
-            cut_mm: 0.01,
-            bridge_mm: 1.0,
-            min_dash_mm: 0.5,
-            min_web_mm: 0.5,
-            vertex_clearance_mm: 1.0,
-        };
-        let e = check_perforation(&p).unwrap_err();
-        assert!(e.to_string().contains("--dash"), "{e}");
-        assert!(e.to_string().contains("continuous slot"), "{e}");
-        let fine = Perforation { cut_mm: 2.0, ..p };
-        assert_eq!(check_perforation(&fine), Ok(()));
-        let thin = Perforation {
-            bridge_mm: 0.2,
-            ..fine
-        };
-        assert!(check_perforation(&thin).is_err());
     }
 
     #[test]

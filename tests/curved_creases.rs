@@ -59,10 +59,12 @@ fn setup(material: &str) -> (MachineProfile, Material, PlanOptions) {
     };
     let machine = load_machine(machine_name).unwrap();
     let material = load_material(material).unwrap();
-    let mut options = PlanOptions::from_material(&material);
-    options.mapping.mountain = Some(Operation::Perforate);
-    options.mapping.valley = Some(Operation::Perforate);
-    options.adapt_to_machine(&machine).unwrap();
+    let overrides = foldcam::fab::PlanOverrides {
+        mountain: Some(Some(Operation::Perforate)),
+        valley: Some(Some(Operation::Perforate)),
+        ..Default::default()
+    };
+    let options = PlanOptions::for_machine(&machine, &material, &overrides).unwrap();
     (machine, material, options)
 }
 

@@ -536,8 +536,7 @@ fn the_bird_base_cuts_clean_on_card_stock() {
     let cp = crease_pattern(&example("bird-base.toml")).pattern;
     let machine = load_machine("grbl-diode").expect("machine");
     let material = load_material("card-300gsm").expect("material");
-    let mut opts = PlanOptions::from_material(&material);
-    opts.adapt_to_machine(&machine)
+    let opts = PlanOptions::for_machine(&machine, &material, &Default::default())
         .expect("machine fits material");
     let p = plan(&cp, &machine, &material, &opts).expect("plan");
     assert!(!p.jobs.is_empty());

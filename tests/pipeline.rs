@@ -115,11 +115,12 @@ fn assert_file_outputs_hold_the_job(
 }
 
 fn options(machine: &MachineProfile, material: &Material, two_sided: bool) -> PlanOptions {
-    let mut o = PlanOptions::from_material(material);
-    o.adapt_to_machine(machine)
-        .expect("every shipped machine can do every shipped material");
-    o.two_sided = two_sided;
-    o
+    let overrides = foldcam::fab::PlanOverrides {
+        two_sided,
+        ..Default::default()
+    };
+    PlanOptions::for_machine(machine, material, &overrides)
+        .expect("every shipped machine can do every shipped material")
 }
 
 #[test]

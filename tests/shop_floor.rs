@@ -63,8 +63,7 @@ fn material_for(machine: &MachineProfile) -> Vec<Material> {
 }
 
 fn planned(cp: &CreasePattern, machine: &MachineProfile, material: &Material) -> FabPlan {
-    let mut o = PlanOptions::from_material(material);
-    o.adapt_to_machine(machine).expect("adapts");
+    let o = PlanOptions::for_machine(machine, material, &Default::default()).expect("adapts");
     plan(cp, machine, material, &o).expect("plans")
 }
 
@@ -247,9 +246,11 @@ fn plotters_draw_mountains_and_valleys_on_separate_layers_with_a_pause() {
     assert_eq!(lines.iter().filter(|l| *l == "M0").count(), groups - 1);
     // Asked-for dashed valleys stay dashes on a plotter (pen down per dash).
     let material = load_material("card-300gsm").expect("shipped");
-    let mut o = PlanOptions::from_material(&material);
-    o.mapping.valley = Some(foldcam::fab::Operation::Perforate);
-    o.adapt_to_machine(&machine).expect("adapts");
+    let overrides = foldcam::fab::PlanOverrides {
+        valley: Some(Some(foldcam::fab::Operation::Perforate)),
+        ..Default::default()
+    };
+    let o = PlanOptions::for_machine(&machine, &material, &overrides).expect("adapts");
     let dashed = plan(&cp, &machine, &material, &o).expect("plans");
     let svg = post::svg(&dashed, &dashed.jobs[0], &machine.bed, true).expect("SVG");
     assert!(svg.contains("inkscape:label=\"perforate\"") && svg.contains("stroke-dasharray"));

@@ -310,6 +310,14 @@ fn cli_reports_the_rigid_simulation() {
         stdout.contains("rigid folding: reached the target after 20 steps"),
         "{stdout}"
     );
+    // Progress names each of the 20 steps and no step beyond them.
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let steps: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("rigid step"))
+        .collect();
+    assert_eq!(steps.len(), 20, "{stderr}");
+    assert!(steps[19].contains("rigid step   20:"), "{stderr}");
     let bad = std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
         .arg("tessellate")
         .arg(&mesh)
@@ -324,4 +332,19 @@ fn cli_reports_the_rigid_simulation() {
         "{}",
         String::from_utf8_lossy(&bad.stderr)
     );
+}
+
+#[test]
+fn progress_counts_the_steps_asked_for_and_no_more() {
+    let m = RigidModel::new(&flat_foldable_vertex()).unwrap();
+    let opts = RigidOptions {
+        steps: 7,
+        ..RigidOptions::default()
+    };
+    let mut heard = Vec::new();
+    let r = simulate(&m, &degree4_targets(1.2), &opts, |s, _| heard.push(s)).unwrap();
+    assert!(r.reached, "{}", r.summary());
+    assert_eq!(heard, (1..=7).collect::<Vec<_>>());
+    assert_eq!(r.steps, 7);
+    assert!(r.summary().contains("after 7 steps"), "{}", r.summary());
 }

@@ -237,6 +237,19 @@ impl CheckReport {
 
 /// Runs the checks (see the module docs for what each one means) on a pattern without a 3D
 /// frame.
+///
+/// ```
+/// use foldcam::check::FindingKind;
+/// use foldcam::{CheckOptions, check, load};
+/// let good = load("examples/patterns/flat-vertex.fold".as_ref())?.pattern;
+/// assert!(check(&good, &CheckOptions::default()).passed());
+/// // One crease turned 5° and two mountains with two valleys: Kawasaki and Maekawa fail.
+/// let bad = load("examples/patterns/broken-vertex.fold".as_ref())?.pattern;
+/// let report = check(&bad, &CheckOptions::default());
+/// assert_eq!(report.of_kind(FindingKind::Kawasaki).count(), 1);
+/// assert_eq!(report.of_kind(FindingKind::Maekawa).count(), 1);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn check(cp: &CreasePattern, opts: &CheckOptions) -> CheckReport {
     check_with_frame(cp, None, opts)
 }

@@ -1,10 +1,10 @@
 //! Argument groups shared by several subcommands, validated where they enter.
 
-use anyhow::{Result, bail};
+use anyhow::Result;
 use clap::Args;
 
 use foldcam::check::CheckOptions;
-use foldcam::pattern::{CreasePattern, FoldedState, Units};
+use foldcam::pattern::{CreasePattern, FoldedState, Scale};
 
 /// Parses a finite number greater than zero.
 pub fn positive(s: &str) -> Result<f64, String> {
@@ -43,34 +43,19 @@ impl ScaleArgs {
     /// scale that pushes coordinates past the 1e9 mm limit. Other FOLD frames kept from the
     /// input would keep their old numbers, so they are dropped (with a warning).
     pub fn apply(&self, cp: &mut CreasePattern, folded: Option<&mut FoldedState>) -> Result<()> {
-        let factor = match (self.scale, self.size) {
-            (Some(f), _) => f,
-            (None, Some(size)) => {
-                let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
-                if extent > 0.0 { size / extent } else { 1.0 }
-            }
+        let scale = match (self.scale, self.size) {
+            (Some(f), _) => Scale::Factor(f),
+            (None, Some(size)) => Scale::Size(size),
             (None, None) => return Ok(()),
         };
-        let extent = cp
-            .bounds()
-            .map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs()).max_element());
-        let limit = foldcam::pattern::MAX_COORDINATE;
-        if !(extent * factor).is_finite() || extent * factor > limit {
-            bail!(
-                "a scale of {factor} puts coordinates at {:e} mm, beyond the limit of {limit:e} mm",
-                extent * factor
-            );
+        let scaled = cp.scale_to(scale)?;
+        for p in folded.into_iter().flat_map(|f| f.positions.iter_mut()) {
+            *p *= scaled.factor;
         }
-        if factor != 1.0 || cp.units == Units::Unitless {
-            cp.scale_to_mm(factor);
-            for p in folded.into_iter().flat_map(|f| f.positions.iter_mut()) {
-                *p *= factor;
-            }
-            if cp.meta.file_extra.shift_remove("file_frames").is_some() {
-                eprintln!(
-                    "foldcam: warning: other frames (file_frames) were dropped: they are not rescaled"
-                );
-            }
+        if scaled.dropped_frames {
+            eprintln!(
+                "foldcam: warning: other frames (file_frames) were dropped: they are not rescaled"
+            );
         }
         Ok(())
     }

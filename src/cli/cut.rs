@@ -3,23 +3,13 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use foldcam::fab::FabPlan;
+use foldcam::fab::{FabPlan, Operation};
+use foldcam::formats::OutputSet;
+use foldcam::job::{JOB_EXTENSIONS, Job, JobFormat, check_gcode, job_file, job_paths};
 use foldcam::machine::MachineProfile;
-use foldcam::sim::{JobFileOptions, JobKind, check_gcode, job_file};
 
 use super::Outcome;
 use super::fab_args::PlanRequest;
-
-fn output_kind(path: &Path) -> Result<JobKind> {
-    match JobKind::from_path(path) {
-        Some(kind) => Ok(kind),
-        None => bail!(
-            "{}: unknown job type (expected {})",
-            path.display(),
-            JobKind::EXTENSIONS
-        ),
-    }
-}
 
 /// Plan a pattern for a machine and material and write the job.
 #[derive(clap::Args)]
@@ -71,26 +61,36 @@ fn frame_power(s: &str) -> Result<f64, String> {
 
 /// Plans and writes the job files (or their frames).
 pub fn run(args: Args) -> Result<Outcome> {
-    let (machine, p) = args.request.plan()?;
+    let l = args.request.load()?;
+    let job = Job::plan_with(&l.pattern, &l.machine, &l.material, l.options)
+        .with_context(|| args.request.input.display().to_string())?;
     if args.frame {
-        write_frames(&args.output, &p, &machine, args.frame_power.unwrap_or(0.0))?;
-    } else {
-        write_jobs(&args.output, &p, &machine, args.r12, args.dasharray)?;
+        write_frames(
+            &args.output,
+            &job.plan,
+            job.machine,
+            args.frame_power.unwrap_or(0.0),
+        )?;
+        return Ok(Outcome::Done);
     }
+    let mut outputs = OutputSet::new();
+    stage_job(&mut outputs, &args.output, &job, args.r12, args.dasharray)?;
+    super::input::commit(outputs, &[&args.request.input])?;
+    print!("{}", super::plan::summary(&job.plan));
     Ok(Outcome::Done)
 }
 
 /// Writes one framing job per job of the plan (G-code, read back by the simulated machine
 /// first), and says what each traces.
 fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64) -> Result<()> {
-    if output_kind(output)? != JobKind::Gcode {
+    if job_format(output, false, false)? != JobFormat::Gcode {
         bail!(
             "{}: --frame writes G-code (.gcode, .nc, .ngc); LightBurn and other job software \
              frame a drawing themselves",
             output.display()
         );
     }
-    let mut outputs = foldcam::formats::OutputSet::new();
+    let mut outputs = OutputSet::new();
     for (job, path) in p.jobs.iter().zip(job_paths(output, p)) {
         let text = foldcam::post::gcode::frame(p, job, machine, power)
             .with_context(|| path.display().to_string())?;
@@ -120,69 +120,70 @@ fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64
     Ok(())
 }
 
-/// Writes the plan's jobs as the output's extension says (G-code read back by the simulated
-/// machine first, DXF R2000 or `r12`, SVG with `dasharray` perforations), then its summary.
-/// Nothing is written unless every job renders and checks.
-pub fn write_jobs(
-    output: &Path,
-    p: &FabPlan,
-    machine: &MachineProfile,
-    r12: bool,
-    dasharray: bool,
-) -> Result<()> {
-    let mut outputs = foldcam::formats::OutputSet::new();
-    stage_jobs(&mut outputs, output, p, machine, r12, dasharray)?;
-    super::input::commit(outputs, &[])?;
-    print!("{}", super::plan::summary(p));
-    Ok(())
-}
-
-/// Renders every job of the plan (G-code read back by the simulated machine) and adds the
-/// files to `outputs`, written all together or not at all by [`super::input::commit`].
-pub fn stage_jobs(
-    outputs: &mut foldcam::formats::OutputSet,
-    output: &Path,
-    p: &FabPlan,
-    machine: &MachineProfile,
-    r12: bool,
-    dasharray: bool,
-) -> Result<()> {
-    let kind = output_kind(output)?;
-    if dasharray && kind != JobKind::Svg {
+/// The job format `output`'s extension asks for, with the DXF and SVG choices.
+pub fn job_format(output: &Path, r12: bool, dasharray: bool) -> Result<JobFormat> {
+    let Some(format) = JobFormat::from_path(output) else {
+        bail!(
+            "{}: unknown job type (expected {JOB_EXTENSIONS})",
+            output.display()
+        );
+    };
+    if dasharray && !matches!(format, JobFormat::Svg { .. }) {
         eprintln!("warning: --dasharray applies to SVG output only: ignored");
     }
+    Ok(format.with_choices(r12, dasharray))
+}
+
+/// Stages a planned job's files as `output`'s extension says (see [`stage_plan`]).
+pub fn stage_job(
+    outputs: &mut OutputSet,
+    output: &Path,
+    job: &Job<'_>,
+    r12: bool,
+    dasharray: bool,
+) -> Result<()> {
+    stage_plan(outputs, output, &job.plan, job.machine, r12, dasharray)
+}
+
+/// Renders every job of the plan as `output`'s extension says (G-code first read back by
+/// the simulated machine: a violation stops the run) and adds the files to `outputs`,
+/// written all together or not at all by [`super::input::commit`].
+pub fn stage_plan(
+    outputs: &mut OutputSet,
+    output: &Path,
+    p: &FabPlan,
+    machine: &MachineProfile,
+    r12: bool,
+    dasharray: bool,
+) -> Result<()> {
+    let format = job_format(output, r12, dasharray)?;
     let perforates = p
         .jobs
         .iter()
         .flat_map(|j| &j.paths)
-        .any(|t| t.op == foldcam::fab::Operation::Perforate);
-    if dasharray && kind == JobKind::Svg && !perforates {
+        .any(|t| t.op == Operation::Perforate);
+    if format == (JobFormat::Svg { dasharray: true }) && !perforates {
         eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
-    let paths = job_paths(output, p);
-    for (job, path) in p.jobs.iter().zip(&paths) {
-        let bytes = job_file(kind, p, job, machine, JobFileOptions { r12, dasharray })
-            .with_context(|| path.display().to_string())?;
+    for (job, path) in p.jobs.iter().zip(job_paths(output, p)) {
+        let bytes =
+            job_file(format, p, job, machine).with_context(|| path.display().to_string())?;
         outputs.add(path, bytes);
     }
     Ok(())
 }
 
-/// One path per job: the output itself, or NAME.JOB.EXT for several jobs.
-fn job_paths(output: &Path, p: &FabPlan) -> Vec<PathBuf> {
-    if p.jobs.len() <= 1 {
-        return vec![output.to_path_buf()];
-    }
-    let stem = output
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let ext = output
-        .extension()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    p.jobs
-        .iter()
-        .map(|j| output.with_file_name(format!("{stem}.{}.{ext}", j.name)))
-        .collect()
+/// Writes the plan's jobs (see [`stage_plan`]), then its summary.
+pub fn write_plan(
+    output: &Path,
+    p: &FabPlan,
+    machine: &MachineProfile,
+    r12: bool,
+    dasharray: bool,
+) -> Result<()> {
+    let mut outputs = OutputSet::new();
+    stage_plan(&mut outputs, output, p, machine, r12, dasharray)?;
+    super::input::commit(outputs, &[])?;
+    print!("{}", super::plan::summary(p));
+    Ok(())
 }

@@ -12,12 +12,13 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use foldcam::check::{CheckOptions, check};
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
-use foldcam::fab::{PlanOptions, plan};
+use foldcam::fab::PlanOverrides;
 use foldcam::formats::{self, Format, write_atomic};
+use foldcam::job::{Job, JobFormat};
 use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, Units, planarize};
 use foldcam::render::{PreviewOptions, preview_png};
-use foldcam::{post, sim};
+use foldcam::sim;
 
 use super::Outcome;
 
@@ -201,18 +202,17 @@ pub(super) struct CheckedJob {
 pub(super) fn checked_job(cp: &CreasePattern, machine: &str, material: &str) -> Result<CheckedJob> {
     let machine = load_machine(machine)?;
     let material = load_material(material)?;
-    let mut options = PlanOptions::from_material(&material);
-    options.adapt_to_machine(&machine)?;
-    let p = plan(cp, &machine, &material, &options)?;
-    let gcode = post::gcode(&p, &p.jobs[0], &machine)?;
-    let run = sim::run(&gcode, &machine)?;
-    let cov = sim::coverage(&run, cp, &p.jobs[0], &p);
-    let edges_off = cov.failed_edges().count();
+    let job = Job::plan(cp, &machine, &material, &PlanOverrides::default())?
+        .post(JobFormat::Gcode)?
+        .verify()?;
+    let clean = job.is_clean();
+    let gcode = String::from_utf8(job.outputs[0].clone())?;
+    let first = job.readback.into_iter().next().context("no job planned")?;
     Ok(CheckedJob {
-        clean: run.is_clean() && cov.passed(),
+        clean,
+        edges_off: first.coverage.failed_edges().count(),
         gcode,
-        run,
-        edges_off,
+        run: first.sim,
     })
 }
 

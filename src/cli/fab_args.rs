@@ -2,7 +2,8 @@
 
 use anyhow::{Context, Result};
 use clap::Args;
-use foldcam::fab::{Operation, PlanOptions, Tabs};
+use foldcam::fab::{Operation, PlanOptions, PlanOverrides, Tabs};
+use foldcam::job::Job;
 use foldcam::machine::{MachineProfile, Material, load_machine, load_material};
 
 use foldcam::limits;
@@ -151,6 +152,36 @@ fn offset(s: &str) -> Result<glam::DVec2, String> {
 }
 
 impl FabArgs {
+    /// The library overrides these arguments describe.
+    pub fn overrides(&self) -> PlanOverrides {
+        let op = |arg: Option<OpChoice>| arg.map(|OpChoice(op)| op);
+        PlanOverrides {
+            mountain: op(self.mountain),
+            valley: op(self.valley),
+            unassigned: op(self.unassigned),
+            flat: op(self.flat),
+            boundary: op(self.boundary),
+            dash_mm: self.dash,
+            bridge_mm: self.bridge,
+            duty: self.duty,
+            min_dash_mm: self.min_dash,
+            min_web_mm: self.min_web,
+            vertex_clearance_mm: self.clearance,
+            kerf_mm: self.kerf,
+            kerf_offset: Some(!self.no_kerf_offset),
+            two_sided: self.two_sided,
+            tabs: self.tabs.map(|width_mm| Tabs {
+                width_mm,
+                spacing_mm: self.tab_spacing,
+            }),
+            lead_in_mm: self.lead_in,
+            margin_mm: Some(self.margin),
+            optimize: Some(!self.no_optimize),
+            centre: self.origin == OriginArg::Centre,
+            offset_mm: self.offset,
+        }
+    }
+
     /// Loads the profiles and resolves the plan options.
     pub fn resolve(
         &self,
@@ -159,45 +190,8 @@ impl FabArgs {
     ) -> Result<(MachineProfile, Material, PlanOptions)> {
         let machine = load_machine(machine)?;
         let material = load_material(material)?;
-        let mut o = PlanOptions::from_material(&material);
-        let m = &mut o.mapping;
-        for (slot, arg) in [
-            (&mut m.mountain, self.mountain),
-            (&mut m.valley, self.valley),
-            (&mut m.unassigned, self.unassigned),
-            (&mut m.flat, self.flat),
-            (&mut m.boundary, self.boundary),
-        ] {
-            if let Some(OpChoice(op)) = arg {
-                *slot = op;
-            }
-        }
-        o.adapt_to_machine(&machine)?;
-        let p = &mut o.perforation;
-        p.cut_mm = self.dash.unwrap_or(p.cut_mm);
-        p.bridge_mm = self.bridge.unwrap_or(p.bridge_mm);
-        if let Some(duty) = self.duty {
-            p.bridge_mm = p.cut_mm * (1.0 - duty) / duty;
-        }
-        p.min_dash_mm = self.min_dash.unwrap_or(p.min_dash_mm);
-        p.min_web_mm = self.min_web.unwrap_or(p.min_web_mm);
-        p.vertex_clearance_mm = self.clearance.unwrap_or(p.vertex_clearance_mm);
-        o.kerf_mm = self.kerf.unwrap_or(o.kerf_mm);
-        o.kerf_offset = !self.no_kerf_offset;
-        o.two_sided = self.two_sided;
-        o.tabs = self.tabs.map(|width_mm| Tabs {
-            width_mm,
-            spacing_mm: self.tab_spacing,
-        });
-        o.lead_in_mm = self.lead_in;
-        o.margin_mm = self.margin;
-        o.optimize = !self.no_optimize;
-        o.placement = foldcam::fab::placement::Placement {
-            centre: self.origin == OriginArg::Centre,
-            offset_mm: self.offset.unwrap_or(glam::DVec2::ZERO),
-        };
-        o.validate()?;
-        Ok((machine, material, o))
+        let options = PlanOptions::for_machine(&machine, &material, &self.overrides())?;
+        Ok((machine, material, options))
     }
 }
 
@@ -232,16 +226,40 @@ pub struct PlanRequest {
     pub scale: super::args::ScaleArgs,
 }
 
+/// A [`PlanRequest`] loaded: the profiles, the resolved options and the sized pattern.
+pub struct Loaded {
+    /// The machine profile.
+    pub machine: MachineProfile,
+    /// The material profile.
+    pub material: Material,
+    /// The plan options (material defaults, overrides, fitted to the machine).
+    pub options: PlanOptions,
+    /// The cleaned pattern, in millimetres.
+    pub pattern: foldcam::pattern::CreasePattern,
+}
+
 impl PlanRequest {
-    /// Loads the profiles and the pattern and plans it.
-    pub fn plan(&self) -> Result<(MachineProfile, foldcam::fab::FabPlan)> {
+    /// Loads the profiles and the pattern (warning when it cannot fold flat).
+    pub fn load(&self) -> Result<Loaded> {
         let (machine, material, options) = self.profiles.resolve(&self.fab)?;
-        let cp = load_pattern(&self.input, &self.frame, &self.scale)?;
-        if let Some(w) = foldcam::check::layers::flat_fold_warning(&cp) {
+        let pattern = load_pattern(&self.input, &self.frame, &self.scale)?;
+        if let Some(w) = foldcam::check::layers::flat_fold_warning(&pattern) {
             eprintln!("foldcam: warning: {}: {w}", self.input.display());
         }
-        let p = foldcam::fab::plan(&cp, &machine, &material, &options)
+        Ok(Loaded {
+            machine,
+            material,
+            options,
+            pattern,
+        })
+    }
+
+    /// Loads the profiles and the pattern and plans it.
+    pub fn plan(&self) -> Result<(MachineProfile, foldcam::fab::FabPlan)> {
+        let l = self.load()?;
+        let job = Job::plan_with(&l.pattern, &l.machine, &l.material, l.options)
             .with_context(|| self.input.display().to_string())?;
-        Ok((machine, p))
+        let plan = job.plan;
+        Ok((l.machine, plan))
     }
 }

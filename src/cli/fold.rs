@@ -34,9 +34,8 @@ use super::Outcome;
 pub struct Args {
     /// Fold script (.toml).
     pub script: PathBuf,
-    /// FOLD file to write (crease pattern and one folded frame per step).
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     /// Write a PNG with one 3D picture per step (layers spread apart to be visible).
     #[arg(long)]
     pub png: Option<PathBuf>,
@@ -65,10 +64,15 @@ pub fn run(args: Args) -> Result<Outcome> {
     let shown = display_states(&folding, sheet_size(&folding) * 0.004);
     // Every output is made first and written together: a failure leaves all files as they were.
     let mut outputs = OutputSet::new();
-    outputs.add(
-        &args.output,
-        write_string_frames(&sheet.pattern, &states).into_bytes(),
-    );
+    if args.out.machine.is_some() {
+        args.out.stage(&mut outputs, &sheet.pattern, None)?;
+    } else {
+        // The crease pattern with one folded frame per step.
+        outputs.add(
+            &args.out.output,
+            write_string_frames(&sheet.pattern, &states).into_bytes(),
+        );
+    }
     if let Some(png) = &args.png {
         check_picture_size(shown.len(), view.width, "step sheet")?;
         let bytes = step_sheet_png(&shown, &step_captions(&folding), &view)
@@ -93,7 +97,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         folding.current().faces.len(),
         cp.vertices.len(),
         cp.edges.len(),
-        args.output.display()
+        args.out.output.display()
     );
     Ok(Outcome::Done)
 }

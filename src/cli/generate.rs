@@ -1,7 +1,5 @@
 //! `foldcam generate KIND -o OUT`.
 
-use std::path::PathBuf;
-
 use anyhow::Result;
 use clap::ValueEnum;
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
@@ -27,14 +25,14 @@ pub enum Kind {
 #[derive(clap::Args)]
 #[command(
     after_help = "Examples:\n  foldcam generate miura -o miura.fold --columns 12 --rows 8\n  \
-    foldcam generate square-twist -o twist.svg --twist 30\n  foldcam generate yoshimura -o yoshi.cp"
+    foldcam generate square-twist -o twist.svg --twist 30\n  foldcam generate yoshimura -o yoshi.cp\n  \
+    foldcam generate miura -m grbl-diode -x card-300gsm -o miura.gcode"
 )]
 pub struct Args {
     /// Which pattern.
     pub kind: Kind,
-    /// Output file (.fold, .svg or .cp).
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     /// Cells along x (Miura, waterbomb, Yoshimura).
     #[arg(long)]
     pub columns: Option<usize>,
@@ -108,6 +106,12 @@ pub fn build(args: &Args) -> Result<CreasePattern> {
 pub fn run(args: Args) -> Result<Outcome> {
     let mut cp = build(&args)?;
     foldcam::design::classic::set_fold_angles(&mut cp, args.fold_angle);
-    super::input::save(&args.output, &cp, None)?;
+    if args.out.machine.is_none() {
+        super::input::save(&args.out.output, &cp, None)?;
+    } else {
+        let mut outputs = foldcam::formats::OutputSet::new();
+        args.out.stage(&mut outputs, &cp, None)?;
+        super::input::commit(outputs, &[])?;
+    }
     Ok(Outcome::Done)
 }

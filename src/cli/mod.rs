@@ -10,6 +10,7 @@ mod demo;
 mod demo_fold3d;
 mod demo_papercraft;
 mod demo_tessellation;
+mod design_output;
 mod fab_args;
 mod fold;
 mod fold3d;

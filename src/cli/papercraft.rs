@@ -37,9 +37,8 @@ use super::Outcome;
 pub struct Args {
     /// Design file (`.craft.toml`).
     pub design: PathBuf,
-    /// Crease pattern of the sheets (.fold, .svg or .cp), millimetres.
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     /// Also write the sheets as SVG.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -49,18 +48,11 @@ pub struct Args {
     /// PNG width in pixels.
     #[arg(long, default_value_t = 1200)]
     pub width: u32,
-    /// Also write the machine job of every sheet (.gcode/.nc/.ngc, .dxf, .svg, .lbrn2;
-    /// sheet n > 1 to NAME-n.EXT); needs --machine and --material.
+    /// Write the machine job of every sheet here (.gcode/.nc/.ngc, .dxf, .svg, .lbrn2;
+    /// sheet n > 1 to NAME-n.EXT) and keep -o for the crease pattern; needs --machine and
+    /// --material. Without it, --machine makes -o the job.
     #[arg(long, value_name = "FILE", requires_all = ["machine", "material"])]
     pub job: Option<PathBuf>,
-    /// Machine profile for --job: a shipped name or a TOML file.
-    #[arg(long, short = 'm', requires = "job")]
-    pub machine: Option<String>,
-    /// Material profile for --job: a shipped name or a TOML file.
-    #[arg(long, short = 'x', requires = "job")]
-    pub material: Option<String>,
-    #[command(flatten)]
-    pub fab: super::fab_args::FabArgs,
 }
 
 /// The plan options for the sheets' jobs: `cut`'s, with the edge numbers (flat lines) marked
@@ -70,8 +62,8 @@ fn job_options(
     machine: &str,
     material: &str,
 ) -> Result<(MachineProfile, Material, PlanOptions)> {
-    let (m, x, mut o) = args.fab.resolve(machine, material)?;
-    if args.fab.flat.is_none() {
+    let (m, x, mut o) = args.out.fab.resolve(machine, material)?;
+    if args.out.fab.flat.is_none() {
         o.mapping.flat = label_operation(&m, &x);
         if o.mapping.flat.is_none() {
             eprintln!(
@@ -131,9 +123,25 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
     }
     // Every sheet's files are made first and written together: all of them, or none.
+    let profiles = match (&args.out.machine, &args.out.material) {
+        (Some(machine), Some(material)) => Some(job_options(&args, machine, material)?),
+        _ => None,
+    };
+    // The jobs go to --job, or to -o when there is no --job.
+    let job_path = args.job.as_ref().unwrap_or(&args.out.output);
     let mut outputs = OutputSet::new();
+    let mut plans = Vec::new();
     for (s, cp) in made.sheets.iter().enumerate() {
-        super::input::stage(&mut outputs, &sheet_path(&args.output, s), cp, None)?;
+        if let Some((m, x, o)) = &profiles {
+            let sheet = sheet_path(job_path, s);
+            let p = plan(cp, m, x, o).with_context(|| sheet.display().to_string())?;
+            let (r12, dashes) = (args.out.r12, args.out.dasharray);
+            super::cut::stage_plan(&mut outputs, &sheet, &p, m, r12, dashes)?;
+            plans.push(p);
+        }
+        if profiles.is_none() || args.job.is_some() {
+            super::input::stage(&mut outputs, &sheet_path(&args.out.output, s), cp, None)?;
+        }
         if let Some(svg) = &args.svg {
             super::input::stage(&mut outputs, &sheet_path(svg, s), cp, None)?;
         }
@@ -145,16 +153,6 @@ pub fn run(args: Args) -> Result<Outcome> {
             };
             let bytes = preview_png(cp, &options, &[]).map_err(|e| err(&e))?;
             super::input::stage_image(&mut outputs, &sheet_path(png, s), bytes, "png")?;
-        }
-    }
-    let mut plans = Vec::new();
-    if let (Some(job), Some(machine), Some(material)) = (&args.job, &args.machine, &args.material) {
-        let (m, x, o) = job_options(&args, machine, material)?;
-        for (s, cp) in made.sheets.iter().enumerate() {
-            let sheet = sheet_path(job, s);
-            let p = plan(cp, &m, &x, &o).with_context(|| sheet.display().to_string())?;
-            super::cut::stage_jobs(&mut outputs, &sheet, &p, &m, false, false)?;
-            plans.push(p);
         }
     }
     super::input::commit(outputs, &[&args.design])?;

@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, anyhow};
+use anyhow::{Result, anyhow};
 use clap::Subcommand;
 use foldcam::design::popup::fit::{CLOSED_SLACK_MM, Fitted, fit_voxel_card};
 use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, format_voxel_card};
@@ -10,7 +10,6 @@ use foldcam::formats::OutputSet;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
-use super::fab_args::FabArgs;
 
 /// Pop-up card designers.
 #[derive(Subcommand)]
@@ -18,7 +17,7 @@ pub enum Command {
     /// A card from voxels: a `.voxel.txt` model, a height-map PNG or an OBJ/STL mesh.
     Voxel(Box<VoxelArgs>),
     /// A card from a polygon design (`.popup.toml`): faces and openings on reference planes.
-    Poly(super::popup_poly::PolyArgs),
+    Poly(Box<super::popup_poly::PolyArgs>),
 }
 
 /// Make a pop-up card from voxels.
@@ -45,10 +44,8 @@ pub enum Command {
 pub struct VoxelArgs {
     /// `.voxel.txt` model, height-map `.png`, or `.obj`/`.stl` mesh.
     pub input: PathBuf,
-    /// Crease pattern to write (.fold, .svg or .cp, millimetres); with --machine, the job
-    /// (.gcode/.nc/.ngc, .dxf or .svg).
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     #[command(flatten)]
     pub model: super::popup_input::ModelArgs,
     /// Also write the final voxel model (windows, left-out tops) as a `.voxel.txt` to edit.
@@ -63,20 +60,6 @@ pub struct VoxelArgs {
     /// Image width in pixels for --png and --gif.
     #[arg(long, default_value_t = 640)]
     pub width: u32,
-    /// Cut the card directly: machine profile (name or TOML path); needs --material.
-    #[arg(long, short = 'm', requires = "material", help_heading = "Cutting")]
-    pub machine: Option<String>,
-    /// Material profile (name or TOML path); needs --machine.
-    #[arg(long, short = 'x', requires = "machine", help_heading = "Cutting")]
-    pub material: Option<String>,
-    #[command(flatten, next_help_heading = "Cutting")]
-    pub fab: FabArgs,
-    /// With --machine and .dxf output: DXF R12 instead of R2000.
-    #[arg(long, help_heading = "Cutting")]
-    pub r12: bool,
-    /// With --machine and .svg output: perforations as dashed strokes.
-    #[arg(long, help_heading = "Cutting")]
-    pub dasharray: bool,
     /// Grow the card's margin so that, folded shut, it holds every face (a card that reaches
     /// beyond its outline is otherwise only warned about); refuse (exit 1) with the place
     /// when more paper cannot hold it.
@@ -88,7 +71,7 @@ pub struct VoxelArgs {
 pub fn run(command: Command) -> Result<Outcome> {
     match command {
         Command::Voxel(args) => voxel(*args),
-        Command::Poly(args) => super::popup_poly::run(args),
+        Command::Poly(args) => super::popup_poly::run(*args),
     }
 }
 
@@ -145,22 +128,8 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     if let Some(path) = &args.save_voxels {
         outputs.add(path, format_voxel_card(&card).into_bytes());
     }
-    let mut plan = None;
-    match (&args.machine, &args.material) {
-        (Some(machine), Some(material)) => {
-            let (machine, material, options) = args.fab.resolve(machine, material)?;
-            let p = foldcam::fab::plan(&cp, &machine, &material, &options)
-                .with_context(|| args.input.display().to_string())?;
-            let (r12, dashes) = (args.r12, args.dasharray);
-            super::cut::stage_jobs(&mut outputs, &args.output, &p, &machine, r12, dashes)?;
-            plan = Some(p);
-        }
-        _ => super::input::stage(&mut outputs, &args.output, &cp, None)?,
-    }
+    args.out.stage(&mut outputs, &cp, None)?;
     super::input::commit(outputs, &[&args.input])?;
-    if let Some(p) = &plan {
-        print!("{}", super::plan::summary(p));
-    }
     let (w, h) = card.sheet_mm();
     println!(
         "{}: {} × {} × {} cells of {:.3} mm, sheet {w:.1} × {h:.1} mm, pops up",

@@ -29,9 +29,8 @@ use super::Outcome;
 pub struct PolyArgs {
     /// Design file (`.popup.toml`).
     pub design: PathBuf,
-    /// Crease pattern to write (.fold, .svg or .cp), millimetres.
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     /// Write a preview of the card standing at 90°.
     #[arg(long)]
     pub png: Option<PathBuf>,
@@ -93,7 +92,7 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
         args.width,
         |angle| fold_card(&card, &cp, angle).state,
     )?;
-    super::input::stage(&mut outputs, &args.output, &cp, None)?;
+    args.out.stage(&mut outputs, &cp, None)?;
     super::input::commit(outputs, &[path])?;
     let (w, d, h) = card.size_mm();
     let faces = card

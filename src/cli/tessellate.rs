@@ -64,9 +64,8 @@ pub enum Layout {
 pub struct Args {
     /// Input mesh (.obj or .stl), a disk with one boundary, in millimetres.
     pub mesh: PathBuf,
-    /// Output crease pattern (.fold keeps the folded form too; .svg and .cp the pattern only).
-    #[arg(short, long)]
-    pub output: PathBuf,
+    #[command(flatten)]
+    pub out: super::design_output::DesignOutput,
     /// Tuck structure.
     #[arg(long, value_enum, default_value = "star")]
     pub tuck: Tuck,
@@ -85,9 +84,6 @@ pub struct Args {
     /// within ±90; the sign picks the handedness).
     #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
     pub twist: f64,
-    /// Material profile whose design limits to use (e.g. stainless-0.5).
-    #[arg(short = 'x', long)]
-    pub material: Option<String>,
     /// Largest fold angle, degrees (180 − δ_fold).
     #[arg(long, value_parser = degrees)]
     pub max_fold_angle: Option<f64>,
@@ -125,7 +121,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     let mesh = read_mesh(&args.mesh).map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
     let (mut fold, mut corner) = (165.0, 30.0);
-    if let Some(name) = &args.material {
+    if let Some(name) = &args.out.material {
         let m = load_material(name)?;
         (fold, corner) = (m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg);
     }
@@ -251,12 +247,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     // The pattern and its pictures are written together: all of them, or none.
     let mut outputs = OutputSet::new();
-    super::input::stage(
-        &mut outputs,
-        &args.output,
-        &unfolded.pattern,
-        Some(&unfolded.folded),
-    )?;
+    args.out
+        .stage(&mut outputs, &unfolded.pattern, Some(&unfolded.folded))?;
     if let Some(png) = &args.png {
         let view = View3d {
             azimuth_deg: 30.0,

@@ -122,7 +122,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     opts.label_mm = args.label_height;
     opts.margin_mm = args.margin;
     let grid = test_grid(&machine, &material, &opts)?;
-    super::cut::write_jobs(&args.output, &grid.plan, &machine, args.r12, false)?;
+    super::cut::write_plan(&args.output, &grid.plan, &machine, args.r12, false)?;
     println!(
         "{} cells ({} mm creases): cell, dash mm, bridge mm, power %, speed mm/min",
         grid.cells.len(),

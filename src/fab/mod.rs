@@ -15,6 +15,7 @@ pub mod geometry;
 pub mod kerf;
 pub mod lines;
 pub mod operations;
+mod options;
 pub mod order;
 pub mod perforation;
 pub mod placement;
@@ -25,56 +26,15 @@ pub mod tabs;
 pub mod testgrid;
 pub mod timing;
 
+pub use options::PlanOverrides;
 pub use plan::plan;
 
 use glam::{DAffine2, DVec2};
 use serde::Serialize;
 
+pub use crate::machine::Operation;
 use crate::machine::{MachineProfile, OperationSettings, SettingsByOperation};
 use crate::pattern::EdgeId;
-
-/// What a toolpath does to the sheet.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Operation {
-    /// Surface marking: registration marks, flat lines when asked for.
-    Mark,
-    /// Partial-depth score along a crease.
-    Score,
-    /// Dashed through-cuts along a crease.
-    Perforate,
-    /// Through-cut (outline, holes, slits).
-    Cut,
-    /// Pen plotting.
-    Plot,
-}
-
-impl Operation {
-    /// Every operation, in execution-group order (marks first, cuts last).
-    pub const ALL: [Operation; 5] = [
-        Operation::Mark,
-        Operation::Plot,
-        Operation::Score,
-        Operation::Perforate,
-        Operation::Cut,
-    ];
-
-    /// Lower-case name, as used in profiles, layers and the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Operation::Mark => "mark",
-            Operation::Score => "score",
-            Operation::Perforate => "perforate",
-            Operation::Cut => "cut",
-            Operation::Plot => "plot",
-        }
-    }
-
-    /// Parses a name given by [`Operation::name`].
-    pub fn from_name(s: &str) -> Option<Operation> {
-        Operation::ALL.into_iter().find(|o| o.name() == s)
-    }
-}
 
 /// What a closed or open cut line is, for ordering and kerf.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -263,7 +223,7 @@ impl PlanOptions {
         use crate::limits::{self, check_length};
         check_length(&limits::KERF, self.kerf_mm)?;
         check_length(&limits::MARGIN, self.margin_mm)?;
-        limits::check_perforation(&self.perforation)?;
+        self.perforation.check_limits()?;
         if let Some(t) = &self.tabs {
             check_length(&limits::TAB_WIDTH, t.width_mm)?;
             check_length(&limits::TAB_SPACING, t.spacing_mm)?;
@@ -367,6 +327,14 @@ pub enum FabError {
     /// No edge maps to an operation.
     #[error("nothing to do: no edge of the pattern maps to an operation")]
     NothingToDo,
+    /// A plan option is out of range.
+    #[error("--{option} {message}")]
+    BadOption {
+        /// The option, as on the command line (e.g. `margin`).
+        option: &'static str,
+        /// What is wrong with its value.
+        message: String,
+    },
     /// A geometric step failed (named).
     #[error("{step}: {message}")]
     Geometry {

@@ -148,9 +148,8 @@ pub fn transform_paths(paths: &mut [Toolpath], t: &DAffine2) {
 
 /// Bounding box (min, max) of every point of `paths`, `None` when there is none.
 pub fn bounds_of(paths: &[Toolpath]) -> Option<(DVec2, DVec2)> {
-    let mut points = paths.iter().flat_map(|p| &p.strokes).flatten();
-    let first = *points.next()?;
-    Some(points.fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))))
+    let points = paths.iter().flat_map(|p| &p.strokes).flatten().copied();
+    crate::geom::Rect::of(points).map(crate::geom::Rect::corners)
 }
 
 /// The smallest box holding both boxes (either may be missing).

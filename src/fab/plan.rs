@@ -31,6 +31,26 @@ use crate::pattern::CreasePattern;
 /// Errors: [`FabError::Unitless`] for a pattern without a physical size,
 /// [`FabError::NothingToDo`] when no edge maps to an operation, [`FabError::DoesNotFit`]
 /// when the pattern with its margins is larger than the bed, and the geometry's errors.
+///
+/// ```
+/// use foldcam::{Assignment, PlanOptions, PlanOverrides, load_machine, load_material, plan};
+/// let cp = foldcam::design::classic::MiuraOri::default().build()?;
+/// let machine = load_machine("grbl-diode")?;
+/// let card = load_material("card-300gsm")?;
+/// let options = PlanOptions::for_machine(&machine, &card, &PlanOverrides::default())?;
+/// let p = plan(&cp, &machine, &card, &options)?;
+/// // Every boundary edge is cut by some toolpath, and the job lies on the bed.
+/// let realised: Vec<_> = p.jobs.iter().flat_map(|j| &j.paths).flat_map(|t| &t.edges).collect();
+/// for (i, e) in cp.edges.iter().enumerate() {
+///     if e.assignment == Assignment::Boundary {
+///         assert!(realised.iter().any(|r| r.index() == i), "boundary edge {i}");
+///     }
+/// }
+/// let on_bed = |v: &foldcam::geom::DVec2| v.x >= 0.0 && v.y >= 0.0
+///     && v.x <= machine.bed.width_mm && v.y <= machine.bed.height_mm;
+/// assert!(p.jobs[0].paths.iter().flat_map(|t| &t.strokes).flatten().all(on_bed));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn plan(
     cp: &CreasePattern,
     machine: &MachineProfile,

@@ -278,6 +278,19 @@ pub fn render(format: Format, pattern: &CreasePattern, folded: Option<&FoldedSta
 }
 
 /// Reads a pattern from a file, the format chosen by extension; validates it.
+///
+/// ```
+/// use foldcam::{Assignment, Units, load};
+/// // A degree-4 vertex with three mountains and one valley (the file says so).
+/// let cp = load("examples/patterns/flat-vertex.fold".as_ref())?.pattern;
+/// assert_eq!(cp.units, Units::Millimetres);
+/// let count = |a| cp.edges.iter().filter(|e| e.assignment == a).count();
+/// assert_eq!((count(Assignment::Mountain), count(Assignment::Valley)), (3, 1));
+/// // A missing file is an error naming the file, never a panic.
+/// let err = load("no/such/pattern.fold".as_ref()).unwrap_err();
+/// assert!(err.to_string().contains("no/such/pattern.fold"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn load(path: &Path) -> Result<Imported, FormatError> {
     load_with(path, &ReadOptions::default())
 }

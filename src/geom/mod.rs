@@ -5,8 +5,10 @@
 pub mod angle;
 pub mod polygon;
 pub mod polyline;
+pub mod rect;
 pub mod segment;
 pub mod stroke_digits;
 pub mod triangulate;
 
 pub use glam::{DVec2, DVec3};
+pub use rect::Rect;

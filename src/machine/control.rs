@@ -20,8 +20,8 @@
 
 use serde::Serialize;
 
+use super::Operation;
 use super::profile::{Dialect, MachineKind, MachineProfile};
-use crate::fab::Operation;
 
 /// How a LinuxCNC laser's beam is switched (the profile key `laser_output`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Default)]

@@ -10,8 +10,9 @@
 use serde::Serialize;
 
 use super::MachineProfile;
+use super::Operation;
 use crate::check::CheckOptions;
-use crate::fab::Operation;
+use crate::limits::{BRIDGE, CLEARANCE, DASH, LimitError, MIN_DASH, MIN_WEB, show};
 use crate::pattern::Assignment;
 
 /// Speed, power and passes for one operation.
@@ -72,6 +73,52 @@ pub struct Perforation {
 const MIN_TOOLPATH_DASH_SHARE: f64 = 0.1;
 
 impl Perforation {
+    /// Checks the perforation after the command line was laid over the material: every length in
+    /// its range, the shortest dash at most the dash (a dash below it cannot be cut, so every
+    /// perforated crease would become one continuous slot) and the web at most the bridge.
+    pub fn check_limits(&self) -> Result<(), LimitError> {
+        let p = self;
+        for (limit, value) in [
+            (DASH, p.cut_mm),
+            (BRIDGE, p.bridge_mm),
+            (MIN_DASH, p.min_dash_mm),
+            (MIN_WEB, p.min_web_mm),
+            (CLEARANCE, p.vertex_clearance_mm),
+        ] {
+            limit.check(value).map_err(|message| LimitError {
+                setting: limit.name(),
+                value: show(value),
+                message,
+            })?;
+        }
+        if p.cut_mm < p.min_dash_mm {
+            return Err(LimitError {
+                setting: DASH.name(),
+                value: format!("{} mm", p.cut_mm),
+                message: format!(
+                    "shorter than the shortest dash worth cutting, {} mm ({}): no dash could be \
+                     cut, so every perforated crease would become one continuous slot; give a \
+                     longer dash or a smaller --min-dash",
+                    p.min_dash_mm,
+                    MIN_DASH.name()
+                ),
+            });
+        }
+        if p.bridge_mm < p.min_web_mm {
+            return Err(LimitError {
+                setting: BRIDGE.name(),
+                value: format!("{} mm", p.bridge_mm),
+                message: format!(
+                    "shorter than the least web, {} mm ({}); give a longer bridge or a smaller \
+                     --min-web",
+                    p.min_web_mm,
+                    MIN_WEB.name()
+                ),
+            });
+        }
+        Ok(())
+    }
+
     /// The layout in toolpath terms for a beam `kerf_mm` wide. Each dash burns kerf/2 past
     /// both ends of its toolpath, so for the material to keep the asked bridges (and webs)
     /// the toolpath dashes are one kerf shorter and the bridges one kerf longer, the period
@@ -190,5 +237,31 @@ impl Material {
             .into_iter()
             .filter(|op| used.contains(&Some(*op)))
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_dash_below_the_shortest_dash_is_refused() {
+        let p = Perforation {
+            cut_mm: 0.01,
+            bridge_mm: 1.0,
+            min_dash_mm: 0.5,
+            min_web_mm: 0.5,
+            vertex_clearance_mm: 1.0,
+        };
+        let e = p.check_limits().unwrap_err();
+        assert!(e.to_string().contains("--dash"), "{e}");
+        assert!(e.to_string().contains("continuous slot"), "{e}");
+        let fine = Perforation { cut_mm: 2.0, ..p };
+        assert_eq!(fine.check_limits(), Ok(()));
+        let thin = Perforation {
+            bridge_mm: 0.2,
+            ..fine
+        };
+        assert!(thin.check_limits().is_err());
     }
 }

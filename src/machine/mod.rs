@@ -22,6 +22,7 @@ mod load;
 mod locate;
 mod material;
 pub mod motion;
+mod operation;
 mod profile;
 mod read_machine;
 mod read_material;
@@ -35,6 +36,7 @@ pub use load::{
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
+pub use operation::Operation;
 pub use profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,
 };

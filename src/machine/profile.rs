@@ -13,8 +13,8 @@
 use glam::{DAffine2, DVec2};
 use serde::Serialize;
 
+use super::Operation;
 use super::control::MachineControl;
-use crate::fab::Operation;
 
 /// What the machine does to the sheet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -216,7 +216,7 @@ fn read_control(
         Some(i) => {
             let mut operations = Vec::new();
             for (j, name) in ops.iter().enumerate() {
-                let op = crate::fab::Operation::from_name(name).ok_or_else(|| {
+                let op = super::Operation::from_name(name).ok_or_else(|| {
                     f.error(
                         &format!("air_assist_operations[{j}]"),
                         format!("got \"{name}\"; expected mark, score, perforate, cut or plot"),

@@ -27,12 +27,12 @@
 
 use toml::Table;
 
+use super::Operation;
 use super::ProfileError;
 use super::fields::Fields;
 use super::material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
-use crate::fab::Operation;
 use crate::limits;
 
 /// The word that maps an assignment to no operation.

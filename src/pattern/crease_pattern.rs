@@ -4,10 +4,7 @@ use glam::DVec2;
 
 use super::{Assignment, EdgeId, FaceId, PatternError, VertexId};
 
-/// Largest coordinate magnitude accepted anywhere, in millimetres (or units for unitless
-/// patterns): 1e9 mm is a thousand kilometres, far beyond any sheet, and keeps products of
-/// coordinates well inside f64 precision.
-pub const MAX_COORDINATE: f64 = 1e9;
+pub use crate::limits::MAX_COORDINATE;
 
 /// One edge: two vertices, an assignment and an optional target fold angle.
 #[derive(Clone, Debug, PartialEq)]
@@ -216,12 +213,7 @@ impl CreasePattern {
 
     /// Axis-aligned bounds `(min, max)` of the vertices, `None` when there are none.
     pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
-        let first = *self.vertices.first()?;
-        Some(
-            self.vertices
-                .iter()
-                .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
-        )
+        crate::geom::Rect::of(self.vertices.iter().copied()).map(crate::geom::Rect::corners)
     }
 
     /// Number of edges with each assignment, in [`Assignment::ALL`] order.

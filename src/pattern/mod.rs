@@ -15,6 +15,7 @@ pub mod faces;
 mod folded;
 mod ids;
 pub mod planarize;
+mod scale;
 pub mod vertex_fan;
 
 pub use assignment::{Assignment, UnknownAssignment};
@@ -25,3 +26,4 @@ pub use error::PatternError;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};
 pub use planarize::{PlanarizeError, PlanarizeOptions, PlanarizeReport, planarize};
+pub use scale::{Scale, ScaleError, Scaled};

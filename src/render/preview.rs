@@ -122,13 +122,12 @@ fn check_options(opts: &PreviewOptions) -> Result<(), RenderError> {
 /// Bounds of the vertices that edges use (isolated vertices are not drawn); `None` when
 /// there are no edges.
 fn edge_bounds(cp: &CreasePattern) -> Option<(DVec2, DVec2)> {
-    let mut points = cp
+    let points = cp
         .edges
         .iter()
         .flat_map(|e| e.vertices)
         .filter_map(|v| cp.vertices.get(v.index()).copied());
-    let first = points.next()?;
-    Some(points.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
+    crate::geom::Rect::of(points).map(crate::geom::Rect::corners)
 }
 
 fn paint(color: [u8; 4]) -> Paint<'static> {

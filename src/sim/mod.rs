@@ -44,7 +44,6 @@ mod block;
 mod coverage;
 mod execute;
 mod grid;
-mod job_file;
 mod parse;
 mod raster;
 mod render;
@@ -53,7 +52,6 @@ mod report;
 pub use coverage::{
     CoverageOptions, CoverageReport, EdgeCoverage, StrayBurn, coverage, coverage_with,
 };
-pub use job_file::{JobFileError, JobFileOptions, JobKind, check_gcode, job_file};
 pub use parse::MAX_NUMBER;
 pub use render::render_png;
 pub use report::{

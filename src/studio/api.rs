@@ -38,9 +38,9 @@ use super::toolpath::{PlanChoice, PlanView, plan_document};
 use crate::check::fold3d::{FoldOptions, fold};
 use crate::check::layers::{LayerOptions, check_layers};
 use crate::check::{CheckOptions, check_with_frame};
+use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
 use crate::machine::{ProfileKind, load_machine, profile_catalogue};
 use crate::pattern::Assignment;
-use crate::sim::{JobFileOptions, JobKind, job_file};
 
 /// Frames of the fold sent to the page while folding (plus the flat sheet and the settled end).
 pub const FOLD_FRAMES: usize = 40;
@@ -475,15 +475,14 @@ async fn cut(
     let doc = s.get(id)?;
     blocking(move || {
         let format = q.format.clone().unwrap_or_default();
-        let kind = JobKind::from_extension(&format).ok_or_else(|| {
+        let kind = JobFormat::from_extension(&format).ok_or_else(|| {
             ApiError::input(format!(
-                "format {format:?}: unknown job type (expected {})",
-                JobKind::EXTENSIONS
+                "format {format:?}: unknown job type (expected {JOB_EXTENSIONS})"
             ))
         })?;
         let p = plan_document(&doc, &q.choice()).map_err(ApiError::input)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
-        let bytes = job_file(kind, &p.plan, job, &p.machine, JobFileOptions::default())
+        let bytes = job_file(kind, &p.plan, job, &p.machine)
             .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
         let stem = std::path::Path::new(&doc.name)
             .file_stem()
@@ -529,17 +528,9 @@ async fn simulate(
     blocking(move || {
         let p = plan_document(&doc, &q.choice()).map_err(ApiError::input)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
-        let bytes = job_file(
-            JobKind::Gcode,
-            &p.plan,
-            job,
-            &p.machine,
-            JobFileOptions::default(),
-        )
-        .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
-        let text = String::from_utf8_lossy(&bytes);
-        let r = crate::sim::run(&text, &p.machine)
-            .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+        let failed = |e: &dyn std::fmt::Display| ApiError::input(format!("{}: {e}", doc.name));
+        let text = crate::post::gcode(&p.plan, job, &p.machine).map_err(|e| failed(&e))?;
+        let r = check_gcode(&text, &p.machine).map_err(|e| failed(&e))?;
         Ok(Json(json!({
             "machine": r.machine,
             "lines": r.lines,

@@ -99,9 +99,11 @@ fn labels_are_flat_lines_the_machine_marks_when_asked() {
     assert_eq!(flats, strokes);
     let machine = load_machine("grbl-diode").unwrap();
     let material = load_material("paper-160gsm").unwrap();
-    let mut options = PlanOptions::from_material(&material);
-    options.mapping.flat = Some(Operation::Mark);
-    options.adapt_to_machine(&machine).unwrap();
+    let overrides = foldcam::fab::PlanOverrides {
+        flat: Some(Some(Operation::Mark)),
+        ..Default::default()
+    };
+    let options = PlanOptions::for_machine(&machine, &material, &overrides).unwrap();
     let cp = &made.sheets[0];
     let p = plan(cp, &machine, &material, &options).unwrap();
     for job in &p.jobs {

@@ -33,7 +33,9 @@ pub mod intersect;
 pub mod model;
 pub mod solver;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::clock::Stopwatch;
 
 use glam::{DVec2, DVec3};
 use serde::Serialize;
@@ -238,7 +240,7 @@ pub fn fold_with(
     mut observe: impl FnMut(&BarHingeModel, &[DVec3]),
 ) -> Result<Fold, FoldError> {
     opts.validate()?;
-    let start = Instant::now();
+    let start = Stopwatch::start();
     let model = BarHingeModel::build(cp)?;
     let fraction = opts.percent / 100.0;
     let mut solver = Solver::new(&model, opts);

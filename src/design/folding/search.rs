@@ -154,10 +154,7 @@ impl Layer {
 
 /// Bounding box of a polygon (inverted for an empty one).
 fn bounds(poly: &[DVec2]) -> (DVec2, DVec2) {
-    poly.iter().fold(
-        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
-    )
+    crate::geom::Rect::covering(poly.iter().copied()).corners()
 }
 
 /// The result of the search: who moves.

@@ -85,10 +85,7 @@ pub fn part_points(part: &Part) -> Vec<DVec2> {
 
 /// The lower and upper corners of the box round `points` (±∞ corners for none), mm.
 pub(super) fn bounds(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
-    points.fold(
-        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-        |(lo, hi), p| (lo.min(p), hi.max(p)),
-    )
+    crate::geom::Rect::covering(points).corners()
 }
 
 /// The largest sheet side accepted, millimetres (the shape packer scans heights in steps of

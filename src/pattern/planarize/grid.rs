@@ -146,8 +146,5 @@ impl CellSpec {
 }
 
 fn bounds(segs: &[(DVec2, DVec2)]) -> Option<(DVec2, DVec2)> {
-    let first = segs.first()?.0;
-    Some(segs.iter().fold((first, first), |(lo, hi), &(a, b)| {
-        (lo.min(a).min(b), hi.max(a).max(b))
-    }))
+    crate::geom::Rect::of(segs.iter().flat_map(|&(a, b)| [a, b])).map(crate::geom::Rect::corners)
 }

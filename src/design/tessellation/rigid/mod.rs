@@ -114,8 +114,10 @@ pub struct RigidReport {
     pub max_residual: f64,
     /// Largest closure error at the end.
     pub final_residual: f64,
-    /// Steps completed.
+    /// Steps completed (at most the steps asked for).
     pub steps: usize,
+    /// Correction rounds after the last step, aimed at the target itself.
+    pub polish_rounds: usize,
     /// Why the run stopped early, if it did.
     pub stuck: Option<Stuck>,
     /// Two faces that intersect in the target shape itself (faces placed by the target
@@ -151,9 +153,14 @@ impl RigidReport {
             None => "; the target shape has no face intersections".into(),
         };
         format!(
-            "rigid folding: {verdict} after {} steps; final angle error {:.3e} deg, \
+            "rigid folding: {verdict} after {} steps{}; final angle error {:.3e} deg, \
              max loop-closure residual {:.2e} (final {:.2e}){target}",
             self.steps,
+            match self.polish_rounds {
+                0 => String::new(),
+                1 => " and 1 correction round".into(),
+                n => format!(" and {n} correction rounds"),
+            },
             self.angle_error.to_degrees(),
             self.max_residual,
             self.final_residual
@@ -161,12 +168,24 @@ impl RigidReport {
     }
 }
 
+/// A loop-closure residual (or correction skew) above this means the fold left the
+/// constraint manifold: the run is stuck.
+const STALL_RESIDUAL: f64 = 1e-3;
+/// The correction skew allowed per unit of [`RigidOptions::tolerance`] (capped by
+/// [`STALL_RESIDUAL`]).
+const SKEW_PER_TOLERANCE: f64 = 1e6;
+/// Correction rounds stop once no angle moves more than this share of
+/// [`RigidOptions::angle_tolerance`].
+const SETTLED_SHARE: f64 = 1e-3;
+
 pub(super) fn bad(msg: String) -> RigidError {
     RigidError::BadInput(msg)
 }
 
 /// Simulates folding from flat to `target` (radians per crease, in the order of
 /// [`RigidModel::crease_edges`]) and reports how far it got (see the module docs).
+/// `progress` hears each of the `opts.steps` steps (step number from 1, loop-closure
+/// residual), not the correction rounds after them.
 pub fn simulate(
     model: &RigidModel,
     target: &[f64],
@@ -193,7 +212,8 @@ pub fn simulate(
     let mut max_residual = 0.0f64;
     let mut stuck = None;
     let mut steps = 0;
-    let stall = 1e-3f64;
+    let mut polish_rounds = 0;
+    let stall = STALL_RESIDUAL;
     // Up to `steps` increments, then a few polishing rounds aimed at the target itself.
     for s in 1..=opts.steps + 50 {
         let remaining = opts.steps.saturating_sub(s - 1).max(1) as f64;
@@ -211,8 +231,12 @@ pub fn simulate(
         let residual = model.closure_error(&rho);
         max_residual = max_residual.max(residual);
         steps = s.min(opts.steps);
-        progress(s, residual);
-        if skew > stall.min(1e6 * opts.tolerance) || residual > stall {
+        if s <= opts.steps {
+            progress(s, residual);
+        } else {
+            polish_rounds = s - opts.steps;
+        }
+        if skew > stall.min(SKEW_PER_TOLERANCE * opts.tolerance) || residual > stall {
             stuck = Some(Stuck::Closure { step: s, residual });
             break;
         }
@@ -221,7 +245,7 @@ pub fn simulate(
             stuck = Some(Stuck::Collision { step: s, faces });
             break;
         }
-        if s >= opts.steps && moved <= 1e-3 * opts.angle_tolerance {
+        if s >= opts.steps && moved <= SETTLED_SHARE * opts.angle_tolerance {
             break;
         }
     }
@@ -237,6 +261,7 @@ pub fn simulate(
         max_residual,
         final_residual,
         steps,
+        polish_rounds,
         stuck,
         target_collision,
         positions: model.positions(&rho).0,

@@ -32,7 +32,9 @@ mod mesh_depth;
 mod morphology;
 mod search;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::clock::Stopwatch;
 
 pub use mesh_depth::{MeshPlacement, PlacementError, UpAxis, depth_field_from_mesh};
 
@@ -150,7 +152,7 @@ pub fn card_from_depths(
     }
     let min_gap = ((options.window_gap * ny as f64).ceil() as usize).max(1);
     let mut report = ConvertReport::default();
-    let start = Instant::now();
+    let start = Stopwatch::start();
     // A face on the base's front edge would have nothing to stand on: depths stop one cell
     // short of it.
     // Nor can a top face on the back sheet's top edge hang from it: the top row stays empty.
@@ -179,7 +181,7 @@ pub fn card_from_depths(
     }
     report.smoothing_time = start.elapsed();
 
-    let start = Instant::now();
+    let start = Stopwatch::start();
     let mut filled = vec![false; nx * nz];
     for x in 0..nx {
         let mut above = 0usize;
@@ -205,7 +207,7 @@ pub fn card_from_depths(
     }
     report.constraint_time = start.elapsed();
 
-    let start = Instant::now();
+    let start = Stopwatch::start();
     if options.thin_top > 0 {
         (report.tops_omitted, report.thin_tops) = search.thin_tops(options.thin_top);
     }

@@ -1,0 +1,71 @@
+//! The output options every design command shares: `-o` a crease pattern (.fold, .svg, .cp),
+//! or, with `-m` and `-x`, a machine job chosen by the extension (.gcode, .dxf, .svg, .lbrn2),
+//! planned, read back and written with the design's other files, all or none.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use foldcam::formats::OutputSet;
+use foldcam::job::Job;
+use foldcam::pattern::{CreasePattern, FoldedState};
+
+use super::fab_args::FabArgs;
+
+/// `-o`, and the machine job options.
+#[derive(Args, Clone, Debug)]
+pub struct DesignOutput {
+    /// Crease pattern to write (.fold, .svg or .cp, millimetres); with --machine and
+    /// --material, the machine job (.gcode/.nc/.ngc, .dxf, .svg or .lbrn2).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Cut or plot the design directly: machine profile (a shipped name or a TOML path);
+    /// needs --material.
+    #[arg(long, short = 'm', requires = "material", help_heading = "Cutting")]
+    pub machine: Option<String>,
+    /// Material profile (a shipped name or a TOML path).
+    #[arg(long, short = 'x', help_heading = "Cutting")]
+    pub material: Option<String>,
+    #[command(flatten, next_help_heading = "Cutting")]
+    pub fab: FabArgs,
+    /// With --machine and .dxf output: DXF R12 instead of R2000.
+    #[arg(long, help_heading = "Cutting")]
+    pub r12: bool,
+    /// With --machine and .svg output: perforations as dashed strokes.
+    #[arg(long, help_heading = "Cutting")]
+    pub dasharray: bool,
+}
+
+impl DesignOutput {
+    /// Stages `cp` as a pattern file at `path`, or as a machine job when --machine is given.
+    pub fn stage_at(
+        &self,
+        outputs: &mut OutputSet,
+        path: &Path,
+        cp: &CreasePattern,
+        folded: Option<&FoldedState>,
+    ) -> Result<()> {
+        let Some(machine) = &self.machine else {
+            return super::input::stage(outputs, path, cp, folded);
+        };
+        let Some(material) = &self.material else {
+            bail!("--machine needs --material");
+        };
+        let (machine, material, options) = self.fab.resolve(machine, material)?;
+        let job = Job::plan_with(cp, &machine, &material, options)
+            .with_context(|| path.display().to_string())?;
+        super::cut::stage_job(outputs, path, &job, self.r12, self.dasharray)?;
+        print!("{}", super::plan::summary(&job.plan));
+        Ok(())
+    }
+
+    /// Stages `cp` at `-o`.
+    pub fn stage(
+        &self,
+        outputs: &mut OutputSet,
+        cp: &CreasePattern,
+        folded: Option<&FoldedState>,
+    ) -> Result<()> {
+        self.stage_at(outputs, &self.output, cp, folded)
+    }
+}

@@ -1,0 +1,140 @@
+//! The layers of ARCHITECTURE.md, checked on the source: no module imports from a layer
+//! above it or beside it. Layers, bottom up: clock, limits, geom and mesh; pattern; formats and check;
+//! design and render; machine; fab; post; sim; job; studio.
+
+use std::path::{Path, PathBuf};
+
+/// Each top-level module of the library and its layer (lower may not use higher or equal).
+const LAYERS: &[(&str, u8)] = &[
+    ("clock", 0),
+    ("limits", 0),
+    ("geom", 0),
+    ("mesh", 0),
+    ("pattern", 1),
+    ("formats", 2),
+    ("check", 2),
+    ("design", 3),
+    ("render", 3),
+    ("machine", 4),
+    ("fab", 5),
+    ("post", 6),
+    ("sim", 7),
+    ("job", 8),
+    ("studio", 9),
+];
+
+fn layer(name: &str) -> Option<u8> {
+    LAYERS.iter().find(|(n, _)| *n == name).map(|&(_, l)| l)
+}
+
+fn rust_files(path: &Path, out: &mut Vec<PathBuf>) {
+    if path.is_file() {
+        out.push(path.to_path_buf());
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(path) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let p = entry.path();
+        if p.is_dir() || p.extension().is_some_and(|e| e == "rs") {
+            rust_files(&p, out);
+        }
+    }
+}
+
+/// The top-level modules a line of code names through `crate::`, including `crate::{a, b}`.
+fn crate_paths(line: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    let mut rest = line;
+    while let Some(i) = rest.find("crate::") {
+        rest = &rest[i + "crate::".len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            let end = group.find('}').unwrap_or(group.len());
+            for item in group[..end].split(',') {
+                let name: String = item
+                    .trim()
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                names.push(name);
+            }
+        } else {
+            names.push(
+                rest.chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect(),
+            );
+        }
+    }
+    names
+}
+
+/// Every `crate::` path (outside comments) from a module to a module not below it.
+fn violations() -> Vec<String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut found = Vec::new();
+    for &(module, rank) in LAYERS {
+        let mut files = Vec::new();
+        rust_files(&src.join(module), &mut files);
+        rust_files(&src.join(format!("{module}.rs")), &mut files);
+        assert!(!files.is_empty(), "src/{module} not found");
+        for file in files {
+            let text = std::fs::read_to_string(&file).unwrap();
+            for (n, line) in text.lines().enumerate() {
+                if line.trim_start().starts_with("//") {
+                    continue;
+                }
+                for target in crate_paths(line) {
+                    let Some(other) = layer(&target) else {
+                        continue;
+                    };
+                    if target != module && other >= rank {
+                        found.push(format!(
+                            "{}:{}: {module} uses {target}",
+                            file.strip_prefix(&src).unwrap().display(),
+                            n + 1
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_parser_sees_plain_and_grouped_paths() {
+    assert_eq!(crate_paths("use crate::fab::Operation;"), ["fab"]);
+    assert_eq!(
+        crate_paths("use crate::{machine::Bed, pattern};"),
+        ["machine", "pattern"]
+    );
+    assert!(crate_paths("use super::Operation;").is_empty());
+}
+
+#[test]
+fn every_library_module_is_listed_in_a_layer() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    for entry in std::fs::read_dir(&src).unwrap().flatten() {
+        let p = entry.path();
+        let name = p.file_stem().unwrap().to_string_lossy().into_owned();
+        if ["lib", "main", "cli", "test_rng"].contains(&name.as_str()) {
+            continue;
+        }
+        if p.is_dir() || p.extension().is_some_and(|e| e == "rs") {
+            assert!(layer(&name).is_some(), "src/{name} is in no layer");
+        }
+    }
+}
+
+#[test]
+fn no_module_imports_from_a_layer_above_it() {
+    let v = violations();
+    assert!(
+        v.is_empty(),
+        "{} imports against the layers:\n{}",
+        v.len(),
+        v.join("\n")
+    );
+}
