@@ -113,7 +113,11 @@ fn check_plan_and_preview_read_and_write_pipes() {
     );
     ok(&o);
     let png = image::load_from_memory(&o.stdout).expect("a PNG on standard output");
-    assert_eq!(png.width(), 1024);
+    // The same picture as the preview written to a file.
+    std::fs::write(d.join("bird.cp"), bird_cp()).expect("write");
+    ok(&foldcam(&["preview", "bird.cp", "-o", "file.png"], d, b""));
+    let file = image::open(d.join("file.png")).expect("PNG");
+    assert_eq!(png.to_rgba8(), file.to_rgba8());
     let o = foldcam(
         &[
             "plan",

@@ -5,7 +5,7 @@
 //! same way.
 //!
 //! **Sizes.** Text is drawn in font pixels of `font_px` image pixels each ([`font_px_for`]:
-//! one per 300 pixels of image width, 1 to 4), so a 900-pixel picture has 21-pixel capitals.
+//! one per 240 pixels of image width, 1 to 4), so a 900-pixel picture has 21-pixel capitals.
 //! A [`Key`] lays its items (an optional scale bar, then the legend entries) left to right in
 //! rows that fit the width it is given, and [`Key::height`] says how tall the band is before
 //! anything is drawn, so a renderer can size its image first.
@@ -28,9 +28,9 @@ const ENTRY_GAP_FONT_PX: f64 = 5.0;
 /// Height of one row of the key, in font pixels (a glyph and its spacing).
 const ROW_FONT_PX: u32 = font::GLYPH_HEIGHT + 5;
 
-/// The size of one font pixel for an image `width` pixels wide: 1 per 300 pixels, 1 to 4.
+/// The size of one font pixel for an image `width` pixels wide: 1 per 240 pixels, 1 to 4.
 pub fn font_px_for(width: u32) -> u32 {
-    (width / 300).clamp(1, 4)
+    (width / 240).clamp(1, 4)
 }
 
 /// Width and height of `text` in image pixels at `font_px`.
@@ -246,10 +246,9 @@ impl Key {
         let placed = self.place(f64::from(width), font_px);
         let mut items = placed.iter();
         let top = |p: &Placed| y + fp + f64::from(p.row) * row_h;
-        if let Some(bar) = self.scale_bar.filter(|s| s.length().is_some()) {
-            if let Some(p) = items.next() {
-                bar.draw(pixmap, x + p.x, top(p), font_px);
-            }
+        let bar = self.scale_bar.filter(|s| s.length().is_some());
+        if let Some((bar, p)) = bar.and_then(|b| items.next().map(|p| (b, p))) {
+            bar.draw(pixmap, x + p.x, top(p), font_px);
         }
         for (entry, p) in self.entries.iter().zip(items) {
             let (ex, ey) = (x + p.x, top(p));

@@ -23,8 +23,8 @@ pub const MAX_CAPTION_LINES: usize = 3;
 /// Colour of the thin line between panels, RGBA.
 const RULE: [u8; 4] = [200, 200, 200, 255];
 
-/// The caption's font pixel size for panels `width` pixels wide: 2 up to 600 pixels, then one
-/// per 300.
+/// The caption's font pixel size for panels `width` pixels wide: at least 2, else that of
+/// [`legend::font_px_for`].
 pub fn caption_font_px(width: u32) -> u32 {
     legend::font_px_for(width).max(2)
 }
