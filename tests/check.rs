@@ -403,8 +403,13 @@ fn text_report_caps_each_kind_and_ends_with_the_verdict() {
     let report = check(&cp, &opts);
     assert_eq!(report.findings.len(), 60);
     let text = report.to_text("mm");
-    let lines = text.lines().filter(|l| l.starts_with("short_edge")).count();
+    // Each line: its number in the report's list (`#1`, as preview --check rings it), kind, …
+    let lines = text
+        .lines()
+        .filter(|l| l.starts_with('#') && l.split_whitespace().nth(1) == Some("short_edge"))
+        .count();
     assert_eq!(lines, 50);
+    assert!(text.lines().any(|l| l.starts_with("#50 ")), "{text}");
     assert!(text.contains("and 10 more short_edge"), "{text}");
     assert!(text.contains("min edge 1 mm"), "{text}");
     assert!(text.contains("0.1000 mm long"), "{text}");

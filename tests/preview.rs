@@ -176,9 +176,15 @@ fn fault_positions_and_edges_are_highlighted() {
 #[test]
 fn scale_bar_sits_bottom_left_with_a_label() {
     let cp = sheet_with_folds();
-    let with = render(&cp, 424);
+    // The bar alone, without the legend that follows it.
+    let bar_only = PreviewOptions {
+        legend: false,
+        ..PreviewOptions::with_width(424)
+    };
+    let with = render_rgba(&cp, &bar_only, &[]).expect("render");
     let opts = PreviewOptions {
         scale_bar: false,
+        legend: false,
         ..PreviewOptions::with_width(424)
     };
     let without = render_rgba(&cp, &opts, &[]).expect("render");

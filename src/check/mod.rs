@@ -63,6 +63,7 @@ use crate::pattern::{CreasePattern, EdgeId, FoldedState, VertexId};
 
 pub use report::{
     AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
+    finding_line,
 };
 
 /// Which checks to run and their limits.

@@ -125,16 +125,20 @@ pub struct CheckSummary {
 }
 
 impl CheckReport {
-    /// A readable report: the summary, one line per finding (at most
+    /// A readable report: the summary, one numbered line per finding (at most
     /// [`TEXT_FINDINGS_PER_KIND`] per kind) and a final `PASS` or `FAIL` line. `unit_label`
     /// names the length unit ("mm", "units").
     pub fn to_text(&self, unit_label: &str) -> String {
         let mut out = String::new();
         self.write_summary(&mut out, unit_label);
         for kind in FindingKind::ALL {
-            let mut of_kind = self.of_kind(kind);
-            for f in of_kind.by_ref().take(TEXT_FINDINGS_PER_KIND) {
-                out.push_str(&finding_line(f));
+            let mut of_kind = self
+                .findings
+                .iter()
+                .enumerate()
+                .filter(|(_, f)| f.kind == kind);
+            for (i, f) in of_kind.by_ref().take(TEXT_FINDINGS_PER_KIND) {
+                out.push_str(&finding_line(i + 1, f));
                 out.push('\n');
             }
             let rest = of_kind.count();
@@ -230,15 +234,16 @@ impl CheckReport {
     }
 }
 
-/// One line: kind, element, position, message, hint.
-fn finding_line(f: &Finding) -> String {
+/// One line: the finding's number (its place in the report's list, from 1: the number
+/// `preview --check` writes beside its ring), kind, element, position, message, hint.
+pub fn finding_line(number: usize, f: &Finding) -> String {
     let element = match (f.vertex, f.edge) {
         (Some(v), _) => v.to_string(),
         (None, Some(e)) => e.to_string(),
         (None, None) => "-".to_string(),
     };
     format!(
-        "{:<12} {:<8} at {}: {}; hint: {}",
+        "#{number:<3} {:<12} {:<8} at {}: {}; hint: {}",
         f.kind.name(),
         element,
         fmt_point(f.position),

@@ -34,12 +34,13 @@ pub struct Args {
 
 /// Runs the conversion.
 pub fn run(args: Args) -> Result<Outcome> {
-    formats::Format::from_path(&args.output)
+    let output = super::pipe::output(&args.output)?;
+    formats::Format::from_path(&output)
         .filter(|f| f.writable())
         .ok_or_else(|| {
             anyhow::anyhow!(
                 "{}: unknown output type (expected one of {})",
-                args.output.display(),
+                output.display(),
                 formats::Format::WRITABLE
             )
         })?;
@@ -53,7 +54,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut outputs = formats::OutputSet::new();
     input::stage(
         &mut outputs,
-        &args.output,
+        &output,
         &imported.pattern,
         imported.folded.as_ref(),
     )?;

@@ -61,12 +61,13 @@ fn frame_power(s: &str) -> Result<f64, String> {
 
 /// Plans and writes the job files (or their frames).
 pub fn run(args: Args) -> Result<Outcome> {
+    let output = super::pipe::output(&args.output)?;
     let l = args.request.load()?;
     let job = Job::plan_with(&l.pattern, &l.machine, &l.material, l.options)
         .with_context(|| args.request.input.display().to_string())?;
     if args.frame {
         write_frames(
-            &args.output,
+            &output,
             &job.plan,
             job.machine,
             args.frame_power.unwrap_or(0.0),
@@ -74,9 +75,9 @@ pub fn run(args: Args) -> Result<Outcome> {
         return Ok(Outcome::Done);
     }
     let mut outputs = OutputSet::new();
-    stage_job(&mut outputs, &args.output, &job, args.r12, args.dasharray)?;
+    stage_job(&mut outputs, &output, &job, args.r12, args.dasharray)?;
     super::input::commit(outputs, &[&args.request.input])?;
-    print!("{}", super::plan::summary(&job.plan));
+    out!("{}", super::plan::summary(&job.plan));
     Ok(Outcome::Done)
 }
 
@@ -105,7 +106,7 @@ fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64
             } else {
                 "with the tool off".to_string()
             };
-            println!(
+            outln!(
                 "frame {:<6} X {:.3} to {:.3}, Y {:.3} to {:.3} mm ({:.1} × {:.1} mm), {how}",
                 job.name,
                 lo.x,
@@ -157,6 +158,13 @@ pub fn stage_plan(
     dasharray: bool,
 ) -> Result<()> {
     let format = job_format(output, r12, dasharray)?;
+    if super::pipe::is_stdout(output) && p.jobs.len() > 1 {
+        bail!(
+            "-: a two-sided plan is {} files (front and back): name the output instead of \
+             writing standard output",
+            p.jobs.len()
+        );
+    }
     let perforates = p
         .jobs
         .iter()
@@ -184,6 +192,6 @@ pub fn write_plan(
     let mut outputs = OutputSet::new();
     stage_plan(&mut outputs, output, p, machine, r12, dasharray)?;
     super::input::commit(outputs, &[])?;
-    print!("{}", super::plan::summary(p));
+    out!("{}", super::plan::summary(p));
     Ok(())
 }

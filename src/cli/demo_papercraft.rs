@@ -28,6 +28,7 @@ pub fn vase(dir: &Path, width: u32) -> Result<()> {
         formats::save(&dir.join(format!("{name}.fold")), cp, None)?;
         let options = PreviewOptions {
             width,
+            dark_flat: true,
             ..PreviewOptions::default()
         };
         let png = preview_png(cp, &options, &[]).map_err(|e| anyhow!("{name}: {e}"))?;

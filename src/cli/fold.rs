@@ -5,13 +5,12 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow};
 use foldcam::design::folding::crease::{crease_pattern, step_states};
-use foldcam::design::folding::display::{display_states, sheet_size};
+use foldcam::design::folding::display::{display_states, sheet_size, step_captions};
 use foldcam::design::folding::layers::layer_problems;
 use foldcam::design::folding::script::{parse_script, run_script};
 use foldcam::formats::fold::write_string_frames;
 use foldcam::formats::{OutputSet, read_text};
-use foldcam::render::{View3d, render_folded_rgba, render_gif};
-use image::{ImageFormat, RgbaImage};
+use foldcam::render::{View3d, render_gif, step_sheet_png};
 
 use super::Outcome;
 
@@ -24,7 +23,8 @@ use super::Outcome;
                   FOLD file whose key frame is the crease pattern (the unfolded fold lines, \
                   mountain/valley from the final state, boundary B) and whose further frames are \
                   the folded states after each step (frame 1 the flat sheet), with faceOrders for \
-                  flat layers; on request a PNG with one picture per step and an animated GIF.\n\n\
+                  flat layers; on request a PNG with one captioned picture per step (all at one scale) and an \
+                  animated GIF.\n\n\
                   Exit status: 0 written, 2 bad script or a step that cannot be folded (the step \
                   is named; nothing is written).",
     after_help = "Examples:\n  foldcam fold examples/folding/waterbomb-base.toml -o waterbomb.fold --png steps.png\n  \
@@ -74,7 +74,9 @@ pub fn run(args: Args) -> Result<Outcome> {
         );
     }
     if let Some(png) = &args.png {
-        let bytes = step_sheet(&shown, &view).with_context(|| png.display().to_string())?;
+        check_picture_size(shown.len(), view.width, "step sheet")?;
+        let bytes = step_sheet_png(&shown, &step_captions(&folding), &view)
+            .with_context(|| png.display().to_string())?;
         super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
     if let Some(gif) = &args.gif {
@@ -100,7 +102,6 @@ pub fn run(args: Args) -> Result<Outcome> {
     Ok(Outcome::Done)
 }
 
-/// One picture per step in a grid of up to four columns, as PNG bytes.
 /// Most pixels a step sheet or an animation may hold in all (64 megapixels, 256 MB of RGBA):
 /// each step is drawn at `--width` pixels square, so a long script needs a smaller width.
 const MAX_PICTURE_PIXELS: u64 = 64_000_000;
@@ -120,27 +121,4 @@ fn check_picture_size(panels: usize, width: u32, what: &str) -> Result<()> {
         );
     }
     Ok(())
-}
-
-fn step_sheet(states: &[foldcam::pattern::FoldedState], view: &View3d) -> Result<Vec<u8>> {
-    check_picture_size(states.len(), view.width, "step sheet")?;
-    let view = View3d {
-        height: Some(view.width),
-        ..view.clone()
-    };
-    let pictures = states
-        .iter()
-        .map(|s| render_folded_rgba(s, &view))
-        .collect::<Result<Vec<_>, _>>()?;
-    let cols = pictures.len().clamp(1, 4) as u32;
-    let rows = (pictures.len() as u32).div_ceil(cols);
-    let (w, h) = (view.width, view.width);
-    let mut sheet = RgbaImage::from_pixel(w * cols, h * rows, image::Rgba([255, 255, 255, 255]));
-    for (i, p) in pictures.iter().enumerate() {
-        let (c, r) = (i as u32 % cols, i as u32 / cols);
-        image::imageops::overlay(&mut sheet, p, i64::from(c * w), i64::from(r * h));
-    }
-    let mut bytes = std::io::Cursor::new(Vec::new());
-    sheet.write_to(&mut bytes, ImageFormat::Png)?;
-    Ok(bytes.into_inner())
 }

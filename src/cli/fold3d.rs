@@ -149,7 +149,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     for (path, bytes) in &outputs {
         write_atomic(path, bytes).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-        eprintln!("foldcam: wrote {}", path.display());
+        note!("foldcam: wrote {}", path.display());
     }
     print_report(&name, &result, input::unit_label(cp.units));
     Ok(match result.report.stop {

@@ -131,7 +131,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     input::save(&args.output, cp, Some(&folded))?;
     if let (Some(path), Some(bytes)) = (&args.png, png) {
         write_atomic(path, &bytes).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-        eprintln!("foldcam: wrote {}", path.display());
+        note!("foldcam: wrote {}", path.display());
     }
     eprintln!(
         "foldcam: {}: state {} of {}{}",

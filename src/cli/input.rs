@@ -39,6 +39,9 @@ impl FrameArg {
 /// and returns the import.
 pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
     let imported = match frame.fold_frame {
+        _ if super::pipe::is_stdio(path) => {
+            super::pipe::load_stdin(frame.fold_frame, &frame.read_options())?
+        }
         None | Some(0) => formats::load_with(path, &frame.read_options())?,
         Some(n) => load_frame(path, n)?,
     };
@@ -53,7 +56,7 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
         eprintln!("foldcam: warning: {}: {w}", path.display());
     }
     for n in &imported.notes {
-        eprintln!("foldcam: {}: {n}", path.display());
+        note!("foldcam: {}: {n}", path.display());
     }
     Ok(imported)
 }
@@ -102,7 +105,7 @@ pub fn clean(
         );
     }
     if !report.unchanged() {
-        eprintln!(
+        note!(
             "foldcam: {}: cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, \
              {} zero-length and {} duplicate edges removed",
             path.display(),
@@ -119,7 +122,7 @@ pub fn clean(
 /// Writes the pattern (and folded state) and says so on stderr.
 pub fn save(path: &Path, cp: &CreasePattern, folded: Option<&FoldedState>) -> Result<()> {
     formats::save(path, cp, folded)?;
-    eprintln!(
+    note!(
         "foldcam: wrote {} ({} vertices, {} edges)",
         path.display(),
         cp.vertices.len(),
@@ -178,10 +181,19 @@ pub fn commit(outputs: formats::OutputSet, inputs: &[&Path]) -> Result<()> {
             );
         }
     }
+    let mut outputs = outputs;
+    let stdout = outputs
+        .paths()
+        .find(|p| super::pipe::is_stdout(p))
+        .map(Path::to_path_buf);
+    let piped = stdout.and_then(|p| outputs.take(&p));
     let written: Vec<std::path::PathBuf> = outputs.paths().map(Path::to_path_buf).collect();
     outputs.commit()?;
     for path in written {
-        eprintln!("foldcam: wrote {}", path.display());
+        note!("foldcam: wrote {}", path.display());
+    }
+    if let Some(bytes) = piped {
+        super::pipe::write_stdout(&bytes)?;
     }
     Ok(())
 }

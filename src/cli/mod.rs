@@ -2,6 +2,8 @@
 //! returns an [`Outcome`] or an error; [`run`] prints errors as `foldcam: <file>: <problem>` and
 //! maps them to exit codes (0 done, 1 a check failed, 2 bad usage or input).
 
+#[macro_use]
+mod say;
 mod args;
 mod check;
 mod convert;
@@ -27,13 +29,14 @@ mod popup_poly;
 mod preview;
 mod progress;
 mod serve;
+mod shell;
 mod simulate;
 mod tessellate;
 mod testgrid;
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 
 /// What a successful subcommand reports to the shell.
 pub enum Outcome {
@@ -65,6 +68,19 @@ pub enum Outcome {
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Say only results, warnings and errors (no notes of files written, no progress bars).
+    #[arg(long, short, global = true)]
+    quiet: bool,
+    /// Also say how long the command took and every cause of an error.
+    #[arg(long, short, global = true, conflicts_with = "quiet")]
+    verbose: bool,
+    /// Format of an input given as `-` (standard input): fold, svg, cp, opx or dxf.
+    #[arg(long, global = true, value_name = "FORMAT")]
+    from: Option<String>,
+    /// Format of an output given as `-` (standard output), by its extension: fold, svg, cp,
+    /// opx; gcode, nc, ngc, dxf, svg, lbrn2 for jobs; png for pictures.
+    #[arg(long, global = true, value_name = "FORMAT")]
+    to: Option<String>,
 }
 
 #[derive(Subcommand)]
@@ -104,6 +120,10 @@ enum Command {
     Testgrid(testgrid::Args),
     /// Open patterns in the browser: the local web studio (check, fold in 3D, plan, cut).
     Serve(serve::Args),
+    /// Print a shell completion script (bash, zsh, fish, powershell, elvish).
+    Completions(shell::CompletionsArgs),
+    /// Print the manual page (roff), or write one page per command into a folder.
+    Man(shell::ManArgs),
 }
 
 /// Parses the command line, runs the subcommand and returns its exit code.
@@ -116,6 +136,9 @@ pub fn run() -> ExitCode {
         std::process::exit(130);
     });
     let cli = Cli::parse();
+    say::set(cli.quiet, cli.verbose);
+    pipe::set_formats(cli.from, cli.to);
+    let started = std::time::Instant::now();
     let result = match cli.command {
         Command::Convert(a) => convert::run(a),
         Command::Check(a) => check::run(a),
@@ -134,12 +157,22 @@ pub fn run() -> ExitCode {
         Command::Fold3d(a) => fold3d::run(a),
         Command::Testgrid(a) => testgrid::run(a),
         Command::Serve(a) => serve::run(a),
+        Command::Completions(a) => shell::completions(a, Cli::command()),
+        Command::Man(a) => shell::man(a, Cli::command()),
     };
+    if say::verbose() {
+        eprintln!("foldcam: took {:.2} s", started.elapsed().as_secs_f64());
+    }
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
         Ok(Outcome::CheckFailed) => ExitCode::from(1),
         Err(e) => {
             eprintln!("foldcam: {}", message(&e));
+            if say::verbose() {
+                for (i, cause) in e.chain().enumerate() {
+                    eprintln!("  cause {i}: {cause}");
+                }
+            }
             ExitCode::from(2)
         }
     }

@@ -148,6 +148,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         if let Some(png) = &args.png {
             let options = PreviewOptions {
                 width: args.width,
+                dark_flat: true,
                 ..PreviewOptions::default()
             };
             let bytes = preview_png(cp, &options, &[]).map_err(|e| err(&e))?;

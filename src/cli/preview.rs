@@ -44,8 +44,8 @@ pub struct Args {
 
 /// Renders the preview.
 pub fn run(args: Args) -> Result<Outcome> {
-    let is_png = args
-        .output
+    let output = super::pipe::output(&args.output)?;
+    let is_png = output
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("png"));
     if !is_png {
@@ -66,10 +66,13 @@ pub fn run(args: Args) -> Result<Outcome> {
             eprint!("foldcam: {}: {}", args.input.display(), layers.to_text());
         }
         eprintln!(
-            "foldcam: {}: {} fault(s) ringed",
+            "foldcam: {}: {} fault(s) ringed, numbered as listed:",
             args.input.display(),
             report.findings.len()
         );
+        for (i, f) in report.findings.iter().enumerate() {
+            eprintln!("  {}", foldcam::check::finding_line(i + 1, f));
+        }
         report.findings
     } else {
         Vec::new()
@@ -80,9 +83,12 @@ pub fn run(args: Args) -> Result<Outcome> {
     };
     let png = preview_png(cp, &options, &findings)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
-    write_atomic(&args.output, &png)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", args.output.display()))?;
-    eprintln!("foldcam: wrote {}", args.output.display());
+    if super::pipe::is_stdout(&output) {
+        super::pipe::write_stdout(&png)?;
+    } else {
+        write_atomic(&output, &png).map_err(|e| anyhow::anyhow!("{}: {e}", output.display()))?;
+        note!("foldcam: wrote {}", output.display());
+    }
     Ok(if checked && !findings.is_empty() {
         Outcome::CheckFailed
     } else {

@@ -67,10 +67,17 @@ pub fn run(args: Args) -> Result<Outcome> {
     // Burns and travels are kept only where they are used; otherwise the run streams the
     // file in memory independent of its length.
     let keep_moves = args.png.is_some() || args.pattern.is_some() || args.json;
-    let file = std::fs::File::open(&args.job).with_context(|| args.job.display().to_string())?;
-    let size = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let png = args.png.as_deref().map(super::pipe::output).transpose()?;
+    let (source, size): (Box<dyn std::io::Read>, u64) = if super::pipe::is_stdio(&args.job) {
+        (Box::new(std::io::stdin()), 0)
+    } else {
+        let file =
+            std::fs::File::open(&args.job).with_context(|| args.job.display().to_string())?;
+        let size = file.metadata().map(|m| m.len()).unwrap_or(0);
+        (Box::new(file), size)
+    };
     let bar = super::progress::bar(size, "simulating");
-    let reader = std::io::BufReader::with_capacity(1 << 16, file);
+    let reader = std::io::BufReader::with_capacity(1 << 16, source);
     let report = sim::run_reader(reader, &machine, keep_moves, |bytes| {
         bar.set_position(bytes)
     })
@@ -80,17 +87,21 @@ pub fn run(args: Args) -> Result<Outcome> {
         (Some(pattern), Some(material)) => Some(check_coverage(&args, &report, pattern, material)?),
         _ => None,
     };
-    if let Some(png) = &args.png {
+    if let Some(png) = &png {
         let bytes = sim::render_png(&report, &machine, args.width)
             .map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
-        eprintln!("foldcam: wrote {}", png.display());
+        if super::pipe::is_stdout(png) {
+            super::pipe::write_stdout(&bytes)?;
+        } else {
+            write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
+            note!("foldcam: wrote {}", png.display());
+        }
     }
     if args.json {
         let value = serde_json::json!({ "run": report, "coverage": coverage });
-        println!("{}", serde_json::to_string_pretty(&value)?);
+        outln!("{}", serde_json::to_string_pretty(&value)?);
     } else {
-        print!("{}", summary(&args.job, &report, coverage.as_ref()));
+        out!("{}", summary(&args.job, &report, coverage.as_ref()));
     }
     let clean = report.is_clean() && coverage.as_ref().is_none_or(CoverageReport::passed);
     Ok(if clean {

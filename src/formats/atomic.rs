@@ -122,6 +122,13 @@ impl OutputSet {
         self.files.iter().map(|(p, _)| p.as_path())
     }
 
+    /// Removes the file staged for `path` and returns its bytes, for a target written some
+    /// other way (standard output); `None` if nothing was staged for it.
+    pub fn take(&mut self, path: &Path) -> Option<Vec<u8>> {
+        let i = self.files.iter().position(|(p, _)| p == path)?;
+        Some(self.files.remove(i).1)
+    }
+
     /// Whether nothing was added.
     pub fn is_empty(&self) -> bool {
         self.files.is_empty()

@@ -1,5 +1,5 @@
 //! Where the pattern goes in the image: the uniform scale, the margins, the band for the
-//! scale bar, and the pattern-to-pixel mapping (y up in the pattern, y down in the image,
+//! key (scale bar and legend), and the pattern-to-pixel mapping (y up in the pattern, y down in the image,
 //! no mirroring).
 //!
 //! The width is the caller's; the height follows the pattern's aspect ratio, capped at
@@ -9,8 +9,6 @@
 //! pixel per unit.
 
 use glam::DVec2;
-
-use super::font::GLYPH_HEIGHT;
 
 /// Smallest accepted image width, pixels.
 pub const MIN_SIZE: u32 = 16;
@@ -38,22 +36,19 @@ pub struct Layout {
     pub margin: u32,
     /// Size of one font pixel, pixels.
     pub font_px: u32,
-    /// Top of the scale-bar band (equal to `height` when there is none).
+    /// Top of the key band (equal to `height` when there is none).
     pub band_top: u32,
 }
 
 impl Layout {
     /// Lays out bounds `lo..hi` in an image `width` pixels wide with `margin` pixels on each
-    /// side, reserving a band for the scale bar when `scale_bar` is set. The caller has
-    /// checked `width` (within [`MIN_SIZE`]..=[`MAX_SIZE`]) and `margin` (≤ width / 8).
-    pub fn new(lo: DVec2, hi: DVec2, width: u32, margin: u32, scale_bar: bool) -> Layout {
-        let font_px = (width / 300).clamp(1, 4);
-        let band = if scale_bar {
-            GLYPH_HEIGHT * font_px + 4 * font_px + margin / 2
-        } else {
-            0
-        };
+    /// side, reserving a band of `band` pixels at the bottom for the key (scale bar and
+    /// legend, [`super::legend::Key`]). The caller has checked `width` (within
+    /// [`MIN_SIZE`]..=[`MAX_SIZE`]) and `margin` (≤ width / 8).
+    pub fn new(lo: DVec2, hi: DVec2, width: u32, margin: u32, band: u32) -> Layout {
+        let font_px = super::legend::font_px_for(width);
         let max_height = (width.saturating_mul(MAX_ASPECT)).min(MAX_SIZE);
+        let band = band.min(max_height / 2);
         let avail_w = f64::from(width - 2 * margin);
         let avail_h = f64::from(max_height.saturating_sub(2 * margin + band).max(1));
         let ext = hi - lo;
@@ -152,7 +147,7 @@ mod tests {
 
     #[test]
     fn y_up_maps_to_image_top() {
-        let l = Layout::new(DVec2::ZERO, DVec2::new(100.0, 50.0), 220, 10, false);
+        let l = Layout::new(DVec2::ZERO, DVec2::new(100.0, 50.0), 220, 10, 0);
         assert_eq!(l.height, 120);
         assert_eq!(l.to_px(DVec2::new(0.0, 50.0)), DVec2::new(10.0, 10.0));
         assert_eq!(l.to_px(DVec2::new(100.0, 0.0)), DVec2::new(210.0, 110.0));
@@ -160,9 +155,9 @@ mod tests {
 
     #[test]
     fn tall_patterns_are_capped_and_points_do_not_divide_by_zero() {
-        let l = Layout::new(DVec2::ZERO, DVec2::new(1.0, 100.0), 100, 10, false);
+        let l = Layout::new(DVec2::ZERO, DVec2::new(1.0, 100.0), 100, 10, 0);
         assert_eq!(l.height, 400);
-        let p = Layout::new(DVec2::ONE, DVec2::ONE, 100, 10, true);
+        let p = Layout::new(DVec2::ONE, DVec2::ONE, 100, 10, 20);
         assert!(p.scale.is_finite() && p.to_px(DVec2::ONE).is_finite());
     }
 }

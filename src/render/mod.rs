@@ -2,10 +2,10 @@
 //!
 //! [`preview_png`] draws every edge in the usual origami line styles ([`style`]), on a
 //! background with a margin, y up in the pattern and y down in the image (no mirroring), with
-//! an optional scale bar at the bottom left (a 1, 2 or 5 × 10^k length, labelled in mm or
-//! "units" with the built-in [`font`]) and with the findings of [`crate::check`] highlighted:
-//! a semi-transparent ring at each finding's position and an orange halo under an edge the
-//! finding names.
+//! a key under the drawing ([`legend`]: a scale bar of a 1, 2 or 5 × 10^k length labelled in mm
+//! or "units", and one legend entry per line style drawn) and with the findings of
+//! [`crate::check`] highlighted: a ring at each finding's position, numbered as the check's
+//! text report numbers it ([`rings`]), and an orange halo under an edge the finding names.
 //!
 //! The width is the caller's (16 to 16384 pixels); the height follows the aspect ratio and is
 //! capped at 4 × the width and 16384 pixels ([`layout`]). Geometry stays f64 until it is
@@ -14,7 +14,8 @@
 //!
 //! 3D views of a [`FoldedState`](crate::pattern::FoldedState) ([`render_folded_png`],
 //! [`render_gif`]): orthographic camera and framing in [`view3d`], flat two-sided shading in
-//! [`shade`], the painter's order in [`depth_order`], animations in [`animation`].
+//! [`shade`], the painter's order in [`depth_order`], animations in [`animation`], fold-step
+//! sheets with captions at one scale in [`step_sheet`].
 
 pub mod animation;
 mod chain;
@@ -22,8 +23,11 @@ pub mod depth_order;
 pub mod font;
 pub mod heat;
 pub mod layout;
+pub mod legend;
 mod preview;
+pub mod rings;
 pub mod shade;
+pub mod step_sheet;
 pub mod style;
 pub mod top_view;
 pub mod view3d;
@@ -35,6 +39,7 @@ pub use animation::render_gif;
 pub use layout::{MAX_SIZE, MIN_SIZE};
 pub use preview::render_pixmap;
 pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
+pub use step_sheet::{step_sheet_png, step_sheet_rgba};
 pub use top_view::render_top_view_png;
 pub use view3d::View3d;
 
@@ -47,6 +52,11 @@ pub struct PreviewOptions {
     pub background: [u8; 4],
     /// Draw a scale bar at the bottom left.
     pub scale_bar: bool,
+    /// Draw a legend under the drawing: one entry per line style drawn, and the rings.
+    pub legend: bool,
+    /// Draw flat lines dark and as wide as creases (paper-craft sheets, whose flat lines are
+    /// the edge numbers), instead of thin and light grey.
+    pub dark_flat: bool,
     /// Base line width in pixels (0 < w ≤ 64); other widths and dashes are multiples of it.
     pub line_width_px: f32,
     /// Empty space around the drawing, pixels (reduced to an eighth of the width if larger).
@@ -59,6 +69,8 @@ impl Default for PreviewOptions {
             width: 1024,
             background: [255, 255, 255, 255],
             scale_bar: true,
+            legend: true,
+            dark_flat: false,
             line_width_px: 2.0,
             margin: 24,
         }

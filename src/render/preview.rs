@@ -1,12 +1,13 @@
-//! Drawing the preview: lines by assignment, fault highlights, scale bar.
+//! Drawing the preview: lines by assignment, fault highlights (numbered rings, [`super::rings`]),
+//! and the key under it (scale bar and legend, [`super::legend`]).
 
 use glam::DVec2;
-use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform};
+use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
 
-use super::layout::{Layout, MAX_SIZE, MIN_SIZE, length_label, nice_length};
-use super::style::{DRAW_ORDER, FAULT_COLOR, LineStyle, SCALE_BAR_COLOR, line_style};
-use super::{PreviewOptions, RenderError};
-use super::{chain, font};
+use super::layout::{Layout, MAX_SIZE, MIN_SIZE};
+use super::legend::{self, Key, LegendEntry, ScaleBar, Swatch};
+use super::style::{DRAW_ORDER, FAULT_COLOR, LineStyle, line_style};
+use super::{PreviewOptions, RenderError, chain, rings};
 use crate::check::Finding;
 use crate::pattern::{Assignment, CreasePattern, Units};
 
@@ -22,33 +23,85 @@ pub fn render_pixmap(
     check_options(opts)?;
     let (lo, hi) = edge_bounds(cp).ok_or(RenderError::Empty)?;
     let margin = opts.margin.min(opts.width / 8);
-    let layout = Layout::new(lo, hi, opts.width, margin, opts.scale_bar);
+    let lw = opts.line_width_px;
+    // The key's height depends on its rows, not on the scale: lay out, then size the band.
+    let first = Layout::new(lo, hi, opts.width, margin, 0);
+    let key = preview_key(cp, opts, &first, faults);
+    let inner = opts.width - 2 * margin;
+    let band = key.height(inner, first.font_px) + margin / 2;
+    let layout = Layout::new(lo, hi, opts.width, margin, band);
+    let key = preview_key(cp, opts, &layout, faults);
     let mut pixmap = Pixmap::new(layout.width, layout.height).ok_or(RenderError::Allocation {
         width: layout.width,
         height: layout.height,
     })?;
     let [r, g, b, a] = opts.background;
     pixmap.fill(Color::from_rgba8(r, g, b, a));
-    let lw = opts.line_width_px;
     draw_fault_edges(&mut pixmap, cp, &layout, faults, lw);
     for assignment in DRAW_ORDER {
-        draw_lines(
-            &mut pixmap,
-            cp,
-            &layout,
-            assignment,
-            &line_style(assignment, lw),
-        );
-    }
-    draw_fault_rings(&mut pixmap, &layout, faults, lw);
-    if opts.scale_bar {
-        let unit = match cp.units {
-            Units::Millimetres => "mm",
-            Units::Unitless => "units",
+        let style = line_style(assignment, lw);
+        let style = match (assignment, opts.dark_flat) {
+            (Assignment::Flat, true) => dark_flat_style(lw),
+            _ => style,
         };
-        draw_scale_bar(&mut pixmap, &layout, unit);
+        draw_lines(&mut pixmap, cp, &layout, assignment, &style);
     }
+    rings::draw(&mut pixmap, &layout, faults, lw);
+    let top = f64::from(layout.band_top);
+    key.draw(&mut pixmap, f64::from(margin), top, inner, layout.font_px);
     Ok(pixmap)
+}
+
+/// Flat lines drawn as text (paper-craft edge numbers): dark and as wide as a crease.
+fn dark_flat_style(lw: f32) -> LineStyle {
+    LineStyle {
+        color: legend::INK,
+        width: lw,
+        dash: None,
+    }
+}
+
+/// The key under a preview: the scale bar, one entry per assignment drawn, and the rings.
+fn preview_key(
+    cp: &CreasePattern,
+    opts: &PreviewOptions,
+    layout: &Layout,
+    faults: &[Finding],
+) -> Key {
+    let unit = match cp.units {
+        Units::Millimetres => "mm",
+        Units::Unitless => "units",
+    };
+    let drawable = f64::from(layout.width - 2 * layout.margin);
+    let scale_bar = opts.scale_bar.then_some(ScaleBar {
+        px_per_unit: layout.scale,
+        unit,
+        max_px: drawable * SCALE_BAR_SHARE,
+    });
+    let mut entries = Vec::new();
+    if opts.legend {
+        let lw = opts.line_width_px;
+        for a in DRAW_ORDER.iter().rev() {
+            if cp.edges.iter().any(|e| e.assignment == *a) {
+                let s = match (*a, opts.dark_flat) {
+                    (Assignment::Flat, true) => dark_flat_style(lw),
+                    _ => line_style(*a, lw),
+                };
+                let label = match (*a, opts.dark_flat) {
+                    (Assignment::Flat, true) => "flat, labels",
+                    _ => a.name(),
+                };
+                entries.push(LegendEntry::line(label, s.color, s.width, s.dash));
+            }
+        }
+        if !faults.is_empty() {
+            entries.push(LegendEntry {
+                swatch: Swatch::Ring { color: FAULT_COLOR },
+                label: "finding, numbered as in the report".into(),
+            });
+        }
+    }
+    Key { scale_bar, entries }
 }
 
 fn check_options(opts: &PreviewOptions) -> Result<(), RenderError> {
@@ -160,68 +213,4 @@ fn draw_fault_edges(
     let [r, g, b, _] = FAULT_COLOR;
     let halo = paint([r, g, b, 170]);
     pixmap.stroke_path(&path, &halo, &stroke, Transform::identity(), None);
-}
-
-/// A semi-transparent ring around every finding's position (drawn on top); its radius is six
-/// line widths, at least 10 px and 1/80 of the image width.
-fn draw_fault_rings(pixmap: &mut Pixmap, layout: &Layout, faults: &[Finding], lw: f32) {
-    let radius = (6.0 * lw).max(10.0).max(layout.width as f32 / 80.0);
-    let mut pb = PathBuilder::new();
-    for f in faults {
-        let p = layout.to_px(f.position);
-        if p.is_finite() {
-            pb.push_circle(p.x as f32, p.y as f32, radius);
-        }
-    }
-    let Some(path) = pb.finish() else {
-        return;
-    };
-    let stroke = Stroke {
-        width: (1.5 * lw).max(2.5),
-        ..Stroke::default()
-    };
-    let [r, g, b, _] = FAULT_COLOR;
-    pixmap.stroke_path(
-        &path,
-        &paint([r, g, b, 160]),
-        &stroke,
-        Transform::identity(),
-        None,
-    );
-}
-
-fn fill_rect(pixmap: &mut Pixmap, x: f64, y: f64, w: f64, h: f64, color: [u8; 4]) {
-    if let Some(rect) = Rect::from_xywh(x as f32, y as f32, w as f32, h as f32) {
-        let mut p = paint(color);
-        p.anti_alias = false;
-        pixmap.fill_rect(rect, &p, Transform::identity(), None);
-    }
-}
-
-/// A bar of a nice length with end ticks, |____| , and its label, at the bottom left.
-fn draw_scale_bar(pixmap: &mut Pixmap, layout: &Layout, unit: &str) {
-    let fp = f64::from(layout.font_px);
-    let drawable = f64::from(layout.width - 2 * layout.margin);
-    let Some(length) = nice_length(drawable * SCALE_BAR_SHARE / layout.scale) else {
-        return;
-    };
-    let bar = length * layout.scale;
-    if bar < 2.0 {
-        return;
-    }
-    let glyph_h = f64::from(font::GLYPH_HEIGHT) * fp;
-    let thick = 2.0 * fp;
-    let x0 = f64::from(layout.margin);
-    let y0 = f64::from(layout.band_top) + 2.0 * fp;
-    let c = SCALE_BAR_COLOR;
-    fill_rect(pixmap, x0, y0, thick, glyph_h, c);
-    fill_rect(pixmap, x0 + bar - thick, y0, thick, glyph_h, c);
-    fill_rect(pixmap, x0, y0 + glyph_h - thick, bar, thick, c);
-    let label = length_label(length, unit);
-    let lx = x0 + bar + 4.0 * fp;
-    font::for_each_dot(&label, |col, row| {
-        let x = lx + f64::from(col) * fp;
-        let y = y0 + f64::from(row) * fp;
-        fill_rect(pixmap, x, y, fp, fp, c);
-    });
 }

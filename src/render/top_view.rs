@@ -60,7 +60,7 @@ pub fn render_top_view_png(view: &TopView, width: u32, xray: bool) -> Result<Vec
             Some(acc.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))))
         })
         .ok_or(RenderError::NoFaces)?;
-    let layout = Layout::new(lo, hi, width, MARGIN.min(width / 8), false);
+    let layout = Layout::new(lo, hi, width, MARGIN.min(width / 8), 0);
     let mut pixmap = Pixmap::new(layout.width, layout.height).ok_or(RenderError::Allocation {
         width: layout.width,
         height: layout.height,

@@ -55,7 +55,8 @@ pub use coverage::{
 pub use parse::MAX_NUMBER;
 pub use render::render_png;
 pub use report::{
-    Bounds, Burn, MAX_VIOLATIONS, PowerLength, SimReport, Travel, Violation, ViolationKind,
+    Bounds, Burn, MAX_VIOLATIONS, OperationStart, PowerLength, SimReport, Travel, Violation,
+    ViolationKind,
 };
 
 use crate::machine::{Dialect, MachineProfile};
@@ -194,6 +195,12 @@ fn end(mut m: Machine, last: usize) -> SimReport {
 
 /// Runs one line.
 fn step(m: &mut Machine, line: usize, raw: &str) {
+    if m.report.keep_moves {
+        let named = parse::comment_only(raw).and_then(crate::fab::Operation::from_name);
+        if let Some(operation) = named {
+            m.report.operations.push(OperationStart { line, operation });
+        }
+    }
     if let Some(down) = m.pens.matches(raw) {
         m.set_pen(down);
         return;

@@ -54,6 +54,17 @@ impl LineError {
     }
 }
 
+/// The text of a line that holds nothing but one comment (`; text` or `(text)`), trimmed;
+/// `None` for any other line.
+pub(crate) fn comment_only(raw: &str) -> Option<&str> {
+    let t = raw.trim();
+    if let Some(rest) = t.strip_prefix(';') {
+        return Some(rest.trim());
+    }
+    let inner = t.strip_prefix('(')?.strip_suffix(')')?;
+    (!inner.contains(['(', ')'])).then(|| inner.trim())
+}
+
 /// Reads one line.
 pub(crate) fn parse_line(raw: &str) -> Result<Line, LineError> {
     let code = raw.split(';').next().unwrap_or("");

@@ -98,6 +98,15 @@ pub struct Travel {
     pub to: DVec2,
 }
 
+/// The first line of a group of moves of one operation, as the program's comments name it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct OperationStart {
+    /// Line number of the comment, from 1.
+    pub line: usize,
+    /// The operation it names.
+    pub operation: Operation,
+}
+
 /// Burn length at one power level.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct PowerLength {
@@ -172,6 +181,12 @@ pub struct SimReport {
     pub violation_count: usize,
     /// Where the tool is at the end, mm.
     pub end_position: DVec2,
+    /// Where the program's own comments start a group of one operation, in line order: a
+    /// comment line whose text is exactly an operation's name (`; perforate`, `(cut)`), as
+    /// foldcam's writers head every group. Kept only with the moves; empty for programs
+    /// without such comments.
+    #[serde(skip)]
+    pub operations: Vec<OperationStart>,
     /// Keep every burn and travel in [`SimReport::burns`] and [`SimReport::travels`]
     /// (needed by coverage, pictures and JSON); without, the run takes memory independent of
     /// the job's length and only the totals are filled.
@@ -204,6 +219,7 @@ impl SimReport {
             violations: Vec::new(),
             violation_count: 0,
             end_position: DVec2::ZERO,
+            operations: Vec::new(),
             keep_moves: true,
             power_totals: std::collections::BTreeMap::new(),
         }
@@ -305,6 +321,13 @@ impl SimReport {
             .filter(|&(_, d)| d <= tolerance)
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(op, _)| op)
+    }
+
+    /// The operation whose group holds line `line`, as the program's comments name it
+    /// ([`SimReport::operations`]); `None` before the first such comment.
+    pub fn operation_at(&self, line: usize) -> Option<Operation> {
+        let k = self.operations.partition_point(|s| s.line <= line);
+        k.checked_sub(1).map(|k| self.operations[k].operation)
     }
 
     /// The power of `s` as a fraction of the profile's range, 0..=1.

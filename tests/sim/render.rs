@@ -1,4 +1,5 @@
 //! The toolpath PNG: size, orientation (y up), colours of burns and travel.
+//! (Legend, scale bar and the whole bed: `tests/picture_keys.rs`.)
 
 use super::*;
 use image::Rgba;
@@ -38,12 +39,12 @@ fn burns_are_red_at_full_power_and_y_points_up() {
     // The mirrored position (y = 180) holds no burn.
     let (mx, my) = pixel_of(600, 150.0, 180.0);
     assert!(!is_red(*img.get_pixel(mx, my)));
-    // Travel is grey somewhere along y = 180 (dashed: look along a short stretch).
-    let grey = (0..20).any(|dx| {
+    // Travel is faint orange somewhere along y = 180 (dashed: look along a short stretch).
+    let orange = (0..20).any(|dx| {
         let p = img.get_pixel(mx + dx, my);
-        p[0] < 250 && p[0].abs_diff(p[2]) < 10
+        p[0] > 240 && p[1] < 235 && p[2] < p[1] && p[1] > 120
     });
-    assert!(grey, "travel drawn in grey");
+    assert!(orange, "travel drawn in faint orange");
 }
 
 #[test]

@@ -18,6 +18,24 @@ pub fn display_states(folding: &Folding, gap_mm: f64) -> Vec<FoldedState> {
         .collect()
 }
 
+/// One caption per step, for pictures: `Step N: what it did` (the operation, as the step's
+/// summary names it: "bend (valley)", "tuck-in", "fold up by 90°"; step 0 is the flat sheet),
+/// then the script's name for the step on a second line when it has one.
+pub fn step_captions(folding: &Folding) -> Vec<String> {
+    folding
+        .steps()
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let what = s.summary.split(':').next().unwrap_or("").trim();
+            match &s.name {
+                Some(name) if !name.trim().is_empty() => format!("Step {i}: {what}\n{name}"),
+                _ => format!("Step {i}: {what}"),
+            }
+        })
+        .collect()
+}
+
 fn display_state(folding: &Folding, state: &State, gap_mm: f64) -> FoldedState {
     let layers = state.layers();
     let mut out = FoldedState {
