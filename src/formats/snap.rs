@@ -226,7 +226,7 @@ fn meeting_point(
     }
     let det = xx * yy - xy * xy;
     let trace = xx + yy;
-    if !(det > MEETING_MIN_SIN2 * trace * trace / 4.0) {
+    if det.is_nan() || det <= MEETING_MIN_SIN2 * trace * trace / 4.0 {
         return fallback;
     }
     let x = DVec2::new(yy * b.x - xy * b.y, xx * b.y - xy * b.x) / det;
