@@ -19,6 +19,7 @@ pub mod assets;
 pub mod document;
 mod edit_api;
 pub mod flat;
+mod machine_api;
 pub mod settings;
 pub mod toolpath;
 
