@@ -171,15 +171,6 @@ impl<'a> Job<'a> {
         Ok(self)
     }
 
-    /// The first machine violation found by [`Job::verify`] as an error, so that a caller
-    /// can refuse to hand out a program the machine would reject; `Ok` when there is none
-    /// (or before [`Job::verify`]). Coverage is not judged here: see [`Job::is_clean`].
-    pub fn refuse_violations(&self) -> Result<(), JobError> {
-        self.readback
-            .iter()
-            .try_for_each(|r| violations_error(&r.sim, self.machine))
-    }
-
     /// Verified, and every job read back clean (no violation, full coverage, no stray burn).
     pub fn is_clean(&self) -> bool {
         !self.readback.is_empty() && self.readback.iter().all(Readback::is_clean)
@@ -231,12 +222,6 @@ pub fn job_file(
 /// violation if it breaks the machine's limits.
 pub fn check_gcode(text: &str, machine: &MachineProfile) -> Result<SimReport, JobError> {
     let report = sim::run(text, machine)?;
-    violations_error(&report, machine)?;
-    Ok(report)
-}
-
-/// The first violation of `report` as [`JobError::Violations`].
-fn violations_error(report: &SimReport, machine: &MachineProfile) -> Result<(), JobError> {
     match report.violations.first() {
         Some(v) => Err(JobError::Violations {
             machine: machine.name.clone(),
@@ -244,7 +229,7 @@ fn violations_error(report: &SimReport, machine: &MachineProfile) -> Result<(), 
             line: v.line,
             message: v.message.clone(),
         }),
-        None => Ok(()),
+        None => Ok(report),
     }
 }
 

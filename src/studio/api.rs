@@ -261,6 +261,15 @@ pub(super) async fn blocking<T: Send + 'static>(
     })?
 }
 
+/// The name an upload is known by: only the last component of what the page sent, so that a
+/// name is never a path on this machine.
+pub(super) fn upload_name(sent: &str) -> String {
+    sent.rsplit(['/', '\\'])
+        .next()
+        .unwrap_or_default()
+        .to_string()
+}
+
 /// The routes, with the upload limit of `state`'s configuration.
 pub fn router(state: Arc<Studio>) -> Router {
     let limit = state.config.max_upload_bytes;
@@ -391,13 +400,7 @@ async fn upload(
     body: Result<Bytes, BytesRejection>,
 ) -> ApiResult<Json<Opened>> {
     let Query(q) = query?;
-    // Only the last component names the upload: a name is never a path on this machine.
-    let name = q
-        .name
-        .rsplit(['/', '\\'])
-        .next()
-        .unwrap_or_default()
-        .to_string();
+    let name = upload_name(&q.name);
     let limit = s.config.max_upload_bytes;
     let too_large = || {
         ApiError::new(

@@ -13,7 +13,7 @@ use axum::response::{IntoResponse, Response};
 use serde::Deserialize;
 use serde_json::{Value, json};
 
-use super::api::{ApiError, ApiResult, PathId, Studio, blocking};
+use super::api::{ApiError, ApiResult, PathId, Studio, blocking, upload_name};
 use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
 use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
@@ -219,12 +219,7 @@ pub(super) async fn upload_profile(
             ));
         }
     };
-    let name = q
-        .name
-        .rsplit(['/', '\\'])
-        .next()
-        .unwrap_or_default()
-        .to_string();
+    let name = upload_name(&q.name);
     let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
     if body.len() > MAX_PROFILE_BYTES {
         return Err(ApiError::new(
