@@ -4,29 +4,22 @@
 //! paper-craft sheet (edge numbers drawn dark). Each test runs the built program as a user
 //! would and reads the PNG back.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "common/bin.rs"]
+mod bin;
+
+use bin::{foldcam, repo_file};
+
+use std::path::Path;
+use std::process::Output;
 
 use image::{Rgba, RgbaImage};
-
-fn foldcam(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the foldcam binary runs")
-}
 
 fn ok(o: &Output) {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
 
 fn example(rel: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("examples")
-        .join(rel)
-        .to_string_lossy()
-        .into_owned()
+    repo_file(&format!("examples/{rel}"))
 }
 
 fn open(dir: &Path, name: &str) -> RgbaImage {

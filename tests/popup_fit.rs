@@ -7,23 +7,15 @@
 //! of the back sheet and `z` above the base to `y + z` above the central fold, so a card
 //! closes within its outline when no face reaches past the taller half of the sheet.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "common/bin.rs"]
+mod bin;
 
-fn foldcam(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the foldcam binary runs")
-}
+use bin::{foldcam, repo_file};
+
+use std::path::Path;
 
 fn example(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("examples/popup")
-        .join(name)
-        .to_string_lossy()
-        .into_owned()
+    repo_file(&format!("examples/popup/{name}"))
 }
 
 /// Pieces of the card written to `out` (re-read from the file) cut free on every side,

@@ -5,27 +5,19 @@
 //! within its outline, is given the paper it needs by `--fit` (tests/popup_fit.rs), or is
 //! refused.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "common/bin.rs"]
+mod bin;
+
+use bin::{foldcam, repo_file};
+
+use std::path::Path;
 
 use foldcam::design::popup::integrity::{loose_pieces, loose_pieces_where};
 use foldcam::pattern::{Assignment, CreasePattern, Face};
 use glam::DVec2;
 
-fn foldcam(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_foldcam"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the foldcam binary runs")
-}
-
 fn example(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("examples/popup")
-        .join(name)
-        .to_string_lossy()
-        .into_owned()
+    repo_file(&format!("examples/popup/{name}"))
 }
 
 /// Pieces of the card written to `out` (re-read from the file) that fall out, leaving aside
