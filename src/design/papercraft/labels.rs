@@ -2,8 +2,9 @@
 //! they are glued along, so the builder knows which sides go together (the issue asks for
 //! matching labels on both parts; the thesis's figures show none).
 //!
-//! Each label is the cut-line index in seven-segment stroke digits (drawn for this crate:
-//! a digit is 0.5 h wide and h tall, digits advance by 0.8 h), centred next to the side's
+//! Each label is the cut-line index in the crate's single-stroke digits
+//! ([`crate::geom::stroke_digits`]: a digit is 0.5 h wide and h tall, digits advance by
+//! 0.8 h), centred next to the side's
 //! middle (half its length), offset inward by 0.5 h from it, its top towards the side. The strokes
 //! go into the crease pattern as flat (`F`) lines: the material's `flat` operation decides
 //! whether the machine marks them (a pen or a low-power laser pass) or skips them, and the
@@ -24,6 +25,7 @@ use glam::DVec2;
 use super::network::Network;
 use super::parts::{Part, PartSide};
 use crate::geom::polygon::{contains_point, segment_crosses_ring};
+use crate::geom::stroke_digits::{text_strokes, text_width};
 
 /// A label on a part.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,23 +39,6 @@ pub struct Label {
     /// The corners of its box (for overlap checks).
     pub frame: [DVec2; 4],
 }
-
-/// Seven-segment corners: (0,0) bottom left … (1,2) top right, in half-widths and halves.
-const SEGMENTS: [[(u8, u8); 2]; 7] = [
-    [(0, 2), (1, 2)], // a: top
-    [(1, 2), (1, 1)], // b: top right
-    [(1, 1), (1, 0)], // c: bottom right
-    [(0, 0), (1, 0)], // d: bottom
-    [(0, 1), (0, 0)], // e: bottom left
-    [(0, 2), (0, 1)], // f: top left
-    [(0, 1), (1, 1)], // g: middle
-];
-
-/// Which segments (a…g as bits 0…6) each digit lights.
-const DIGITS: [u8; 10] = [
-    0b011_1111, 0b000_0110, 0b101_1011, 0b100_1111, 0b110_0110, 0b110_1101, 0b111_1101, 0b000_0111,
-    0b111_1111, 0b110_1111,
-];
 
 /// Labels every cut line shared by two parts with its index, height `height` mm (> 0;
 /// non-positive or non-finite heights label nothing). Returns the cut lines that got no
@@ -173,28 +158,21 @@ fn place(part: &Part, path: &SidePath, e: usize, text: &str, h: f64, along: f64)
     let t = (at(to * total) - at(from * total)).try_normalize()?;
     let up = DVec2::new(t.y, -t.x); // outward: the outline is counter-clockwise
     let right = DVec2::new(up.y, -up.x);
-    let width = 0.8 * h * text.len() as f64 - 0.3 * h;
+    let width = text_width(text, h);
     let centre = at(along * total) - up * h;
     let origin = centre - right * (0.5 * width) - up * (0.5 * h);
-    let map = |x: f64, y: f64| origin + right * x + up * y;
-    let mut strokes = Vec::new();
-    for (k, c) in text.chars().enumerate() {
-        let bits = DIGITS[c.to_digit(10)? as usize];
-        let x0 = 0.8 * h * k as f64;
-        for (s, seg) in SEGMENTS.iter().enumerate() {
-            if bits & (1 << s) != 0 {
-                let [(ax, ay), (bx, by)] = *seg;
-                let p = |x: u8, y: u8| map(x0 + 0.5 * h * f64::from(x), 0.5 * h * f64::from(y));
-                strokes.push([p(ax, ay), p(bx, by)]);
-            }
-        }
-    }
+    let map = |p: DVec2| origin + right * p.x + up * p.y;
+    let strokes: Vec<[DVec2; 2]> = text_strokes(text, DVec2::ZERO, h)
+        .ok()?
+        .iter()
+        .flat_map(|line| line.windows(2).map(|w| [map(w[0]), map(w[1])]))
+        .collect();
     let pad = 0.25 * h;
     let frame = [
-        map(-pad, -pad),
-        map(width + pad, -pad),
-        map(width + pad, h + pad),
-        map(-pad, h + pad),
+        map(DVec2::new(-pad, -pad)),
+        map(DVec2::new(width + pad, -pad)),
+        map(DVec2::new(width + pad, h + pad)),
+        map(DVec2::new(-pad, h + pad)),
     ];
     let outline = &part.outline;
     let inside = frame.iter().all(|&c| contains_point(outline, c))
