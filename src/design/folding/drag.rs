@@ -1,4 +1,4 @@
-//! The paper's interaction (§2.3): pick a vertex and move it.
+//! The paper's interaction (Miyazaki et al. 1992, §2.3): pick a vertex and move it.
 //!
 //! **Picking** (§2.3 3): the vertex nearest the start point within a radius; of the faces
 //! holding it, the one nearest the eye (the eye looks down from +z: the top face of the

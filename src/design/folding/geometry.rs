@@ -1,5 +1,5 @@
 //! Plane geometry of convex faces: a directed line and its sides, splitting a convex polygon by
-//! a line (§4.2, §4.3), positive-area overlap of two convex polygons (the overlap tests of the
+//! a line (Miyazaki et al. 1992, §4.2, §4.3), positive-area overlap of two convex polygons (the overlap tests of the
 //! moving-face search, §4.1), and rotations about a line in space.
 //!
 //! Every predicate takes an explicit tolerance in millimetres: points closer than `tol` to a

@@ -2,7 +2,7 @@
 //!
 //! A crease folded flat (180°) joins two faces `f`, `g` of one group; seen from the side it is
 //! a "taco". Two conditions must hold in every face stack (the standard local conditions of
-//! flat folding, checked here as a test of the simulator's stack update, §4.5):
+//! flat folding, checked here as a test of the simulator's stack update, Miyazaki et al. (1992) §4.5):
 //! - **taco–tortilla**: no face lying between `f` and `g` in the stack runs across the crease;
 //! - **taco–taco**: two flat creases along the same segment, opening to the same side, have
 //!   nested or disjoint stack intervals, never interleaved ones.

@@ -1,4 +1,4 @@
-//! The fold operations of §2.1 — folding up by any angle, bending (180°) and tucking in (the
+//! The fold operations of Miyazaki et al. (1992) §2.1 — folding up by any angle, bending (180°) and tucking in (the
 //! symmetric case) — and the list update of §4: moving-face search (§4.1, in `search`),
 //! splitting the faces the fold line crosses (§4.2–4.3: each becomes two child cells of the
 //! face tree), moving the vertices by the rotation (§4.4: here, composing each moving face's

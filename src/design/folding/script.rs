@@ -8,7 +8,7 @@
 //! # rectangle = [210, 297]          #   width and height, mm
 //! # polygon = [[0, 0], [100, 0], [50, 80]]   # corners of a simple polygon, mm
 //!
-//! [snap]                            # optional: drag snapping tolerances (§2.3 4)
+//! [snap]                            # optional: drag snapping tolerances (Miyazaki et al. 1992, §2.3 4)
 //! vertex = 1.0                      # mm, destination onto a vertex
 //! edge = 1.0                        # mm, edge onto edge
 //! line = 1.0                        # mm, fold line through two vertices

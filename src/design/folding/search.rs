@@ -1,4 +1,4 @@
-//! The moving-face search of §4.1 on one face group, in the group's plane coordinates.
+//! The moving-face search of Miyazaki et al. (1992) §4.1 on one face group, in the group's plane coordinates.
 //!
 //! Starting from the seed faces (rule ①: the face of the picked vertex, or the faces a script
 //! names), a face becomes moving when

@@ -1,6 +1,6 @@
 //! The sheet outline: validation, and the cut of a non-convex outline into convex pieces.
 //!
-//! The simulator's geometry (§4.2–4.3 face splitting, the §4.1 overlap tests) works on convex
+//! The simulator's geometry (Miyazaki et al. 1992, §4.2–4.3 face splitting, the §4.1 overlap tests) works on convex
 //! faces, where a line splits a face into at most two. A non-convex sheet (any simple polygon)
 //! therefore starts as several convex faces of the face tree, children of the sheet made at
 //! step 0: a fold line crossing the sheet several times then gives one face per piece on

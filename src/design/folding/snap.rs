@@ -1,4 +1,4 @@
-//! The snapping rules of §2.3 4) in the plane of the picked face (see [`super::drag`]).
+//! The snapping rules of Miyazaki et al. (1992) §2.3 4) in the plane of the picked face (see [`super::drag`]).
 
 use glam::DVec2;
 

@@ -1,4 +1,4 @@
-//! The face stack update of §4.5 and the tuck-in conditions: where the moving faces land in
+//! The face stack update of Miyazaki et al. (1992) §4.5 and the tuck-in conditions: where the moving faces land in
 //! the layer order after a bend, a fold-up or a tuck-in (see [`super::operation`]).
 
 use glam::{DAffine3, DVec2, DVec3};

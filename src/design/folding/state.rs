@@ -1,4 +1,4 @@
-//! The simulator's state (§3): the face tree (face cells, one per face ever made, each with
+//! The simulator's state (Miyazaki et al. 1992, §3): the face tree (face cells, one per face ever made, each with
 //! its parent and its polygon on the sheet), the current faces (the tree's leaves) with their
 //! rigid transforms and edge-neighbours, and the face groups (coplanar faces) with their face
 //! stacks (layer order). A [`Folding`] keeps one immutable [`State`] per step, so undo

@@ -1,4 +1,4 @@
-//! Degree-4 B-spline curves, the directrices of the thesis's patches (§3.2 Step 2: the
+//! Degree-4 B-spline curves, the directrices of the thesis's patches (Ōgaki 2016, §3.2 Step 2: the
 //! thesis replaces the cubic Bézier of Hosoda's method by a degree-4 B-spline).
 //!
 //! The knot vector is clamped and uniform: with n control points (n ≥ 5) it is

@@ -1,4 +1,4 @@
-//! Cut lines (§3.2 Step 1): uniform Catmull–Rom splines through the points the user picked on
+//! Cut lines (Ōgaki 2016, §3.2 Step 1): uniform Catmull–Rom splines through the points the user picked on
 //! the reference mesh. The curve passes through every point, and its ends are the first and
 //! last points, which cut lines share at the network's vertices.
 //!

@@ -1,4 +1,4 @@
-//! Cylindrical developable patches (§3.2 Step 2) and their isometric unrolling.
+//! Cylindrical developable patches (Ōgaki 2016, §3.2 Step 2) and their isometric unrolling.
 //!
 //! A patch is the ruled surface `S(u, v) = c(u) + v·d` swept by lines of unit direction `d`
 //! (the ruling, "直線エレメント") along the degree-4 B-spline directrix `c` ("測地線" in the

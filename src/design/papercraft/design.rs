@@ -1,5 +1,5 @@
 //! The design file (TOML): what the user did in the thesis's interface — the cut lines'
-//! points (§3.2 Step 1), each patch's loop of cut lines and its directrix control points and
+//! points (Ōgaki 2016, §3.2 Step 1), each patch's loop of cut lines and its directrix control points and
 //! ruling direction (Step 2) — plus the making parameters. [`Design::build`] runs the whole
 //! chain: network, walls, trimming, parts with tabs, packing, one pattern per sheet.
 //!

@@ -1,4 +1,4 @@
-//! Least-squares fitting of a degree-4 B-spline directrix to a point sequence (§3.5 Step 3:
+//! Least-squares fitting of a degree-4 B-spline directrix to a point sequence (Ōgaki 2016, §3.5 Step 3:
 //! the thesis approximates the swept real boundary "by least squares with a degree-4
 //! B-spline, after ref. [11]", with any number of control points).
 //!

@@ -1,4 +1,4 @@
-//! Automatic neighbouring patches (§3.5): a new patch P_new that meets already trimmed
+//! Automatic neighbouring patches (Ōgaki 2016, §3.5): a new patch P_new that meets already trimmed
 //! patches P_exist along their shared boundary walls without a gap.
 //!
 //! The thesis's three steps, and what this module does for each:

@@ -1,4 +1,4 @@
-//! The cut-line network (§3.3): a half-edge structure whose edges are cut lines, whose
+//! The cut-line network (Ōgaki 2016, §3.3): a half-edge structure whose edges are cut lines, whose
 //! vertices are the shared end points and whose faces are patches.
 //!
 //! Each patch is given as the list of its cut lines in the order they go around it once

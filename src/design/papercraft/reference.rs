@@ -1,4 +1,4 @@
-//! The reference mesh of seed 004 (§3.1): the shape the user traces cut lines and directrices
+//! The reference mesh of Ōgaki (2016) (§3.1): the shape the user traces cut lines and directrices
 //! on. Offers closest-point projection and the surface normal there.
 //!
 //! Faces are split into fan triangles; a [`TriangleGrid`] finds candidates near the query.

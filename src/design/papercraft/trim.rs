@@ -1,4 +1,4 @@
-//! Trimming a patch by its boundary walls (§3.2 Step 3): the "real boundary" (実境界線) is
+//! Trimming a patch by its boundary walls (Ōgaki 2016, §3.2 Step 3): the "real boundary" (実境界線) is
 //! where the patch crosses the walls of its cut lines, and becomes the outline of its part.
 //!
 //! Each wall is ruled by straight ribs (see [`super::walls`]), so the real boundary along

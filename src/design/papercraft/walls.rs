@@ -1,4 +1,4 @@
-//! Boundary walls (§3.4): each cut line swept away from the reference mesh, so a patch that
+//! Boundary walls (Ōgaki 2016, §3.4): each cut line swept away from the reference mesh, so a patch that
 //! floats off the mesh can still be trimmed along it.
 //!
 //! Each patch gets its rough direction `n_p = normalize(Σ_{n ∈ N_p} n)`, N_p the mesh normals

@@ -4,7 +4,7 @@
 //! - [`voxel`]: the voxel model of seed paper 001 (Mitani, Suzuki, Uno): staircase voxels with
 //!   windows, the crease pattern (Table 1), the pop-up check (§2.6) and the open/close
 //!   transform (eq. 6).
-//! - [`polygon`]: the polygon model of seed 000.
+//! - [`polygon`]: the polygon model of Mitani & Suzuki (2004).
 //! - [`integrity`]: whether a finished card holds together and closes within its outline.
 //! - [`fit`]: `--fit`, more paper above the model until the closed card holds every face.
 

@@ -1,4 +1,4 @@
-//! Boundary non-overlap (eq. 2, the angle-based-flattening condition): walking the sheet's
+//! Boundary non-overlap (Tachi 2014, eq. 2, the angle-based-flattening condition): walking the sheet's
 //! boundary counter-clockwise, the flat turning angle `τ_v = π − Σ_ℓ θ_{v,ℓ}` at each boundary
 //! vertex, summed over any run of consecutive vertices, never goes below −π. A violated run
 //! becomes the equality `b = Σ τ_v + π − m = 0` for that step (m: the limits' margin).

@@ -1,4 +1,4 @@
-//! The constraint rows g(X) = 0 of §3 with their sparse analytic Jacobian rows (eq. 8).
+//! The constraint rows g(X) = 0 of Tachi (2014) §3 with their sparse analytic Jacobian rows (eq. 8).
 //!
 //! - developability of every interior vertex, eq. 1: `g_v = 2π − Σ θ_{v,i}`;
 //! - fold-angle range and limit, eq. 3 with §5's `ρ_limit = 180° − δ_fold`: with σ = +1 for a

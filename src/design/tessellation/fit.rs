@@ -1,4 +1,4 @@
-//! Surface fit (§3.4): moves inside the solution space towards the target surface.
+//! Surface fit (Tachi 2014, §3.4): moves inside the solution space towards the target surface.
 //!
 //! Each round takes the descent direction `ΔX₀ = −∇d` of the distance to the targets,
 //! projects it onto the tangent space of the constraints, `ΔX = [I − C⁺C] ΔX₀` (eq. 9, with

@@ -1,5 +1,5 @@
 //! Triangle angles, fold angles and relative heights with their analytic gradients: the
-//! building blocks of the constraint Jacobian (eq. 8 applies the chain rule through these).
+//! building blocks of the constraint Jacobian (eq. 8 of Tachi 2014 applies the chain rule through these).
 //!
 //! Conventions. A corner angle θ of triangle `(o, a, b)` at `o`. A fold angle ρ of the edge
 //! `i → j` between triangle `p = (i, j, a)` and `q = (j, i, b)` (both counter-clockwise about

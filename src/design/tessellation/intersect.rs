@@ -1,4 +1,4 @@
-//! Face intersections of the folded form (the "no face intersections"; §3.2 calls
+//! Face intersections of the folded form (the "no face intersections"; Tachi (2014) §3.2 calls
 //! them type 1–3 collisions): exact triangle–triangle tests between every pair of faces whose
 //! bounding boxes meet, found by a sweep along x.
 //!

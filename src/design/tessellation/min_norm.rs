@@ -1,4 +1,4 @@
-//! The minimum-norm step of §3.3: `C⁺ g = Cᵀ y` with `(C Cᵀ + εI) y = g`, solved by a
+//! The minimum-norm step of Tachi (2014) §3.3: `C⁺ g = Cᵀ y` with `(C Cᵀ + εI) y = g`, solved by a
 //! preconditioned conjugate gradient on a compressed copy of the sparse rows (ε is a tiny
 //! Tikhonov term that keeps redundant rows harmless). The preconditioner is a sparse Cholesky
 //! factor of `C Cᵀ` (faer; `C Cᵀ` is sparse: two rows meet only where they share a vertex),

@@ -22,7 +22,7 @@ pub enum EdgeRole {
     KeyTip,
     /// A tuck crease from the key vertex to a corner of a face around the tuck's vertex.
     KeyCorner,
-    /// An edge of the flat n-gon of a truncated star or twist fold (§2.2).
+    /// An edge of the flat n-gon of a truncated star or twist fold (Tachi 2014, §2.2).
     TruncationRim,
     /// A fold added to a star triangle by the twist (§2.2), from the twist vertex to a face
     /// corner.

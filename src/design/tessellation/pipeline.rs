@@ -13,7 +13,7 @@ use crate::mesh::{HalfEdgeMesh, PolyMesh};
 /// Everything [`tessellate`] needs besides the mesh.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TessellateOptions {
-    /// Initial pattern (§2.1).
+    /// Initial pattern (Tachi 2014, §2.1).
     pub star: StarOptions,
     /// Solver settings and fabrication limits (§3.3, §5).
     pub solve: SolveOptions,

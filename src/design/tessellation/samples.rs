@@ -1,6 +1,6 @@
 //! Sample surfaces for examples, tests and benchmarks: a hexagonal patch of equilateral
 //! triangles (edge `l`, `6·rings²` faces) lifted vertically onto a dome, a saddle or a bell,
-//! the doubly curved shapes of Fig. 13.
+//! the doubly curved shapes of Tachi (2014) Fig. 13.
 
 use glam::DVec3;
 

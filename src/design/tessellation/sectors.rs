@@ -1,4 +1,4 @@
-//! Sectors: the angles between neighbouring creases at a vertex, which the §5 vertex-angle
+//! Sectors: the angles between neighbouring creases at a vertex, which the Tachi (2014) §5 vertex-angle
 //! limit bounds. A triangle corner is a sector of its own unless an edge beside it is a flat
 //! diagonal (a polygon face or a truncated star's n-gon fanned into triangles): corners on
 //! either side of a flat diagonal at the same vertex form one sector, whose angle is their sum.

@@ -1,4 +1,4 @@
-//! The tuck inserted behind one vertex: the star of §2.1 and the variations of §2.2 (Fig. 6).
+//! The tuck inserted behind one vertex: the star of Tachi (2014) §2.1 and the variations of §2.2 (Fig. 6).
 //!
 //! A tuck is built from the vertex's **arms**, one per gap that opens between two faces at
 //! the vertex: arm `i` runs from the face corner `c_i` (`own`) over the star tip `t_i` to the

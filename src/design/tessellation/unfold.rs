@@ -3,7 +3,7 @@
 //! [`CreasePattern`] (frame 0, millimetres) and the [`FoldedState`] (same vertices, edges and
 //! faces in 3D) are written out, and the flat pattern is checked for overlapping triangles.
 //!
-//! A vertex takes the position of its first placement; a developable surface (eq. 1 holds)
+//! A vertex takes the position of its first placement; a developable surface (eq. 1 of Tachi 2014 holds)
 //! closes every vertex fan, so later placements agree up to the residual, which the
 //! [`Unfolded::max_length_error`] reports.
 

@@ -1,4 +1,4 @@
-//! Vertex-adjacent faces (§3.2, eq. 5–7): detecting a crease that has passed through a face
+//! Vertex-adjacent faces (Tachi 2014, §3.2, eq. 5–7): detecting a crease that has passed through a face
 //! sharing only its vertex, and the penalty that pulls it back.
 //!
 //! At an interior vertex `v` with ring `u_0 … u_{n−1}` (counter-clockwise about the front

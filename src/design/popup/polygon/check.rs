@@ -1,4 +1,4 @@
-//! The pop-up check of seed 000 §3.6 (Fig. 12): two floods over the pattern's faces.
+//! The pop-up check of Mitani & Suzuki (2004), §3.6 (Fig. 12): two floods over the pattern's faces.
 //!
 //! (a) From the back sheet, across folds only: a VFace passes to an HFace only across a valley,
 //! an HFace to a VFace only across a mountain. (b) From the base sheet: a VFace passes to an

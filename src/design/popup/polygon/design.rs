@@ -1,4 +1,4 @@
-//! Design files: the user's operations of seed 000 §3.1, replayed on a [`PolygonCard`].
+//! Design files: the user's operations of Mitani & Suzuki (2004), §3.1, replayed on a [`PolygonCard`].
 //!
 //! A design is a TOML file: the card size, then operations in order. Each operation places a
 //! vertical (y = `at`) or horizontal (z = `at`) reference plane, gives a polygon on it and adds

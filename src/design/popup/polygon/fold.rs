@@ -1,4 +1,4 @@
-//! Opening and closing the card: eq. 7 of seed 000 as a [`FoldedState`].
+//! Opening and closing the card: eq. 7 of Mitani & Suzuki (2004) as a [`FoldedState`].
 //!
 //! Each face of the crease pattern is placed on the plane of the card face under it (eq. 2,
 //! 3), then moved by eq. 7 (`X = x, Y = y − z cos θ, Z = z sin θ`, shared with the voxel card:
@@ -42,7 +42,7 @@ pub fn face_planes(card: &PolygonCard, cp: &CreasePattern) -> Vec<Plane> {
 /// Whether a face of `cp` is paper the card means to keep: it lies on a face of `card` and
 /// has an edge parallel to the fold. Every fold of a polygon card runs parallel to the
 /// central fold (x), so a face without such an edge can never be held by a fold: the design
-/// cuts it out (seed 000's slanted outlines; a diamond opening's paper falls out by design).
+/// cuts it out (Mitani & Suzuki (2004)'s slanted outlines; a diamond opening's paper falls out by design).
 pub fn holds_paper(card: &PolygonCard, cp: &CreasePattern, face: &Face) -> bool {
     let ring = &face.outer;
     let along_x = (0..ring.len()).any(|i| {

@@ -1,10 +1,10 @@
-//! From a voxel card (seed 001) to a polygon card (seed 000), so a voxel design can be refined
+//! From a voxel card (Mitani, Suzuki & Uno (2003)) to a polygon card (Mitani & Suzuki (2004)), so a voxel design can be refined
 //! with slanted edges, cut-outs and openings.
 //!
 //! Every pattern cell of the voxel card lands on one plane ([`Surface`]); the cells of each
 //! plane other than the two sheets are merged (vertical runs per column, then a union) into one
 //! face, added with eq. 5. Cells of the back plane below the fold or of the base plane above it
-//! (windows folded onto a sheet, §2.3 of seed 001) become faces too. The polygon card keeps the
+//! (windows folded onto a sheet, §2.3 of Mitani, Suzuki & Uno (2003)) become faces too. The polygon card keeps the
 //! voxel pattern's coordinates shifted by the margin: voxel pattern point `(u, v)` is polygon
 //! pattern point `(u + margin, v)`, card point `(x, y, z)` becomes `(x + margin, y, z)`.
 

@@ -10,7 +10,7 @@
 //!   outline.
 //! - [`check_popup`] (`check.rs`): the two directed floods of §3.6.
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 7 as a [`FoldedState`].
-//! - [`from_voxel`]: a voxel card (seed 001) as a polygon card, for refinement.
+//! - [`from_voxel`]: a voxel card (Mitani, Suzuki & Uno (2003)) as a polygon card, for refinement.
 //! - [`parse_design`] (`design.rs`): TOML design files replaying the operations of §3.1;
 //!   examples in `examples/popup/*.popup.toml`.
 //!

@@ -1,4 +1,4 @@
-//! The polygon card of seed 000: faces (Fig. 5), the 3D ↔ 2D maps (eq. 1–3), adding faces by
+//! The polygon card of Mitani & Suzuki (2004): faces (Fig. 5), the 3D ↔ 2D maps (eq. 1–3), adding faces by
 //! regularised difference (§3.2, eq. 5) and openings by the equivalent face (§3.3, eq. 6).
 //!
 //! Axes follow the paper and the voxel card: `x` along the central fold, `y` the depth in front

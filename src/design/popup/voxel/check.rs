@@ -1,4 +1,4 @@
-//! The pop-up check of seed 001 §2.6 (Fig. 8, Fig. 9).
+//! The pop-up check of Mitani, Suzuki & Uno (2003), §2.6 (Fig. 8, Fig. 9).
 //!
 //! Two floods over the pattern's unit cells, never across a cut: (a) from the top-left corner
 //! moving left, down and right; (b) from the bottom-left corner moving left, up and right.

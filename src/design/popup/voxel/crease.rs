@@ -1,4 +1,4 @@
-//! The crease pattern of a voxel card (seed 001 §2.5, Table 1; windows per §2.3).
+//! The crease pattern of a voxel card (Mitani, Suzuki & Uno (2003), §2.5, Table 1; windows per §2.3).
 //!
 //! The lines between unit cells come from [`Surface`]; runs of equal lines along one grid line
 //! are merged into one edge, so a crease 1000 cells long is one edge. Valleys get +90°,

@@ -1,4 +1,4 @@
-//! Opening and closing the card: eq. 6 of seed 001 (eq. 7 of seed 000).
+//! Opening and closing the card: eq. 6 of Mitani, Suzuki & Uno (2003) (eq. 7 of Mitani & Suzuki (2004)).
 //!
 //! With θ the paper's parameter, a card point `(x, y, z)` moves to
 //! `X = x, Y = y − z cos θ, Z = z sin θ`. θ = 90° is the card standing (identity), θ = 0° the

@@ -13,7 +13,7 @@
 //!
 //! After `rows`, each line is one height level, the highest first and the last line z = 0;
 //! levels above the first line are empty. Each token is a column's depth in cells (the row's
-//! filled cells are `y < depth`); a trailing `w` makes the row's front face a window (eq. 5),
+//! filled cells are `y < depth`); a trailing `w` makes the row's front face a window (Mitani, Suzuki & Uno 2003, eq. 5),
 //! a trailing `t` leaves out the row's top face (§3.3), both may follow one depth (`3wt`).
 //! Every line has the same number of tokens, which is the card's width `nx`. Depths must not
 //! grow upwards (eq. 4) nor exceed `depth`. Errors name the line.

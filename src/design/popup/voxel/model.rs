@@ -1,4 +1,4 @@
-//! The voxel card: the staircase voxels of seed 001 (eq. 3–4), the windows (eq. 5) and the
+//! The voxel card: the staircase voxels of Mitani, Suzuki & Uno (2003) (eq. 3–4), the windows (eq. 5) and the
 //! editing operations of §2.7.
 //!
 //! Axes follow the paper: `x` runs along the central fold, `y` is the depth in front of the

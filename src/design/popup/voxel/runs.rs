@@ -1,4 +1,4 @@
-//! The pop-up check of §2.6 on runs of cells: each pattern column is a few runs of cells on one
+//! The pop-up check of Mitani, Suzuki & Uno (2003) §2.6 on runs of cells: each pattern column is a few runs of cells on one
 //! plane (a face strip per step of the staircase), so both floods visit runs, not cells.
 //!
 //! Flood (a) moves down, left and right, so within a run it reaches every row up to the

@@ -1,4 +1,4 @@
-//! Polygon model to depth field (seed 001 §3.1): the mesh rendered orthographically from the
+//! Polygon model to depth field (Mitani, Suzuki & Uno (2003), §3.1): the mesh rendered orthographically from the
 //! front on the CPU, keeping per cell the depth of the nearest surface, as the paper read
 //! OpenGL's depth buffer.
 //!

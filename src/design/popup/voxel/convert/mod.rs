@@ -1,4 +1,4 @@
-//! From a depth field to a card that pops up: seed 001 §3.2–3.3.
+//! From a depth field to a card that pops up: Mitani, Suzuki & Uno (2003), §3.2–3.3.
 //!
 //! A [`DepthField`] says, per front-view cell (x, z), how far the shape stands out from the
 //! back sheet: a height map (§3.1: [`DepthField::from_grey`]) or an orthographic depth

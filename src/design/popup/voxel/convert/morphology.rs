@@ -1,4 +1,4 @@
-//! Small-bump removal of §3.2 a): morphological opening then closing of every x-slice (the yz
+//! Small-bump removal of Mitani, Suzuki & Uno (2003) §3.2 a): morphological opening then closing of every x-slice (the yz
 //! plane) with a square structuring element (3 × 3 in the paper; the side is adjustable).
 //!
 //! A slice of a depth field is a prefix image: row z is filled for `y < D(z)`. Erosion and

@@ -1,4 +1,4 @@
-//! The greedy searches of §3.2 c) (windows where eq. 7 added voxels) and §3.3 (thin top faces
+//! The greedy searches of Mitani, Suzuki & Uno (2003) §3.2 c) (windows where eq. 7 added voxels) and §3.3 (thin top faces
 //! left out): each candidate is applied and kept only if the card still pops up (§2.6) and
 //! holds together: it may not add a piece cut free on every side
 //! ([`crate::design::popup::integrity::loose_pieces`], counted on the card's crease pattern).
