@@ -100,11 +100,7 @@ fn generated_square_twist_folds_and_fold_flat_writes_orders() {
 #[test]
 fn unsatisfiable_pattern_exits_one_and_names_faces() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/testdata/flat-folder/unsatisfiable/001_ku_Bad_Twist.fold");
-    if !path.exists() {
-        eprintln!("skipped: ../shared absent");
-        return;
-    }
+        .join("tests/data/flat-folder/001_ku_Bad_Twist.fold");
     let p = path.to_str().expect("utf-8");
     let out = foldcam(&["check", p, "--layers", "--json"]);
     assert_eq!(out.status.code(), Some(1));
