@@ -1,6 +1,7 @@
 //! Plane geometry shared by every stage: segments, polygons, angles, triangulation.
 //!
-//! Vectors are glam's `DVec2`/`DVec3` (f64). Tolerances are explicit arguments.
+//! Vectors are glam's `DVec2`/`DVec3` (f64). Tolerances are explicit arguments; the shared
+//! defaults are named in [`tolerance`].
 
 pub mod angle;
 pub mod polygon;
@@ -8,7 +9,9 @@ pub mod polyline;
 pub mod rect;
 pub mod segment;
 pub mod stroke_digits;
+pub mod tolerance;
 pub mod triangulate;
 
 pub use glam::{DVec2, DVec3};
 pub use rect::Rect;
+pub use segment::Segment;

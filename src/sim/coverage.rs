@@ -46,7 +46,9 @@ use super::report::SimReport;
 use crate::fab::operations::operation_for;
 use crate::fab::sides::edge_on_back;
 use crate::fab::{ContourRole, FabPlan, Job, Operation, Side};
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{Assignment, CreasePattern, EdgeId};
+use crate::post::MIN_RESOLUTION_MM;
 
 /// Thresholds of [`coverage_with`].
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -183,7 +185,7 @@ pub fn coverage_with(
         .kerf_mm
         .unwrap_or_else(|| estimate_kerf(pattern, job))
         .max(0.0);
-    let tol = kerf_mm / 2.0 + opts.resolution_mm.max(1e-6);
+    let tol = kerf_mm / 2.0 + opts.resolution_mm.max(MIN_RESOLUTION_MM);
     let matcher = PowerMatch {
         report,
         plan,
@@ -266,7 +268,7 @@ impl PowerMatch<'_> {
 
 fn judge(op: Operation, planned: f64, burned: f64, opts: &CoverageOptions) -> bool {
     match op {
-        Operation::Cut => burned + 1e-9 >= planned - (1.0 - opts.min_cut_coverage),
+        Operation::Cut => burned + RELATIVE >= planned - (1.0 - opts.min_cut_coverage),
         _ => (burned - planned).abs() <= opts.duty_tolerance,
     }
 }

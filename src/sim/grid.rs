@@ -5,6 +5,8 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 
+use crate::geom::tolerance::ROUNDOFF;
+
 /// Most cells a segment is walked through (bounds the work for any input).
 const MAX_STEPS: f64 = 4096.0;
 
@@ -105,7 +107,7 @@ pub(crate) fn covered_interval(
     let u = (b - a) / len;
     let n = u.perp();
     let (d0, dd) = (n.dot(p - a), n.dot(q - p));
-    let (t0, t1) = if dd.abs() < 1e-12 {
+    let (t0, t1) = if dd.abs() < ROUNDOFF {
         if d0.abs() > band {
             return None;
         }

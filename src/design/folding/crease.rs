@@ -20,6 +20,7 @@ use glam::{DVec2, DVec3};
 
 use super::geometry::{overlaps, plane_basis};
 use super::state::{CellId, Folding, State};
+use crate::geom::tolerance::{ANGLE_DEG, RELATIVE};
 use crate::pattern::{Assignment, CreasePattern, Edge, Face, FaceId, FoldedState, VertexId};
 
 /// A crease pattern with, for each of its faces, the face-tree cell it unfolds.
@@ -146,14 +147,14 @@ fn with_t_junctions(corners: &[usize], vertices: &[DVec2], tol: f64) -> Vec<usiz
 /// The crease between faces `left` and `right` of `state` along sheet direction `d`.
 fn crease_edge(state: &State, left: usize, right: usize, d: DVec2) -> Edge {
     let angle = fold_angle(state, left, right, d);
-    let assignment = if angle.abs() < 1e-6 {
+    let assignment = if angle.abs() < ANGLE_DEG {
         Assignment::Flat
     } else if angle > 0.0 {
         Assignment::Valley
     } else {
         Assignment::Mountain
     };
-    Edge::new(VertexId(0), VertexId(0), assignment).with_angle(if angle.abs() < 1e-6 {
+    Edge::new(VertexId(0), VertexId(0), assignment).with_angle(if angle.abs() < ANGLE_DEG {
         0.0
     } else {
         angle
@@ -167,7 +168,7 @@ pub fn fold_angle(state: &State, left: usize, right: usize, d: DVec2) -> f64 {
     let d3 = (state.faces[left].transform.matrix3 * d.extend(0.0)).normalize();
     let s = -nf.cross(ng).dot(d3);
     let c = nf.dot(ng);
-    if c < 0.0 && s.abs() < 1e-9 {
+    if c < 0.0 && s.abs() < RELATIVE {
         return if above_along(state, right, left, nf) {
             180.0
         } else {

@@ -32,6 +32,7 @@ use super::geometry::{Line2, plane_basis, rotation_about};
 use super::operation::{Fold, FoldReport, Layers, Turn};
 use super::snap::{edge_onto_edge, snap_angle, through_two};
 use super::state::{Folding, State};
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::MAX_COORDINATE;
 
 /// Snapping tolerances of §2.3 4); zero disables a rule.
@@ -274,7 +275,7 @@ impl Folding {
             return Err(FoldError::BadDrag("the vertex does not move"));
         }
         let dir = frame.normal.cross(w);
-        if dir.length() <= 1e-9 * w.length() {
+        if dir.length() <= RELATIVE * w.length() {
             return Err(FoldError::BadDrag("the move is perpendicular to the paper"));
         }
         let dir = dir.normalize();

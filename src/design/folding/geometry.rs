@@ -7,6 +7,8 @@
 
 use glam::{DAffine3, DVec2, DVec3};
 
+use crate::geom::tolerance::TINY;
+
 /// A directed line in a plane: a point and a unit direction. Its left side is positive.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Line2 {
@@ -174,7 +176,7 @@ pub fn segment_crosses_interior(p: DVec2, q: DVec2, poly: &[DVec2], tol: f64) ->
         // Inside means left of every edge by more than tol.
         let s0 = edge.side(p) - tol;
         let ds = edge.dir.perp_dot(d);
-        if ds.abs() < 1e-300 {
+        if ds.abs() < TINY {
             if s0 <= 0.0 {
                 return false;
             }

@@ -25,6 +25,10 @@ use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
 use crate::pattern::MAX_COORDINATE;
 
+/// Smallest distance (model units) within which a fold's points count as lying in a layer's
+/// plane, whatever the operation's tolerance: the points are typed in, to about six digits.
+const MIN_PLANE_DISTANCE: f64 = 1e-6;
+
 /// Which faces a fold starts from (rule ① of §4.1).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Layers {
@@ -160,9 +164,9 @@ impl Folding {
             .groups
             .iter()
             .position(|g| {
-                [fold.line[0], fold.line[1], fold.moving]
-                    .iter()
-                    .all(|p| (*p - g.origin).dot(g.normal).abs() <= self.tol.max(1e-6))
+                [fold.line[0], fold.line[1], fold.moving].iter().all(|p| {
+                    (*p - g.origin).dot(g.normal).abs() <= self.tol.max(MIN_PLANE_DISTANCE)
+                })
             })
             .ok_or(FoldError::NoLayer)?;
         let g = &state.groups[group];

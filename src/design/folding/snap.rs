@@ -3,6 +3,7 @@
 use glam::DVec2;
 
 use super::geometry::Line2;
+use crate::geom::tolerance::ROUNDOFF;
 
 /// Rule 2: a bisector laying a moving edge of the picked face onto another edge's line.
 pub(super) fn edge_onto_edge(
@@ -57,7 +58,7 @@ pub(super) fn edge_onto_edge(
 /// The bisector of two lines closest in direction to `near` (the midline when parallel).
 fn bisector_of(a: &Line2, b: &Line2, near: &Line2, eps: f64) -> Option<Line2> {
     let cross = a.dir.perp_dot(b.dir);
-    if cross.abs() < 1e-12 {
+    if cross.abs() < ROUNDOFF {
         let foot = b.point + b.dir * b.dir.dot(a.point - b.point);
         let point = (a.point + foot) * 0.5;
         return Some(Line2 { point, dir: a.dir });

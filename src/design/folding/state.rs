@@ -12,6 +12,10 @@ use super::sheet::{check_simple, convex_pieces, is_convex};
 use super::small::{Neighbours, Ring};
 use crate::pattern::MAX_COORDINATE;
 
+/// Tolerance of the sheet's simplicity check, relative to its bounding-box diagonal (the
+/// planariser's `RELATIVE_TOLERANCE`: corners closer than this are one).
+const SHEET_RELATIVE: f64 = 1e-7;
+
 /// Index of a cell of the face tree ([`Folding::cells`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct CellId(pub u32);
@@ -154,7 +158,7 @@ impl Folding {
             .iter()
             .fold((sheet[0], sheet[0]), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
         let size = (hi - lo).length();
-        let tol = 1e-7 * size;
+        let tol = SHEET_RELATIVE * size;
         check_simple(&sheet, tol)?;
         let mut cells = vec![FaceCell {
             parent: None,

@@ -28,6 +28,7 @@ use std::collections::{HashMap, VecDeque};
 use glam::{DVec2, DVec3};
 
 use super::relax::{Rod, fit_lengths, worst_error};
+use crate::geom::tolerance::{RELATIVE, RELATIVE_SQUARED};
 use crate::pattern::{Face, VertexId};
 
 /// Relative length errors up to this are rounding: no adjustment.
@@ -117,7 +118,7 @@ impl<'a> Unfolder<'a> {
             edge_faces,
             placed: vec![None; points.len()],
             visited: vec![false; faces.len()],
-            tol: 1e-9 * extent,
+            tol: RELATIVE * extent,
             gap: 0.05 * extent.max(f64::MIN_POSITIVE),
             layout: None,
             stats: Stats {
@@ -397,7 +398,7 @@ fn face_normal(points: &[DVec3], cycle: &[VertexId], extent: f64) -> Option<DVec
     let twice_area: DVec3 = (0..pts.len())
         .map(|i| (pts[i] - origin).cross(pts[(i + 1) % pts.len()] - origin))
         .sum();
-    (twice_area.length() > 1e-18 * extent * extent).then(|| twice_area.normalize())
+    (twice_area.length() > RELATIVE_SQUARED * extent * extent).then(|| twice_area.normalize())
 }
 
 #[cfg(test)]

@@ -14,6 +14,7 @@ use rayon::prelude::*;
 
 use super::grid::EdgeGrid;
 use crate::geom::segment::{Crossing, distance_to_point, intersect, project};
+use crate::geom::tolerance::ROUNDOFF;
 
 /// An edge reduced to what the crossing search needs.
 #[derive(Clone, Copy)]
@@ -94,7 +95,7 @@ fn test_pair(segs: &[Seg], i: u32, j: u32, tol: f64, out: &mut Splits) {
     if shares_vertex {
         return;
     }
-    if let Crossing::Point { t, .. } = intersect(a.p[0], a.p[1], b.p[0], b.p[1], 1e-12) {
+    if let Crossing::Point { t, .. } = intersect(a.p[0], a.p[1], b.p[0], b.p[1], ROUNDOFF) {
         let x = a.p[0].lerp(a.p[1], t);
         let clear = a.p.iter().chain(&b.p).all(|q| q.distance(x) > tol);
         if clear {

@@ -19,6 +19,10 @@ use crate::design::popup::voxel::open_transform;
 use crate::geom::polygon::contains_point;
 use crate::pattern::{CreasePattern, Face, FoldedState, VertexId};
 
+/// Distances (mm) from a face's side at which a probe point looks up the face's plane, tried
+/// from the largest: 10 µm first, down to 0.3 of the card's 0.1 µm grid step for thin slivers.
+const PROBE_OFFSETS_MM: [f64; 4] = [1e-2, 1e-3, 1e-4, 3e-5];
+
 /// A folded polygon card and where its vertices come from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FoldedPolygonCard {
@@ -61,7 +65,7 @@ fn face_plane(card: &PolygonCard, cp: &CreasePattern, face: &Face) -> Option<Pla
     let holes: Vec<Vec<DVec2>> = face.holes.iter().map(ring).collect();
     let inside =
         |q: DVec2| contains_point(&outer, q) && !holes.iter().any(|h| contains_point(h, q));
-    for eps in [1e-2, 1e-3, 1e-4, 3e-5] {
+    for eps in PROBE_OFFSETS_MM {
         for i in 0..outer.len() {
             let (a, b) = (outer[i], outer[(i + 1) % outer.len()]);
             let d = (b - a).normalize_or_zero();
