@@ -79,18 +79,6 @@ impl SegmentGrid {
     }
 }
 
-/// Distance from `p` to segment `a`→`b`.
-pub(crate) fn point_segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let len2 = ab.length_squared();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + ab * t)
-}
-
 /// The stretch of segment `a`→`b` (as distances along it from `a`, within `[0, |ab|]`) covered
 /// by the part of segment `p`→`q` lying within `band` of the line through `a` and `b`.
 pub(crate) fn covered_interval(

@@ -3,20 +3,21 @@
 use glam::DVec2;
 
 use super::geometry::Line2;
+use crate::geom::Segment;
 use crate::geom::tolerance::ROUNDOFF;
 
 /// Rule 2: a bisector laying a moving edge of the picked face onto another edge's line.
 pub(super) fn edge_onto_edge(
     line: &Line2,
     p: &DVec2,
-    own: &[(DVec2, DVec2)],
-    edges: &[(DVec2, DVec2)],
+    own: &[Segment],
+    edges: &[Segment],
     tol: f64,
     eps: f64,
 ) -> Option<Line2> {
     let moving = line.side(*p).signum();
     let mut best: Option<(f64, Line2)> = None;
-    for &(a, b) in own {
+    for &Segment { a, b } in own {
         // The part of the edge on the moving side.
         let (sa, sb) = (moving * line.side(a), moving * line.side(b));
         if sa <= eps && sb <= eps {
@@ -34,7 +35,7 @@ pub(super) fn edge_onto_edge(
             continue;
         }
         let (ra, rb) = (line.reflect(a), line.reflect(b));
-        for &(c, e) in edges {
+        for &Segment { a: c, b: e } in edges {
             let Some(target) = Line2::through(c, e, eps) else {
                 continue;
             };

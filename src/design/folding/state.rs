@@ -10,6 +10,7 @@ use super::FoldError;
 use super::geometry::{double_area, shared_segment};
 use super::sheet::{check_simple, convex_pieces, is_convex};
 use super::small::{Neighbours, Ring};
+use crate::geom::Segment;
 use crate::pattern::MAX_COORDINATE;
 
 /// Tolerance of the sheet's simplicity check, relative to its bounding-box diagonal (the
@@ -57,7 +58,7 @@ pub struct Neighbour {
     /// Its index in [`State::faces`].
     pub face: usize,
     /// The shared segment on the sheet, millimetres.
-    pub edge: (DVec2, DVec2),
+    pub edge: Segment,
 }
 
 /// A face group (§3.1): faces lying in one plane, with their face stack.
@@ -299,7 +300,7 @@ impl Folding {
 }
 
 /// The segment two sheet polygons share (longer than `tol`), if they touch along an edge.
-pub fn contact(a: &[DVec2], b: &[DVec2], tol: f64) -> Option<(DVec2, DVec2)> {
+pub fn contact(a: &[DVec2], b: &[DVec2], tol: f64) -> Option<Segment> {
     let (na, nb) = (a.len(), b.len());
     for i in 0..na {
         for j in 0..nb {

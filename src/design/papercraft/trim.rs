@@ -24,6 +24,7 @@ use super::cylinder::CylinderPatch;
 use super::network::Network;
 use super::walls::Walls;
 use super::{PapercraftError, ReferenceMesh};
+use crate::geom::segment::distance_to_point;
 use crate::geom::tolerance::{RELATIVE, ROUNDOFF_SQUARED, TINY};
 
 /// Bisection stops when the bracket is this share of the parameter (plus an absolute part):
@@ -155,7 +156,7 @@ impl Tracer<'_> {
         }
         let m = 0.5 * (a + b);
         let mid = self.hit(m)?;
-        if distance_to_segment(mid.flat, start.flat, end.flat) <= self.tolerance {
+        if distance_to_point(start.flat, end.flat, mid.flat) <= self.tolerance {
             return Ok(());
         }
         self.refine(a, m, start, mid, depth - 1, out)?;
@@ -231,14 +232,4 @@ fn bisect(f: &impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
         if fm.signum() == sign { lo = m } else { hi = m }
     }
     0.5 * (lo + hi)
-}
-
-fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let t = if ab.length_squared() > 0.0 {
-        ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + t * ab)
 }
