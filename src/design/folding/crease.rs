@@ -20,6 +20,7 @@ use glam::{DVec2, DVec3};
 
 use super::geometry::{overlaps, plane_basis};
 use super::state::{CellId, Folding, State};
+use crate::geom::HashGrid;
 use crate::geom::tolerance::{ANGLE_DEG, RELATIVE};
 use crate::pattern::{Assignment, CreasePattern, Edge, Face, FaceId, FoldedState, VertexId};
 
@@ -39,7 +40,7 @@ pub fn crease_pattern(folding: &Folding) -> SheetPattern {
     let state = folding.current();
     let tol = folding.tol * 100.0;
     let mut vertices: Vec<DVec2> = Vec::new();
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut grid = HashGrid::new(tol);
     let corners: Vec<Vec<usize>> = state
         .faces
         .iter()
@@ -98,25 +99,12 @@ pub fn crease_pattern(folding: &Folding) -> SheetPattern {
 }
 
 /// The id of the vertex at `p`, merging with one within `tol`.
-fn vertex_id(
-    vertices: &mut Vec<DVec2>,
-    grid: &mut HashMap<(i64, i64), Vec<usize>>,
-    p: DVec2,
-    tol: f64,
-) -> usize {
-    let cell = ((p.x / tol).floor() as i64, (p.y / tol).floor() as i64);
-    for dx in -1..=1 {
-        for dy in -1..=1 {
-            if let Some(&id) = grid
-                .get(&(cell.0 + dx, cell.1 + dy))
-                .and_then(|ids| ids.iter().find(|&&i| vertices[i].distance(p) <= tol))
-            {
-                return id;
-            }
-        }
+fn vertex_id(vertices: &mut Vec<DVec2>, grid: &mut HashGrid, p: DVec2, tol: f64) -> usize {
+    if let Some(id) = grid.near(p).find(|&i| vertices[i].distance(p) <= tol) {
+        return id;
     }
     vertices.push(p);
-    grid.entry(cell).or_default().push(vertices.len() - 1);
+    grid.insert(p, vertices.len() - 1);
     vertices.len() - 1
 }
 
