@@ -1,5 +1,5 @@
 //! Plane geometry shared by every stage: segments, polygons, angles, bounding boxes, a sparse
-//! uniform grid for neighbour queries, triangulation.
+//! uniform grid for neighbour queries, triangulation, isometric unfolding.
 //!
 //! Vectors are glam's `DVec2`/`DVec3` (f64). Tolerances are explicit arguments; the shared
 //! defaults are named in [`tolerance`].
@@ -13,6 +13,7 @@ pub mod segment;
 pub mod stroke_digits;
 pub mod tolerance;
 pub mod triangulate;
+pub mod unfold;
 
 pub use glam::{DVec2, DVec3};
 pub use grid::HashGrid;
