@@ -5,10 +5,17 @@
 //!   windows, the crease pattern (Table 1), the pop-up check (§2.6) and the open/close
 //!   transform (eq. 6).
 //! - [`polygon`]: the polygon model of seed 000.
+//! - [`opening`]: opening and closing either model (the papers' shared transform), the folded
+//!   card with vertices split on cuts.
+//! - [`problem`]: what both models' pop-up checks report about a face that does not stand up.
 //! - [`integrity`]: whether a finished card holds together and closes within its outline.
 //! - [`fit`]: `--fit`, more paper above the model until the closed card holds every face.
 
 pub mod fit;
 pub mod integrity;
+pub mod opening;
 pub mod polygon;
+pub mod problem;
 pub mod voxel;
+
+pub use problem::PopupProblem;
