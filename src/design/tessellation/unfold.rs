@@ -13,6 +13,7 @@ use glam::DVec2;
 use super::TessError;
 use super::geometry::fold_angle;
 use super::model::{EdgeRole, TessMesh};
+use crate::geom::tolerance::RELATIVE;
 use crate::geom::unfold::{apex, breadth_first};
 use crate::pattern::{Assignment, CreasePattern, Edge, Face, FoldedState, VertexId};
 
@@ -156,7 +157,7 @@ fn first_overlap(mesh: &TessMesh, flat: &[DVec2]) -> Option<(usize, usize)> {
         (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
         |(l, h), p| (l.min(*p), h.max(*p)),
     );
-    let tol = 1e-9 * (hi - lo).max_element();
+    let tol = RELATIVE * (hi - lo).max_element();
     for (k, t) in tris.iter().enumerate() {
         if (t[1] - t[0]).perp_dot(t[2] - t[0]) <= 0.0 {
             return Some((k, k));
