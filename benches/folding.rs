@@ -1,4 +1,4 @@
-//! Fold-sequence simulator (seed 003): time of one fold step on a state of about 1,000 faces.
+//! Fold-sequence simulator (Miyazaki et al. 1992): time of one fold step on a state of about 1,000 faces.
 //!
 //! The paper folds interactively in real time on an IRIS 4D/70; here a 100 mm square is
 //! folded in half ten times (alternately across x and y, all layers), giving 1,024 stacked

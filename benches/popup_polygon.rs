@@ -1,4 +1,4 @@
-//! Polygon pop-up cards (seed 000): 1,000 face additions on one card (§3.2, eq. 5 with the
+//! Polygon pop-up cards (Mitani & Suzuki 2004): 1,000 face additions on one card (§3.2, eq. 5 with the
 //! regularised differences of i_overlay), then the line types, pop-up check and crease
 //! pattern of the result.
 //!

@@ -1,4 +1,4 @@
-//! Voxel pop-up cards (seed 001): from a depth map to a checked card and its crease pattern.
+//! Voxel pop-up cards (Mitani, Suzuki & Uno 2003): from a depth map to a checked card and its crease pattern.
 //!
 //! The paper reports 60 ms of bump removal and 2.5 s of constraint and windows for an
 //! 80 × 40 × 40 model on a 1.2 GHz PC (mesh input, §3). `mesh_to_card` measures the same

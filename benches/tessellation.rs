@@ -1,4 +1,4 @@
-//! Freeform origami tessellations (seed 002): initial pattern plus the generalized
+//! Freeform origami tessellations (Tachi 2014): initial pattern plus the generalized
 //! Newton–Raphson solve (§3.3) on the sample dome at about 100, 500 and 2,000 input faces (4, 9
 //! and 18 rings: 96, 486 and 1,944 triangles). The issue aims for under 1 s at 500.
 //!

@@ -127,10 +127,14 @@ impl CountLimit {
     }
 }
 
+/// Magnitudes [`show`] writes in plain decimals: from 0.0001 (four zeros after the point at
+/// most) up to 10¹⁵ (sixteen digits, all exact in an f64).
+const PLAIN: std::ops::Range<f64> = 1e-4..1e15;
+
 /// A number as a person writes it: plain between 1e-4 and 1e15, else in exponent form
 /// (`1e300`, not three hundred digits).
 pub fn show(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+    if x == 0.0 || !x.is_finite() || PLAIN.contains(&x.abs()) {
         x.to_string()
     } else {
         format!("{x:e}")
@@ -220,12 +224,17 @@ pub const RESOLUTION: CountLimit = CountLimit {
     max: 4000,
     unit: "cells",
 };
+/// The smallest merge tolerance, in the pattern's units: the least `--tolerance` accepts and the
+/// floor of every tolerance computed from a pattern's size (an empty or one-point pattern has
+/// none). Positive, so that "closer than the tolerance" never means "equal".
+pub const MIN_TOLERANCE: f64 = 1e-12;
+
 /// Merge tolerance of the cleaner: `convert --tolerance` (see also
 /// [`check_tolerance`] against the pattern's size).
 pub const TOLERANCE: Limit = Limit {
     option: "--tolerance",
     key: "",
-    min: 1e-12,
+    min: MIN_TOLERANCE,
     max: MAX_COORDINATE,
     unit: "(pattern units)",
 };

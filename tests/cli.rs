@@ -206,7 +206,7 @@ fn demo_runs_end_to_end() {
             assert!(files.contains(&name), "{name} missing from {files:?}");
         }
     }
-    // The design stages: tessellation (seed 002) and paper craft (seed 004), each with its
+    // The design stages: tessellation (Tachi 2014) and paper craft (Ōgaki 2016), each with its
     // machine job (the demo fails when the simulated machine finds a problem in one).
     for name in [
         "tessellation-dome.fold",

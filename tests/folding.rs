@@ -1,4 +1,4 @@
-//! Fold-sequence simulator (seed 003): isometry after every step, consistent layer orders,
+//! Fold-sequence simulator (Miyazaki et al. 1992): isometry after every step, consistent layer orders,
 //! flat-foldable crease patterns, exact undo, the paper's drag rule and snapping, refused
 //! steps, FOLD frames, the bird base and its path through the fabrication pipeline.
 

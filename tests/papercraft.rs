@@ -1,4 +1,4 @@
-//! Paper craft from developable patches (seed 004): reference-mesh projection, Catmull–Rom
+//! Paper craft from developable patches (Ōgaki 2016): reference-mesh projection, Catmull–Rom
 //! cut lines, the half-edge cut-line network (§3.3) and cylindrical patches with their
 //! isometric unrolling (§3.2 Step 2).
 

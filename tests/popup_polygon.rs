@@ -1,4 +1,4 @@
-//! Polygon pop-up cards (seed 000): the pattern condition after every edit (eq. 4, 5), openings
+//! Polygon pop-up cards (Mitani & Suzuki 2004): the pattern condition after every edit (eq. 4, 5), openings
 //! (eq. 6), line types (§3.4, Fig. 10), the pop-up check (§3.6, Fig. 7), the open/close
 //! transform (eq. 7), voxel conversion, design files and the fabrication pipeline.
 
@@ -517,7 +517,7 @@ fn cli_writes_pattern_and_previews_and_refuses_invalid_designs() {
 
 #[test]
 fn converted_voxel_cards_with_windows_keep_the_check_result() {
-    // The voxel tests' single column of four rows (Fig. 8 of seed 001): windows at the bottom
+    // The voxel tests' single column of four rows (Fig. 8 of Mitani, Suzuki & Uno (2003)): windows at the bottom
     // (held from the back only), top and bottom (floating), none, one in the middle.
     for (windows, pops) in [
         (&[0, 1][..], false),

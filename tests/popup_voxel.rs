@@ -1,4 +1,4 @@
-//! Voxel pop-up cards (seed 001): pattern conditions (eq. 1, 2), Table 1 lines, the pop-up
+//! Voxel pop-up cards (Mitani, Suzuki & Uno 2003): pattern conditions (eq. 1, 2), Table 1 lines, the pop-up
 //! check (§2.6), the editing operations (§2.7, eq. 4) and the open/close transform (eq. 6).
 
 use foldcam::design::popup::voxel::{

@@ -1,4 +1,4 @@
-//! Voxel cards from depth fields and meshes (seed 001 §3): depth from the front, bump removal
+//! Voxel cards from depth fields and meshes (Mitani, Suzuki & Uno 2003, §3): depth from the front, bump removal
 //! (§3.2 a), eq. 7, windows kept only where the card pops up (§3.2 c), thin top faces left
 //! out (§3.3), and the text format's round trip.
 

@@ -1,4 +1,4 @@
-//! Freeform origami tessellations (seed 002): initial star-tuck patterns on the regular
+//! Freeform origami tessellations (Tachi 2014): initial star-tuck patterns on the regular
 //! tilings of Fig. 5, the solver on the example surfaces (dome, saddle, bell), the unfolded
 //! crease pattern, and its fabrication on 0.5 mm stainless steel.
 

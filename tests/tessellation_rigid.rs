@@ -1,4 +1,4 @@
-//! Rigid-foldability simulation (seed 002 §5, after Tachi's rigid origami simulation): loop
+//! Rigid-foldability simulation (Tachi 2014, §5, after Tachi's rigid origami simulation): loop
 //! closure and its analytic Jacobian, a degree-4 vertex against the closed-form kinematics of
 //! flat-foldable vertices, a Miura-ori sheet, an inconsistent target, and the tessellations
 //! of the example surfaces.

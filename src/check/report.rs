@@ -252,8 +252,12 @@ pub fn finding_line(number: usize, f: &Finding) -> String {
     )
 }
 
+/// Half a unit in the last place [`fmt_point`] prints (three decimals): smaller values print
+/// as zero.
+const HALF_LAST_DIGIT: f64 = 5e-4;
+
 fn fmt_point(p: DVec2) -> String {
     // Values that print as zero print without a sign.
-    let clean = |x: f64| if x.abs() < 5e-4 { 0.0 } else { x };
+    let clean = |x: f64| if x.abs() < HALF_LAST_DIGIT { 0.0 } else { x };
     format!("({:.3}, {:.3})", clean(p.x), clean(p.y))
 }

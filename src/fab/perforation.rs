@@ -51,6 +51,10 @@ use std::f64::consts::FRAC_PI_2;
 use super::Operation;
 use crate::machine::Perforation;
 
+/// Floor of the shortest dash, in mm, when the profile allows any length: keeps a dash
+/// count finite on a zero `min_dash_mm` (1 pm, far below any machine's resolution).
+const DASH_FLOOR_MM: f64 = 1e-9;
+
 /// Most dashes on one crease: a bound against absurd inputs (a kilometre of crease with
 /// micrometre dashes), far above any real sheet.
 pub const MAX_DASHES: usize = 1_000_000;
@@ -135,7 +139,7 @@ pub fn layout(
     let min_dash = perf
         .min_dash_mm
         .max(f64::EPSILON * length_mm.abs())
-        .max(1e-9);
+        .max(DASH_FLOOR_MM);
     // Written so that a NaN length also counts as too short.
     if available.is_nan() || available < min_dash {
         return Err(NoDashes::TooShort {
@@ -178,7 +182,7 @@ pub fn layout(
 pub fn layout_closed(length_mm: f64, perf: &Perforation) -> Result<DashLayout, NoDashes> {
     let period0 = perf.cut_mm + perf.bridge_mm;
     let duty = perf.cut_mm / period0;
-    let min_dash = perf.min_dash_mm.max(1e-9);
+    let min_dash = perf.min_dash_mm.max(DASH_FLOOR_MM);
     // Written so that a NaN length also counts as too short.
     if length_mm.is_nan() || duty * length_mm < min_dash {
         return Err(NoDashes::TooShort {

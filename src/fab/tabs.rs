@@ -19,6 +19,7 @@
 use glam::DVec2;
 
 use super::Tabs;
+use crate::geom::tolerance::RELATIVE;
 
 /// Largest sine of the turn at a vertex inside one straight run (about 0.06°).
 pub const STRAIGHT_SINE: f64 = 1e-3;
@@ -206,7 +207,12 @@ pub fn add_lead_in(stroke: &mut Vec<DVec2>, ring: &[DVec2], scrap_inside: bool, 
     }
 }
 
-/// Distance from `p` along unit `dir` to the nearest side of `ring` not through `p`.
+/// Sides whose cross product with the unit direction is below this (mm) are parallel to it
+/// and never hit.
+const PARALLEL_DENOM: f64 = 1e-15;
+
+/// Distance from `p` along unit `dir` to the nearest side of `ring` not through `p` (hits
+/// nearer than [`RELATIVE`] mm are `p`'s own sides).
 fn free_distance(ring: &[DVec2], p: DVec2, dir: DVec2) -> f64 {
     let n = ring.len();
     let mut best = f64::INFINITY;
@@ -214,12 +220,12 @@ fn free_distance(ring: &[DVec2], p: DVec2, dir: DVec2) -> f64 {
         let (a, b) = (ring[i], ring[(i + 1) % n]);
         let e = b - a;
         let denom = dir.perp_dot(e);
-        if denom.abs() < 1e-15 {
+        if denom.abs() < PARALLEL_DENOM {
             continue;
         }
         let t = (a - p).perp_dot(e) / denom;
         let u = (a - p).perp_dot(dir) / denom;
-        if t > 1e-9 && (0.0..=1.0).contains(&u) {
+        if t > RELATIVE && (0.0..=1.0).contains(&u) {
             best = best.min(t);
         }
     }

@@ -23,10 +23,9 @@
 //! Cost: O(E log E) to sort the edges' boxes plus O(k) distance tests per end, k the edges
 //! whose box (grown by the tolerance) spans the end's x.
 
-use std::collections::HashMap;
-
 use glam::DVec2;
 
+use crate::geom::HashGrid;
 use crate::geom::segment::project;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
@@ -100,16 +99,10 @@ pub fn snap_junctions(cp: &mut CreasePattern, tolerance: f64) -> usize {
         }
         list => !list.is_empty(),
     };
-    let cell = |p: DVec2| {
-        (
-            (p.x / tolerance).floor() as i64,
-            (p.y / tolerance).floor() as i64,
-        )
-    };
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut grid = HashGrid::new(tolerance);
     let candidates: Vec<usize> = (0..cp.vertices.len()).filter(|&v| junction(v)).collect();
     for &v in &candidates {
-        grid.entry(cell(cp.vertices[v])).or_default().push(v);
+        grid.insert(cp.vertices[v], v);
     }
     let mut parent: Vec<usize> = (0..cp.vertices.len()).collect();
     fn root(parent: &mut [usize], mut v: usize) -> usize {
@@ -121,15 +114,10 @@ pub fn snap_junctions(cp: &mut CreasePattern, tolerance: f64) -> usize {
     }
     for &v in &candidates {
         let p = cp.vertices[v];
-        let (cx, cy) = cell(p);
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                for &w in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], Vec::as_slice) {
-                    if w > v && p.distance(cp.vertices[w]) <= tolerance {
-                        let (a, b) = (root(&mut parent, v), root(&mut parent, w));
-                        parent[a.max(b)] = a.min(b);
-                    }
-                }
+        for w in grid.near(p) {
+            if w > v && p.distance(cp.vertices[w]) <= tolerance {
+                let (a, b) = (root(&mut parent, v), root(&mut parent, w));
+                parent[a.max(b)] = a.min(b);
             }
         }
     }

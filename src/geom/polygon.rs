@@ -3,6 +3,7 @@
 use glam::DVec2;
 
 use super::segment::{Crossing, intersect};
+use super::tolerance::ROUNDOFF;
 
 /// Signed area of a closed ring (shoelace formula): positive when counter-clockwise.
 pub fn signed_area(ring: impl IntoIterator<Item = DVec2>) -> f64 {
@@ -41,7 +42,7 @@ pub fn contains_point(ring: &[DVec2], p: DVec2) -> bool {
 /// Whether the segment `a b` meets any edge of the closed ring (touching counts).
 pub fn segment_crosses_ring(ring: &[DVec2], a: DVec2, b: DVec2) -> bool {
     let n = ring.len();
-    (0..n).any(|i| intersect(a, b, ring[i], ring[(i + 1) % n], 1e-12) != Crossing::None)
+    (0..n).any(|i| intersect(a, b, ring[i], ring[(i + 1) % n], ROUNDOFF) != Crossing::None)
 }
 
 #[cfg(test)]

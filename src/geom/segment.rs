@@ -1,6 +1,107 @@
-//! Segment–segment and point–segment relations.
+//! Straight segments: the [`Segment`] type and the segment–segment and point–segment
+//! relations it is built on (also callable on bare end points).
 
 use glam::DVec2;
+
+use super::Rect;
+use super::tolerance::ROUNDOFF;
+
+/// The straight segment from `a` to `b`, in the caller's units. A zero-length segment (a
+/// point) is allowed: it has length 0, meets nothing in [`Segment::intersect`], and its
+/// closest point to anything is `a`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Segment {
+    /// Start.
+    pub a: DVec2,
+    /// End.
+    pub b: DVec2,
+}
+
+impl Segment {
+    /// The segment from `a` to `b`.
+    pub const fn new(a: DVec2, b: DVec2) -> Segment {
+        Segment { a, b }
+    }
+
+    /// Its end points, `[a, b]`.
+    pub fn ends(self) -> [DVec2; 2] {
+        [self.a, self.b]
+    }
+
+    /// `b − a`.
+    pub fn vector(self) -> DVec2 {
+        self.b - self.a
+    }
+
+    /// Its length.
+    pub fn length(self) -> f64 {
+        self.a.distance(self.b)
+    }
+
+    /// The point at parameter `t` (0 at `a`, 1 at `b`; not clamped).
+    pub fn at(self, t: f64) -> DVec2 {
+        self.a.lerp(self.b, t)
+    }
+
+    /// The point halfway.
+    pub fn midpoint(self) -> DVec2 {
+        (self.a + self.b) * 0.5
+    }
+
+    /// The same segment from `b` to `a`.
+    pub fn reversed(self) -> Segment {
+        Segment::new(self.b, self.a)
+    }
+
+    /// Its bounding box.
+    pub fn bounds(self) -> Rect {
+        Rect::covering(self.ends())
+    }
+
+    /// Where it meets `other` (see [`intersect`] for `eps`, relative, and the parameters).
+    ///
+    /// ```
+    /// use foldcam::geom::{DVec2, Segment, segment::Crossing};
+    /// let s = Segment::new(DVec2::ZERO, DVec2::new(2.0, 2.0));
+    /// let t = Segment::new(DVec2::new(0.0, 2.0), DVec2::new(2.0, 0.0));
+    /// assert_eq!(s.intersect(t, 1e-12), Crossing::Point { t: 0.5, u: 0.5 });
+    /// ```
+    pub fn intersect(self, other: Segment, eps: f64) -> Crossing {
+        intersect(self.a, self.b, other.a, other.b, eps)
+    }
+
+    /// Parameter of its point closest to `p`, in [0, 1].
+    pub fn project(self, p: DVec2) -> f64 {
+        project(self.a, self.b, p)
+    }
+
+    /// Its point closest to `p`.
+    pub fn closest_point(self, p: DVec2) -> DVec2 {
+        self.at(self.project(p))
+    }
+
+    /// Distance from `p` to its closest point.
+    pub fn distance_to_point(self, p: DVec2) -> f64 {
+        distance_to_point(self.a, self.b, p)
+    }
+
+    /// Distance to `other` (0 when they meet).
+    pub fn distance(self, other: Segment) -> f64 {
+        segment_distance(self.a, self.b, other.a, other.b)
+    }
+}
+
+impl From<(DVec2, DVec2)> for Segment {
+    fn from((a, b): (DVec2, DVec2)) -> Segment {
+        Segment::new(a, b)
+    }
+}
+
+impl From<[DVec2; 2]> for Segment {
+    fn from([a, b]: [DVec2; 2]) -> Segment {
+        Segment::new(a, b)
+    }
+}
 
 /// Where two segments meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,7 +182,7 @@ pub fn distance_to_point(a: DVec2, b: DVec2, p: DVec2) -> f64 {
 
 /// Distance between segments `a0–a1` and `b0–b1` (0 when they meet).
 pub fn segment_distance(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> f64 {
-    if intersect(a0, a1, b0, b1, 1e-12) != Crossing::None {
+    if intersect(a0, a1, b0, b1, ROUNDOFF) != Crossing::None {
         return 0.0;
     }
     distance_to_point(b0, b1, a0)
@@ -178,6 +279,27 @@ mod tests {
         assert_eq!(far, Crossing::None);
         let end_to_end = intersect(a.0, a.1, a.1, DVec2::new(5.0, 0.0), 1e-12);
         assert_eq!(end_to_end, Crossing::Point { t: 1.0, u: 0.0 });
+    }
+
+    #[test]
+    fn segment_methods_agree_with_closed_forms() {
+        // A 3-4-5 triangle's hypotenuse: length 5, foot of the origin at 9/25 of the way.
+        let s = Segment::new(DVec2::new(3.0, 0.0), DVec2::new(0.0, 4.0));
+        assert_eq!(s.length(), 5.0);
+        assert_eq!(s.midpoint(), DVec2::new(1.5, 2.0));
+        let t = s.project(DVec2::ZERO);
+        assert!((t - 9.0 / 25.0).abs() < 1e-15, "{t}");
+        // The distance from the origin is the triangle's height on the hypotenuse, 12/5.
+        assert!((s.distance_to_point(DVec2::ZERO) - 2.4).abs() < 1e-12);
+        assert!((s.closest_point(DVec2::ZERO).length() - 2.4).abs() < 1e-12);
+        assert_eq!(s.reversed().reversed(), s);
+        assert_eq!(s.bounds().size(), DVec2::new(3.0, 4.0));
+        let far = Segment::new(DVec2::new(10.0, 0.0), DVec2::new(10.0, 1.0));
+        assert_eq!(s.distance(far), 7.0);
+        assert_eq!(s.intersect(far, 1e-12), Crossing::None);
+        let point = Segment::new(DVec2::ONE, DVec2::ONE);
+        assert_eq!(point.length(), 0.0);
+        assert_eq!(point.closest_point(DVec2::ZERO), DVec2::ONE);
     }
 
     #[test]

@@ -30,6 +30,7 @@
 use glam::DVec2;
 
 use super::MachineProfile;
+use crate::geom::tolerance::ROUNDOFF;
 
 /// One straight move.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -92,7 +93,7 @@ pub fn junction_speed(d_in: DVec2, d_out: DVec2, accel_mm_s2: f64, deviation_mm:
     // cos θ with θ between the reversed incoming and the outgoing direction.
     let cos_theta = (-d_in.dot(d_out)).clamp(-1.0, 1.0);
     let sin_half = ((1.0 - cos_theta) / 2.0).max(0.0).sqrt();
-    if sin_half >= 1.0 - 1e-12 {
+    if sin_half >= 1.0 - ROUNDOFF {
         return f64::INFINITY;
     }
     let v2 = accel_mm_s2 * deviation_mm * sin_half / (1.0 - sin_half);

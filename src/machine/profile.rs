@@ -15,6 +15,7 @@ use serde::Serialize;
 
 use super::Operation;
 use super::control::MachineControl;
+use crate::geom::tolerance::RELATIVE;
 
 /// What the machine does to the sheet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -351,7 +352,7 @@ impl MachineProfile {
 
     /// Decimal places needed to write coordinates at the machine's resolution (0.001 → 3).
     pub fn decimals(&self) -> usize {
-        let places = -self.resolution_mm.log10() - 1e-9;
+        let places = -self.resolution_mm.log10() - RELATIVE;
         places.ceil().clamp(0.0, 9.0) as usize
     }
 

@@ -9,6 +9,7 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 use super::{CreasePattern, VertexId};
+use crate::geom::Segment;
 use crate::geom::segment::{Crossing, intersect};
 
 /// The angle step of origami's 22.5° designs, degrees.
@@ -70,21 +71,21 @@ pub struct Snapped {
 #[derive(Clone, Copy)]
 enum Line {
     Infinite(DVec2, DVec2),
-    Segment(DVec2, DVec2),
+    Segment(Segment),
 }
 
 impl Line {
     fn distance(&self, p: DVec2) -> f64 {
         match *self {
             Line::Infinite(o, d) => (p - o).perp_dot(d).abs(),
-            Line::Segment(a, b) => crate::geom::segment::distance_to_point(a, b, p),
+            Line::Segment(s) => s.distance_to_point(p),
         }
     }
 
     fn nearest(&self, p: DVec2) -> DVec2 {
         match *self {
             Line::Infinite(o, d) => o + d * (p - o).dot(d),
-            Line::Segment(a, b) => a.lerp(b, crate::geom::segment::project(a, b, p)),
+            Line::Segment(s) => s.closest_point(p),
         }
     }
 
@@ -95,7 +96,7 @@ impl Line {
                 let c = o + d * (p - o).dot(d);
                 (c - d * reach, c + d * reach)
             }
-            Line::Segment(a, b) => (a, b),
+            Line::Segment(s) => (s.a, s.b),
         };
         let (a0, a1) = piece(self);
         let (b0, b1) = piece(other);
@@ -182,7 +183,10 @@ pub fn snap(cp: &CreasePattern, p: DVec2, options: &SnapOptions) -> Snapped {
         if excluded.is_some_and(|v| e.vertices.contains(&v)) {
             continue;
         }
-        let line = Line::Segment(cp.position(e.vertices[0]), cp.position(e.vertices[1]));
+        let line = Line::Segment(Segment::new(
+            cp.position(e.vertices[0]),
+            cp.position(e.vertices[1]),
+        ));
         if line.distance(p) <= r {
             offer(SnapKind::Edge, line.nearest(p), None);
             lines.push((line, SnapKind::Edge));

@@ -7,6 +7,8 @@
 //! a power of ten (0.025) print with the decimals they need (3). Counts are `i64`: callers
 //! keep coordinates within ±1e9 mm and steps at least 1e-6 mm (see `check`), far inside range.
 
+use crate::geom::tolerance::RELATIVE;
+
 /// Most decimals a grid prints; finer steps are refused by `check`.
 pub const MAX_DECIMALS: usize = 9;
 
@@ -63,7 +65,7 @@ fn decimals_for(step: f64) -> usize {
     (0..MAX_DECIMALS)
         .find(|&d| {
             let scaled = step * 10f64.powi(d as i32);
-            (scaled - scaled.round()).abs() <= 1e-9 * scaled.max(1.0)
+            (scaled - scaled.round()).abs() <= RELATIVE * scaled.max(1.0)
         })
         .unwrap_or(MAX_DECIMALS)
 }

@@ -10,6 +10,7 @@
 
 use glam::DVec2;
 
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{Assignment, CreasePattern};
 
 const NONE: u32 = u32::MAX;
@@ -52,7 +53,7 @@ impl Incidence {
         let p = cp.vertices[v];
         let d1 = far_end(cp, e1, v) - p;
         let d2 = far_end(cp, e2, v) - p;
-        d1.dot(d2) < 0.0 && d1.perp_dot(d2).abs() <= 1e-9 * d1.length() * d2.length()
+        d1.dot(d2) < 0.0 && d1.perp_dot(d2).abs() <= RELATIVE * d1.length() * d2.length()
     }
 
     /// The other edge at a passing vertex.

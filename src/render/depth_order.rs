@@ -26,6 +26,7 @@ use std::collections::{BinaryHeap, HashMap};
 use glam::{DVec2, DVec3};
 
 use super::view3d::Camera;
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::FaceId;
 
 /// Largest face count for which pairwise plane tests refine the centroid order.
@@ -202,7 +203,7 @@ enum Side {
 /// straddles the plane, lies in it, or the plane is seen edge-on.
 fn side_of(face: &FaceGeometry, other: &FaceGeometry, camera: &Camera, tol: f64) -> Option<Side> {
     let facing = face.normal.dot(camera.toward_eye);
-    if facing.abs() < 1e-9 {
+    if facing.abs() < RELATIVE {
         return None;
     }
     let origin = *face.corners.first()?;

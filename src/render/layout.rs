@@ -10,6 +10,8 @@
 
 use glam::DVec2;
 
+use crate::geom::tolerance::ROUNDOFF;
+
 /// Smallest accepted image width, pixels.
 pub const MIN_SIZE: u32 = 16;
 /// Largest accepted image width and largest produced height, pixels.
@@ -104,7 +106,7 @@ pub fn nice_length(max: f64) -> Option<f64> {
     // Guard against log10 rounding putting m just below 1 or at 10.
     let pick = [10.0, 5.0, 2.0, 1.0]
         .into_iter()
-        .find(|&c| c <= m * (1.0 + 1e-12))
+        .find(|&c| c <= m * (1.0 + ROUNDOFF))
         .unwrap_or(0.5);
     Some(pick * base)
 }

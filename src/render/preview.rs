@@ -9,6 +9,7 @@ use super::legend::{self, Key, LegendEntry, ScaleBar, Swatch};
 use super::style::{DRAW_ORDER, FAULT_COLOR, LineStyle, line_style};
 use super::{PreviewOptions, RenderError, chain, rings};
 use crate::check::Finding;
+use crate::geom::Segment;
 use crate::pattern::{Assignment, CreasePattern, Units};
 
 /// Share of the drawable width the scale bar may take at most.
@@ -138,14 +139,14 @@ fn paint(color: [u8; 4]) -> Paint<'static> {
 }
 
 /// The segment of an edge in pixels, `None` if it refers to a missing vertex.
-fn edge_px(cp: &CreasePattern, layout: &Layout, i: usize) -> Option<(DVec2, DVec2)> {
+fn edge_px(cp: &CreasePattern, layout: &Layout, i: usize) -> Option<Segment> {
     let e = cp.edges.get(i)?;
     let a = *cp.vertices.get(e.vertices[0].index())?;
     let b = *cp.vertices.get(e.vertices[1].index())?;
-    Some((layout.to_px(a), layout.to_px(b)))
+    Some(Segment::new(layout.to_px(a), layout.to_px(b)))
 }
 
-fn push_segment(pb: &mut PathBuilder, (a, b): (DVec2, DVec2)) {
+fn push_segment(pb: &mut PathBuilder, Segment { a, b }: Segment) {
     pb.move_to(a.x as f32, a.y as f32);
     pb.line_to(b.x as f32, b.y as f32);
 }

@@ -20,6 +20,7 @@
 
 use super::parse::Word;
 use super::report::ViolationKind;
+use crate::geom::tolerance::RELATIVE;
 use crate::machine::Dialect;
 
 /// A G or M code in tenths (`G61.1` is 611).
@@ -116,7 +117,7 @@ pub(crate) fn decode(words: &[Word], dialect: Dialect) -> Result<Block, BlockErr
 /// The code of a G or M word in tenths; only one decimal is meaningful.
 fn code(w: &Word) -> Result<Code, BlockError> {
     let tenths = w.value * 10.0;
-    if w.value < 0.0 || (tenths - tenths.round()).abs() > 1e-9 || tenths > 100_000.0 {
+    if w.value < 0.0 || (tenths - tenths.round()).abs() > RELATIVE || tenths > 100_000.0 {
         return Err(error(
             ViolationKind::UnknownWord,
             format!("unknown code {}{}", w.letter, w.value),

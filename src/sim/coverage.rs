@@ -41,12 +41,16 @@ use std::collections::HashSet;
 use glam::DVec2;
 use serde::Serialize;
 
-use super::grid::{SegmentGrid, covered_interval, point_segment_distance, union_length};
+use super::grid::{SegmentGrid, covered_interval, union_length};
 use super::report::SimReport;
 use crate::fab::operations::operation_for;
 use crate::fab::sides::edge_on_back;
 use crate::fab::{ContourRole, FabPlan, Job, Operation, Side};
+use crate::geom::Segment;
+use crate::geom::segment::distance_to_point;
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{Assignment, CreasePattern, EdgeId};
+use crate::post::MIN_RESOLUTION_MM;
 
 /// Thresholds of [`coverage_with`].
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -183,7 +187,7 @@ pub fn coverage_with(
         .kerf_mm
         .unwrap_or_else(|| estimate_kerf(pattern, job))
         .max(0.0);
-    let tol = kerf_mm / 2.0 + opts.resolution_mm.max(1e-6);
+    let tol = kerf_mm / 2.0 + opts.resolution_mm.max(MIN_RESOLUTION_MM);
     let matcher = PowerMatch {
         report,
         plan,
@@ -266,7 +270,7 @@ impl PowerMatch<'_> {
 
 fn judge(op: Operation, planned: f64, burned: f64, opts: &CoverageOptions) -> bool {
     match op {
-        Operation::Cut => burned + 1e-9 >= planned - (1.0 - opts.min_cut_coverage),
+        Operation::Cut => burned + RELATIVE >= planned - (1.0 - opts.min_cut_coverage),
         _ => (burned - planned).abs() <= opts.duty_tolerance,
     }
 }
@@ -280,7 +284,7 @@ fn job_edges(pattern: &CreasePattern, job: &Job) -> Vec<(EdgeId, Seg)> {
             if !seen.insert((e, tp.op)) {
                 continue;
             }
-            if let Some((a, b)) = edge_segment(pattern, e) {
+            if let Some(Segment { a, b }) = edge_segment(pattern, e) {
                 let (a, b) = (
                     job.to_machine.transform_point2(a),
                     job.to_machine.transform_point2(b),
@@ -329,7 +333,7 @@ fn left_out_edges(pattern: &CreasePattern, job: &Job, plan: &FabPlan) -> Vec<(Ed
             if realised.contains(&(e, op)) || !reports_left_out(plan, job, assignment, op) {
                 return None;
             }
-            let (a, b) = edge_segment(pattern, e)?;
+            let Segment { a, b } = edge_segment(pattern, e)?;
             let (a, b) = (
                 job.to_machine.transform_point2(a),
                 job.to_machine.transform_point2(b),
@@ -339,11 +343,11 @@ fn left_out_edges(pattern: &CreasePattern, job: &Job, plan: &FabPlan) -> Vec<(Ed
         .collect()
 }
 
-fn edge_segment(pattern: &CreasePattern, e: EdgeId) -> Option<(DVec2, DVec2)> {
+fn edge_segment(pattern: &CreasePattern, e: EdgeId) -> Option<Segment> {
     let edge = pattern.edges.get(e.index())?;
     let a = *pattern.vertices.get(edge.vertices[0].index())?;
     let b = *pattern.vertices.get(edge.vertices[1].index())?;
-    Some((a, b))
+    Some(Segment::new(a, b))
 }
 
 /// Every straight piece of the job's strokes.
@@ -371,14 +375,14 @@ fn estimate_kerf(pattern: &CreasePattern, job: &Job) -> f64 {
         .iter()
         .filter(|t| matches!(t.role, ContourRole::Outer | ContourRole::Hole))
     {
-        let segs: Vec<(DVec2, DVec2)> = tp
+        let segs: Vec<Segment> = tp
             .edges
             .iter()
             .filter_map(|&e| edge_segment(pattern, e))
-            .map(|(a, b)| {
-                (
-                    job.to_machine.transform_point2(a),
-                    job.to_machine.transform_point2(b),
+            .map(|s| {
+                Segment::new(
+                    job.to_machine.transform_point2(s.a),
+                    job.to_machine.transform_point2(s.b),
                 )
             })
             .collect();
@@ -389,7 +393,7 @@ fn estimate_kerf(pattern: &CreasePattern, job: &Job) -> f64 {
         for p in mids {
             let near = segs
                 .iter()
-                .map(|&(a, b)| point_segment_distance(p, a, b))
+                .map(|s| s.distance_to_point(p))
                 .fold(f64::INFINITY, f64::min);
             if near.is_finite() {
                 d.push(near);
@@ -494,7 +498,7 @@ fn stray_burns(
             .filter(|&p| {
                 !g.near_point(p).iter().any(|&j| {
                     let s = allowed[j as usize];
-                    matcher.fits(i, s.op) && point_segment_distance(p, s.a, s.b) <= tol
+                    matcher.fits(i, s.op) && distance_to_point(s.a, s.b, p) <= tol
                 })
             })
             .count();

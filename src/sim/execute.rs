@@ -11,6 +11,7 @@ use glam::DVec2;
 
 use super::block::Block;
 use super::report::{Burn, SimReport, Travel, ViolationKind};
+use crate::geom::tolerance::RELATIVE;
 use crate::machine::motion::{Kinematics, Move, Timeline};
 use crate::machine::{Dialect, DwellUnit, LaserOutput, MachineProfile};
 
@@ -434,7 +435,7 @@ impl<'a> Machine<'a> {
 
     fn check_bed(&mut self, line: usize, p: DVec2) {
         let bed = self.profile.bed;
-        let eps = self.profile.resolution_mm.max(0.0) / 2.0 + 1e-9;
+        let eps = self.profile.resolution_mm.max(0.0) / 2.0 + RELATIVE;
         let inside = (-eps..=bed.width_mm + eps).contains(&p.x)
             && (-eps..=bed.height_mm + eps).contains(&p.y);
         if !inside {

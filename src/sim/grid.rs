@@ -1,17 +1,20 @@
-//! Segment geometry for the coverage check: a uniform grid of segments for neighbour queries,
-//! the part of one segment lying within a band around another, and interval unions.
-
-use std::collections::HashMap;
+//! Segment geometry for the coverage check: a uniform grid of segments for neighbour queries
+//! (on [`HashGrid`]), the part of one segment lying within a band around another, and
+//! interval unions.
 
 use glam::DVec2;
+
+use crate::geom::HashGrid;
+use crate::geom::grid::CellKey;
+
+use crate::geom::tolerance::ROUNDOFF;
 
 /// Most cells a segment is walked through (bounds the work for any input).
 const MAX_STEPS: f64 = 4096.0;
 
 /// A uniform grid holding segment ids in every cell within one cell of the segment.
 pub(crate) struct SegmentGrid {
-    cell: f64,
-    map: HashMap<(i64, i64), Vec<u32>>,
+    grid: HashGrid<u32>,
 }
 
 impl SegmentGrid {
@@ -20,23 +23,17 @@ impl SegmentGrid {
     /// that distance.
     pub fn new(cell: f64) -> Self {
         SegmentGrid {
-            cell,
-            map: HashMap::new(),
+            grid: HashGrid::new(cell),
         }
     }
 
-    fn key(&self, p: DVec2) -> (i64, i64) {
-        let k = (p / self.cell).floor();
-        (k.x as i64, k.y as i64)
-    }
-
     /// The cells along `a`→`b`, one step per half cell.
-    fn walk(&self, a: DVec2, b: DVec2) -> Vec<(i64, i64)> {
-        let steps = (a.distance(b) / (self.cell / 2.0))
+    fn walk(&self, a: DVec2, b: DVec2) -> Vec<CellKey> {
+        let steps = (a.distance(b) / (self.grid.cell_size() / 2.0))
             .ceil()
             .clamp(1.0, MAX_STEPS) as usize;
-        let mut keys: Vec<(i64, i64)> = (0..=steps)
-            .map(|i| self.key(a.lerp(b, i as f64 / steps as f64)))
+        let mut keys: Vec<CellKey> = (0..=steps)
+            .map(|i| self.grid.key(a.lerp(b, i as f64 / steps as f64)))
             .collect();
         keys.dedup();
         keys
@@ -44,7 +41,7 @@ impl SegmentGrid {
 
     /// Adds segment `id` from `a` to `b`.
     pub fn insert(&mut self, id: u32, a: DVec2, b: DVec2) {
-        let mut cells: Vec<(i64, i64)> = Vec::new();
+        let mut cells: Vec<CellKey> = Vec::new();
         for (x, y) in self.walk(a, b) {
             for dx in -1..=1 {
                 for dy in -1..=1 {
@@ -55,13 +52,13 @@ impl SegmentGrid {
         cells.sort_unstable();
         cells.dedup();
         for c in cells {
-            self.map.entry(c).or_default().push(id);
+            self.grid.insert_at(c, id);
         }
     }
 
     /// Ids of segments that may lie within half a cell of `p`.
     pub fn near_point(&self, p: DVec2) -> &[u32] {
-        self.map.get(&self.key(p)).map_or(&[], Vec::as_slice)
+        self.grid.at(self.grid.key(p))
     }
 
     /// Ids of segments that may lie within half a cell of segment `a`→`b`, each once.
@@ -69,24 +66,12 @@ impl SegmentGrid {
         let mut ids: Vec<u32> = self
             .walk(a, b)
             .into_iter()
-            .flat_map(|k| self.map.get(&k).into_iter().flatten().copied())
+            .flat_map(|k| self.grid.at(k).iter().copied())
             .collect();
         ids.sort_unstable();
         ids.dedup();
         ids
     }
-}
-
-/// Distance from `p` to segment `a`→`b`.
-pub(crate) fn point_segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let len2 = ab.length_squared();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + ab * t)
 }
 
 /// The stretch of segment `a`→`b` (as distances along it from `a`, within `[0, |ab|]`) covered
@@ -105,7 +90,7 @@ pub(crate) fn covered_interval(
     let u = (b - a) / len;
     let n = u.perp();
     let (d0, dd) = (n.dot(p - a), n.dot(q - p));
-    let (t0, t1) = if dd.abs() < 1e-12 {
+    let (t0, t1) = if dd.abs() < ROUNDOFF {
         if d0.abs() > band {
             return None;
         }

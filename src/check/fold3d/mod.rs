@@ -78,6 +78,10 @@ pub struct FoldOptions {
     pub frames: usize,
 }
 
+/// Default [`FoldOptions::tolerance`]: the residual force, relative to the bars' axial
+/// stiffness `EA`, below which the fold has settled (10⁻⁵: strains under about 0.001 %).
+pub const SETTLED_RESIDUAL: f64 = 1e-5;
+
 impl Default for FoldOptions {
     fn default() -> Self {
         FoldOptions {
@@ -89,7 +93,7 @@ impl Default for FoldOptions {
             ramp_steps: 6000,
             max_steps: 200_000,
             max_time: Duration::from_secs(60),
-            tolerance: 1e-5,
+            tolerance: SETTLED_RESIDUAL,
             frames: 0,
         }
     }

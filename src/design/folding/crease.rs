@@ -20,6 +20,8 @@ use glam::{DVec2, DVec3};
 
 use super::geometry::{overlaps, plane_basis};
 use super::state::{CellId, Folding, State};
+use crate::geom::HashGrid;
+use crate::geom::tolerance::{ANGLE_DEG, RELATIVE};
 use crate::pattern::{Assignment, CreasePattern, Edge, Face, FaceId, FoldedState, VertexId};
 
 /// A crease pattern with, for each of its faces, the face-tree cell it unfolds.
@@ -38,7 +40,7 @@ pub fn crease_pattern(folding: &Folding) -> SheetPattern {
     let state = folding.current();
     let tol = folding.tol * 100.0;
     let mut vertices: Vec<DVec2> = Vec::new();
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut grid = HashGrid::new(tol);
     let corners: Vec<Vec<usize>> = state
         .faces
         .iter()
@@ -97,25 +99,12 @@ pub fn crease_pattern(folding: &Folding) -> SheetPattern {
 }
 
 /// The id of the vertex at `p`, merging with one within `tol`.
-fn vertex_id(
-    vertices: &mut Vec<DVec2>,
-    grid: &mut HashMap<(i64, i64), Vec<usize>>,
-    p: DVec2,
-    tol: f64,
-) -> usize {
-    let cell = ((p.x / tol).floor() as i64, (p.y / tol).floor() as i64);
-    for dx in -1..=1 {
-        for dy in -1..=1 {
-            if let Some(&id) = grid
-                .get(&(cell.0 + dx, cell.1 + dy))
-                .and_then(|ids| ids.iter().find(|&&i| vertices[i].distance(p) <= tol))
-            {
-                return id;
-            }
-        }
+fn vertex_id(vertices: &mut Vec<DVec2>, grid: &mut HashGrid, p: DVec2, tol: f64) -> usize {
+    if let Some(id) = grid.near(p).find(|&i| vertices[i].distance(p) <= tol) {
+        return id;
     }
     vertices.push(p);
-    grid.entry(cell).or_default().push(vertices.len() - 1);
+    grid.insert(p, vertices.len() - 1);
     vertices.len() - 1
 }
 
@@ -146,14 +135,14 @@ fn with_t_junctions(corners: &[usize], vertices: &[DVec2], tol: f64) -> Vec<usiz
 /// The crease between faces `left` and `right` of `state` along sheet direction `d`.
 fn crease_edge(state: &State, left: usize, right: usize, d: DVec2) -> Edge {
     let angle = fold_angle(state, left, right, d);
-    let assignment = if angle.abs() < 1e-6 {
+    let assignment = if angle.abs() < ANGLE_DEG {
         Assignment::Flat
     } else if angle > 0.0 {
         Assignment::Valley
     } else {
         Assignment::Mountain
     };
-    Edge::new(VertexId(0), VertexId(0), assignment).with_angle(if angle.abs() < 1e-6 {
+    Edge::new(VertexId(0), VertexId(0), assignment).with_angle(if angle.abs() < ANGLE_DEG {
         0.0
     } else {
         angle
@@ -167,7 +156,7 @@ pub fn fold_angle(state: &State, left: usize, right: usize, d: DVec2) -> f64 {
     let d3 = (state.faces[left].transform.matrix3 * d.extend(0.0)).normalize();
     let s = -nf.cross(ng).dot(d3);
     let c = nf.dot(ng);
-    if c < 0.0 && s.abs() < 1e-9 {
+    if c < 0.0 && s.abs() < RELATIVE {
         return if above_along(state, right, left, nf) {
             180.0
         } else {

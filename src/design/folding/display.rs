@@ -6,6 +6,8 @@ use glam::DVec2;
 use super::crease::fold_angle;
 use super::geometry::Line2;
 use super::state::{Folding, State, contact};
+use crate::geom::Segment;
+use crate::geom::tolerance::ANGLE_DEG;
 use crate::pattern::{Assignment, Edge, Face, FoldedState, VertexId};
 
 /// One folded state per step (0 = the flat sheet), layers `gap_mm` apart (centred on their
@@ -73,14 +75,15 @@ fn edge_kind(folding: &Folding, state: &State, f: usize, a: DVec2, b: DVec2) -> 
         return Assignment::Boundary;
     };
     for k in state.faces[f].neighbours.iter().map(|n| n.face) {
-        let Some((p, q)) = contact(&[a, b], folding.polygon(&state.faces[k]), tol) else {
+        let Some(Segment { a: p, b: q }) = contact(&[a, b], folding.polygon(&state.faces[k]), tol)
+        else {
             continue;
         };
         if edge.side(p).abs() > tol || p.distance(q) <= tol {
             continue;
         }
         let angle = fold_angle(state, f, k, b - a);
-        return if angle.abs() < 1e-6 {
+        return if angle.abs() < ANGLE_DEG {
             Assignment::Flat
         } else if angle > 0.0 {
             Assignment::Valley

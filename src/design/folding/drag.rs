@@ -32,6 +32,8 @@ use super::geometry::{Line2, plane_basis, rotation_about};
 use super::operation::{Fold, FoldReport, Layers, Turn};
 use super::snap::{edge_onto_edge, snap_angle, through_two};
 use super::state::{Folding, State};
+use crate::geom::Segment;
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::MAX_COORDINATE;
 
 /// Snapping tolerances of §2.3 4); zero disables a rule.
@@ -274,7 +276,7 @@ impl Folding {
             return Err(FoldError::BadDrag("the vertex does not move"));
         }
         let dir = frame.normal.cross(w);
-        if dir.length() <= 1e-9 * w.length() {
+        if dir.length() <= RELATIVE * w.length() {
             return Err(FoldError::BadDrag("the move is perpendicular to the paper"));
         }
         let dir = dir.normalize();
@@ -306,16 +308,18 @@ impl Folding {
             .collect()
     }
 
-    fn face_edges(&self, state: &State, face: usize, frame: &Frame) -> Vec<(DVec2, DVec2)> {
+    fn face_edges(&self, state: &State, face: usize, frame: &Frame) -> Vec<Segment> {
         let c: Vec<DVec2> = self
             .corners(&state.faces[face])
             .iter()
             .map(|&p| frame.to_plane(p))
             .collect();
-        (0..c.len()).map(|i| (c[i], c[(i + 1) % c.len()])).collect()
+        (0..c.len())
+            .map(|i| Segment::new(c[i], c[(i + 1) % c.len()]))
+            .collect()
     }
 
-    fn plane_edges(&self, state: &State, group: usize, frame: &Frame) -> Vec<(DVec2, DVec2)> {
+    fn plane_edges(&self, state: &State, group: usize, frame: &Frame) -> Vec<Segment> {
         state.groups[group]
             .stack
             .iter()

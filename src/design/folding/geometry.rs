@@ -7,6 +7,9 @@
 
 use glam::{DAffine3, DVec2, DVec3};
 
+use crate::geom::Segment;
+use crate::geom::tolerance::TINY;
+
 /// A directed line in a plane: a point and a unit direction. Its left side is positive.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Line2 {
@@ -174,7 +177,7 @@ pub fn segment_crosses_interior(p: DVec2, q: DVec2, poly: &[DVec2], tol: f64) ->
         // Inside means left of every edge by more than tol.
         let s0 = edge.side(p) - tol;
         let ds = edge.dir.perp_dot(d);
-        if ds.abs() < 1e-300 {
+        if ds.abs() < TINY {
             if s0 <= 0.0 {
                 return false;
             }
@@ -213,13 +216,7 @@ pub(super) fn contains_oriented(poly: &[DVec2], p: DVec2, tol: f64, sign: f64) -
 
 /// The overlap, longer than `tol`, of segment `a0`–`a1` with the collinear segment `b0`–`b1`
 /// (both within `tol` of one line), or `None`.
-pub fn shared_segment(
-    a0: DVec2,
-    a1: DVec2,
-    b0: DVec2,
-    b1: DVec2,
-    tol: f64,
-) -> Option<(DVec2, DVec2)> {
+pub fn shared_segment(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2, tol: f64) -> Option<Segment> {
     // Collinearity first, without a square root (most pairs fail here).
     let d = a1 - a0;
     let limit = tol * tol * d.length_squared();
@@ -235,7 +232,7 @@ pub fn shared_segment(
     let (tb0, tb1) = (t(b0), t(b1));
     let lo = tb0.min(tb1).max(0.0);
     let hi = tb0.max(tb1).min(t(a1));
-    (hi - lo > tol).then(|| (a0 + line.dir * lo, a0 + line.dir * hi))
+    (hi - lo > tol).then(|| Segment::new(a0 + line.dir * lo, a0 + line.dir * hi))
 }
 
 /// The rigid motion turning space by `angle` radians about the axis through `point` along the
@@ -315,6 +312,6 @@ mod tests {
             DVec2::new(3.0, 0.0),
             1e-9,
         );
-        assert_eq!(s, Some((DVec2::new(0.5, 0.0), DVec2::X)));
+        assert_eq!(s, Some(Segment::new(DVec2::new(0.5, 0.0), DVec2::X)));
     }
 }

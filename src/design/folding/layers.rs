@@ -12,6 +12,7 @@ use glam::DVec2;
 use super::geometry::{Line2, double_area, segment_crosses_interior, shared_segment};
 use super::search::Layer;
 use super::state::{Folding, State};
+use crate::geom::Segment;
 
 /// A flat crease in a group: its segment in plane coordinates and the two stack positions.
 struct Taco {
@@ -59,7 +60,7 @@ fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<Stri
     let mut tacos = Vec::new();
     for (a, &f) in group.stack.iter().enumerate() {
         for n in &state.faces[f].neighbours {
-            let (k, (s0, s1)) = (n.face, n.edge);
+            let (k, Segment { a: s0, b: s1 }) = (n.face, n.edge);
             let b = pos[k];
             if b == usize::MAX || b < a || state.face_normal(f).dot(state.face_normal(k)) > 0.0 {
                 continue;

@@ -1,4 +1,4 @@
-//! Fold-sequence simulator (Miyazaki et al. (1992), Miyazaki, Yasuda, Yokoi, Toriwaki: "Interactive
+//! Fold-sequence simulator (Miyazaki et al. 1992, Miyazaki, Yasuda, Yokoi, Toriwaki: "Interactive
 //! manipulation of origami in 3D virtual space"): a sheet folded step by step by folding up,
 //! bending and tucking in, with the layer order kept, from which the crease pattern is cut.
 //!

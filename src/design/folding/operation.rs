@@ -23,7 +23,12 @@ use super::search::{Layer, Moving, Turning, moving_faces};
 use super::small::{Neighbours, Ring};
 use super::stack::{Hinge, check_tuck, land, tucked_stack};
 use super::state::{CellId, FaceCell, Folding, LiveFace, MAX_FACES, Neighbour, State};
+use crate::geom::Segment;
 use crate::pattern::MAX_COORDINATE;
+
+/// Smallest distance (model units) within which a fold's points count as lying in a layer's
+/// plane, whatever the operation's tolerance: the points are typed in, to about six digits.
+const MIN_PLANE_DISTANCE: f64 = 1e-6;
 
 /// Which faces a fold starts from (rule ① of §4.1).
 #[derive(Clone, Debug, PartialEq)]
@@ -160,9 +165,9 @@ impl Folding {
             .groups
             .iter()
             .position(|g| {
-                [fold.line[0], fold.line[1], fold.moving]
-                    .iter()
-                    .all(|p| (*p - g.origin).dot(g.normal).abs() <= self.tol.max(1e-6))
+                [fold.line[0], fold.line[1], fold.moving].iter().all(|p| {
+                    (*p - g.origin).dot(g.normal).abs() <= self.tol.max(MIN_PLANE_DISTANCE)
+                })
             })
             .ok_or(FoldError::NoLayer)?;
         let g = &state.groups[group];
@@ -318,7 +323,7 @@ impl Folding {
         for &n in neighbours.iter() {
             let k = n.face;
             state.faces[k].neighbours.retain(|m| m.face != f);
-            let (p, q) = n.edge;
+            let Segment { a: p, b: q } = n.edge;
             let (sp, sq) = (
                 sheet_side * sheet_line.side(p),
                 sheet_side * sheet_line.side(q),
@@ -342,11 +347,11 @@ impl Folding {
         if let (Some(p), Some(q)) = (cut.next(), cut.next()) {
             state.faces[f].neighbours.push(Neighbour {
                 face: g,
-                edge: (p, q),
+                edge: Segment::new(p, q),
             });
             state.faces[g].neighbours.push(Neighbour {
                 face: f,
-                edge: (p, q),
+                edge: Segment::new(p, q),
             });
         }
         g
@@ -360,7 +365,7 @@ impl Folding {
 
 /// The part of segment `p`–`q` where the signed distances (`sp`, `sq` at the ends, linear
 /// along it) are not below −`tol`, if longer than `tol`.
-fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<(DVec2, DVec2)> {
+fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<Segment> {
     if sp < -tol && sq < -tol {
         return None;
     }
@@ -372,7 +377,7 @@ fn segment_part(p: DVec2, q: DVec2, sp: f64, sq: f64, tol: f64) -> Option<(DVec2
         }
     };
     let (a, b) = (cross(sp, sq, p, q), cross(sq, sp, q, p));
-    (a.distance(b) > tol).then_some((a, b))
+    (a.distance(b) > tol).then_some(Segment::new(a, b))
 }
 
 /// The polygon counter-clockwise, as a face-tree ring.

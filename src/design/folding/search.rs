@@ -21,6 +21,7 @@ use glam::{DVec2, DVec3};
 use super::FoldError;
 use super::geometry::{Line2, overlaps, split_into};
 use super::state::{Folding, State};
+use crate::geom::Segment;
 
 /// How the moving faces turn.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -139,7 +140,7 @@ impl Layer {
 
     /// The smallest and largest signed distance, positive on the moving side, of the ends of
     /// `edge` (a sheet segment of face `face`) from the fold line, once placed in the plane.
-    fn edge_sides(&self, state: &State, face: usize, edge: (DVec2, DVec2)) -> (f64, f64) {
+    fn edge_sides(&self, state: &State, face: usize, edge: Segment) -> (f64, f64) {
         let t = &state.faces[face].transform;
         let side = |s: DVec2| {
             self.side
@@ -147,7 +148,7 @@ impl Layer {
                     .line
                     .side(self.to_plane(t.transform_point3(s.extend(0.0))))
         };
-        let (p, q) = (side(edge.0), side(edge.1));
+        let (p, q) = (side(edge.a), side(edge.b));
         (p.min(q), p.max(q))
     }
 }

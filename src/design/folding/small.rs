@@ -16,11 +16,12 @@ pub type Ring = SmallVec<[DVec2; 8]>;
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::Segment;
 
     fn n(face: usize) -> Neighbour {
         Neighbour {
             face,
-            edge: (DVec2::ZERO, DVec2::X * face as f64),
+            edge: Segment::new(DVec2::ZERO, DVec2::X * face as f64),
         }
     }
 

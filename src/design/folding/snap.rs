@@ -3,19 +3,21 @@
 use glam::DVec2;
 
 use super::geometry::Line2;
+use crate::geom::Segment;
+use crate::geom::tolerance::ROUNDOFF;
 
 /// Rule 2: a bisector laying a moving edge of the picked face onto another edge's line.
 pub(super) fn edge_onto_edge(
     line: &Line2,
     p: &DVec2,
-    own: &[(DVec2, DVec2)],
-    edges: &[(DVec2, DVec2)],
+    own: &[Segment],
+    edges: &[Segment],
     tol: f64,
     eps: f64,
 ) -> Option<Line2> {
     let moving = line.side(*p).signum();
     let mut best: Option<(f64, Line2)> = None;
-    for &(a, b) in own {
+    for &Segment { a, b } in own {
         // The part of the edge on the moving side.
         let (sa, sb) = (moving * line.side(a), moving * line.side(b));
         if sa <= eps && sb <= eps {
@@ -33,7 +35,7 @@ pub(super) fn edge_onto_edge(
             continue;
         }
         let (ra, rb) = (line.reflect(a), line.reflect(b));
-        for &(c, e) in edges {
+        for &Segment { a: c, b: e } in edges {
             let Some(target) = Line2::through(c, e, eps) else {
                 continue;
             };
@@ -57,7 +59,7 @@ pub(super) fn edge_onto_edge(
 /// The bisector of two lines closest in direction to `near` (the midline when parallel).
 fn bisector_of(a: &Line2, b: &Line2, near: &Line2, eps: f64) -> Option<Line2> {
     let cross = a.dir.perp_dot(b.dir);
-    if cross.abs() < 1e-12 {
+    if cross.abs() < ROUNDOFF {
         let foot = b.point + b.dir * b.dir.dot(a.point - b.point);
         let point = (a.point + foot) * 0.5;
         return Some(Line2 { point, dir: a.dir });

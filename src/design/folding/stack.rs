@@ -7,6 +7,7 @@ use super::FoldError;
 use super::geometry::{contains_oriented, double_area, overlaps, rotation_about};
 use super::search::Layer;
 use super::state::FaceGroup;
+use crate::geom::tolerance::RELATIVE;
 
 /// A tuck-in needs an even number of moving faces whose moving parts pair up mirror-wise
 /// (i-th from the bottom with i-th from the top), and no stationary face between the halves
@@ -122,7 +123,8 @@ pub(super) fn land(
     let origin = rotation.transform_point3(old.0);
     let normal = rotation.transform_vector3(old.1).normalize();
     let target = groups.iter().position(|g| {
-        normal.dot(g.normal).abs() >= 1.0 - 1e-9 && (origin - g.origin).dot(g.normal).abs() <= tol
+        normal.dot(g.normal).abs() >= 1.0 - RELATIVE
+            && (origin - g.origin).dot(g.normal).abs() <= tol
     });
     let Some(h) = target else {
         groups.push(FaceGroup {

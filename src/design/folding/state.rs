@@ -10,7 +10,12 @@ use super::FoldError;
 use super::geometry::{double_area, shared_segment};
 use super::sheet::{check_simple, convex_pieces, is_convex};
 use super::small::{Neighbours, Ring};
+use crate::geom::Segment;
 use crate::pattern::MAX_COORDINATE;
+
+/// Tolerance of the sheet's simplicity check, relative to its bounding-box diagonal (the
+/// planariser's `RELATIVE_TOLERANCE`: corners closer than this are one).
+const SHEET_RELATIVE: f64 = 1e-7;
 
 /// Index of a cell of the face tree ([`Folding::cells`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -53,7 +58,7 @@ pub struct Neighbour {
     /// Its index in [`State::faces`].
     pub face: usize,
     /// The shared segment on the sheet, millimetres.
-    pub edge: (DVec2, DVec2),
+    pub edge: Segment,
 }
 
 /// A face group (§3.1): faces lying in one plane, with their face stack.
@@ -154,7 +159,7 @@ impl Folding {
             .iter()
             .fold((sheet[0], sheet[0]), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
         let size = (hi - lo).length();
-        let tol = 1e-7 * size;
+        let tol = SHEET_RELATIVE * size;
         check_simple(&sheet, tol)?;
         let mut cells = vec![FaceCell {
             parent: None,
@@ -295,7 +300,7 @@ impl Folding {
 }
 
 /// The segment two sheet polygons share (longer than `tol`), if they touch along an edge.
-pub fn contact(a: &[DVec2], b: &[DVec2], tol: f64) -> Option<(DVec2, DVec2)> {
+pub fn contact(a: &[DVec2], b: &[DVec2], tol: f64) -> Option<Segment> {
     let (na, nb) = (a.len(), b.len());
     for i in 0..na {
         for j in 0..nb {

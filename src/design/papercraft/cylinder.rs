@@ -18,6 +18,15 @@ use glam::{DVec2, DVec3};
 
 use super::PapercraftError;
 use super::bspline::BSpline;
+use crate::geom::tolerance::TINY;
+
+/// Arc-length inversion stops when the bracket is this share of the section's length: a few
+/// ulps of f64.
+const ARC_LENGTH_RELATIVE: f64 = 1e-14;
+
+/// Newton's method on a Legendre polynomial stops at a step this small: the nodes lie in
+/// [−1, 1], so this is the round-off of f64 near 1.
+const ROOT_STEP: f64 = 1e-16;
 
 const SUBDIVISIONS: usize = 16;
 const GAUSS_POINTS: usize = 8;
@@ -134,7 +143,7 @@ impl CylinderPatch {
         let x = flat.x.clamp(0.0, self.section_length());
         let (mut lo, mut hi) = (0.0, self.u_max());
         let mut u = self.u_max() * x / self.section_length();
-        let tol = 1e-14 * self.section_length().max(1e-300);
+        let tol = ARC_LENGTH_RELATIVE * self.section_length().max(TINY);
         for _ in 0..100 {
             let f = self.section_arc_length(u) - x;
             if f.abs() <= tol {
@@ -180,7 +189,7 @@ pub(crate) fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
                 dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
                 let step = p1 / dp;
                 x -= step;
-                if step.abs() < 1e-16 {
+                if step.abs() < ROOT_STEP {
                     break;
                 }
             }

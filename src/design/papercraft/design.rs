@@ -48,6 +48,10 @@ use super::walls::Walls;
 use super::{PapercraftError, ReferenceMesh};
 use crate::pattern::CreasePattern;
 
+/// Default `merge` distance (mesh units): end points closer than 10⁻⁶ are typed-in copies of
+/// one point.
+const DEFAULT_MERGE: f64 = 1e-6;
+
 /// Most cut lines, patches or points per list a design may hold.
 pub const MAX_ITEMS: usize = 10_000;
 
@@ -90,7 +94,7 @@ fn one() -> f64 {
     1.0
 }
 fn small() -> f64 {
-    1e-6
+    DEFAULT_MERGE
 }
 fn eight() -> usize {
     8

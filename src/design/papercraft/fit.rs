@@ -18,6 +18,11 @@ use glam::DVec3;
 use super::PapercraftError;
 use super::bspline::{BSpline, DEGREE};
 
+/// Weight of the second-difference smoothing term, relative to the mean diagonal of the normal
+/// equations: enough to make them regular where data is sparse, too small to move a fit
+/// the data determine.
+const SMOOTHING: f64 = 1e-9;
+
 /// A fitted directrix.
 #[derive(Clone, Debug)]
 pub struct Fit {
@@ -98,7 +103,7 @@ fn solve(
             }
         }
     }
-    let lambda = 1e-9 * (0..count).map(|i| a[i][i]).sum::<f64>() / count as f64;
+    let lambda = SMOOTHING * (0..count).map(|i| a[i][i]).sum::<f64>() / count as f64;
     for j in 1..count - 1 {
         let stencil = [(j - 1, 1.0), (j, -2.0), (j + 1, 1.0)];
         for &(r, wr) in &stencil {

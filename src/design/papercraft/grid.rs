@@ -11,6 +11,8 @@
 
 use glam::DVec3;
 
+use crate::geom::tolerance::RELATIVE;
+
 /// Triangles binned into axis-aligned cells.
 #[derive(Clone, Debug)]
 pub(crate) struct TriangleGrid {
@@ -32,7 +34,7 @@ impl TriangleGrid {
             lo = lo.min(a);
             hi = hi.max(b);
         }
-        let extent = (hi - lo).max(DVec3::splat(1e-9 * (hi - lo).max_element().max(1.0)));
+        let extent = (hi - lo).max(DVec3::splat(RELATIVE * (hi - lo).max_element().max(1.0)));
         let target = (2 * boxes.len()).clamp(1, 1 << 21) as f64;
         let side = (extent.x * extent.y * extent.z / target).cbrt();
         let dim = |e: f64| ((e / side).ceil() as usize).clamp(1, 256);

@@ -21,6 +21,7 @@ use glam::DVec2;
 
 use super::PapercraftError;
 use super::parts::Part;
+use crate::geom::tolerance::{RELATIVE, ROUNDOFF};
 use crate::pattern::{Assignment, CreasePattern, Edge};
 
 /// Sheet size and spacing, millimetres.
@@ -258,15 +259,15 @@ impl Skyline {
         let mut best: Option<(f64, f64)> = None;
         for i in 0..self.segments.len() {
             let x = self.segments[i].0;
-            if x + need.x > self.size.x + 1e-9 {
+            if x + need.x > self.size.x + RELATIVE {
                 break;
             }
             let y = self.segments[i..]
                 .iter()
-                .take_while(|s| s.0 < x + need.x - 1e-12)
+                .take_while(|s| s.0 < x + need.x - ROUNDOFF)
                 .map(|s| s.2)
                 .fold(0.0, f64::max);
-            if y + need.y <= self.size.y + 1e-9
+            if y + need.y <= self.size.y + RELATIVE
                 && best.is_none_or(|(by, bx)| y < by || (y == by && x < bx))
             {
                 best = Some((y, x));

@@ -1,4 +1,4 @@
-//! Paper craft from developable patches with user cut lines (Ōgaki (2016), Ōgaki's thesis).
+//! Paper craft from developable patches with user cut lines (Ōgaki 2016, Ōgaki's thesis).
 //!
 //! The user traces cut lines on a reference mesh, places cylindrical developable patches, and
 //! the system trims them and unrolls them into parts. Built so far:

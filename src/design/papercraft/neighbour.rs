@@ -47,6 +47,7 @@ use super::network::Network;
 use super::trim::rib_crossing;
 use super::walls::Walls;
 use super::{PapercraftError, ReferenceMesh};
+use crate::geom::tolerance::TINY;
 
 /// Parameter-correction rounds per fit.
 const CORRECTIONS: usize = 4;
@@ -306,7 +307,7 @@ fn fit_extended(
         })
         .sum();
     // Parameters per unit length, to continue the data's parameters beyond the ends.
-    let rate = (hi - lo) / length.max(1e-300);
+    let rate = (hi - lo) / length.max(TINY);
     let steps = ((extend / (length / points.len() as f64)).ceil() as usize).clamp(1, points.len());
     let (mut all, mut t, mut w) = (points.to_vec(), params.to_vec(), ones);
     let ends = [

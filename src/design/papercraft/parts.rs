@@ -21,6 +21,10 @@ use super::network::Network;
 use super::trim::RealBoundary;
 use crate::geom::polygon::{contains_point, segment_crosses_ring, signed_area};
 
+/// Share of a tab's side cut off at the part's end before the overlap test, so the side's
+/// shared end point does not count as touching the part.
+const TAB_END_SHRINK: f64 = 1e-7;
+
 /// How glue tabs are shaped (millimetres after scaling, degrees).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TabStyle {
@@ -236,7 +240,7 @@ fn fit_tab(part: &Part, h: usize, from: usize, len: usize, style: &TabStyle) -> 
 pub fn tab_overlaps_part(part: &Part, tab: &Tab) -> bool {
     let (a, b) = (part.point(tab.from), part.point(tab.from + tab.len));
     let [oa, ob] = tab.outer;
-    let shrink = |p: DVec2, q: DVec2| (p + 1e-7 * (q - p), q);
+    let shrink = |p: DVec2, q: DVec2| (p + TAB_END_SHRINK * (q - p), q);
     let free = [shrink(a, oa), (oa, ob), shrink(b, ob)];
     if contains_point(&part.outline, oa) || contains_point(&part.outline, ob) {
         return true;

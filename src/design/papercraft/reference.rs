@@ -11,6 +11,7 @@ use glam::DVec3;
 
 use super::PapercraftError;
 use super::grid::TriangleGrid;
+use crate::geom::tolerance::ROUNDOFF_SQUARED;
 use crate::mesh::PolyMesh;
 
 /// The closest point of the reference mesh to a query point.
@@ -48,7 +49,7 @@ impl ReferenceMesh {
             .faces()
             .iter()
             .flat_map(|f| (1..f.len() - 1).map(move |k| [f[0], f[k], f[k + 1]]))
-            .filter(|t| tri_cross(&positions, t).length() > 1e-24 * scale * scale)
+            .filter(|t| tri_cross(&positions, t).length() > ROUNDOFF_SQUARED * scale * scale)
             .collect();
         if triangles.is_empty() {
             return Err(PapercraftError::DegenerateMesh);

@@ -24,6 +24,12 @@ use super::cylinder::CylinderPatch;
 use super::network::Network;
 use super::walls::Walls;
 use super::{PapercraftError, ReferenceMesh};
+use crate::geom::segment::distance_to_point;
+use crate::geom::tolerance::{RELATIVE, ROUNDOFF_SQUARED, TINY};
+
+/// Bisection stops when the bracket is this share of the parameter (plus an absolute part):
+/// about a thousand ulps of f64.
+const BISECT_RELATIVE: f64 = 1e-13;
 
 const SCAN_STEPS_PER_SPAN: usize = 64;
 const MAX_HALVINGS: u32 = 16;
@@ -150,7 +156,7 @@ impl Tracer<'_> {
         }
         let m = 0.5 * (a + b);
         let mid = self.hit(m)?;
-        if distance_to_segment(mid.flat, start.flat, end.flat) <= self.tolerance {
+        if distance_to_point(start.flat, end.flat, mid.flat) <= self.tolerance {
             return Ok(());
         }
         self.refine(a, m, start, mid, depth - 1, out)?;
@@ -184,7 +190,7 @@ pub fn rib_crossing(patch: &CylinderPatch, inner: DVec3, outer: DVec3) -> Option
     let e2 = d.cross(e1);
     let flat = |x: DVec3| DVec2::new(x.dot(e1), x.dot(e2));
     let (a, dir) = (flat(inner), flat(outer - inner));
-    if dir.length_squared() <= 1e-24 * (outer - inner).length_squared().max(1e-300) {
+    if dir.length_squared() <= ROUNDOFF_SQUARED * (outer - inner).length_squared().max(TINY) {
         return None;
     }
     let side = |u: f64| dir.perp_dot(flat(patch.directrix().at(u)) - a);
@@ -193,7 +199,7 @@ pub fn rib_crossing(patch: &CylinderPatch, inner: DVec3, outer: DVec3) -> Option
     let mut best: Option<(f64, f64)> = None;
     let mut consider = |u: f64| {
         let t = dir.dot(flat(patch.directrix().at(u)) - a) / dir.length_squared();
-        if (-1e-9..=1.0 + 1e-9).contains(&t)
+        if (-RELATIVE..=1.0 + RELATIVE).contains(&t)
             && best.is_none_or(|(_, bt)| (t - 0.5).abs() < (bt - 0.5).abs())
         {
             best = Some((u, t));
@@ -217,7 +223,7 @@ pub fn rib_crossing(patch: &CylinderPatch, inner: DVec3, outer: DVec3) -> Option
 
 fn bisect(f: &impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
     let sign = f_lo.signum();
-    while hi - lo > 1e-13 * (1.0 + hi.abs()) {
+    while hi - lo > BISECT_RELATIVE * (1.0 + hi.abs()) {
         let m = 0.5 * (lo + hi);
         let fm = f(m);
         if fm == 0.0 {
@@ -226,14 +232,4 @@ fn bisect(f: &impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
         if fm.signum() == sign { lo = m } else { hi = m }
     }
     0.5 * (lo + hi)
-}
-
-fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let t = if ab.length_squared() > 0.0 {
-        ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + t * ab)
 }

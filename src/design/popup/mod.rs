@@ -1,14 +1,21 @@
 //! Pop-up cards (origamic architecture): one sheet, cut and folded, that stands up in 3D when
 //! opened to 90° and folds flat when closed.
 //!
-//! - [`voxel`]: the voxel model of seed paper 001 (Mitani, Suzuki, Uno): staircase voxels with
+//! - [`voxel`]: the voxel model of Mitani, Suzuki & Uno (2003): staircase voxels with
 //!   windows, the crease pattern (Table 1), the pop-up check (§2.6) and the open/close
 //!   transform (eq. 6).
 //! - [`polygon`]: the polygon model of Mitani & Suzuki (2004).
+//! - [`opening`]: opening and closing either model (the papers' shared transform), the folded
+//!   card with vertices split on cuts.
+//! - [`problem`]: what both models' pop-up checks report about a face that does not stand up.
 //! - [`integrity`]: whether a finished card holds together and closes within its outline.
 //! - [`fit`]: `--fit`, more paper above the model until the closed card holds every face.
 
 pub mod fit;
 pub mod integrity;
+pub mod opening;
 pub mod polygon;
+pub mod problem;
 pub mod voxel;
+
+pub use problem::PopupProblem;

@@ -20,6 +20,7 @@ use super::constraints;
 use super::min_norm::{Jacobian, min_norm};
 use super::model::TessMesh;
 use super::solver::{SolveOptions, solve};
+use crate::geom::tolerance::ROUNDOFF;
 
 /// A vertex pulled towards a target point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -110,7 +111,7 @@ pub fn fit_surface(
         }
         let rows = constraints::rows(mesh, x, &solve_opts.limits);
         let c = Jacobian::new(&rows, x.len());
-        let (correction, _) = min_norm(&c, &c.times_vec(&dx0), 1e-12);
+        let (correction, _) = min_norm(&c, &c.times_vec(&dx0), ROUNDOFF);
         let mut trial = mesh.clone();
         for (p, (a, c)) in trial.positions.iter_mut().zip(dx0.iter().zip(&correction)) {
             *p += alpha * (*a - *c); // eq. 9

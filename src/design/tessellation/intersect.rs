@@ -18,6 +18,7 @@
 use glam::DVec3;
 
 use super::TessError;
+use crate::geom::tolerance::ROUNDOFF;
 use crate::pattern::FoldedState;
 
 /// Pairs `(a, b)`, `a < b`, of triangles of `positions` that intersect by more than
@@ -115,7 +116,7 @@ pub fn triangles_cross(a: &[DVec3; 3], b: &[DVec3; 3], tol: f64) -> bool {
         return false;
     }
     let line = na.cross(nb);
-    if line.length() < 1e-12 {
+    if line.length() < ROUNDOFF {
         return false; // parallel planes within the tolerance: contact, not penetration
     }
     let line = line.normalize();

@@ -14,6 +14,7 @@ use faer::sparse::{SparseColMat, Triplet};
 use glam::DVec3;
 
 use super::constraints::Row;
+use crate::geom::tolerance::{ROUNDOFF, TINY};
 
 /// The rows' Jacobian in compressed sparse row form, one 3-vector block per (row, vertex).
 pub(crate) struct Jacobian {
@@ -102,7 +103,7 @@ fn diagonal(c: &Jacobian) -> (Vec<f64>, f64) {
     let diag: Vec<f64> = (0..c.rows())
         .map(|r| c.row(r).map(|(_, b)| b.length_squared()).sum())
         .collect();
-    let eps = 1e-12 * diag.iter().fold(0.0f64, |a, &d| a.max(d)).max(1e-300);
+    let eps = ROUNDOFF * diag.iter().fold(0.0f64, |a, &d| a.max(d)).max(TINY);
     (diag, eps)
 }
 

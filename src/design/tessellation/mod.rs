@@ -1,4 +1,4 @@
-//! Freeform origami tessellations (Tachi (2014), Tachi, "Freeform 3D Origami Tessellations for
+//! Freeform origami tessellations (Tachi 2014, Tachi, "Freeform 3D Origami Tessellations for
 //! Fabrication"): from a disk-like polygon mesh to a developable, Resch-like tessellation that
 //! respects the fabrication limits, unfolded into a [`CreasePattern`](crate::pattern::CreasePattern)
 //! with its folded state.

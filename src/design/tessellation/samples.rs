@@ -6,6 +6,10 @@ use glam::DVec3;
 
 use crate::mesh::PolyMesh;
 
+/// Smallest cap angle, degrees, [`spherical_cap`] accepts: it keeps the cap open (at 0° every
+/// ring would sit on the pole).
+const MIN_CAP_DEG: f64 = 1e-3;
+
 /// The shape a sample patch is lifted onto.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SampleSurface {
@@ -78,7 +82,7 @@ pub fn sample_surface(surface: SampleSurface, rings: usize, edge: f64) -> PolyMe
 pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyMesh {
     let n = n.clamp(3, 64);
     let rings = rings.clamp(1, 128);
-    let cap = cap_deg.clamp(1e-3, 179.0).to_radians();
+    let cap = cap_deg.clamp(MIN_CAP_DEG, 179.0).to_radians();
     let mut positions = vec![DVec3::ZERO];
     // First index of ring k (ring 0 is the pole).
     let mut start = vec![0usize];

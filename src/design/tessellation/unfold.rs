@@ -1,5 +1,6 @@
 //! Unfolding the developed tessellation: triangles laid flat one by one in breadth-first
-//! order, each placed isometrically against its already placed neighbour; then the
+//! order, each placed isometrically against its already placed neighbour (the order and the
+//! placement are [`crate::geom::unfold`]'s, shared with FOLD import); then the
 //! [`CreasePattern`] (frame 0, millimetres) and the [`FoldedState`] (same vertices, edges and
 //! faces in 3D) are written out, and the flat pattern is checked for overlapping triangles.
 //!
@@ -7,13 +8,13 @@
 //! closes every vertex fan, so later placements agree up to the residual, which the
 //! [`Unfolded::max_length_error`] reports.
 
-use std::collections::VecDeque;
-
-use glam::{DVec2, DVec3};
+use glam::DVec2;
 
 use super::TessError;
 use super::geometry::fold_angle;
 use super::model::{EdgeRole, TessMesh};
+use crate::geom::tolerance::RELATIVE;
+use crate::geom::unfold::{apex, breadth_first};
 use crate::pattern::{Assignment, CreasePattern, Edge, Face, FoldedState, VertexId};
 
 /// The unfolded tessellation.
@@ -112,31 +113,28 @@ fn develop(mesh: &TessMesh) -> Result<Vec<DVec2>, TessError> {
     let [i, j, a] = first.map(|v| v as usize);
     flat[i] = DVec2::ZERO;
     flat[j] = DVec2::new(x[i].distance(x[j]), 0.0);
-    flat[a] = place(x[i], x[j], x[a], flat[i], flat[j]);
+    flat[a] = apex(x[i], x[j], x[a], flat[i], flat[j]);
     for v in [i, j, a] {
         placed[v] = true;
     }
     let mut seen = vec![false; mesh.triangles.len()];
-    seen[0] = true;
-    let mut queue = VecDeque::from([0u32]);
-    while let Some(t) = queue.pop_front() {
-        let tri = mesh.triangles[t as usize];
-        for k in 0..3 {
-            let Some(q) = across[t as usize][k] else {
-                continue;
-            };
-            if seen[q as usize] {
-                continue;
-            }
-            seen[q as usize] = true;
-            // q runs along (tri[k+1], tri[k]); its apex lies left of that direction.
-            let (s, e) = (tri[(k + 1) % 3] as usize, tri[k] as usize);
-            let b = mesh.apex(q, s as u32, e as u32) as usize;
-            if !placed[b] {
-                flat[b] = place(x[s], x[e], x[b], flat[s], flat[e]);
-                placed[b] = true;
-            }
-            queue.push_back(q);
+    let order = breadth_first(0, &mut seen, |t, out| {
+        let tri = mesh.triangles[t];
+        // The triangle across side k runs along (tri[k+1], tri[k]).
+        out.extend(
+            (0..3).filter_map(|k| across[t][k].map(|q| (q as usize, (tri[(k + 1) % 3], tri[k])))),
+        );
+    });
+    for step in order {
+        let Some((_, (s, e))) = step.across else {
+            continue;
+        };
+        // Its apex lies left of the direction s → e.
+        let b = mesh.apex(step.face as u32, s, e) as usize;
+        let (s, e) = (s as usize, e as usize);
+        if !placed[b] {
+            flat[b] = apex(x[s], x[e], x[b], flat[s], flat[e]);
+            placed[b] = true;
         }
     }
     if let Some(t) = seen.iter().position(|s| !s) {
@@ -145,15 +143,6 @@ fn develop(mesh: &TessMesh) -> Result<Vec<DVec2>, TessError> {
         )));
     }
     Ok(flat)
-}
-
-/// Position of `b` left of the flat edge `fs → fe`, isometric to the 3D triangle `(s, e, b)`.
-fn place(s: DVec3, e: DVec3, b: DVec3, fs: DVec2, fe: DVec2) -> DVec2 {
-    let axis = (e - s).normalize();
-    let along = (b - s).dot(axis);
-    let height = ((b - s) - along * axis).length();
-    let u = (fe - fs).normalize();
-    fs + along * u + height * u.perp()
 }
 
 /// First pair of triangles whose flat interiors overlap (separating-axis test with a
@@ -168,7 +157,7 @@ fn first_overlap(mesh: &TessMesh, flat: &[DVec2]) -> Option<(usize, usize)> {
         (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
         |(l, h), p| (l.min(*p), h.max(*p)),
     );
-    let tol = 1e-9 * (hi - lo).max_element();
+    let tol = RELATIVE * (hi - lo).max_element();
     for (k, t) in tris.iter().enumerate() {
         if (t[1] - t[0]).perp_dot(t[2] - t[0]) <= 0.0 {
             return Some((k, k));

@@ -18,6 +18,10 @@ use glam::DVec2;
 
 use crate::geom::segment::distance_to_point;
 
+/// Smallest minor-to-major axis ratio used to tighten an ellipse's chord tolerance: flatter
+/// ellipses are chorded as if this flat, which bounds their chord count.
+const MIN_AXIS_RATIO: f64 = 1e-3;
+
 /// Most chords made from one curve.
 pub const MAX_CHORDS: usize = 4096;
 
@@ -95,7 +99,11 @@ pub fn ellipse(
     let minor = DVec2::new(-major.y, major.x) * ratio;
     let sweep = ccw_sweep(start, end);
     // The major radius bounds the curvature radius from above for the chord count.
-    let n = arc_chords(major.length(), sweep, tol * ratio.clamp(1e-3, 1.0));
+    let n = arc_chords(
+        major.length(),
+        sweep,
+        tol * ratio.clamp(MIN_AXIS_RATIO, 1.0),
+    );
     (0..=n)
         .map(|i| {
             let t = start + sweep * i as f64 / n as f64;

@@ -29,6 +29,7 @@ use dxf::enums::Units as DxfUnits;
 use glam::{DAffine2, DVec2};
 
 use super::{FormatError, Imported, ParseError, ReadOptions, snap};
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Largest chord deviation when flattening curves, in millimetres (in drawing units for a
@@ -169,7 +170,7 @@ impl<'a> Reader<'a> {
     fn entity(&mut self, entity: &'a Entity, ctx: &Context<'a>) -> Result<(), ParseError> {
         let at = |message: String| ParseError::new(place(entity), message);
         let normal_z = normal(entity);
-        if normal_z.is_some_and(|z| z.abs() < 1.0 - 1e-9) {
+        if normal_z.is_some_and(|z| z.abs() < 1.0 - RELATIVE) {
             *self
                 .skipped
                 .entry("entities not in the xy plane")

@@ -14,6 +14,8 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::geom::tolerance::ROUNDOFF;
+
 /// An orthonormal frame of a plane through the origin's parallel: projects points onto it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct PlaneFrame {
@@ -29,7 +31,7 @@ impl PlaneFrame {
     /// The frame for a unit normal, oriented as described in the module docs.
     pub fn from_normal(normal: DVec3) -> Self {
         // Snap rounding noise so that axis-aligned planes project exactly (x, −z stays exact).
-        let snap = |c: f64| if c.abs() < 1e-12 { 0.0 } else { c };
+        let snap = |c: f64| if c.abs() < ROUNDOFF { 0.0 } else { c };
         let normal = DVec3::new(snap(normal.x), snap(normal.y), snap(normal.z)).normalize();
         let dominant = normal.abs().max_element();
         let sign = [normal.x, normal.y, normal.z]

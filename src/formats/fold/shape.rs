@@ -27,6 +27,7 @@ use super::unfold::unfold;
 use super::values::Key;
 use crate::formats::{Imported, ParseError};
 use crate::geom::polygon::signed_area;
+use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{CreasePattern, Face, FoldedState, Metadata};
 
 /// Relative distance from the best plane below which 3D coordinates count as flat.
@@ -99,7 +100,7 @@ fn reverse_clockwise_faces(pts: &[DVec2], raw: &mut RawFrame) -> bool {
         return false;
     };
     let (areas, largest) = face_areas(pts, faces);
-    let eps = 1e-9 * largest;
+    let eps = RELATIVE * largest;
     if largest == 0.0 || areas.iter().any(|&a| a > eps) {
         return false;
     }
@@ -116,7 +117,7 @@ fn reverse_clockwise_faces(pts: &[DVec2], raw: &mut RawFrame) -> bool {
 /// Whether the faces (with at least one of non-negligible area) have both orientations.
 fn faces_flipped(pts: &[DVec2], faces: &[Face]) -> bool {
     let (areas, largest) = face_areas(pts, faces);
-    let eps = 1e-9 * largest;
+    let eps = RELATIVE * largest;
     areas.iter().any(|&a| a > eps) && areas.iter().any(|&a| a < -eps)
 }
 

@@ -1,10 +1,11 @@
 //! Isometric unfolding of a folded state into a crease pattern.
 //!
-//! Faces are placed breadth-first across shared edges. Each face is a planar polygon in 3D
-//! with its (Newell) normal `n`; it is laid into the plane by the rigid map that sends the
-//! shared edge `a b` onto its already placed image `A B`:
-//! `P = A + E·((p − a)·e) + W·((p − a)·w)`, with `e` the unit vector from `a` to `b`,
-//! `w = n × e`, `E` the unit vector from `A` to `B` and `W` = `E` turned by +90°. Lengths and
+//! Faces are placed breadth-first across shared edges ([`crate::geom::unfold`], shared with
+//! tessellation). Each face is a planar polygon in 3D with its (Newell) normal `n`; it is laid
+//! into the plane by the rigid map that sends the shared edge `a b` onto its already placed
+//! image `A B` ([`anchor_map`]): `P = A + E·((p − a)·e) + W·((p − a)·w)`, with `e` the unit
+//! vector from `a` to `b`, `w = n × e`, `E` the unit vector from `A` to `B` and `W` = `E`
+//! turned by +90°. Lengths and
 //! angles inside each face are kept exactly (to rounding), and a face whose vertex order is
 //! counter-clockwise about its normal comes out counter-clockwise in the plane. A face whose
 //! orientation disagrees with its neighbour would land on top of it: it is mirrored instead.
@@ -23,11 +24,13 @@
 //! so the lengths of that later face are not all kept. Faces of zero area are not placed;
 //! vertices on no placed face keep their x and y.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
 
 use super::relax::{Rod, fit_lengths, worst_error};
+use crate::geom::tolerance::{RELATIVE, RELATIVE_SQUARED};
+use crate::geom::unfold::{anchor_map, breadth_first};
 use crate::pattern::{Face, VertexId};
 
 /// Relative length errors up to this are rounding: no adjustment.
@@ -117,7 +120,7 @@ impl<'a> Unfolder<'a> {
             edge_faces,
             placed: vec![None; points.len()],
             visited: vec![false; faces.len()],
-            tol: 1e-9 * extent,
+            tol: RELATIVE * extent,
             gap: 0.05 * extent.max(f64::MIN_POSITIVE),
             layout: None,
             stats: Stats {
@@ -131,25 +134,25 @@ impl<'a> Unfolder<'a> {
         self.points.get(v.index()).copied()
     }
 
-    /// Unfolds the piece of faces connected to `root` across edges.
+    /// Unfolds the piece of faces connected to `root` across edges: faces of zero area are
+    /// not reached, and each face is placed across the first edge that reaches it.
     fn unfold_piece(&mut self, root: usize) {
         let before: Vec<bool> = self.placed.iter().map(Option::is_some).collect();
-        self.place_root(root);
-        let mut queue = VecDeque::from([root]);
-        while let Some(f) = queue.pop_front() {
-            for (a, b) in cycle_edges(&self.faces[f]) {
-                // Indexing instead of cloning the list: many faces may share one edge.
-                let key = pair(a, b);
-                let count = self.edge_faces.get(&key).map_or(0, Vec::len);
-                for k in 0..count {
-                    let Some(&g) = self.edge_faces.get(&key).and_then(|l| l.get(k)) else {
-                        break;
-                    };
-                    if !self.visited[g] && self.normals[g].is_some() {
-                        self.place_across(g, f, a, b);
-                        queue.push_back(g);
-                    }
-                }
+        let (faces, edge_faces, normals) = (self.faces, &self.edge_faces, &self.normals);
+        let order = breadth_first(root, &mut self.visited, |f, out| {
+            for (a, b) in cycle_edges(&faces[f]) {
+                let across = edge_faces.get(&pair(a, b)).into_iter().flatten();
+                out.extend(
+                    across
+                        .filter(|&&g| normals[g].is_some())
+                        .map(|&g| (g, (a, b))),
+                );
+            }
+        });
+        for step in order {
+            match step.across {
+                None => self.place_root(step.face),
+                Some((parent, (a, b))) => self.place_across(step.face, parent, a, b),
             }
         }
         let new: Vec<usize> = (0..self.placed.len())
@@ -216,18 +219,11 @@ impl<'a> Unfolder<'a> {
     fn anchor_map(
         &self,
         g: usize,
-        (pa, pb): (DVec3, DVec3),
-        (qa, qb): (DVec2, DVec2),
+        from: (DVec3, DVec3),
+        to: (DVec2, DVec2),
         mirror: bool,
     ) -> impl Fn(DVec3) -> DVec2 + use<> {
-        let n = self.normals[g].unwrap_or(DVec3::Z);
-        let e = (pb - pa)
-            .try_normalize()
-            .unwrap_or_else(|| n.any_orthonormal_vector());
-        let w = n.cross(e);
-        let big_e = (qb - qa).try_normalize().unwrap_or(DVec2::X);
-        let big_w = if mirror { -big_e.perp() } else { big_e.perp() };
-        move |p: DVec3| qa + big_e * (p - pa).dot(e) + big_w * (p - pa).dot(w)
+        anchor_map(self.normals[g].unwrap_or(DVec3::Z), from, to, mirror)
     }
 
     /// Places every vertex of face `g` (outer cycle and holes) with the anchor map; vertices
@@ -397,7 +393,7 @@ fn face_normal(points: &[DVec3], cycle: &[VertexId], extent: f64) -> Option<DVec
     let twice_area: DVec3 = (0..pts.len())
         .map(|i| (pts[i] - origin).cross(pts[(i + 1) % pts.len()] - origin))
         .sum();
-    (twice_area.length() > 1e-18 * extent * extent).then(|| twice_area.normalize())
+    (twice_area.length() > RELATIVE_SQUARED * extent * extent).then(|| twice_area.normalize())
 }
 
 #[cfg(test)]

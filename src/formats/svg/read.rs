@@ -6,6 +6,7 @@ use usvg::roxmltree;
 use super::collect::Collector;
 use super::{attributes, frame, meaning};
 use crate::formats::{Imported, ParseError, ReadOptions, snap};
+use crate::limits::MIN_TOLERANCE;
 use crate::pattern::CreasePattern;
 
 /// Merge tolerance relative to the drawing's size (1e-5: 2 µm on a 200 mm sheet).
@@ -104,10 +105,10 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
 /// coordinate magnitude.
 pub fn merge_tolerance(pattern: &CreasePattern) -> f64 {
     let Some((lo, hi)) = pattern.bounds() else {
-        return 1e-12;
+        return MIN_TOLERANCE;
     };
     let magnitude = lo.abs().max(hi.abs()).max_element();
-    (lo.distance(hi).max(magnitude) * MERGE_TOLERANCE).max(1e-12)
+    (lo.distance(hi).max(magnitude) * MERGE_TOLERANCE).max(MIN_TOLERANCE)
 }
 
 /// True for an element of this local name in the SVG namespace (or in none).

@@ -40,6 +40,11 @@ pub(super) fn trace(cp: &CreasePattern, fans: &VertexFans) -> Traced {
     Traced { cycles, cycle_of }
 }
 
+/// A shoelace sum at most this share of the sum of its terms' magnitudes is zero: the terms
+/// cancelled (a tree traced around both sides). Above round-off (10⁻¹² for a few terms) by a
+/// margin for long cycles, far below the area of any real face relative to its edges.
+const CANCELLED: f64 = 1e-10;
+
 /// Signed area of a cycle, or 0 when it is zero up to rounding (a tree traced around both
 /// sides, whose terms cancel): the shoelace terms are taken about the first vertex and the
 /// sum is compared with the sum of their magnitudes.
@@ -51,7 +56,7 @@ pub(super) fn cycle_area(cp: &CreasePattern, cycle: &[VertexId]) -> f64 {
         sum += t;
         mag += t.abs();
     }
-    if sum.abs() <= 1e-10 * mag {
+    if sum.abs() <= CANCELLED * mag {
         0.0
     } else {
         0.5 * sum

@@ -7,6 +7,7 @@
 //! sized creases. Patterns with a few very long edges among many short ones stay correct but
 //! test more pairs; the grid refuses to grow past [`MAX_ENTRIES_PER_EDGE`] entries per edge.
 
+use crate::geom::Segment;
 use glam::DVec2;
 use rayon::prelude::*;
 
@@ -26,7 +27,7 @@ pub(super) struct EdgeGrid {
 impl EdgeGrid {
     /// Builds the grid for segments `segs` (end positions), widened by `tol`; `None` when the
     /// grid would exceed [`MAX_ENTRIES_PER_EDGE`] entries per edge.
-    pub fn new(segs: &[(DVec2, DVec2)], tol: f64) -> Option<Self> {
+    pub fn new(segs: &[Segment], tol: f64) -> Option<Self> {
         let Some((lo, hi)) = bounds(segs) else {
             return Some(EdgeGrid {
                 runs: vec![0],
@@ -35,7 +36,7 @@ impl EdgeGrid {
         };
         let size = (hi - lo).max(DVec2::splat(tol.max(f64::MIN_POSITIVE)));
         let n = segs.len().max(1) as f64;
-        let mean = segs.iter().map(|(a, b)| a.distance(*b)).sum::<f64>() / n;
+        let mean = segs.iter().map(|s| s.length()).sum::<f64>() / n;
         let mut cell = mean.max(4.0 * tol).max(size.max_element() / (4.0 * n));
         let max_cells = 4.0 * n + 64.0;
         loop {
@@ -59,8 +60,8 @@ impl EdgeGrid {
         // this beats a comparison sort of (cell, edge) pairs).
         let mut runs = vec![0u32; (spec.cols * spec.rows) as usize + 1];
         let mut entries = 0u64;
-        for &(a, b) in segs {
-            spec.cover(a, b, |key| {
+        for s in segs {
+            spec.cover(s.a, s.b, |key| {
                 runs[key as usize + 1] += 1;
                 entries += 1;
             });
@@ -73,8 +74,8 @@ impl EdgeGrid {
         }
         let mut fill = runs.clone();
         let mut edges = vec![0u32; runs[runs.len() - 1] as usize];
-        for (i, &(a, b)) in segs.iter().enumerate() {
-            spec.cover(a, b, |key| {
+        for (i, s) in segs.iter().enumerate() {
+            spec.cover(s.a, s.b, |key| {
                 let slot = &mut fill[key as usize];
                 edges[*slot as usize] = i as u32;
                 *slot += 1;
@@ -145,6 +146,6 @@ impl CellSpec {
     }
 }
 
-fn bounds(segs: &[(DVec2, DVec2)]) -> Option<(DVec2, DVec2)> {
-    crate::geom::Rect::of(segs.iter().flat_map(|&(a, b)| [a, b])).map(crate::geom::Rect::corners)
+fn bounds(segs: &[Segment]) -> Option<(DVec2, DVec2)> {
+    crate::geom::Rect::of(segs.iter().flat_map(|s| s.ends())).map(crate::geom::Rect::corners)
 }

@@ -157,7 +157,7 @@ pub fn planarize(
 /// [`RELATIVE_TOLERANCE`] of the bounding-box diagonal (at least 1e-12).
 pub fn default_tolerance(cp: &CreasePattern) -> f64 {
     let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
-    (diag * RELATIVE_TOLERANCE).max(1e-12)
+    (diag * RELATIVE_TOLERANCE).max(crate::limits::MIN_TOLERANCE)
 }
 
 fn merge_vertices(cp: &mut CreasePattern, tol: f64, report: &mut PlanarizeReport) {

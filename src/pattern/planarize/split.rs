@@ -13,7 +13,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use rayon::prelude::*;
 
 use super::grid::EdgeGrid;
+use crate::geom::Segment;
 use crate::geom::segment::{Crossing, distance_to_point, intersect, project};
+use crate::geom::tolerance::ROUNDOFF;
 
 /// An edge reduced to what the crossing search needs.
 #[derive(Clone, Copy)]
@@ -47,7 +49,7 @@ pub const MAX_PAIR_TESTS: u64 = 400_000_000;
 /// ([`MAX_PAIR_TESTS`], the grid's entry limit, or more than `max_splits` splits: the search
 /// stops early once that many are found).
 pub(super) fn find_splits(segs: &[Seg], tol: f64, max_splits: usize) -> Option<Splits> {
-    let ends: Vec<(DVec2, DVec2)> = segs.iter().map(|s| (s.p[0], s.p[1])).collect();
+    let ends: Vec<Segment> = segs.iter().map(|s| Segment::from(s.p)).collect();
     let grid = EdgeGrid::new(&ends, tol)?;
     if grid.pair_count() > MAX_PAIR_TESTS {
         return None;
@@ -94,7 +96,7 @@ fn test_pair(segs: &[Seg], i: u32, j: u32, tol: f64, out: &mut Splits) {
     if shares_vertex {
         return;
     }
-    if let Crossing::Point { t, .. } = intersect(a.p[0], a.p[1], b.p[0], b.p[1], 1e-12) {
+    if let Crossing::Point { t, .. } = intersect(a.p[0], a.p[1], b.p[0], b.p[1], ROUNDOFF) {
         let x = a.p[0].lerp(a.p[1], t);
         let clear = a.p.iter().chain(&b.p).all(|q| q.distance(x) > tol);
         if clear {

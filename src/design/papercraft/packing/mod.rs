@@ -29,6 +29,7 @@ use sheet::{Scratch, Sheet};
 use super::PapercraftError;
 use super::layout::{Placement, SheetSpec, best_angle, check_parts, usable_size};
 use super::parts::Part;
+use crate::geom::tolerance::{RELATIVE, ROUNDOFF};
 
 /// Bisection rounds that refine the first feasible height step.
 const REFINE: usize = 5;
@@ -43,7 +44,7 @@ fn angles(best: f64) -> Vec<f64> {
         let a = a.rem_euclid(4.0 * quarter);
         let same = |b: &f64| {
             let d = (a - b).rem_euclid(4.0 * quarter);
-            d < 1e-9 || 4.0 * quarter - d < 1e-9
+            d < RELATIVE || 4.0 * quarter - d < RELATIVE
         };
         if !out.iter().any(same) {
             out.push(a);
@@ -92,7 +93,7 @@ struct Ready {
 pub fn pack_shapes(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, PapercraftError> {
     let usable = usable_size(spec)?;
     check_parts(parts)?;
-    let gap = spec.gap.max(MIN_GAP) * (1.0 + 1e-9) + 1e-12;
+    let gap = spec.gap.max(MIN_GAP) * (1.0 + RELATIVE) + ROUNDOFF;
     let cell = (usable.x.max(usable.y) / 300.0).max(0.05);
     let mut ready = Vec::with_capacity(parts.len());
     for (i, part) in parts.iter().enumerate() {
@@ -127,7 +128,7 @@ pub fn pack_shapes(parts: &[Part], spec: &SheetSpec) -> Result<Vec<Placement>, P
         let (score, placements) = run?;
         if best
             .as_ref()
-            .is_none_or(|(s, _)| score.0 < s.0 || (score.0 == s.0 && score.1 < s.1 - 1e-9))
+            .is_none_or(|(s, _)| score.0 < s.0 || (score.0 == s.0 && score.1 < s.1 - RELATIVE))
         {
             best = Some((score, placements));
         }

@@ -14,6 +14,7 @@ use glam::DVec2;
 
 use crate::design::papercraft::layout::bounds;
 use crate::geom::segment::slide_interval;
+use crate::geom::tolerance::RELATIVE;
 
 /// Marked grid points of a sheet, as runs of columns per grid row.
 pub(super) struct Occupancy {
@@ -144,7 +145,7 @@ impl Solid {
     /// diagonal from every edge.
     pub(super) fn new(edges: &[[DVec2; 2]], rings: &[Vec<DVec2>], size: DVec2, cell: f64) -> Solid {
         let count = (size.y / cell).floor() as usize;
-        let r = 0.5 * std::f64::consts::SQRT_2 * cell * (1.0 + 1e-9);
+        let r = 0.5 * std::f64::consts::SQRT_2 * cell * (1.0 + RELATIVE);
         let (mut inside, mut near) = (Vec::new(), Vec::new());
         let rows = (0..count)
             .map(|j| {

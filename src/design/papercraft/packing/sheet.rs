@@ -9,6 +9,11 @@ use super::{REFINE, Rule};
 use crate::design::papercraft::layout::bounds;
 use crate::geom::polygon::contains_point;
 use crate::geom::segment::slide_interval;
+use crate::geom::tolerance::RELATIVE;
+
+/// Smallest vertical step of the placement scan, in mm (the step is the sheet height / 300,
+/// at least this and at most 1 mm).
+const MIN_STEP_MM: f64 = 1e-3;
 
 /// What is placed on one sheet, in usable-area coordinates (origin at the margin corner).
 pub(super) struct Sheet {
@@ -82,7 +87,7 @@ impl Sheet {
     /// placed shape and is not inside one (nor one inside it).
     fn leftmost(&self, shape: &Turned, y: f64, scratch: &mut Scratch) -> Option<f64> {
         let x_max = self.size.x - shape.size.x;
-        if x_max < 0.0 || y + shape.size.y > self.size.y + 1e-9 {
+        if x_max < 0.0 || y + shape.size.y > self.size.y + RELATIVE {
             return None;
         }
         let g = self.gap;
@@ -224,7 +229,7 @@ impl Sheet {
         rule: Rule,
         scratch: &mut Scratch,
     ) -> Option<(usize, DVec2)> {
-        let step = (self.size.y / 300.0).clamp(1e-3, 1.0);
+        let step = (self.size.y / 300.0).clamp(MIN_STEP_MM, 1.0);
         // (turn, position, the height the rule compares)
         let mut best: Option<(usize, DVec2, f64)> = None;
         for (k, t) in turns.iter().enumerate() {
@@ -234,14 +239,14 @@ impl Sheet {
             };
             let mut top = self.size.y - t.size.y;
             if let Some((_, _, best_height)) = best {
-                top = top.min(best_height - lift + 1e-9);
+                top = top.min(best_height - lift + RELATIVE);
             }
             let Some(at) = self.lowest(t, top, step, scratch) else {
                 continue;
             };
             let height = at.y + lift;
             let better = best.is_none_or(|(_, b, best_height)| {
-                height < best_height - 1e-9 || (height <= best_height + 1e-9 && at.x < b.x)
+                height < best_height - RELATIVE || (height <= best_height + RELATIVE && at.x < b.x)
             });
             if better {
                 best = Some((k, at, height));

@@ -17,17 +17,7 @@ use std::collections::{HashMap, VecDeque};
 
 use super::lines::{LineKind, Lines, PieceId, classify};
 use super::model::{FaceKind, Plane, PolygonCard};
-
-/// Why a VFace piece fails the check.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PopupProblem {
-    /// Reached by neither flood: cut off from both sheets (Fig. 7 a).
-    Floating,
-    /// Reached only from the back sheet (flood a): not pushed up when the card opens.
-    HeldFromBackOnly,
-    /// Reached only from the base sheet (flood b): not pulled up (Fig. 7 b).
-    HeldFromBaseOnly,
-}
+pub use crate::design::popup::problem::PopupProblem;
 
 /// One VFace piece that fails the check.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,11 +32,7 @@ pub struct FaceProblem {
 
 impl std::fmt::Display for FaceProblem {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let why = match self.problem {
-            PopupProblem::Floating => "floats: cut off from both sheets",
-            PopupProblem::HeldFromBackOnly => "is held from the back sheet only",
-            PopupProblem::HeldFromBaseOnly => "is held from the base sheet only",
-        };
+        let why = self.problem.describe();
         let PieceId { face, shape } = self.piece;
         let t = self.plane.t_mm();
         write!(
@@ -124,11 +110,8 @@ pub fn check_with_lines(card: &PolygonCard, lines: &Lines) -> PopupReport {
         if plane(i).kind != FaceKind::Vertical {
             continue;
         }
-        let problem = match (from_back[i], from_base[i]) {
-            (true, true) => continue,
-            (false, false) => PopupProblem::Floating,
-            (true, false) => PopupProblem::HeldFromBackOnly,
-            (false, true) => PopupProblem::HeldFromBaseOnly,
+        let Some(problem) = PopupProblem::from_floods(from_back[i], from_base[i]) else {
+            continue;
         };
         problems.push(FaceProblem {
             piece: pieces[i],

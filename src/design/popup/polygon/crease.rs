@@ -1,4 +1,4 @@
-//! The crease pattern of a polygon card (Mitani & Suzuki (2004), §3.4).
+//! The crease pattern of a polygon card (Mitani & Suzuki 2004, §3.4).
 //!
 //! The classified lines ([`super::lines`]) become edges in millimetres: valleys +90°, mountains
 //! −90°, cuts; the sheet outline is the boundary. The pattern is planarised (T-junctions split)

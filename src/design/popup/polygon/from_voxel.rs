@@ -1,4 +1,4 @@
-//! From a voxel card (Mitani, Suzuki & Uno (2003)) to a polygon card (Mitani & Suzuki (2004)), so a voxel design can be refined
+//! From a voxel card (Mitani, Suzuki & Uno 2003) to a polygon card (Mitani & Suzuki 2004), so a voxel design can be refined
 //! with slanted edges, cut-outs and openings.
 //!
 //! Every pattern cell of the voxel card lands on one plane ([`Surface`]); the cells of each

@@ -1,4 +1,4 @@
-//! Line types of the pattern (Mitani & Suzuki (2004), §3.4, Fig. 10).
+//! Line types of the pattern (Mitani & Suzuki 2004, §3.4, Fig. 10).
 //!
 //! Every face piece (one shape of a face's polygon) is walked along its contours; the piece lies
 //! on the left of each contour segment. A segment not parallel to x is a cut, since the card

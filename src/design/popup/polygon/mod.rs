@@ -1,5 +1,5 @@
-//! Polygon pop-up cards: seed paper 000 (Mitani, Suzuki, "Computer aided design for origamic
-//! architecture models with polygonal representation").
+//! Polygon pop-up cards: Mitani & Suzuki (2004), "Computer aided design for origamic
+//! architecture models with polygonal representation".
 //!
 //! - [`PolygonCard`] (`model.rs`): faces of Fig. 5 (VFace/HFace, `t`, a polygon with holes on
 //!   the pattern), the 3D ↔ 2D maps of eq. 1–3, adding a face by regularised difference (§3.2,
@@ -10,7 +10,7 @@
 //!   outline.
 //! - [`check_popup`] (`check.rs`): the two directed floods of §3.6.
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 7 as a [`FoldedState`].
-//! - [`from_voxel`]: a voxel card (Mitani, Suzuki & Uno (2003)) as a polygon card, for refinement.
+//! - [`from_voxel`]: a voxel card (Mitani, Suzuki & Uno 2003) as a polygon card, for refinement.
 //! - [`parse_design`] (`design.rs`): TOML design files replaying the operations of §3.1;
 //!   examples in `examples/popup/*.popup.toml`.
 //!

@@ -8,17 +8,7 @@
 
 use super::VoxelCard;
 use super::runs::ColumnRuns;
-
-/// Why a front cell fails the pop-up check.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PopupProblem {
-    /// Reached by neither flood: a part with no connection to the sheet.
-    Floating,
-    /// Reached only from the back sheet (flood a): it hangs and is not pushed up.
-    HeldFromBackOnly,
-    /// Reached only from the base sheet (flood b): it is not pulled up.
-    HeldFromBaseOnly,
-}
+pub use crate::design::popup::problem::PopupProblem;
 
 /// One front face of the card that fails the check.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,11 +25,7 @@ pub struct FrontCellProblem {
 
 impl std::fmt::Display for FrontCellProblem {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let why = match self.problem {
-            PopupProblem::Floating => "floats: cut off from both sheets",
-            PopupProblem::HeldFromBackOnly => "is held from the back sheet only",
-            PopupProblem::HeldFromBaseOnly => "is held from the base sheet only",
-        };
+        let why = self.problem.describe();
         let (x, y, z) = (self.x, self.depth - 1, self.z);
         write!(f, "front face of cell ({x}, {y}, {z}) {why}")
     }

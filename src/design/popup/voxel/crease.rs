@@ -1,4 +1,4 @@
-//! The crease pattern of a voxel card (Mitani, Suzuki & Uno (2003), §2.5, Table 1; windows per §2.3).
+//! The crease pattern of a voxel card (Mitani, Suzuki & Uno 2003, §2.5, Table 1; windows per §2.3).
 //!
 //! The lines between unit cells come from [`Surface`]; runs of equal lines along one grid line
 //! are merged into one edge, so a crease 1000 cells long is one edge. Valleys get +90°,
@@ -12,6 +12,10 @@ use glam::DVec2;
 use super::VoxelCard;
 use super::surface::{Line, Surface};
 use crate::pattern::{Assignment, CreasePattern, PlanarizeError, PlanarizeOptions, planarize};
+
+/// The planariser's merge tolerance as a share of the voxel cell's side: the pattern's
+/// coordinates are whole multiples of a cell or of its half, so anything closer is equal.
+const MERGE_PER_CELL: f64 = 1e-6;
 
 /// Builds the planarised crease pattern of `card`, with faces.
 pub fn crease_pattern(card: &VoxelCard) -> Result<CreasePattern, PlanarizeError> {
@@ -59,7 +63,7 @@ pub fn crease_pattern(card: &VoxelCard) -> Result<CreasePattern, PlanarizeError>
         ),
     );
     let opts = PlanarizeOptions {
-        tolerance: Some(card.cell_mm() * 1e-6),
+        tolerance: Some(card.cell_mm() * MERGE_PER_CELL),
         faces: true,
     };
     planarize(&mut cp, &opts)?;

@@ -1,5 +1,5 @@
 //! Height maps: a front view whose grey level says how far each point stands out from the
-//! back sheet (Mitani, Suzuki & Uno (2003), §3.1), read into a [`DepthField`] for the steps of §3.2–3.3.
+//! back sheet (Mitani, Suzuki & Uno 2003, §3.1), read into a [`DepthField`] for the steps of §3.2–3.3.
 //!
 //! The samples are one `u16` grey level per pixel, row-major with the top row first, as
 //! `image::DynamicImage::to_luma16()` yields them; decoding the PNG is left to the caller so

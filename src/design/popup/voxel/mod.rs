@@ -1,5 +1,5 @@
-//! Voxel pop-up cards: seed paper 001 (Mitani, Suzuki, Uno, "Computer aided design for
-//! origamic architecture models with voxel data structure").
+//! Voxel pop-up cards: Mitani, Suzuki & Uno (2003), "Computer aided design for
+//! origamic architecture models with voxel data structure".
 //!
 //! - [`VoxelCard`] (`model.rs`): `cell[x][y][z]` (eq. 3) stored as one depth per (x, z) row,
 //!   staircase by construction (eq. 4), window flags `isHole[x][z]` (eq. 5), the editing

@@ -98,11 +98,8 @@ impl ColumnRuns {
             let (top, bottom) = (from_back[id], from_base[id]);
             for r in run.lo..=run.hi {
                 let r = r as i64;
-                let problem = match (top >= r, bottom <= r) {
-                    (true, true) => continue,
-                    (false, false) => PopupProblem::Floating,
-                    (true, false) => PopupProblem::HeldFromBackOnly,
-                    (false, true) => PopupProblem::HeldFromBaseOnly,
+                let Some(problem) = PopupProblem::from_floods(top >= r, bottom <= r) else {
+                    continue;
                 };
                 problems.push(FrontCellProblem {
                     x,

@@ -1,5 +1,5 @@
 //! The card's surface cell by cell: which voxel face plane each unit cell of the pattern lands
-//! on when the card stands at 90°, and what lies between neighbouring cells (Mitani, Suzuki & Uno (2003), §2.3,
+//! on when the card stands at 90°, and what lies between neighbouring cells (Mitani, Suzuki & Uno 2003, §2.3,
 //! §2.5, Table 1).
 //!
 //! # Pattern coordinates

@@ -4,6 +4,7 @@
 use glam::{DMat3, DVec3};
 
 use super::RigidModel;
+use crate::geom::tolerance::RELATIVE;
 
 impl RigidModel {
     /// First pair of triangles sharing no vertex that intersect, as face indices.
@@ -14,7 +15,7 @@ impl RigidModel {
             .zip(&self.triangle_face)
             .map(|(t, &f)| t.map(|v| frames[f].0 * self.flat[v] + frames[f].1))
             .collect();
-        let tol = 1e-9 * self.scale;
+        let tol = RELATIVE * self.scale;
         let lo = |t: &[DVec3; 3]| t.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
         let hi = |t: &[DVec3; 3]| t.iter().map(|p| p.x).fold(f64::NEG_INFINITY, f64::max);
         let mut order: Vec<usize> = (0..tris.len()).collect();

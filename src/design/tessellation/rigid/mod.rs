@@ -73,12 +73,19 @@ pub struct RigidOptions {
     pub angle_tolerance: f64,
 }
 
+/// Default [`RigidOptions::tolerance`]: the loop-closure skew per vertex at which a Newton
+/// correction stops (unit vectors' round-off, [`crate::geom::tolerance::ROUNDOFF`]).
+pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+
+/// Default [`RigidOptions::angle_tolerance`], radians (about 6 × 10⁻⁵ degrees).
+pub const DEFAULT_ANGLE_TOLERANCE: f64 = 1e-6;
+
 impl Default for RigidOptions {
     fn default() -> Self {
         RigidOptions {
             steps: 100,
-            tolerance: 1e-12,
-            angle_tolerance: 1e-6,
+            tolerance: DEFAULT_TOLERANCE,
+            angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
         }
     }
 }

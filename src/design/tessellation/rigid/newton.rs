@@ -6,6 +6,14 @@ use glam::DVec3;
 
 use super::RigidModel;
 
+/// The ε of `(JJᵀ + εI)`: a ridge far below any row's squared norm of a unit-scale model,
+/// only there to keep the system positive definite when rows are dependent.
+const REGULARISATION: f64 = 1e-14;
+
+/// Conjugate gradient stops once the squared residual has fallen by this factor (10⁻¹⁴ in
+/// the residual's norm).
+const CG_REDUCTION: f64 = 1e-28;
+
 /// Sparse Jacobian: per interior vertex, `(crease, ∂r/∂ρ_crease)`.
 type Jacobian = [Vec<(usize, DVec3)>];
 
@@ -31,7 +39,7 @@ impl RigidModel {
     /// The minimum-norm `x = Jᵀ y` with `(JJᵀ + εI) y = g`, by conjugate gradient.
     pub(super) fn min_norm(jac: &Jacobian, g: &[DVec3], n: usize) -> Vec<f64> {
         let dot = |a: &[DVec3], b: &[DVec3]| a.iter().zip(b).map(|(x, y)| x.dot(*y)).sum::<f64>();
-        let eps = 1e-14;
+        let eps = REGULARISATION;
         let op = |y: &[DVec3]| -> Vec<DVec3> {
             let z = Self::apply_t(jac, y, n);
             Self::apply(jac, &z)
@@ -44,7 +52,7 @@ impl RigidModel {
         let mut r = g.to_vec();
         let mut p = r.clone();
         let mut rr = dot(&r, &r);
-        let goal = 1e-28 * rr.max(f64::MIN_POSITIVE);
+        let goal = CG_REDUCTION * rr.max(f64::MIN_POSITIVE);
         for _ in 0..(30 * g.len() + 100) {
             if rr <= goal {
                 break;

@@ -1,4 +1,4 @@
-//! Polygon model to depth field (Mitani, Suzuki & Uno (2003), §3.1): the mesh rendered orthographically from the
+//! Polygon model to depth field (Mitani, Suzuki & Uno 2003, §3.1): the mesh rendered orthographically from the
 //! front on the CPU, keeping per cell the depth of the nearest surface, as the paper read
 //! OpenGL's depth buffer.
 //!
@@ -12,6 +12,7 @@
 use glam::{DVec2, DVec3};
 
 use super::DepthField;
+use crate::geom::tolerance::{RELATIVE, ROUNDOFF};
 use crate::mesh::PolyMesh;
 
 /// Which mesh axis points up.
@@ -132,7 +133,7 @@ pub fn depth_field_from_mesh(
 fn raster(p: &[DVec3; 3], nx: usize, nz: usize, mut hit: impl FnMut(usize, usize, f64)) {
     let q = p.map(|v| DVec2::new(v.x, v.y));
     let area = (q[1] - q[0]).perp_dot(q[2] - q[0]);
-    if area.abs() < 1e-12 {
+    if area.abs() < ROUNDOFF {
         return;
     }
     let min = q[0].min(q[1]).min(q[2]);
@@ -144,7 +145,7 @@ fn raster(p: &[DVec3; 3], nx: usize, nz: usize, mut hit: impl FnMut(usize, usize
     if x1 < 0.0 || z1 < 0.0 {
         return;
     }
-    let eps = 1e-9 * area.abs();
+    let eps = RELATIVE * area.abs();
     for z in z0..=z1 as usize {
         for x in x0..=x1 as usize {
             let c = DVec2::new(x as f64, z as f64);
