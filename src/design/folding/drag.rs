@@ -202,7 +202,7 @@ impl Folding {
     }
 
     /// The picked vertex and its face nearest the eye (looking down from +z).
-    fn pick(&self, state: &State, drag: &Drag) -> Result<(DVec3, usize), FoldError> {
+    pub(super) fn pick(&self, state: &State, drag: &Drag) -> Result<(DVec3, usize), FoldError> {
         let p = self
             .nearest_vertex(state, drag.from, drag.pick_radius, None)
             .ok_or(FoldError::NoVertexNear {
