@@ -110,8 +110,7 @@ fn studio_and_cli(server: &Server, id: u64, dir: &std::path::Path) -> (Value, Va
         String::from_utf8_lossy(&out.stderr),
         String::from_utf8_lossy(&script)
     );
-    let cli: Value =
-        serde_json::from_slice(&std::fs::read(dir.join("cli.fold")).unwrap()).unwrap();
+    let cli: Value = serde_json::from_slice(&std::fs::read(dir.join("cli.fold")).unwrap()).unwrap();
     let (status, fold) = server.get(&format!("/api/fold/{id}/fold"));
     assert_eq!(status, 200);
     (serde_json::from_slice(&fold).unwrap(), cli)
@@ -131,9 +130,15 @@ fn drags_in_the_studio_save_a_script_that_folds_the_same_pattern() {
     let preview = ok(server.post_json(&format!("/api/fold/{id}/preview"), &drag));
     for p in preview["line"].as_array().unwrap() {
         let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
-        assert!((x + y - SIDE).abs() < 1e-9, "({x}, {y}) is off the diagonal");
+        assert!(
+            (x + y - SIDE).abs() < 1e-9,
+            "({x}, {y}) is off the diagonal"
+        );
     }
-    assert!(preview["snapped"].to_string().contains("vertex"), "{preview}");
+    assert!(
+        preview["snapped"].to_string().contains("vertex"),
+        "{preview}"
+    );
     assert!(preview["refused"].is_null());
     assert_eq!(preview["faces"].as_array().unwrap().len(), 2);
     assert_eq!(ok(get_json(&server, &format!("/api/fold/{id}")))["step"], 0);
@@ -179,9 +184,15 @@ fn drags_in_the_studio_save_a_script_that_folds_the_same_pattern() {
 
     // Back one step: the script holds the steps up to the one shown; forward again.
     let back = ok(server.post_json(&format!("/api/fold/{id}/back"), b""));
-    assert_eq!((back["step"].as_u64(), back["last"].as_u64()), (Some(2), Some(3)));
+    assert_eq!(
+        (back["step"].as_u64(), back["last"].as_u64()),
+        (Some(2), Some(3))
+    );
     let (_, script) = server.get(&format!("/api/fold/{id}/script"));
-    assert_eq!(String::from_utf8_lossy(&script).matches("[[step]]").count(), 2);
+    assert_eq!(
+        String::from_utf8_lossy(&script).matches("[[step]]").count(),
+        2
+    );
     let forward = ok(server.post_json(&format!("/api/fold/{id}/forward"), b""));
     assert_eq!(forward["step"], 3);
     let (status, end) = server.post_json(&format!("/api/fold/{id}/forward"), b"");
@@ -244,7 +255,11 @@ fn refused_folds_come_back_as_errors_and_change_nothing() {
     // A bad sheet and a bad script carry the CLI's messages.
     let (status, body) = server.post_json("/api/fold/new", br#"{"sheet": {"square": -1}}"#);
     assert_eq!(status, 422, "{body}");
-    std::fs::write(dir.path().join("bad.toml"), "[sheet]\nsquare = 100\n[[step]]\n").unwrap();
+    std::fs::write(
+        dir.path().join("bad.toml"),
+        "[sheet]\nsquare = 100\n[[step]]\n",
+    )
+    .unwrap();
     let out = foldcam(&["fold", "bad.toml", "-o", "x.fold"], dir.path());
     assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);

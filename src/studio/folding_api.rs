@@ -43,8 +43,8 @@ use crate::design::folding::drag::{Snap, Snapped};
 use crate::design::folding::gesture::{Gesture, GesturePlan, Operation};
 use crate::design::folding::layers::layer_problems;
 use crate::design::folding::script::{
-    Script, ScriptError, SheetSpec, SnapSpec, apply_step, parse_script, run_script,
-    sheet_outline, write_script,
+    Script, ScriptError, SheetSpec, SnapSpec, apply_step, parse_script, run_script, sheet_outline,
+    write_script,
 };
 use crate::formats::fold::write_string_frames;
 
@@ -415,10 +415,7 @@ async fn from_script(
     .await
 }
 
-async fn show(
-    State(folds): State<Arc<Folds>>,
-    PathId(id): PathId,
-) -> ApiResult<Json<SessionView>> {
+async fn show(State(folds): State<Arc<Folds>>, PathId(id): PathId) -> ApiResult<Json<SessionView>> {
     on_session(folds, id, move |s| Ok(Json(session_view(id, s)))).await
 }
 
@@ -516,13 +513,12 @@ async fn drag(
     .await
 }
 
-async fn back(
-    State(folds): State<Arc<Folds>>,
-    PathId(id): PathId,
-) -> ApiResult<Json<SessionView>> {
+async fn back(State(folds): State<Arc<Folds>>, PathId(id): PathId) -> ApiResult<Json<SessionView>> {
     on_session(folds, id, move |s| {
         if s.at == 0 {
-            return Err(ApiError::input("nothing to step back from: the sheet is flat".into()));
+            return Err(ApiError::input(
+                "nothing to step back from: the sheet is flat".into(),
+            ));
         }
         s.at -= 1;
         Ok(Json(session_view(id, s)))
@@ -536,7 +532,9 @@ async fn forward(
 ) -> ApiResult<Json<SessionView>> {
     on_session(folds, id, move |s| {
         if s.at + 1 >= s.folding.steps().len() {
-            return Err(ApiError::input("nothing to step forward to: this is the last step".into()));
+            return Err(ApiError::input(
+                "nothing to step forward to: this is the last step".into(),
+            ));
         }
         s.at += 1;
         Ok(Json(session_view(id, s)))
@@ -573,7 +571,10 @@ fn download(mime: &'static str, file: &str, bytes: Vec<u8>) -> Response {
 fn stem(s: &Session) -> String {
     std::path::Path::new(&s.name)
         .file_stem()
-        .map_or_else(|| "fold-sequence".into(), |x| x.to_string_lossy().into_owned())
+        .map_or_else(
+            || "fold-sequence".into(),
+            |x| x.to_string_lossy().into_owned(),
+        )
         .replace(' ', "-")
 }
 

@@ -166,7 +166,11 @@ mod tests {
         assert!(folded[0].front_up && !folded[1].front_up);
         assert!(folded[0].layer < folded[1].layer);
         for face in &folded {
-            assert!(face.corners.iter().all(|c| c.y <= 50.0 + 1e-9 && c.z.abs() < 1e-9));
+            assert!(
+                face.corners
+                    .iter()
+                    .all(|c| c.y <= 50.0 + 1e-9 && c.z.abs() < 1e-9)
+            );
         }
     }
 }

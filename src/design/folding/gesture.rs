@@ -26,11 +26,11 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{FoldError, Turn};
 use super::drag::{Drag, Snap, Snapped};
 use super::geometry::rotation_about;
 use super::script::{DEFAULT_PICK_RADIUS, DragSpec, LineSpec, StepSpec};
 use super::state::{Folding, State};
+use super::{FoldError, Turn};
 
 /// A plane seen this close to edge-on from above (|normal·z| below this) cannot take a
 /// pointer's destination.
@@ -313,7 +313,10 @@ mod tests {
         let creases = folds(&crease_pattern(&f).pattern);
         assert_eq!(
             creases,
-            vec![([[0, 75_000_000], [150_000_000, 75_000_000]], Assignment::Valley)]
+            vec![(
+                [[0, 75_000_000], [150_000_000, 75_000_000]],
+                Assignment::Valley
+            )]
         );
     }
 
@@ -325,7 +328,11 @@ mod tests {
         let creases = folds(&crease_pattern(&f).pattern);
         assert_eq!(creases.len(), 1);
         assert_eq!(creases[0].1, Assignment::Mountain);
-        let up = gesture([150.0, 0.0], [0.0, 0.0], Operation::FoldUp { angle_deg: 90.0 });
+        let up = gesture(
+            [150.0, 0.0],
+            [0.0, 0.0],
+            Operation::FoldUp { angle_deg: 90.0 },
+        );
         let (f, _) = perform(&[up]);
         let cp = crease_pattern(&f).pattern;
         let crease: Vec<_> = cp.edges.iter().filter(|e| e.assignment.is_fold()).collect();
@@ -368,7 +375,10 @@ mod tests {
             steps,
         };
         let replayed = run_script(&parse_script(&write_script(&script)).unwrap()).unwrap();
-        assert_eq!(crease_pattern(&replayed).pattern, crease_pattern(&f).pattern);
+        assert_eq!(
+            crease_pattern(&replayed).pattern,
+            crease_pattern(&f).pattern
+        );
     }
 
     #[test]
@@ -400,7 +410,11 @@ mod tests {
             f.plan_gesture(&far, Snap::default()),
             Err(FoldError::NoVertexNear { .. })
         ));
-        let flat = gesture([150.0, 150.0], [0.0, 0.0], Operation::FoldUp { angle_deg: 180.0 });
+        let flat = gesture(
+            [150.0, 150.0],
+            [0.0, 0.0],
+            Operation::FoldUp { angle_deg: 180.0 },
+        );
         assert!(matches!(
             f.plan_gesture(&flat, Snap::default()),
             Err(FoldError::BadAngle(_))

@@ -439,7 +439,11 @@ fn line_text(l: &LineSpec) -> String {
 
 /// `[x, y]`, or `[x, y, z]` when there is a z other than 0 (or any other count as given).
 fn point_text(p: &[f64]) -> String {
-    let n = if p.len() == 3 && p[2] == 0.0 { 2 } else { p.len() };
+    let n = if p.len() == 3 && p[2] == 0.0 {
+        2
+    } else {
+        p.len()
+    };
     let parts: Vec<String> = p[..n].iter().map(|&x| number(x)).collect();
     format!("[{}]", parts.join(", "))
 }
