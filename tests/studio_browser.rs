@@ -676,7 +676,6 @@ async fn dragging_a_corner_onto_the_opposite_one_folds_the_diagonal() {
         near(ends[0], (0.0, 150.0)) && near(ends[1], (150.0, 0.0)),
         "{ends:?}"
     );
-    keep_screenshot(&c, "studio-folding.png").await;
 
     // The saved script, folded by the CLI, gives the same crease.
     let href = c
@@ -704,6 +703,72 @@ async fn dragging_a_corner_onto_the_opposite_one_folds_the_diagonal() {
     );
     let (vertices, edges, m, v) = fold_counts(&dir.path().join("saved.fold"));
     assert_eq!((m, v), (0, 1));
+
+    // Tuck in the corner (150, 0), the pointer held near (0, 0): the preview draws the fold
+    // line (snapped onto the corner: the midline x = 75) before anything is made.
+    click(&c, "#folding-tools button[data-op='tuck']").await;
+    let from = screen_in(&c, "folding-svg", 150.0, 0.0).await;
+    let to = screen_in(&c, "folding-svg", 1.5, 1.0).await;
+    let mut hold = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: from.0,
+            y: from.1,
+        })
+        .then(PointerAction::Down { button: 0 });
+    for k in 1..=8 {
+        let t = f64::from(k) / 8.0;
+        hold = hold.then(PointerAction::MoveTo {
+            duration: Some(Duration::from_millis(60)),
+            x: from.0 + (to.0 - from.0) * t,
+            y: from.1 + (to.1 - from.1) * t,
+        });
+    }
+    c.perform_actions(hold).await.unwrap();
+    wait_until(
+        &c,
+        "const l = document.querySelector('#folding-svg line.fold-line');          return !!l && Math.abs(+l.getAttribute('x1') - 75) < 1e-6          && Math.abs(+l.getAttribute('x2') - 75) < 1e-6",
+        "the fold line at x = 75",
+    )
+    .await;
+    assert_eq!(
+        c.execute("return document.body.dataset.foldStep", vec![])
+            .await
+            .unwrap(),
+        json!("1"),
+        "a preview makes no step"
+    );
+    keep_screenshot(&c, "studio-folding.png").await;
+    let release = MouseActions::new("mouse".to_string()).then(PointerAction::Up { button: 0 });
+    c.perform_actions(release).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.foldStep === '2' && !document.body.dataset.busy",
+        "the tuck-in",
+    )
+    .await;
+    // Back to the diagonal fold: the tuck-in stays in the list, undone.
+    click(&c, "#folding-back").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.foldStep === '1' && !document.body.dataset.busy",
+        "the step back",
+    )
+    .await;
+    assert_eq!(
+        c.find_all(Locator::Css("#folding-steps li"))
+            .await
+            .unwrap()
+            .len(),
+        2
+    );
+    assert_eq!(
+        c.find_all(Locator::Css("#folding-steps li.undone"))
+            .await
+            .unwrap()
+            .len(),
+        1
+    );
 
     // To a crease pattern document: the counts of the CLI's file, and check, plan and cut
     // work on it as on any pattern.
