@@ -1,8 +1,8 @@
 // The fold-sequence designer (Miyazaki, Yasuda, Yokoi & Toriwaki 1992): the folded sheet seen
-// from above, layers drawn slightly apart; drag a corner and the fold line follows as the
-// perpendicular bisector of the move, with the paper's snapping (done on the server, which
-// holds the simulator); letting go makes the step. Back and forward step through the states;
-// the steps save as a fold script for `foldcam fold`.
+// from above, layers drawn slightly apart; drag a corner (or a point of an edge) and the fold
+// line follows as the perpendicular bisector of the move, with the paper's snapping (done on
+// the server, which holds the simulator); letting go makes the step. Back and forward step
+// through the states; the steps save as a fold script for `foldcam fold`.
 import { call } from './api.js';
 import { panZoom } from './cp.js';
 
@@ -213,12 +213,20 @@ export class FoldingView {
     };
   }
 
-  /** Starts a fold when the press is near a corner of the sheet as drawn. */
+  /** Starts a fold when the press is near a corner or an edge of the sheet seen from above
+   * (the server picks the corner first, else the point of the edge). */
   down(e) {
     if (!this.view || e.button !== 0) return;
     const p = this.toSheet(e);
     const reach = PICK_PIXELS * this.mmPerPixel();
-    const near = this.view.faces.some((f) => f.corners.some((c) => Math.hypot(c[0] - p[0], c[1] - p[1]) <= reach));
+    const toSegment = (a, b) => {
+      const d = [b[0] - a[0], b[1] - a[1]];
+      const len2 = d[0] * d[0] + d[1] * d[1];
+      const t = len2 > 0 ? Math.min(1, Math.max(0, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2)) : 0;
+      return Math.hypot(a[0] + d[0] * t - p[0], a[1] + d[1] * t - p[1]);
+    };
+    const near = this.view.faces.some((f) => f.corners.some((c, i) =>
+      toSegment(c, f.corners[(i + 1) % f.corners.length]) <= reach));
     if (!near) return;
     this.drag = { from: p, moved: false };
     this.svg.setPointerCapture(e.pointerId);

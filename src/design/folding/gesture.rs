@@ -5,7 +5,8 @@
 //!
 //! **Picking.** The pointer names a point of the top view (x, y in millimetres): the vertex
 //! whose projection lies nearest to it within the pick radius, the highest one (nearest the
-//! eye, which looks down from +z) where several project together. The face it belongs to is the
+//! eye, which looks down from +z) where several project together; when no vertex is that near,
+//! the nearest point of an edge (a drag with `edge = true`). The face it belongs to is the
 //! one [`Folding::plan_drag`] picks: the top face of the stack there.
 //!
 //! **The fold line** is the perpendicular bisector of the vertex's move (Fig. 3 of the
@@ -31,6 +32,10 @@ use super::geometry::rotation_about;
 use super::script::{DEFAULT_PICK_RADIUS, DragSpec, LineSpec, StepSpec};
 use super::state::{Folding, State};
 use super::{FoldError, Turn};
+
+/// The pick radius written for a drag from a point of an edge, millimetres (at most half the
+/// gesture's radius): small enough that replaying it finds the edge point, not a vertex.
+pub const EDGE_PICK_RADIUS: f64 = 1e-3;
 
 /// A plane seen this close to edge-on from above (|normal·z| below this) cannot take a
 /// pointer's destination.
@@ -96,13 +101,21 @@ impl Folding {
             });
         }
         let state = self.current();
-        let p = self.pick_from_above(state, g.from, g.pick_radius)?;
+        let (p, on_edge) = self.pick_from_above(state, g.from, g.pick_radius)?;
+        // A vertex is found again within the default radius; an edge point within a radius
+        // smaller than its distance from any vertex (no vertex lies within the gesture's).
+        let pick = if on_edge {
+            EDGE_PICK_RADIUS.min(g.pick_radius / 2.0)
+        } else {
+            DEFAULT_PICK_RADIUS
+        };
         let probe = Drag {
             from: p,
             to: p,
-            pick_radius: DEFAULT_PICK_RADIUS,
+            pick_radius: pick,
             mountain: false,
             snap,
+            edge_points: on_edge,
         };
         let (_, face) = self.pick(state, &probe)?;
         let group = &state.groups[state.layers()[face].0];
@@ -120,11 +133,9 @@ impl Folding {
         let towards_eye = if n.z > 0.0 { 1.0 } else { -1.0 };
         let sign = if g.behind { -towards_eye } else { towards_eye };
         let bend = Drag {
-            from: p,
             to: q,
-            pick_radius: DEFAULT_PICK_RADIUS,
             mountain: sign < 0.0,
-            snap,
+            ..probe
         };
         let plan = self.plan_drag(&bend)?;
         let line = plan.fold.line;
@@ -133,7 +144,8 @@ impl Folding {
                 from: p.to_array().to_vec(),
                 to: to.to_array().to_vec(),
                 mountain,
-                pick: None,
+                pick: on_edge.then_some(pick),
+                edge: on_edge,
             }),
             ..empty_step()
         };
@@ -196,23 +208,49 @@ impl Folding {
         }
     }
 
-    /// The vertex whose projection on the x-y plane lies nearest to `at` within `radius`; of
-    /// several there (within 100 × the tolerance), the highest.
-    fn pick_from_above(&self, state: &State, at: DVec2, radius: f64) -> Result<DVec3, FoldError> {
+    /// The vertex whose projection on the x-y plane lies nearest to `at` within `radius`, or
+    /// when there is none the point of an edge whose projection does (`true` then); of several
+    /// there (within 100 × the tolerance), the highest.
+    fn pick_from_above(
+        &self,
+        state: &State,
+        at: DVec2,
+        radius: f64,
+    ) -> Result<(DVec3, bool), FoldError> {
         let near = self.tol * 100.0;
         let corners: Vec<DVec3> = state.faces.iter().flat_map(|f| self.corners(f)).collect();
-        let distance = |c: &DVec3| c.truncate().distance(at);
-        let nearest = corners
-            .iter()
-            .map(distance)
-            .filter(|d| *d <= radius)
-            .min_by(f64::total_cmp)
-            .ok_or(FoldError::NoVertexNear { tolerance: radius })?;
-        corners
-            .iter()
-            .filter(|c| distance(c) <= nearest + near)
-            .max_by(|a, b| a.z.total_cmp(&b.z))
-            .copied()
+        let highest = |points: Vec<DVec3>| {
+            let distance = |c: &DVec3| c.truncate().distance(at);
+            let nearest = points
+                .iter()
+                .map(distance)
+                .filter(|d| *d <= radius)
+                .min_by(f64::total_cmp)?;
+            points
+                .iter()
+                .filter(|c| distance(c) <= nearest + near)
+                .max_by(|a, b| a.z.total_cmp(&b.z))
+                .copied()
+        };
+        if let Some(p) = highest(corners) {
+            return Ok((p, false));
+        }
+        // The nearest point of each edge seen from above, lifted back onto the edge.
+        let mut on_edges = Vec::new();
+        for face in &state.faces {
+            let c = self.corners(face);
+            for i in 0..c.len() {
+                let (a, b) = (c[i], c[(i + 1) % c.len()]);
+                let d = (b - a).truncate();
+                let len2 = d.length_squared();
+                if len2 > near * near {
+                    let t = ((at - a.truncate()).dot(d) / len2).clamp(0.0, 1.0);
+                    on_edges.push(a + (b - a) * t);
+                }
+            }
+        }
+        highest(on_edges)
+            .map(|p| (p, true))
             .ok_or(FoldError::NoVertexNear { tolerance: radius })
     }
 }
@@ -403,9 +441,39 @@ mod tests {
     }
 
     #[test]
+    fn an_edge_point_dragged_down_folds_the_sheet_in_half() {
+        // The middle of the top side, no vertex within reach: the edge point moves to the
+        // middle of the bottom side and the fold line is the midline y = 75.
+        let (f, steps) = perform(&[gesture([75.4, 150.3], [75.0, 0.0], Operation::Bend)]);
+        let creases = folds(&crease_pattern(&f).pattern);
+        assert_eq!(
+            creases,
+            vec![(
+                [[0, 75_000_000], [150_000_000, 75_000_000]],
+                Assignment::Valley
+            )]
+        );
+        let drag = steps[0].drag.as_ref().unwrap();
+        assert!(drag.edge && drag.from[1] == SIDE, "{drag:?}");
+        let script = Script {
+            title: None,
+            sheet: SheetSpec {
+                square: Some(SIDE),
+                rectangle: None,
+                polygon: None,
+            },
+            snap: SnapSpec::default(),
+            steps,
+        };
+        let replayed = run_script(&parse_script(&write_script(&script)).unwrap()).unwrap();
+        assert_eq!(replayed.current(), f.current());
+    }
+
+    #[test]
     fn bad_gestures_are_refused() {
         let f = square();
         let far = gesture([75.0, 75.0], [0.0, 0.0], Operation::Bend);
+        // (75, 75) is far from every edge too.
         assert!(matches!(
             f.plan_gesture(&far, Snap::default()),
             Err(FoldError::NoVertexNear { .. })

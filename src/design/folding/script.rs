@@ -38,7 +38,8 @@
 //!   half down).
 //! - `drag`: move the vertex nearest `from` (within `pick` mm, default 1) to `to`; the fold
 //!   follows the paper's rule, with snapping; `mountain` as for `bend` when `to` lies in the
-//!   layer's plane.
+//!   layer's plane. With `edge = true`, when no vertex is that near, the nearest point of an
+//!   edge moves instead.
 //!
 //! `layers` (bend, fold, tuck) is `"all"` (default: every face reaching the moving side),
 //! `"outer"` (the outermost face at `moving` on the side the fold turns to — the top one for a
@@ -183,6 +184,9 @@ pub struct DragSpec {
     pub mountain: bool,
     /// Pick radius, mm (default 1).
     pub pick: Option<f64>,
+    /// Pick a point of an edge when no vertex lies within `pick`.
+    #[serde(default)]
+    pub edge: bool,
 }
 
 /// A problem with a script: where (a TOML line, or a step) and what.
@@ -307,6 +311,7 @@ fn action(step: &StepSpec, snap: Snap) -> Result<Action, String> {
             },
             mountain: d.mountain,
             snap,
+            edge_points: d.edge,
         })),
         (None, None, None, None) => Err("give one of bend, fold, tuck or drag".into()),
         _ => Err("give only one of bend, fold, tuck or drag per step".into()),
@@ -407,6 +412,9 @@ pub fn write_script(script: &Script) -> String {
             }
             if let Some(r) = d.pick {
                 fields.push(format!("pick = {}", number(r)));
+            }
+            if d.edge {
+                fields.push("edge = true".into());
             }
             out.push_str(&format!("drag = {{ {} }}\n", fields.join(", ")));
         }
