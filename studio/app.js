@@ -6,6 +6,7 @@ import { FoldView } from './fold.js';
 import { MachineView } from './machine.js';
 import { Editor } from './edit.js';
 import { FlatView } from './flat.js';
+import { FoldingView } from './folding.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
@@ -14,6 +15,8 @@ const machineView = new MachineView($('view-machine'));
 const editor = new Editor(patternView, $('edit-tools'), (view) => guarded(() => edited(view)));
 const flatView = new FlatView($('view-flat'));
 machineView.onError = (promise) => guarded(() => promise);
+// The fold-sequence designer; its crease pattern opens as a document in the pattern view.
+new FoldingView($('view-folding'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 let edits = 0;
 
 function showError(e) {

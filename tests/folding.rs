@@ -360,6 +360,7 @@ fn a_drag_folds_about_the_bisector_by_twice_the_plane_angle() {
             line: 0.0,
             angle_deg: 0.0,
         },
+        edge_points: false,
     };
     // P is no vertex: nothing to pick.
     assert!(matches!(
@@ -423,6 +424,7 @@ fn drags_snap_to_vertices_edges_lines_and_angles() {
             pick_radius: 1.0,
             mountain: false,
             snap,
+            edge_points: false,
         };
         let plan = f.plan_drag(&drag).expect("plan");
         assert_eq!(plan.snapped.first(), Some(&rule));
@@ -446,6 +448,7 @@ fn drags_snap_to_vertices_edges_lines_and_angles() {
             angle_deg: 3.0,
             ..none
         },
+        edge_points: false,
     };
     let plan = f.plan_drag(&drag).expect("plan");
     assert_eq!(plan.fold.turn, Turn::Angle(90.0));

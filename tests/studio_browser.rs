@@ -566,3 +566,223 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     assert!(still.is_empty());
     c.close().await.unwrap();
 }
+
+/// Viewport position (CSS pixels) of sheet point `(x, y)` in the SVG `svg` (its first group
+/// holds the drawing in sheet coordinates).
+async fn screen_in(c: &Client, svg: &str, x: f64, y: f64) -> (f64, f64) {
+    let at = c
+        .execute(
+            "const svg = document.getElementById(arguments[0]);
+             const m = svg.querySelector('g').getScreenCTM();
+             const p = svg.createSVGPoint(); p.x = arguments[1]; p.y = arguments[2];
+             const q = p.matrixTransform(m); return [q.x, q.y];",
+            vec![json!(svg), json!(x), json!(y)],
+        )
+        .await
+        .unwrap();
+    (at[0].as_f64().unwrap(), at[1].as_f64().unwrap())
+}
+
+/// A real pointer drag from one viewport point to another, in eight moves.
+async fn pointer_drag(c: &Client, from: (f64, f64), to: (f64, f64)) {
+    let mut drag = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: from.0,
+            y: from.1,
+        })
+        .then(PointerAction::Down { button: 0 });
+    for k in 1..=8 {
+        let t = f64::from(k) / 8.0;
+        drag = drag.then(PointerAction::MoveTo {
+            duration: Some(Duration::from_millis(60)),
+            x: from.0 + (to.0 - from.0) * t,
+            y: from.1 + (to.1 - from.1) * t,
+        });
+    }
+    c.perform_actions(drag.then(PointerAction::Up { button: 0 }))
+        .await
+        .unwrap();
+}
+
+/// Ends of the lines drawn in `css`, in drawing coordinates.
+async fn line_ends(c: &Client, css: &str) -> Vec<[f64; 4]> {
+    let ends = c
+        .execute(
+            "return [...document.querySelectorAll(arguments[0])].map((l) => \
+             ['x1', 'y1', 'x2', 'y2'].map((k) => +l.getAttribute(k)))",
+            vec![json!(css)],
+        )
+        .await
+        .unwrap();
+    serde_json::from_value(ends).unwrap()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn dragging_a_corner_onto_the_opposite_one_folds_the_diagonal() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let driver = start_driver();
+    let c = browser(&driver).await;
+    c.goto(&server.url()).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
+    // The fold mode starts on a 150 mm square.
+    click(&c, "#tabs button[data-view='folding']").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.foldStep === '0' && !document.body.dataset.busy",
+        "the sheet",
+    )
+    .await;
+    assert!(
+        c.find_all(Locator::Css("#folding-steps li"))
+            .await
+            .unwrap()
+            .is_empty()
+    );
+
+    // Drag the corner (150, 150) onto (0, 0) (Miyazaki et al. 1992: the fold line is the
+    // perpendicular bisector of the move; a bend by default).
+    let from = screen_in(&c, "folding-svg", 150.0, 150.0).await;
+    let to = screen_in(&c, "folding-svg", 0.0, 0.0).await;
+    pointer_drag(&c, from, to).await;
+    wait_until(
+        &c,
+        "return document.body.dataset.foldStep === '1' && !document.body.dataset.busy",
+        "the fold step",
+    )
+    .await;
+    let steps = c.find_all(Locator::Css("#folding-steps li")).await.unwrap();
+    assert_eq!(steps.len(), 1, "one step in the list");
+    // Two faces drawn, the flap folded over showing the back of the paper.
+    let backs = c
+        .find_all(Locator::Css("#folding-faces polygon.back"))
+        .await
+        .unwrap();
+    assert_eq!(backs.len(), 1);
+    // The crease pattern holds one valley: the diagonal from (150, 0) to (0, 150).
+    let valleys = line_ends(&c, "#folding-cp line.edge-V").await;
+    assert_eq!(valleys.len(), 1, "{valleys:?}");
+    let [x1, y1, x2, y2] = valleys[0];
+    let mut ends = [(x1, y1), (x2, y2)];
+    ends.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let near = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs() < 1e-6 && (p.1 - q.1).abs() < 1e-6;
+    assert!(
+        near(ends[0], (0.0, 150.0)) && near(ends[1], (150.0, 0.0)),
+        "{ends:?}"
+    );
+
+    // The saved script, folded by the CLI, gives the same crease.
+    let href = c
+        .find(Locator::Css("#folding-script"))
+        .await
+        .unwrap()
+        .attr("href")
+        .await
+        .unwrap()
+        .unwrap();
+    let script = c
+        .execute_async(
+            "const done = arguments[arguments.length - 1];
+             fetch(arguments[0]).then(r => r.text()).then(done, e => done('ERROR ' + e));",
+            vec![json!(href)],
+        )
+        .await
+        .unwrap();
+    std::fs::write(dir.path().join("saved.toml"), script.as_str().unwrap()).unwrap();
+    let out = foldcam(&["fold", "saved.toml", "-o", "saved.fold"], dir.path());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (vertices, edges, m, v) = fold_counts(&dir.path().join("saved.fold"));
+    assert_eq!((m, v), (0, 1));
+
+    // Tuck in the corner (150, 0), the pointer held near (0, 0): the preview draws the fold
+    // line (snapped onto the corner: the midline x = 75) before anything is made.
+    click(&c, "#folding-tools button[data-op='tuck']").await;
+    let from = screen_in(&c, "folding-svg", 150.0, 0.0).await;
+    let to = screen_in(&c, "folding-svg", 1.5, 1.0).await;
+    let mut hold = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: from.0,
+            y: from.1,
+        })
+        .then(PointerAction::Down { button: 0 });
+    for k in 1..=8 {
+        let t = f64::from(k) / 8.0;
+        hold = hold.then(PointerAction::MoveTo {
+            duration: Some(Duration::from_millis(60)),
+            x: from.0 + (to.0 - from.0) * t,
+            y: from.1 + (to.1 - from.1) * t,
+        });
+    }
+    c.perform_actions(hold).await.unwrap();
+    wait_until(
+        &c,
+        "const l = document.querySelector('#folding-svg line.fold-line');          return !!l && Math.abs(+l.getAttribute('x1') - 75) < 1e-6          && Math.abs(+l.getAttribute('x2') - 75) < 1e-6",
+        "the fold line at x = 75",
+    )
+    .await;
+    assert_eq!(
+        c.execute("return document.body.dataset.foldStep", vec![])
+            .await
+            .unwrap(),
+        json!("1"),
+        "a preview makes no step"
+    );
+    keep_screenshot(&c, "studio-folding.png").await;
+    let release = MouseActions::new("mouse".to_string()).then(PointerAction::Up { button: 0 });
+    c.perform_actions(release).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.foldStep === '2' && !document.body.dataset.busy",
+        "the tuck-in",
+    )
+    .await;
+    // Back to the diagonal fold: the tuck-in stays in the list, undone.
+    click(&c, "#folding-back").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.foldStep === '1' && !document.body.dataset.busy",
+        "the step back",
+    )
+    .await;
+    assert_eq!(
+        c.find_all(Locator::Css("#folding-steps li"))
+            .await
+            .unwrap()
+            .len(),
+        2
+    );
+    assert_eq!(
+        c.find_all(Locator::Css("#folding-steps li.undone"))
+            .await
+            .unwrap()
+            .len(),
+        1
+    );
+
+    // To a crease pattern document: the counts of the CLI's file, and check, plan and cut
+    // work on it as on any pattern.
+    click(&c, "#folding-pattern").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.doc !== undefined && !document.body.dataset.busy \
+         && !document.getElementById('view-pattern').hidden",
+        "the crease pattern document",
+    )
+    .await;
+    assert_eq!(text(&c, "#count-vertices").await, vertices.to_string());
+    assert_eq!(text(&c, "#count-edges").await, edges.to_string());
+    assert_eq!(text(&c, "#count-V").await, "1");
+    assert_eq!(text(&c, "#check-status").await, "passed");
+    c.close().await.unwrap();
+}

@@ -18,6 +18,7 @@
 //! | `GET /api/machines`, `GET /api/materials` | the shipped profiles and the uploaded ones |
 //! | `POST /api/profiles/{machine,material}?name=N` | reads a TOML profile as `cut -m N.toml` would |
 //! | `GET /api/legend` | line colours and dashes of each assignment (as in our previews) |
+//! | `/api/fold/…` | the fold-sequence designer ([`super::folding_api`]) |
 //!
 //! Work that takes time (checks, folding, planning) runs on tokio's blocking pool.
 
@@ -292,6 +293,7 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/profiles/{kind}", post(machine_api::upload_profile))
         .route("/api/materials", get(machine_api::materials))
         .route("/api/legend", get(legend))
+        .merge(super::folding_api::router(Arc::clone(&state)))
         .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))
@@ -356,7 +358,7 @@ pub(super) struct Opened {
     pub(super) edit: Option<EditReport>,
 }
 
-fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
+pub(super) fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
     let view = PatternView::new(&doc.name, doc.planar().map_err(ApiError::input)?);
     let (id, _) = s.add(doc);
     Ok(Json(Opened {

@@ -19,6 +19,7 @@ pub mod assets;
 pub mod document;
 mod edit_api;
 pub mod flat;
+mod folding_api;
 mod machine_api;
 pub mod settings;
 pub mod toolpath;

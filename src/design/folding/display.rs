@@ -102,3 +102,78 @@ pub fn sheet_size(folding: &Folding) -> f64 {
     );
     (hi - lo).max_element()
 }
+
+/// One face of a step as a view from above draws it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TopFace {
+    /// The face's corners in space, millimetres (where the paper is, not spread).
+    pub corners: Vec<glam::DVec3>,
+    /// How far the face is drawn off its plane to show the layer order: the layer's place in
+    /// its stack from the middle, in layers, counted towards the eye (positive above).
+    pub layer: f64,
+    /// The sheet's front (its +z side when flat) faces the eye.
+    pub front_up: bool,
+}
+
+/// The faces of step `step` (0 = the flat sheet) in the order a view from +z paints them,
+/// bottom first: by the height of their centres once each layer is lifted `gap_mm` per
+/// place in its stack (so the stack order decides between coplanar layers).
+///
+/// # Panics
+/// When `step` is beyond the last step.
+pub fn faces_from_above(folding: &Folding, step: usize, gap_mm: f64) -> Vec<TopFace> {
+    let state = &folding.steps()[step].state;
+    let layers = state.layers();
+    let mut faces: Vec<(f64, TopFace)> = state
+        .faces
+        .iter()
+        .enumerate()
+        .map(|(f, face)| {
+            let (g, pos) = layers[f];
+            let group = &state.groups[g];
+            let place = pos as f64 - (group.stack.len() as f64 - 1.0) / 2.0;
+            let up = if group.normal.z >= 0.0 { 1.0 } else { -1.0 };
+            let corners = folding.corners(face);
+            let centre = corners.iter().sum::<glam::DVec3>() / corners.len().max(1) as f64;
+            let height = centre.z + group.normal.z * gap_mm * place;
+            let top = TopFace {
+                corners,
+                layer: place * up,
+                front_up: state.face_normal(f).z > 0.0,
+            };
+            (height, top)
+        })
+        .collect();
+    faces.sort_by(|a, b| a.0.total_cmp(&b.0));
+    faces.into_iter().map(|(_, f)| f).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::folding::script::{parse_script, run_script};
+
+    #[test]
+    fn the_flap_folded_over_is_painted_last_and_shows_its_back() {
+        let script = parse_script(
+            "[sheet]\nsquare = 100\n[[step]]\nbend = { line = [[0, 50], [100, 50]], moving = [50, 90] }\n",
+        )
+        .unwrap();
+        let f = run_script(&script).unwrap();
+        let flat = faces_from_above(&f, 0, 0.5);
+        assert_eq!(flat.len(), 1);
+        assert!(flat[0].front_up);
+        let folded = faces_from_above(&f, 1, 0.5);
+        assert_eq!(folded.len(), 2);
+        // Bottom: the half that stayed, front up; top: the half turned over onto it.
+        assert!(folded[0].front_up && !folded[1].front_up);
+        assert!(folded[0].layer < folded[1].layer);
+        for face in &folded {
+            assert!(
+                face.corners
+                    .iter()
+                    .all(|c| c.y <= 50.0 + 1e-9 && c.z.abs() < 1e-9)
+            );
+        }
+    }
+}

@@ -74,6 +74,10 @@ pub struct Drag {
     pub mountain: bool,
     /// Snapping tolerances.
     pub snap: Snap,
+    /// When no vertex lies within `pick_radius` of `from`, pick the nearest point of a face's
+    /// edge within that radius instead (of the faces whose edge holds it, the one nearest the
+    /// eye). An extension of the paper's vertex picking.
+    pub edge_points: bool,
 }
 
 /// A snapping rule that fired.
@@ -204,12 +208,19 @@ impl Folding {
     }
 
     /// The picked vertex and its face nearest the eye (looking down from +z).
-    fn pick(&self, state: &State, drag: &Drag) -> Result<(DVec3, usize), FoldError> {
-        let p = self
-            .nearest_vertex(state, drag.from, drag.pick_radius, None)
-            .ok_or(FoldError::NoVertexNear {
-                tolerance: drag.pick_radius,
-            })?;
+    pub(super) fn pick(&self, state: &State, drag: &Drag) -> Result<(DVec3, usize), FoldError> {
+        let none = FoldError::NoVertexNear {
+            tolerance: drag.pick_radius,
+        };
+        let (p, on_edge) = match self.nearest_vertex(state, drag.from, drag.pick_radius, None) {
+            Some(p) => (p, false),
+            None if drag.edge_points => (
+                self.nearest_edge_point(state, drag.from, drag.pick_radius)
+                    .ok_or(none)?,
+                true,
+            ),
+            None => return Err(none),
+        };
         let layers = state.layers();
         let near = self.tol * 100.0;
         let eye = |f: usize| {
@@ -227,9 +238,12 @@ impl Folding {
         };
         (0..state.faces.len())
             .filter(|&f| {
-                self.corners(&state.faces[f])
-                    .iter()
-                    .any(|c| c.distance(p) <= near)
+                let c = self.corners(&state.faces[f]);
+                if on_edge {
+                    (0..c.len()).any(|i| on_segment(p, c[i], c[(i + 1) % c.len()]).1 <= near)
+                } else {
+                    c.iter().any(|c| c.distance(p) <= near)
+                }
             })
             .max_by(|&a, &b| {
                 eye(a)
@@ -240,6 +254,22 @@ impl Folding {
             .ok_or(FoldError::NoVertexNear {
                 tolerance: drag.pick_radius,
             })
+    }
+
+    /// The point of a face's edge nearest `at` within `radius`.
+    fn nearest_edge_point(&self, state: &State, at: DVec3, radius: f64) -> Option<DVec3> {
+        state
+            .faces
+            .iter()
+            .flat_map(|f| {
+                let c = self.corners(f);
+                (0..c.len())
+                    .map(|i| on_segment(at, c[i], c[(i + 1) % c.len()]))
+                    .collect::<Vec<_>>()
+            })
+            .filter(|(_, d)| *d <= radius)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(p, _)| p)
     }
 
     /// The vertex nearest `at` within `radius` (excluding points at `except`).
@@ -326,4 +356,17 @@ impl Folding {
             .flat_map(|&f| self.face_edges(state, f, frame))
             .collect()
     }
+}
+
+/// The point of segment `a`–`b` nearest `p`, and its distance from `p`.
+pub(super) fn on_segment(p: DVec3, a: DVec3, b: DVec3) -> (DVec3, f64) {
+    let d = b - a;
+    let len2 = d.length_squared();
+    let t = if len2 > 0.0 {
+        ((p - a).dot(d) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let q = a + d * t;
+    (q, q.distance(p))
 }

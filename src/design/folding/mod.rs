@@ -13,7 +13,9 @@
 //! - [`layers`]: consistency of flat layer orders (no face passes through another).
 //! - [`crease`]: the crease pattern (unfolded fold lines, mountain/valley from the final state)
 //!   and the folded state of every step on that pattern's topology.
-//! - [`script`]: the TOML fold script.
+//! - [`script`]: the TOML fold script (read and written).
+//! - [`gesture`]: a drag on the sheet seen from above (the studio's fold mode) made into a
+//!   script step.
 //! - [`sheet`]: the sheet outline, cut into convex faces when it is not convex.
 //! - [`small`]: short inline lists (face polygons, neighbour lists) that keep the per-step
 //!   state copies cheap.
@@ -51,6 +53,7 @@ pub mod display;
 pub mod drag;
 mod error;
 pub mod geometry;
+pub mod gesture;
 pub mod layers;
 pub mod operation;
 pub mod script;

@@ -57,9 +57,17 @@ pub(super) fn edge_onto_edge(
 }
 
 /// The bisector of two lines closest in direction to `near` (the midline when parallel).
+///
+/// Parallel lines give their midline only when it runs within 45° of `near`: an edge that
+/// crosses the fold line at about a right angle lands on its own line (or a parallel one
+/// close by) whatever the fold line's position, and the midline would turn the fold line by
+/// about 90° — that is no snap.
 fn bisector_of(a: &Line2, b: &Line2, near: &Line2, eps: f64) -> Option<Line2> {
     let cross = a.dir.perp_dot(b.dir);
     if cross.abs() < ROUNDOFF {
+        if a.dir.dot(near.dir).abs() < std::f64::consts::FRAC_1_SQRT_2 {
+            return None;
+        }
         let foot = b.point + b.dir * b.dir.dot(a.point - b.point);
         let point = (a.point + foot) * 0.5;
         return Some(Line2 { point, dir: a.dir });
