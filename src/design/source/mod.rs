@@ -38,7 +38,8 @@ pub use voxel::{VoxelDesign, VoxelOptions};
 /// The kinds of design file foldcam builds patterns from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DesignKind {
-    /// A voxel card's text front view (`.voxel.txt`, any `.txt`).
+    /// A voxel card's text front view (`.voxel.txt`; `foldcam popup voxel` reads any other
+    /// name as one too, but a plain `.txt` is not taken for a design here).
     VoxelText,
     /// A height map (`.png`): grey level = how far a point stands out of the card.
     HeightMap,
@@ -56,7 +57,6 @@ impl DesignKind {
     /// The endings of the files this module recognises (lower case).
     pub const EXTENSIONS: &'static [&'static str] = &[
         ".voxel.txt",
-        ".txt",
         ".png",
         ".obj",
         ".stl",
@@ -71,7 +71,7 @@ impl DesignKind {
     pub fn recognise(name: &Path, bytes: &[u8]) -> Option<DesignKind> {
         let lower = name.to_string_lossy().to_ascii_lowercase();
         let ends = |e: &str| lower.ends_with(e);
-        if ends(".txt") {
+        if ends(".voxel.txt") {
             Some(DesignKind::VoxelText)
         } else if ends(".png") {
             Some(DesignKind::HeightMap)
