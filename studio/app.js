@@ -211,8 +211,8 @@ async function start() {
   $('cli-files').replaceChildren(...files.map((f) => {
     const b = document.createElement('button');
     b.textContent = f.name;
-    b.addEventListener('click', () => guarded(async () => opened(await call(
-      `/api/files/${f.index}?make=${$('mesh-make').value}`, { method: 'POST' }))), openingLabel(f.name)));
+    const open = async () => opened(await call(`/api/files/${f.index}?make=${$('mesh-make').value}`, { method: 'POST' }));
+    b.addEventListener('click', () => guarded(open, openingLabel(f.name)));
     return b;
   }));
   document.querySelectorAll('#tabs button').forEach((b) => b.addEventListener('click', () => switchView(b.dataset.view)));

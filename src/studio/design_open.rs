@@ -46,7 +46,7 @@ pub fn message(e: &SourceError) -> String {
 pub fn open_upload(
     name: &str,
     bytes: &[u8],
-    companions: &[(String, &[u8])],
+    companions: &[Named<'_>],
     mesh_use: MeshUse,
 ) -> Result<Document, String> {
     let path = PathBuf::from(name);
@@ -105,6 +105,9 @@ fn build(
     Document::from_design(name.to_string(), design, notes)
 }
 
+/// A file sent with another: its name and bytes.
+pub type Named<'a> = (String, &'a [u8]);
+
 /// One file of an upload sent with companions: its name and length in bytes.
 #[derive(Clone, Debug, Deserialize)]
 pub struct Part {
@@ -123,7 +126,7 @@ pub fn split_body<'a>(
     name: &str,
     body: &'a [u8],
     parts: &[Part],
-) -> Result<(&'a [u8], Vec<(String, &'a [u8])>), String> {
+) -> Result<(&'a [u8], Vec<Named<'a>>), String> {
     let total = parts
         .iter()
         .fold(0usize, |sum, p| sum.saturating_add(p.size));
