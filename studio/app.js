@@ -216,7 +216,12 @@ async function start() {
     return b;
   }));
   document.querySelectorAll('#tabs button').forEach((b) => b.addEventListener('click', () => switchView(b.dataset.view)));
-  $('file-input').addEventListener('change', (e) => openFiles(e.target.files));
+  $('file-input').addEventListener('change', (e) => {
+    // Taken, then cleared: the next pick is a new set (and the same file can be picked again).
+    const files = Array.from(e.target.files);
+    e.target.value = '';
+    openFiles(files);
+  });
   $('mesh-make').addEventListener('change', () => { if (state.meshFiles) openFiles(state.meshFiles); });
   document.body.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dragging'); });
   document.body.addEventListener('dragleave', () => document.body.classList.remove('dragging'));
