@@ -14,7 +14,21 @@ export async function call(url, options = {}) {
   return body;
 }
 
-/** Uploads a File; resolves to the pattern view with its document id. */
-export function upload(file) {
-  return call(`/api/upload?name=${encodeURIComponent(file.name)}`, { method: 'POST', body: file });
+/** The file of a set to open: a paper-craft design (its mesh comes with it), else the first. */
+export function mainFile(files) {
+  return files.find((f) => f.name.toLowerCase().endsWith('.craft.toml')) || files[0];
+}
+
+/** Uploads the files dropped or picked together: the main one is opened, the others go with
+ * it in the same body (a paper craft's mesh). `make` says what a mesh becomes. Resolves to
+ * the pattern view with its document id. */
+export function upload(files, make = 'auto') {
+  const main = mainFile(files);
+  const others = files.filter((f) => f !== main);
+  let url = `/api/upload?name=${encodeURIComponent(main.name)}&make=${encodeURIComponent(make)}`;
+  if (others.length) {
+    const parts = others.map((f) => ({ name: f.name, size: f.size }));
+    url += `&with=${encodeURIComponent(JSON.stringify(parts))}`;
+  }
+  return call(url, { method: 'POST', body: new Blob([main, ...others]) });
 }

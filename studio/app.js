@@ -1,6 +1,6 @@
 // The studio page: opens patterns (command-line files, the file picker, drag and drop),
 // shows counts, legend and check findings, and drives the three views.
-import { call, upload } from './api.js';
+import { call, upload, mainFile } from './api.js';
 import { PatternView } from './cp.js';
 import { FoldView } from './fold.js';
 import { MachineView } from './machine.js';
@@ -24,17 +24,44 @@ function showError(e) {
   $('error').hidden = !e;
 }
 
-/** Runs an async action, showing its error (the server's message) in the page. */
-async function guarded(action) {
+/** Runs an async action, showing its error (the server's message) in the page, and `label`
+ * (what is being done) while it runs. */
+async function guarded(action, label = '') {
   try {
     showError(null);
     document.body.dataset.busy = 'true';
+    $('busy').textContent = label;
+    $('busy').hidden = !label;
     return await action();
   } catch (e) {
     showError(e);
   } finally {
     delete document.body.dataset.busy;
+    $('busy').hidden = true;
   }
+}
+
+const DESIGN = /\.(txt|png|obj|stl|toml)$/i;
+const MESH = /\.(obj|stl)$/i;
+
+/** What the page says while `name` is opened: design files are built first (a tessellation
+ * solves for seconds). */
+function openingLabel(name) {
+  if (!DESIGN.test(name)) return `opening ${name}…`;
+  const make = $('mesh-make').value;
+  const what = MESH.test(name) ? (make === 'auto' ? 'a tessellation or pop-up card' : make === 'popup' ? 'a pop-up card' : 'a tessellation')
+    : 'the design';
+  return `building ${what} from ${name}… (this can take a while)`;
+}
+
+/** Opens files dropped or picked together; a mesh set is kept to rebuild when the choice of
+ * what a mesh makes changes. */
+function openFiles(list) {
+  const files = Array.from(list);
+  if (!files.length) return;
+  const main = mainFile(files);
+  state.meshFiles = MESH.test(main.name) ? files : null;
+  guarded(async () => opened(await upload(files, $('mesh-make').value)), openingLabel(main.name));
 }
 
 function showLegend(legend) {
@@ -56,6 +83,7 @@ function showCounts(view) {
   $('count-B').textContent = a.boundary;
   $('count-other').textContent = `${a.flat}, ${a.unassigned}, ${a.cut}, ${a.join}`;
   $('doc-name').textContent = view.name;
+  $('made').textContent = view.made ? `Built from a design file: ${view.made}.` : '';
   $('messages').replaceChildren(...view.messages.map((m) => {
     const li = document.createElement('li');
     li.textContent = m;
@@ -186,21 +214,24 @@ async function start() {
   $('cli-files').replaceChildren(...files.map((f) => {
     const b = document.createElement('button');
     b.textContent = f.name;
-    b.addEventListener('click', () => guarded(async () => opened(await call(`/api/files/${f.index}`, { method: 'POST' }))));
+    const open = async () => opened(await call(`/api/files/${f.index}?make=${$('mesh-make').value}`, { method: 'POST' }));
+    b.addEventListener('click', () => guarded(open, openingLabel(f.name)));
     return b;
   }));
   document.querySelectorAll('#tabs button').forEach((b) => b.addEventListener('click', () => switchView(b.dataset.view)));
   $('file-input').addEventListener('change', (e) => {
-    const file = e.target.files[0];
-    if (file) guarded(async () => opened(await upload(file)));
+    // Taken, then cleared: the next pick is a new set (and the same file can be picked again).
+    const files = Array.from(e.target.files);
+    e.target.value = '';
+    openFiles(files);
   });
+  $('mesh-make').addEventListener('change', () => { if (state.meshFiles) openFiles(state.meshFiles); });
   document.body.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dragging'); });
   document.body.addEventListener('dragleave', () => document.body.classList.remove('dragging'));
   document.body.addEventListener('drop', (e) => {
     e.preventDefault();
     document.body.classList.remove('dragging');
-    const file = e.dataTransfer.files[0];
-    if (file) guarded(async () => opened(await upload(file)));
+    openFiles(e.dataTransfer.files);
   });
   $('layers-btn').addEventListener('click', () => guarded(async () => {
     if (!state.doc) throw new Error('open a pattern first');
@@ -217,7 +248,10 @@ async function start() {
     state.planned = true;
     document.body.dataset.planned = 'true';
   }));
-  if (files.length) await guarded(async () => opened(await call(`/api/files/0`, { method: 'POST' })));
+  if (files.length) {
+    await guarded(async () => opened(await call(`/api/files/0?make=${$('mesh-make').value}`, { method: 'POST' })),
+      openingLabel(files[0].name));
+  }
   document.body.dataset.ready = 'true';
 }
 

@@ -786,3 +786,65 @@ async fn dragging_a_corner_onto_the_opposite_one_folds_the_diagonal() {
     assert_eq!(text(&c, "#check-status").await, "passed");
     c.close().await.unwrap();
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_design_file_uploaded_in_the_browser_opens_as_the_command_builds_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let house = PathBuf::from(repo_file("examples/popup/house.voxel.txt"));
+    // What `foldcam popup voxel` writes for the same file: the counts to see.
+    let out = foldcam(
+        &[
+            "popup",
+            "voxel",
+            &house.to_string_lossy(),
+            "-o",
+            "house.fold",
+        ],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary = String::from_utf8_lossy(&out.stdout).trim().to_string();
+    let server = Server::start(&[], dir.path());
+    let driver = start_driver();
+    let c = browser(&driver).await;
+    c.goto(&server.url()).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
+    // Record what the page says while it works.
+    c.execute(
+        "window.busySeen = []; const b = document.getElementById('busy'); \
+         new MutationObserver(() => { if (!b.hidden) window.busySeen.push(b.textContent); })\
+         .observe(b, { attributes: true, childList: true });",
+        vec![],
+    )
+    .await
+    .unwrap();
+    open(&c, &house).await;
+    let (vertices, edges, m, v) = fold_counts(&dir.path().join("house.fold"));
+    assert_eq!(text(&c, "#count-vertices").await, vertices.to_string());
+    assert_eq!(text(&c, "#count-edges").await, edges.to_string());
+    assert_eq!(text(&c, "#count-M").await, m.to_string());
+    assert_eq!(text(&c, "#count-V").await, v.to_string());
+    assert!(text(&c, "#made").await.contains("voxel pop-up card"));
+    // The command's summary (the name as uploaded) is among the messages.
+    let name_free = summary.split_once(": ").map(|(_, rest)| rest).unwrap();
+    assert!(text(&c, "#messages").await.contains(name_free), "{summary}");
+    let seen = c.execute("return window.busySeen", vec![]).await.unwrap();
+    assert!(
+        seen.as_array().unwrap().iter().any(|s| s
+            .as_str()
+            .unwrap()
+            .contains("building the design from house.voxel.txt")),
+        "the page said it was working: {seen}"
+    );
+    keep_screenshot(&c, "studio-design.png").await;
+    c.close().await.unwrap();
+}

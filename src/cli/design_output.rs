@@ -69,3 +69,21 @@ impl DesignOutput {
         self.stage_at(outputs, &self.output, cp, folded)
     }
 }
+
+/// A design build's result as the command's: a design its own check refused prints the
+/// report on standard output (`Ok(Err(Outcome::CheckFailed))`, exit 1); bad input is an error
+/// (exit 2).
+pub fn built<T>(
+    result: std::result::Result<T, foldcam::design::source::SourceError>,
+) -> Result<std::result::Result<T, super::Outcome>> {
+    match result {
+        Ok(t) => Ok(Ok(t)),
+        Err(foldcam::design::source::SourceError::NotMade { lines }) => {
+            for line in lines {
+                println!("{line}");
+            }
+            Ok(Err(super::Outcome::CheckFailed))
+        }
+        Err(e) => Err(e.into()),
+    }
+}

@@ -4,15 +4,14 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow};
-use foldcam::design::folding::crease::{crease_pattern, step_states};
 use foldcam::design::folding::display::{display_states, sheet_size, step_captions};
-use foldcam::design::folding::layers::layer_problems;
-use foldcam::design::folding::script::{parse_script, run_script};
+use foldcam::design::source::{DesignFile, read_design_file, script};
+use foldcam::formats::OutputSet;
 use foldcam::formats::fold::write_string_frames;
-use foldcam::formats::{OutputSet, read_text};
 use foldcam::render::{View3d, render_gif, step_sheet_png};
 
 use super::Outcome;
+use super::progress::DesignProgress;
 
 /// Fold a sheet step by step and write the crease pattern.
 #[derive(clap::Args)]
@@ -50,32 +49,33 @@ pub struct Args {
 /// Runs `foldcam fold`.
 pub fn run(args: Args) -> Result<Outcome> {
     let name = args.script.display().to_string();
-    let text = read_text(&args.script)?;
-    let script = parse_script(&text).map_err(|e| anyhow!("{name}: {e}"))?;
-    let folding = run_script(&script).map_err(|e| anyhow!("{name}: {e}"))?;
-    let mut sheet = crease_pattern(&folding);
-    sheet.pattern.meta.title = script.title.clone();
-    let states = step_states(&folding, &sheet);
+    let bytes = read_design_file(&args.script)?;
+    let file = DesignFile {
+        name: &args.script,
+        bytes: &bytes,
+    };
+    let design = script::build(&file, &mut DesignProgress::default())?;
+    let folding = &design.folding;
     let view = View3d {
         azimuth_deg: 20.0,
         elevation_deg: 55.0,
         ..View3d::with_width(args.width)
     };
-    let shown = display_states(&folding, sheet_size(&folding) * 0.004);
+    let shown = display_states(folding, sheet_size(folding) * 0.004);
     // Every output is made first and written together: a failure leaves all files as they were.
     let mut outputs = OutputSet::new();
     if args.out.machine.is_some() {
-        args.out.stage(&mut outputs, &sheet.pattern, None)?;
+        args.out.stage(&mut outputs, &design.sheet.pattern, None)?;
     } else {
         // The crease pattern with one folded frame per step.
         outputs.add(
             &args.out.output,
-            write_string_frames(&sheet.pattern, &states).into_bytes(),
+            write_string_frames(&design.sheet.pattern, &design.states).into_bytes(),
         );
     }
     if let Some(png) = &args.png {
         check_picture_size(shown.len(), view.width, "step sheet")?;
-        let bytes = step_sheet_png(&shown, &step_captions(&folding), &view)
+        let bytes = step_sheet_png(&shown, &step_captions(folding), &view)
             .with_context(|| png.display().to_string())?;
         super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
@@ -86,17 +86,12 @@ pub fn run(args: Args) -> Result<Outcome> {
         super::input::stage_image(&mut outputs, gif, bytes, "gif")?;
     }
     super::input::commit(outputs, &[&args.script])?;
-    let problems = layer_problems(&folding, folding.current());
-    for p in &problems {
+    for p in &design.warnings {
         eprintln!("foldcam: {name}: warning: {p}");
     }
-    let cp = &sheet.pattern;
     println!(
-        "{name}: {} steps, {} faces, crease pattern of {} vertices and {} edges written to {}",
-        folding.steps().len() - 1,
-        folding.current().faces.len(),
-        cp.vertices.len(),
-        cp.edges.len(),
+        "{} written to {}",
+        design.summary,
         args.out.output.display()
     );
     Ok(Outcome::Done)

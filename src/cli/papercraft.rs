@@ -4,16 +4,16 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow};
-use foldcam::design::papercraft::ReferenceMesh;
-use foldcam::design::papercraft::design::parse_design;
+use foldcam::design::source::{DesignFile, craft, mesh_path_beside, read_design_file};
 use foldcam::fab::operations::label_operation;
 use foldcam::fab::{PlanOptions, plan};
-use foldcam::formats::{OutputSet, read_text};
+use foldcam::formats::OutputSet;
 use foldcam::machine::{MachineProfile, Material};
 use foldcam::mesh::read_mesh;
 use foldcam::render::{PreviewOptions, preview_png};
 
 use super::Outcome;
+use super::progress::DesignProgress;
 
 /// Make paper-craft parts from a design file.
 #[derive(clap::Args)]
@@ -95,33 +95,15 @@ fn sheet_path(path: &Path, sheet: usize) -> PathBuf {
 pub fn run(args: Args) -> Result<Outcome> {
     let path = &args.design;
     let err = |e: &dyn std::fmt::Display| anyhow!("{}: {e}", path.display());
-    let design = parse_design(&read_text(path)?).map_err(|e| err(&e))?;
-    let mesh_path = path.parent().unwrap_or(Path::new(".")).join(&design.mesh);
+    let bytes = read_design_file(path)?;
+    let parsed = craft::parse(&DesignFile {
+        name: path,
+        bytes: &bytes,
+    })?;
+    // The mesh is named relative to the design's folder.
+    let mesh_path = mesh_path_beside(path, &parsed.mesh_name());
     let mesh = read_mesh(&mesh_path).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
-    let reference =
-        ReferenceMesh::new(&mesh).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
-    eprintln!(
-        "foldcam: {} cut lines, {} placed and {} generated patches on a mesh of {} triangles",
-        design.cut_lines.len(),
-        design.patches.len(),
-        design.auto_patches.len(),
-        reference.triangle_count()
-    );
-    let made = design.build(&reference).map_err(|e| err(&e))?;
-    for r in &made.auto {
-        for &(q, e, gap) in &r.gaps {
-            let warn = if gap > design.tolerance {
-                " (above the tolerance: the patches cannot meet on one cylinder)"
-            } else {
-                ""
-            };
-            eprintln!(
-                "foldcam: patch {} ({} control points, fit residual {:.2e}) meets patch {q} \
-                 on cut line {e} with a gap of {gap:.2e}{warn}",
-                r.patch, r.control_points, r.fit_residual
-            );
-        }
-    }
+    let made = craft::build(parsed, &mesh_path, &mesh, &mut DesignProgress::default())?;
     // Every sheet's files are made first and written together: all of them, or none.
     let profiles = match (&args.out.machine, &args.out.material) {
         (Some(machine), Some(material)) => Some(job_options(&args, machine, material)?),
@@ -131,7 +113,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let job_path = args.job.as_ref().unwrap_or(&args.out.output);
     let mut outputs = OutputSet::new();
     let mut plans = Vec::new();
-    for (s, cp) in made.sheets.iter().enumerate() {
+    for (s, cp) in made.made.sheets.iter().enumerate() {
         if let Some((m, x, o)) = &profiles {
             let sheet = sheet_path(job_path, s);
             let p = plan(cp, m, x, o).with_context(|| sheet.display().to_string())?;
@@ -159,19 +141,11 @@ pub fn run(args: Args) -> Result<Outcome> {
     for p in &plans {
         print!("{}", super::plan::summary(p));
     }
-    if !made.unlabelled.is_empty() {
-        eprintln!(
-            "foldcam: no room for the edge labels of cut lines {:?} (lower label_height)",
-            made.unlabelled
-        );
+    for line in &made.late_notes {
+        eprintln!("foldcam: {line}");
     }
-    let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
-    let dropped: usize = made.parts.iter().map(|p| p.dropped_tabs).sum();
-    println!(
-        "{}: {} parts, {tabs} tabs ({dropped} left out), {} sheet(s)",
-        path.display(),
-        made.parts.len(),
-        made.sheets.len()
-    );
+    for line in &made.summary {
+        println!("{line}");
+    }
     Ok(Outcome::Done)
 }

@@ -4,12 +4,14 @@ use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
 use clap::Subcommand;
-use foldcam::design::popup::fit::{CLOSED_SLACK_MM, Fitted, fit_voxel_card};
-use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card, format_voxel_card};
+use foldcam::design::popup::voxel::format_voxel_card;
+use foldcam::design::source::{DesignFile, DesignKind, read_design_file, voxel};
 use foldcam::formats::OutputSet;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
+use super::design_output::built;
+use super::progress::DesignProgress;
 
 /// Pop-up card designers.
 #[derive(Subcommand)]
@@ -76,46 +78,21 @@ pub fn run(command: Command) -> Result<Outcome> {
 }
 
 fn voxel(args: VoxelArgs) -> Result<Outcome> {
-    let card = super::popup_input::load_card(&args.input, &args.model)?;
-    let report = check_popup(&card);
-    if !report.passed() {
-        println!("{}: the card would not pop up", args.input.display());
-        for problem in report.problems.iter().take(40) {
-            println!("  {problem}");
-        }
-        if report.problems.len() > 40 {
-            println!("  … and {} more front faces", report.problems.len() - 40);
-        }
-        if !is_voxel_text(&args.input) {
-            println!(
-                "  try: a smaller --morphology (now {}; 3 is the paper's, 1 turns bump removal \
-                 off), another --resolution (now {}), or --thin-top 0",
-                args.model.morphology, args.model.resolution
-            );
-        }
-        return Ok(Outcome::CheckFailed);
-    }
-    let card = if args.fit {
-        match fit_voxel_card(&card) {
-            Ok(fitted) => {
-                report_fit(&args.input, &fitted, "margin");
-                fitted.card
-            }
-            Err(e) => {
-                println!("{}: {e}", args.input.display());
-                return Ok(Outcome::CheckFailed);
-            }
-        }
-    } else {
-        card
+    let bytes = read_design_file(&args.input)?;
+    let file = DesignFile {
+        name: &args.input,
+        bytes: &bytes,
     };
-    let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
-    let closed = fold_card(&card, &cp, 0.0).state;
-    let hint = "try another --resolution, a larger --thin-top (or 0 to keep every top), or a \
-                smaller --morphology";
-    if !card_holds(&args.input, &cp, &closed, args.fit, hint, |_| true) {
-        return Ok(Outcome::CheckFailed);
-    }
+    let mesh = match DesignKind::recognise(&args.input, &bytes) {
+        Some(DesignKind::Mesh) => Some(file.mesh()?),
+        _ => None,
+    };
+    let options = args.model.options(args.fit);
+    let mut progress = DesignProgress::default();
+    let design = match built(voxel::build(&file, mesh.as_ref(), &options, &mut progress))? {
+        Ok(design) => design,
+        Err(outcome) => return Ok(outcome),
+    };
     // The pattern, pictures and voxel model are written together: all of them, or none.
     let mut outputs = OutputSet::new();
     card_previews(
@@ -123,90 +100,17 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
         args.png.as_ref(),
         args.gif.as_ref(),
         args.width,
-        |angle| fold_card(&card, &cp, angle).state,
+        |angle| design.fold_at(angle),
     )?;
     if let Some(path) = &args.save_voxels {
-        outputs.add(path, format_voxel_card(&card).into_bytes());
+        outputs.add(path, format_voxel_card(&design.card).into_bytes());
     }
-    args.out.stage(&mut outputs, &cp, None)?;
+    args.out.stage(&mut outputs, &design.pattern, None)?;
     super::input::commit(outputs, &[&args.input])?;
-    let (w, h) = card.sheet_mm();
-    println!(
-        "{}: {} × {} × {} cells of {:.3} mm, sheet {w:.1} × {h:.1} mm, pops up",
-        args.input.display(),
-        card.nx(),
-        card.ny(),
-        card.nz(),
-        card.cell_mm()
-    );
+    for line in &design.summary {
+        println!("{line}");
+    }
     Ok(Outcome::Done)
-}
-
-/// Says what `--fit` added, if anything.
-pub fn report_fit<T>(input: &std::path::Path, fitted: &Fitted<T>, what: &str) {
-    if let Some(o) = fitted.before {
-        eprintln!(
-            "foldcam: {}: folded shut, the card reached {:.1} mm beyond its outline (at x = \
-             {:.1}, y = {:.1} mm of the closed card); --fit added {:.0} mm to the {what}",
-            input.display(),
-            o.beyond_mm,
-            o.at.x,
-            o.at.y,
-            fitted.added_mm
-        );
-    }
-}
-
-/// Whether `path` is a voxel text file (no conversion options apply to it).
-fn is_voxel_text(path: &std::path::Path) -> bool {
-    path.to_string_lossy().to_lowercase().ends_with(".txt")
-}
-
-/// Checks that a card holds together and closes within its outline
-/// ([`foldcam::design::popup::integrity`]); prints what is wrong. Loose pieces refuse the
-/// card; an overhang when closed warns, or refuses with `fit`. Returns whether to go on.
-pub fn card_holds(
-    input: &std::path::Path,
-    cp: &foldcam::pattern::CreasePattern,
-    closed: &foldcam::pattern::FoldedState,
-    fit: bool,
-    hint: &str,
-    paper: impl Fn(&foldcam::pattern::Face) -> bool,
-) -> bool {
-    use foldcam::design::popup::integrity::{closed_overhang, loose_pieces_where};
-    let loose = loose_pieces_where(cp, paper);
-    if !loose.is_empty() {
-        println!(
-            "{}: the card would lose {} piece(s): {hint}",
-            input.display(),
-            loose.len()
-        );
-        for piece in loose.iter().take(20) {
-            println!("  {piece}");
-        }
-        return false;
-    }
-    let Some(o) = closed_overhang(closed).filter(|o| o.beyond_mm > CLOSED_SLACK_MM) else {
-        return true;
-    };
-    let (lo, hi) = o.outline;
-    let message = format!(
-        "{}: folded shut, the card reaches {:.1} mm beyond its {:.1} × {:.1} mm outline (at \
-         x = {:.1}, y = {:.1} mm of the closed card)",
-        input.display(),
-        o.beyond_mm,
-        hi.x - lo.x,
-        hi.y - lo.y,
-        o.at.x,
-        o.at.y
-    );
-    if fit {
-        println!("{message}: make the model smaller or the card larger");
-        false
-    } else {
-        eprintln!("foldcam: warning: {message}; --fit adds the paper it needs");
-        true
-    }
 }
 
 /// The PNG of a card standing at 90° and the GIF of it opening, as asked for, rendered

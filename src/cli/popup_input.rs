@@ -1,17 +1,10 @@
-//! Where a voxel card comes from: the text format, a height-map PNG, or an OBJ/STL mesh put
-//! through the mesh conversion of Mitani, Suzuki & Uno (2003), section 3 (depth from the front,
-//! bump removal, filling under overhangs (their eq. 7), windows, thin tops).
+//! The flags of `popup voxel` that say how a height map or an OBJ/STL mesh becomes a card
+//! (the mesh conversion of Mitani, Suzuki & Uno (2003), section 3, in
+//! [`foldcam::design::source::voxel`]).
 
-use std::path::Path;
-
-use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
-use foldcam::design::popup::voxel::{
-    ConvertOptions, ConvertReport, DepthField, DepthMap, MeshPlacement, UpAxis, VoxelCard,
-    card_from_depths, depth_field_from_mesh, parse_voxel_card,
-};
-use foldcam::formats::read_text;
-
+use foldcam::design::popup::voxel::UpAxis;
+use foldcam::design::source::VoxelOptions;
 use foldcam::limits;
 
 /// The mesh's up axis.
@@ -65,90 +58,25 @@ pub struct ModelArgs {
     pub thin_top: usize,
 }
 
-/// Loads or builds the card `path` describes.
-pub fn load_card(path: &Path, args: &ModelArgs) -> Result<VoxelCard> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .unwrap_or_default();
-    let at = |e: &dyn std::fmt::Display| anyhow!("{}: {e}", path.display());
-    let field = match ext.as_str() {
-        "png" => {
-            if args.depth == 0 {
-                bail!("--depth must be at least 1 cell");
-            }
-            let image = image::open(path).map_err(|e| at(&e))?;
-            let grey = image.to_luma16();
-            let map = DepthMap {
-                width: grey.width() as usize,
-                height: grey.height() as usize,
-                levels: grey.as_raw(),
-            };
-            DepthField::from_grey(map, args.depth).map_err(|e| at(&e))?
+impl ModelArgs {
+    /// The library's options for these flags, fitting when `fit`.
+    pub fn options(&self, fit: bool) -> VoxelOptions {
+        VoxelOptions {
+            resolution: usize::try_from(self.resolution).unwrap_or(usize::MAX),
+            up: match self.up {
+                Up::Z => UpAxis::Z,
+                Up::Y => UpAxis::Y,
+            },
+            keep_depth: self.keep_depth,
+            depth: self.depth,
+            cell_mm: self.cell_mm,
+            card_width: self.card_width,
+            card_margin: self.card_margin,
+            morphology: self.morphology,
+            windows: !self.no_windows,
+            window_gap: self.window_gap,
+            thin_top: self.thin_top,
+            fit,
         }
-        "obj" | "stl" => {
-            let mesh = foldcam::mesh::read_mesh(path).map_err(|e| at(&e))?;
-            let placement = MeshPlacement {
-                up: match args.up {
-                    Up::Z => UpAxis::Z,
-                    Up::Y => UpAxis::Y,
-                },
-                resolution: usize::try_from(args.resolution).unwrap_or(usize::MAX),
-                keep_depth: args.keep_depth,
-            };
-            let started = std::time::Instant::now();
-            let (field, _) = depth_field_from_mesh(&mesh, &placement).map_err(|e| at(&e))?;
-            eprintln!(
-                "foldcam: {} faces seen from the front as {} × {} × {} cells in {:.1?}",
-                mesh.faces().len(),
-                field.nx,
-                field.ny,
-                field.nz,
-                started.elapsed()
-            );
-            field
-        }
-        _ => {
-            let text = read_text(path)?;
-            return parse_voxel_card(&text).map_err(|e| at(&e));
-        }
-    };
-    let cell_mm = args.cell_mm.unwrap_or(args.card_width / field.nx as f64);
-    eprintln!(
-        "foldcam: building a card of {} × {} × {} cells: {} (estimated)",
-        field.nx,
-        field.ny,
-        field.nz,
-        foldcam::design::popup::voxel::estimate::conversion_estimate(&field)
-    );
-    let options = ConvertOptions {
-        element: args.morphology,
-        windows: !args.no_windows,
-        window_gap: args.window_gap,
-        thin_top: args.thin_top,
-    };
-    let bar = super::progress::spinner("building the card");
-    let built = card_from_depths(&field, cell_mm, &options);
-    bar.finish_and_clear();
-    let (mut card, report) = built.map_err(|e| at(&e))?;
-    card.set_margin_mm(args.card_margin)
-        .map_err(|e| anyhow!("--card-margin: {e}"))?;
-    progress(&report);
-    Ok(card)
-}
-
-fn progress(r: &ConvertReport) {
-    eprintln!(
-        "foldcam: bumps removed ({} cells changed) in {:.1?}",
-        r.smoothed_cells, r.smoothing_time
-    );
-    eprintln!(
-        "foldcam: filling under overhangs added {} voxels in {} rows; {} of {} candidate rows became windows; {:.1?}",
-        r.added_cells, r.filled_rows, r.window_rows, r.window_candidates, r.constraint_time
-    );
-    eprintln!(
-        "foldcam: {} of {} thin top faces left out; {} pop-up checks; {:.1?}",
-        r.tops_omitted, r.thin_tops, r.checks, r.thin_top_time
-    );
+    }
 }

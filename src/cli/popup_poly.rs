@@ -2,13 +2,13 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, anyhow};
-use foldcam::design::popup::polygon::{
-    Replay, crease_pattern, fold_card, holds_paper, parse_design,
-};
-use foldcam::formats::{OutputSet, read_text};
+use anyhow::Result;
+use foldcam::design::source::{DesignFile, PolyOptions, poly, read_design_file};
+use foldcam::formats::OutputSet;
 
 use super::Outcome;
+use super::design_output::built;
+use super::progress::DesignProgress;
 
 /// Make a pop-up card from a polygon design.
 #[derive(clap::Args)]
@@ -50,39 +50,17 @@ pub struct PolyArgs {
 /// Runs `popup poly`.
 pub fn run(args: PolyArgs) -> Result<Outcome> {
     let path = &args.design;
-    let text = read_text(path)?;
-    let design = parse_design(&text).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    let design = if args.fit {
-        match foldcam::design::popup::fit::fit_design(&design) {
-            Ok(fitted) => {
-                super::popup::report_fit(path, &fitted, "back sheet");
-                fitted.card
-            }
-            Err(e) => {
-                println!("{}: {e}", path.display());
-                return Ok(Outcome::CheckFailed);
-            }
-        }
-    } else {
-        design
+    let bytes = read_design_file(path)?;
+    let file = DesignFile {
+        name: path,
+        bytes: &bytes,
     };
-    eprintln!("foldcam: replaying {} operations", design.operations.len());
-    let replay = design
-        .replay()
-        .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    if !replay.report.passed() {
-        report_failure(&args, &replay);
-        return Ok(Outcome::CheckFailed);
-    }
-    let card = replay.card;
-    let cp = crease_pattern(&card).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    let closed = fold_card(&card, &cp, 0.0).state;
-    let hint = "join every face to the card through a fold (move or grow the face that is cut \
-                free)";
-    let paper = |f: &foldcam::pattern::Face| holds_paper(&card, &cp, f);
-    if !super::popup::card_holds(path, &cp, &closed, args.fit, hint, paper) {
-        return Ok(Outcome::CheckFailed);
-    }
+    let options = PolyOptions { fit: args.fit };
+    let mut progress = DesignProgress::default();
+    let design = match built(poly::build(&file, &options, &mut progress))? {
+        Ok(design) => design,
+        Err(outcome) => return Ok(outcome),
+    };
     // The pattern and its pictures are written together: all of them, or none.
     let mut outputs = OutputSet::new();
     super::popup::card_previews(
@@ -90,42 +68,12 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
         args.png.as_ref(),
         args.gif.as_ref(),
         args.width,
-        |angle| fold_card(&card, &cp, angle).state,
+        |angle| design.fold_at(angle),
     )?;
-    args.out.stage(&mut outputs, &cp, None)?;
+    args.out.stage(&mut outputs, &design.pattern, None)?;
     super::input::commit(outputs, &[path])?;
-    let (w, d, h) = card.size_mm();
-    let faces = card
-        .faces()
-        .iter()
-        .filter(|f| !f.polygon.is_empty())
-        .count();
-    println!(
-        "{}: {} operations, {faces} faces, sheet {w:.1} × {:.1} mm (base {d:.1}, back {h:.1}), pops up",
-        path.display(),
-        design.operations.len(),
-        d + h
-    );
+    for line in &design.summary {
+        println!("{line}");
+    }
     Ok(Outcome::Done)
-}
-
-/// Prints the operation after which the card became invalid and the failing faces.
-fn report_failure(args: &PolyArgs, replay: &Replay) {
-    let after = replay.became_invalid_after.unwrap_or(0);
-    println!(
-        "{}: the card would not pop up; it became invalid at operation {after}",
-        args.design.display()
-    );
-    for problem in replay.report.problems.iter().take(40) {
-        let face = problem.piece.face;
-        let from = if face >= 2 {
-            format!(" (operation {})", face - 1)
-        } else {
-            String::new()
-        };
-        println!("  {problem}{from}");
-    }
-    if replay.report.problems.len() > 40 {
-        println!("  … and {} more faces", replay.report.problems.len() - 40);
-    }
 }

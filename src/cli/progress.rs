@@ -36,3 +36,56 @@ fn target() -> ProgressDrawTarget {
         ProgressDrawTarget::stderr()
     }
 }
+
+/// What a design build ([`foldcam::design::source`]) says while it runs, on standard error:
+/// notes as `foldcam: …` lines, long work as a spinner, or as a bar over `iterations` when
+/// the solver's iterations are counted (each iteration's line printed above the bar).
+#[derive(Default)]
+pub struct DesignProgress {
+    /// The solver's iteration cap, when a bar should count iterations.
+    pub iterations: Option<u64>,
+    bar: Option<ProgressBar>,
+}
+
+impl DesignProgress {
+    /// A bar over `iterations` solver iterations while solving.
+    pub fn counting(iterations: u64) -> DesignProgress {
+        DesignProgress {
+            iterations: Some(iterations),
+            bar: None,
+        }
+    }
+}
+
+impl foldcam::design::source::Progress for DesignProgress {
+    fn note(&mut self, line: String) {
+        match &self.bar {
+            Some(bar) => bar.suspend(|| eprintln!("foldcam: {line}")),
+            None => eprintln!("foldcam: {line}"),
+        }
+    }
+
+    fn busy(&mut self, what: &str) {
+        self.bar = Some(match self.iterations {
+            Some(n) => bar(n, what),
+            None => spinner(what),
+        });
+    }
+
+    fn idle(&mut self) {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
+        }
+    }
+
+    fn iteration(&mut self, it: &foldcam::design::tessellation::Iteration) {
+        let line = foldcam::design::source::tessellate::iteration_line(it);
+        match &self.bar {
+            Some(bar) => {
+                bar.set_position(it.index as u64);
+                bar.suspend(|| eprintln!("{line}"));
+            }
+            None => eprintln!("{line}"),
+        }
+    }
+}

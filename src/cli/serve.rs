@@ -13,7 +13,9 @@ use super::Outcome;
 #[command(
     long_about = "Serves the foldcam studio, a web page on this machine: open a pattern (the \
                   files given here, or any FOLD, SVG, .cp, .opx or DXF file dropped on the \
-                  page), see it with its check findings ringed, fold it in 3D with a slider \
+                  page) or a design file the design commands read (a .voxel.txt, height-map \
+                  .png, .popup.toml, fold-script .toml, .craft.toml with its mesh, or an OBJ/STL \
+                  mesh made into a tessellation or a pop-up card), see it with its check findings ringed, fold it in 3D with a slider \
                   (the bar-and-hinge simulation of Ghassaei, Demaine & Gershenfeld 2018), choose \
                   a machine and material, see the toolpath and its time, and download the job \
                   files exactly as `foldcam cut` writes them. The server reads only the files \
@@ -23,7 +25,8 @@ use super::Outcome;
                   foldcam serve --port 0"
 )]
 pub struct Args {
-    /// Pattern files to offer in the studio (the only files it reads from disk).
+    /// Pattern or design files to offer in the studio (the only files it reads from disk; a
+    /// .craft.toml's mesh is read only when it is named here too).
     pub files: Vec<PathBuf>,
     /// Port to listen on (0 picks a free one).
     #[arg(long, default_value_t = studio::DEFAULT_PORT)]

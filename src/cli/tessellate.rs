@@ -4,11 +4,13 @@ use std::path::PathBuf;
 
 use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
-use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
-use foldcam::design::tessellation::{
-    FitOptions, Limits, SHRINK_LADDER, StarOptions, TessellateOptions, Tessellation, TuckKind,
-    TuckLayout, TuckShape, tessellate_shrinking,
+use foldcam::design::source::SourceError;
+use foldcam::design::source::tessellate::{
+    DEFAULT_MAX_FOLD_DEG, DEFAULT_MIN_VERTEX_DEG, MAX_ITERATIONS, TessellationOptions,
+    tessellate_mesh,
 };
+use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
+use foldcam::design::tessellation::{TuckKind, TuckLayout};
 use foldcam::formats::OutputSet;
 use foldcam::machine::load_material;
 use foldcam::mesh::read_mesh;
@@ -16,6 +18,7 @@ use foldcam::render::{PreviewOptions, View3d, preview_png, render_folded_png};
 
 use super::Outcome;
 use super::args::degrees;
+use super::progress::DesignProgress;
 
 /// Tuck structure (Tachi 2014, sections 2.1 and 2.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -116,135 +119,52 @@ pub struct Args {
 
 /// Runs `foldcam tessellate`.
 pub fn run(args: Args) -> Result<Outcome> {
-    if args.max_iterations == 0 || args.max_iterations > 100_000 {
-        bail!("--max-iterations must be between 1 and 100000");
+    if args.max_iterations == 0 || args.max_iterations > MAX_ITERATIONS {
+        bail!("--max-iterations must be between 1 and {MAX_ITERATIONS}");
     }
     let mesh = read_mesh(&args.mesh).map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
-    let (mut fold, mut corner) = (165.0, 30.0);
+    let (mut fold, mut corner) = (DEFAULT_MAX_FOLD_DEG, DEFAULT_MIN_VERTEX_DEG);
     if let Some(name) = &args.out.material {
         let m = load_material(name)?;
         (fold, corner) = (m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg);
     }
-    let limits = Limits::from_degrees(
-        args.max_fold_angle.unwrap_or(fold),
-        args.min_vertex_angle.unwrap_or(corner),
-    );
-    let mut opts = TessellateOptions::with_limits(limits);
-    opts.star = StarOptions {
-        shrink: args.shrink.unwrap_or(SHRINK_LADDER[0]),
+    let options = TessellationOptions {
+        tuck: match args.tuck {
+            Tuck::Star => TuckKind::Star,
+            Tuck::Truncated => TuckKind::Truncated,
+            Tuck::Twisted => TuckKind::Twisted,
+            Tuck::Twist => TuckKind::TwistFold,
+        },
         layout: match args.layout {
             Layout::Auto => TuckLayout::Auto,
             Layout::Checkerboard => TuckLayout::Checkerboard,
             Layout::Digon => TuckLayout::Digon,
         },
-        tuck: TuckShape {
-            kind: match args.tuck {
-                Tuck::Star => TuckKind::Star,
-                Tuck::Truncated => TuckKind::Truncated,
-                Tuck::Twisted => TuckKind::Twisted,
-                Tuck::Twist => TuckKind::TwistFold,
-            },
-            truncation: args.truncation,
-            twist: args.twist.to_radians(),
-        },
-        max_star_points: None,
+        shrink: args.shrink,
+        truncation: args.truncation,
+        twist_deg: args.twist,
+        max_fold_angle_deg: args.max_fold_angle.unwrap_or(fold),
+        min_vertex_angle_deg: args.min_vertex_angle.unwrap_or(corner),
+        ground: args.ground,
+        fit: args.fit,
+        max_iterations: args.max_iterations,
     };
-    opts.solve.max_iterations = args.max_iterations;
-    opts.ground = args.ground;
-    if let Some(weight) = args.fit {
-        if !(0.0..=1.0).contains(&weight) {
-            bail!("--fit must be a weight between 0 and 1, got {weight}");
-        }
-        opts.fit = Some(FitOptions {
-            weight,
-            ..FitOptions::default()
-        });
-    }
-    eprintln!(
-        "foldcam: {}: {} faces; solving (fold <= {fold:.1} deg, vertex angle >= {corner:.1} deg)",
-        args.mesh.display(),
-        mesh.faces().len(),
-        fold = limits.max_fold.to_degrees(),
-        corner = limits.min_vertex_angle.to_degrees(),
-    );
-    let shrinks = args.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
-    eprintln!(
-        "foldcam: estimate: {} per solve, up to {} solve(s) (one per face shrink tried)",
-        foldcam::design::tessellation::estimate::solve_estimate(mesh.faces().len()),
-        shrinks.len()
-    );
-    let bar = super::progress::bar(args.max_iterations as u64, "solving");
-    let retry = |s: f64, t: &Tessellation| {
-        if args.shrink.is_none() {
-            let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
-                "trying a smaller shrink"
-            } else {
-                "no shrink worked; reporting the first"
-            };
-            eprintln!(
-                "foldcam: shrink {s}: {}; {next}",
-                t.problem().unwrap_or_default()
-            );
-        }
+    let mut progress = DesignProgress::counting(args.max_iterations as u64);
+    let result = tessellate_mesh(&args.mesh, &mesh, &options, &mut progress);
+    // The report is printed whether or not the result is usable.
+    let lines: &[String] = match &result {
+        Ok(t) => &t.summary,
+        Err(SourceError::NotMade { lines }) => lines,
+        Err(_) => &[],
     };
-    let t = tessellate_shrinking(&mesh, &opts, &shrinks, retry, |it| {
-        bar.set_position(it.index as u64);
-        bar.suspend(|| eprintln!(
-            "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \
-             active limits {}, corner penalties {}, step {}",
-            it.index,
-            it.residuals.developability,
-            it.residuals.max_fold.to_degrees(),
-            it.residuals.min_vertex_angle.to_degrees(),
-            it.active[1] + it.active[2] + it.active[3],
-            it.active[6],
-            it.step
-        ));
-    });
-    bar.finish_and_clear();
-    let t = t.map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
-    println!(
-        "{}: {} layout, {} tucks, shrink {}, {} vertices, {} triangles, {} interior vertices",
-        args.mesh.display(),
-        t.initial.layout,
-        opts.star.tuck.kind,
-        t.initial.shrink,
-        t.mesh.positions.len(),
-        t.mesh.triangles.len(),
-        t.mesh.interior_count()
-    );
-    println!("{}", t.summary());
-    for v in &t.infeasible {
-        println!("  cannot meet the limits: {}", v.describe());
+    for line in lines {
+        println!("{line}");
     }
-    // The worst few places of each unmet condition (the list is sorted by condition).
-    const SHOWN: usize = 4;
-    for group in t.unmet.chunk_by(|a, b| a.condition == b.condition) {
-        for v in group.iter().take(SHOWN) {
-            println!("  unmet: {}", v.describe());
-        }
-        if group.len() > SHOWN {
-            println!("  ... and {} more input vertices", group.len() - SHOWN);
-        }
-    }
-    if let Some(fit) = &t.fit {
-        println!(
-            "surface fit: distance {:.4e} -> {:.4e} in {} rounds",
-            fit.initial, fit.last, fit.accepted
-        );
-    }
-    let unfolded = match (t.problem(), t.unfolded) {
-        (None, Ok(u)) => u,
-        (problem, unfolded) => {
-            let why = problem.or(unfolded.err().map(|e| e.to_string()));
-            println!("nothing written: {}", why.unwrap_or_default());
-            return Ok(Outcome::CheckFailed);
-        }
+    let unfolded = match result {
+        Ok(t) => t.unfolded,
+        Err(SourceError::NotMade { .. }) => return Ok(Outcome::CheckFailed),
+        Err(e) => return Err(e.into()),
     };
-    println!(
-        "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
-        unfolded.max_length_error
-    );
     if let Some(steps) = args.rigid {
         let opts = RigidOptions {
             steps,

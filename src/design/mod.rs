@@ -5,4 +5,5 @@ pub mod estimate;
 pub mod folding;
 pub mod papercraft;
 pub mod popup;
+pub mod source;
 pub mod tessellation;

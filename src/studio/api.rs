@@ -3,8 +3,8 @@
 //! | route | does |
 //! | --- | --- |
 //! | `GET /api/files` | the files named on the command line (index and name) |
-//! | `POST /api/files/{index}` | opens one of them: the pattern view |
-//! | `POST /api/upload?name=N` | reads the body as a file named `N`: the pattern view |
+//! | `POST /api/files/{index}[?make=M]` | opens one of them: the pattern view |
+//! | `POST /api/upload?name=N[&make=M][&with=W]` | reads the body as a file named `N` (a pattern or a design file, see [`design_open`]; `M` what a mesh becomes; `W` the files sent after it, JSON `[{name, size}]`): the pattern view |
 //! | `POST /api/docs/{id}/edit` | applies one edit (JSON [`Edit`]): the new version's view |
 //! | `POST /api/docs/{id}/undo`, `…/redo` | steps back or forward through the edits |
 //! | `POST /api/docs/{id}/snap` | snaps a pointer position (JSON `point` and [`SnapOptions`]) |
@@ -39,6 +39,7 @@ use serde_json::{Value, json};
 
 use super::StudioConfig;
 use super::assets;
+use super::design_open;
 use super::document::{Document, PatternView};
 use super::edit_api;
 use super::flat::{FlatView, flat_view};
@@ -47,6 +48,7 @@ use super::settings::UploadedProfiles;
 use crate::check::fold3d::{FoldOptions, fold};
 use crate::check::layers::{LayerOptions, check_layers};
 use crate::check::{CheckOptions, check_with_frame};
+use crate::design::source::MeshUse;
 use crate::pattern::Assignment;
 use crate::pattern::edit::EditReport;
 
@@ -372,11 +374,32 @@ pub(super) fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
     }))
 }
 
+/// How to open a file: what a mesh becomes (`auto`, `tessellation`, `popup`).
+#[derive(Deserialize)]
+struct OpenQuery {
+    make: Option<String>,
+}
+
+fn mesh_use(make: Option<&str>) -> ApiResult<MeshUse> {
+    match make {
+        None => Ok(MeshUse::Auto),
+        Some(m) => MeshUse::from_name(m).ok_or_else(|| {
+            ApiError::new(
+                StatusCode::BAD_REQUEST,
+                format!("make={m}: expected auto, tessellation or popup"),
+            )
+        }),
+    }
+}
+
 async fn open_file(
     State(s): State<Arc<Studio>>,
     index: Result<Path<usize>, PathRejection>,
+    query: Result<Query<OpenQuery>, QueryRejection>,
 ) -> ApiResult<Json<Opened>> {
     let Path(index) = index?;
+    let Query(q) = query?;
+    let make = mesh_use(q.make.as_deref())?;
     let path = s.config.files.get(index).cloned().ok_or_else(|| {
         ApiError::new(
             StatusCode::NOT_FOUND,
@@ -384,15 +407,23 @@ async fn open_file(
         )
     })?;
     blocking(move || {
-        let doc = Document::open(&path).map_err(ApiError::input)?;
-        opened(&s, doc)
+        let doc = if design_open::is_design(&path) {
+            design_open::open_path(&path, &s.config.files, make)
+        } else {
+            Document::open(&path)
+        };
+        opened(&s, doc.map_err(ApiError::input)?)
     })
     .await
 }
 
+/// `name`: the file's name; `make`: what a mesh becomes; `with`: the files sent after it in
+/// the same body (a JSON list of `{name, size}`), e.g. a paper craft's mesh.
 #[derive(Deserialize)]
 struct UploadQuery {
     name: String,
+    make: Option<String>,
+    with: Option<String>,
 }
 
 async fn upload(
@@ -403,6 +434,12 @@ async fn upload(
 ) -> ApiResult<Json<Opened>> {
     let Query(q) = query?;
     let name = upload_name(&q.name);
+    let make = mesh_use(q.make.as_deref())?;
+    let parts: Vec<design_open::Part> = match &q.with {
+        None => Vec::new(),
+        Some(w) => serde_json::from_str(w)
+            .map_err(|e| ApiError::new(StatusCode::BAD_REQUEST, format!("with={w}: {e}")))?,
+    };
     let limit = s.config.max_upload_bytes;
     let too_large = || {
         ApiError::new(
@@ -427,8 +464,14 @@ async fn upload(
         }
     })?;
     blocking(move || {
-        let doc = Document::from_upload(&name, &body).map_err(ApiError::input)?;
-        opened(&s, doc)
+        let (main, companions) =
+            design_open::split_body(&name, &body, &parts).map_err(ApiError::input)?;
+        let doc = if design_open::is_design(std::path::Path::new(&name)) {
+            design_open::open_upload(&name, main, &companions, make)
+        } else {
+            Document::from_upload(&name, main)
+        };
+        opened(&s, doc.map_err(ApiError::input)?)
     })
     .await
 }

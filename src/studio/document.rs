@@ -8,6 +8,7 @@ use glam::DVec2;
 use serde::Serialize;
 
 use crate::check::AssignmentCounts;
+use crate::design::source::Design;
 use crate::formats::{self, Format, FormatError, Imported, ReadOptions};
 use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions, Units, planarize};
 
@@ -19,8 +20,19 @@ pub struct Document {
     pub name: String,
     /// The pattern as read, before cleaning.
     pub imported: Imported,
+    /// For a design file: what was made of it, and the lines the matching command prints.
+    pub design: Option<DesignNote>,
     /// The cleaning without faces, done once (snapping asks for it on every pointer move).
     clean: OnceLock<Result<Cleaned, String>>,
+}
+
+/// What a design file became ([`crate::design::source`]).
+#[derive(Clone, Debug)]
+pub struct DesignNote {
+    /// What was made (e.g. "origami tessellation (Tachi 2014)").
+    pub made: &'static str,
+    /// What the build said: its notes, then the command's summary lines.
+    pub lines: Vec<String>,
 }
 
 /// The pattern after cleaning, with what cleaning had to say.
@@ -30,8 +42,11 @@ pub struct Cleaned {
     pub pattern: CreasePattern,
     /// The folded state, kept only when cleaning changed nothing.
     pub folded: Option<FoldedState>,
-    /// What `foldcam` prints on stderr about the reading and cleaning, without `foldcam: `.
+    /// What `foldcam` prints on stderr about the reading and cleaning, without `foldcam: `
+    /// (for a design file, what the build said first).
     pub messages: Vec<String>,
+    /// For a design file, what was made of it.
+    pub made: Option<&'static str>,
 }
 
 impl Document {
@@ -91,6 +106,34 @@ impl Document {
         Document::new(name.to_string(), imported)
     }
 
+    /// A design built by [`crate::design::source::build_design`], named `name`; `notes` are
+    /// what the build said while it ran.
+    ///
+    /// # Errors
+    /// A design with no edges.
+    pub fn from_design(
+        name: String,
+        design: Design,
+        notes: Vec<String>,
+    ) -> Result<Document, String> {
+        let mut doc = Document::new(
+            name,
+            Imported {
+                pattern: design.pattern,
+                folded: design.folded,
+                warnings: Vec::new(),
+                notes: Vec::new(),
+            },
+        )?;
+        let mut lines = notes;
+        lines.extend(design.summary);
+        doc.design = Some(DesignNote {
+            made: design.made,
+            lines,
+        });
+        Ok(doc)
+    }
+
     /// The document after an edit: `pattern` (planar, from [`crate::pattern::edit`]) replaces
     /// the pattern as read; the folded state read with the file no longer applies and goes.
     pub fn edited(&self, pattern: CreasePattern) -> Document {
@@ -102,6 +145,11 @@ impl Document {
                 warnings: self.imported.warnings.clone(),
                 notes: self.imported.notes.clone(),
             },
+            // What was made stays; the build's report no longer describes the pattern.
+            design: self.design.as_ref().map(|d| DesignNote {
+                made: d.made,
+                lines: Vec::new(),
+            }),
             clean: OnceLock::new(),
         }
     }
@@ -116,6 +164,7 @@ impl Document {
         Ok(Document {
             name,
             imported,
+            design: None,
             clean: OnceLock::new(),
         })
     }
@@ -147,10 +196,15 @@ impl Document {
     fn clean_now(&self, faces: bool) -> Result<Cleaned, String> {
         let name = &self.name;
         let mut messages: Vec<String> = self
-            .imported
-            .warnings
+            .design
             .iter()
-            .map(|w| format!("warning: {name}: {w}"))
+            .flat_map(|d| d.lines.iter().cloned())
+            .chain(
+                self.imported
+                    .warnings
+                    .iter()
+                    .map(|w| format!("warning: {name}: {w}")),
+            )
             .chain(self.imported.notes.iter().map(|n| format!("{name}: {n}")))
             .collect();
         let mut pattern = self.imported.pattern.clone();
@@ -188,6 +242,7 @@ impl Document {
             pattern,
             folded,
             messages,
+            made: self.design.as_ref().map(|d| d.made),
         })
     }
 }
@@ -218,6 +273,9 @@ pub struct PatternView {
     pub counts: Counts,
     /// What reading and cleaning reported.
     pub messages: Vec<String>,
+    /// For a design file, what was made of it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub made: Option<&'static str>,
 }
 
 /// Counts shown in the page.
@@ -254,6 +312,7 @@ impl PatternView {
                 assignments: AssignmentCounts::of(cp),
             },
             messages: cleaned.messages.clone(),
+            made: cleaned.made,
         }
     }
 }

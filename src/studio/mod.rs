@@ -1,11 +1,13 @@
 //! `foldcam serve`: the local web studio. A small HTTP server (axum on tokio) serves a front
 //! end embedded in the binary ([`assets`]) and a JSON API over the library ([`api`]): open a
-//! pattern, check it, fold it in 3D, plan it for a machine and download the job files exactly
+//! pattern or a design file ([`design_open`]), check it, fold it in 3D, plan it for a machine and download the job files exactly
 //! as `foldcam cut` writes them.
 //!
 //! # What the server reads
 //! Only the files named on the command line (by their index in [`StudioConfig::files`]) and
-//! uploads (request bodies of at most [`StudioConfig::max_upload_bytes`]). No request names a
+//! uploads (request bodies of at most [`StudioConfig::max_upload_bytes`]). A paper-craft
+//! design's mesh is read only when it is itself among those files or uploaded with the design
+//! ([`design_open`]). No request names a
 //! path on disk: machine and material profiles are chosen among the shipped ones by name, and
 //! static files come from the embedded table, so `..` in a URL reaches nothing.
 //!
@@ -16,6 +18,7 @@
 
 pub mod api;
 pub mod assets;
+pub mod design_open;
 pub mod document;
 mod edit_api;
 pub mod flat;

@@ -1,0 +1,145 @@
+//! Paper craft (Ōgaki 2016) from a `.craft.toml` design and the mesh it names: cut lines on
+//! the reference mesh, developable patches, parts with glue tabs packed onto sheets — what
+//! `foldcam papercraft` does before it writes anything.
+//!
+//! The design names its mesh by a path relative to the design's folder; this module never
+//! reads it: the caller finds the mesh (the command line beside the design, the studio among
+//! the files given with it) and passes it in.
+
+use std::path::{Path, PathBuf};
+
+use super::{DesignFile, DesignKind, Progress, SourceError};
+use crate::design::papercraft::ReferenceMesh;
+use crate::design::papercraft::design::{Design, Made, parse_design};
+use crate::mesh::PolyMesh;
+
+/// A design file read, before its mesh is found.
+#[derive(Clone, Debug)]
+pub struct ParsedCraft {
+    /// The design file's name, as given.
+    pub name: PathBuf,
+    /// The design.
+    pub design: Design,
+}
+
+impl ParsedCraft {
+    /// The mesh path the design names (relative to the design's folder).
+    pub fn mesh_name(&self) -> PathBuf {
+        PathBuf::from(&self.design.mesh)
+    }
+}
+
+/// Reads a design file.
+///
+/// # Errors
+/// Bad input naming the file and the place.
+pub fn parse(file: &DesignFile<'_>) -> Result<ParsedCraft, SourceError> {
+    let design = parse_design(file.text()?).map_err(|e| SourceError::input(file.name, e))?;
+    Ok(ParsedCraft {
+        name: file.name.to_path_buf(),
+        design,
+    })
+}
+
+/// The parts and sheets of a paper craft.
+#[derive(Clone, Debug)]
+pub struct CraftDesign {
+    /// The design as read.
+    pub design: Design,
+    /// What the chain made: parts, sheets (one crease pattern each: outlines cut, tab roots
+    /// mountain folds, edge numbers flat lines), reports.
+    pub made: Made,
+    /// What `foldcam papercraft` prints once written.
+    pub summary: Vec<String>,
+    /// What it notes once written (labels that found no room).
+    pub late_notes: Vec<String>,
+}
+
+impl CraftDesign {
+    /// As one design: the first sheet.
+    ///
+    /// # Errors
+    /// A design that made no sheet (no parts).
+    pub fn into_design(mut self, name: &Path) -> Result<super::Design, SourceError> {
+        let sheets = self.made.sheets.len();
+        if sheets == 0 {
+            return Err(SourceError::input(name, "the design makes no part to cut"));
+        }
+        let mut summary = self.late_notes;
+        summary.append(&mut self.summary);
+        if sheets > 1 {
+            summary.push(format!(
+                "showing sheet 1 of {sheets} (`foldcam papercraft` writes sheet n > 1 to \
+                 NAME-n.EXT)"
+            ));
+        }
+        Ok(super::Design {
+            kind: DesignKind::PaperCraft,
+            made: "paper craft (Ōgaki 2016)",
+            pattern: self.made.sheets.swap_remove(0),
+            folded: None,
+            summary,
+            sheets,
+        })
+    }
+}
+
+/// Builds the parts of `parsed` on `mesh`, read from the file `mesh_name` (named in messages).
+///
+/// # Errors
+/// Bad input naming the design or the mesh and the place.
+pub fn build(
+    parsed: ParsedCraft,
+    mesh_name: &Path,
+    mesh: &PolyMesh,
+    progress: &mut dyn Progress,
+) -> Result<CraftDesign, SourceError> {
+    let ParsedCraft { name, design } = parsed;
+    let reference = ReferenceMesh::new(mesh).map_err(|e| SourceError::input(mesh_name, e))?;
+    progress.note(format!(
+        "{} cut lines, {} placed and {} generated patches on a mesh of {} triangles",
+        design.cut_lines.len(),
+        design.patches.len(),
+        design.auto_patches.len(),
+        reference.triangle_count()
+    ));
+    progress.busy("building the parts");
+    let made = design.build(&reference);
+    progress.idle();
+    let made = made.map_err(|e| SourceError::input(&name, e))?;
+    for r in &made.auto {
+        for &(q, e, gap) in &r.gaps {
+            let warn = if gap > design.tolerance {
+                " (above the tolerance: the patches cannot meet on one cylinder)"
+            } else {
+                ""
+            };
+            progress.note(format!(
+                "patch {} ({} control points, fit residual {:.2e}) meets patch {q} on cut line \
+                 {e} with a gap of {gap:.2e}{warn}",
+                r.patch, r.control_points, r.fit_residual
+            ));
+        }
+    }
+    let mut late_notes = Vec::new();
+    if !made.unlabelled.is_empty() {
+        late_notes.push(format!(
+            "no room for the edge labels of cut lines {:?} (lower label_height)",
+            made.unlabelled
+        ));
+    }
+    let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
+    let dropped: usize = made.parts.iter().map(|p| p.dropped_tabs).sum();
+    let summary = vec![format!(
+        "{}: {} parts, {tabs} tabs ({dropped} left out), {} sheet(s)",
+        name.display(),
+        made.parts.len(),
+        made.sheets.len()
+    )];
+    Ok(CraftDesign {
+        design,
+        made,
+        summary,
+        late_notes,
+    })
+}

@@ -1,0 +1,340 @@
+//! Voxel pop-up cards (Mitani, Suzuki & Uno 2003) from a design file: the text front view, a
+//! height-map PNG, or a mesh seen from the front through the paper's section 3 conversion;
+//! then the pop-up check, optional fitting, the crease pattern and the card's own checks —
+//! what `foldcam popup voxel` does before it writes anything.
+
+use std::path::Path;
+
+use super::card::{card_holds, report_fit};
+use super::{DesignFile, DesignKind, Progress, SourceError};
+use crate::clock::Stopwatch;
+use crate::design::popup::fit::fit_voxel_card;
+use crate::design::popup::voxel::estimate::conversion_estimate;
+use crate::design::popup::voxel::{
+    ConvertOptions, ConvertReport, DepthField, DepthMap, MeshPlacement, UpAxis, VoxelCard,
+    card_from_depths, check_popup, crease_pattern, depth_field_from_mesh, fold_card,
+    parse_voxel_card,
+};
+use crate::limits;
+use crate::mesh::PolyMesh;
+use crate::pattern::{CreasePattern, FoldedState};
+
+/// Most front faces listed when the card would not pop up.
+const PROBLEMS_SHOWN: usize = 40;
+
+/// How a height map or mesh becomes a card, and whether to fit the card; each default is
+/// `foldcam popup voxel`'s.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VoxelOptions {
+    /// Mesh: cells along the fold (Mitani, Suzuki & Uno 2003 used 80).
+    pub resolution: usize,
+    /// Mesh: which axis points up.
+    pub up: UpAxis,
+    /// Mesh: part of the model's depth, from its front, that stands out of the card.
+    pub keep_depth: f64,
+    /// Height map: depth of the base in cells (white = this far out); at least 1.
+    pub depth: usize,
+    /// Cell size, mm (default: `card_width` over the cells along the fold).
+    pub cell_mm: Option<f64>,
+    /// Width of the cells along the fold, mm.
+    pub card_width: f64,
+    /// Flat paper around the cells, mm.
+    pub card_margin: f64,
+    /// Side of the square element that removes small bumps, cells (odd; 1 = off).
+    pub morphology: usize,
+    /// Open windows under overhangs.
+    pub windows: bool,
+    /// Open a window only where the overhang stands out at least this part of the base depth.
+    pub window_gap: f64,
+    /// Leave out top faces at most this many columns wide where the card still pops up.
+    pub thin_top: usize,
+    /// Grow the margin until the card, folded shut, holds every face; refuse when it cannot.
+    pub fit: bool,
+}
+
+impl Default for VoxelOptions {
+    fn default() -> Self {
+        VoxelOptions {
+            resolution: 80,
+            up: UpAxis::Z,
+            keep_depth: 0.5,
+            depth: 40,
+            cell_mm: None,
+            card_width: 160.0,
+            card_margin: 10.0,
+            morphology: 3,
+            windows: true,
+            window_gap: 0.25,
+            thin_top: 1,
+            fit: false,
+        }
+    }
+}
+
+impl VoxelOptions {
+    /// Refuses options outside the ranges of [`crate::limits`].
+    ///
+    /// # Errors
+    /// [`SourceError::Option`] naming the option and its range.
+    pub fn validate(&self) -> Result<(), SourceError> {
+        let bad = |e: String, name: &str| SourceError::Option(format!("{name}: {e}"));
+        limits::RESOLUTION
+            .check(i64::try_from(self.resolution).unwrap_or(i64::MAX))
+            .map_err(|e| bad(e, limits::RESOLUTION.option))?;
+        if let Some(cell) = self.cell_mm {
+            limits::CELL
+                .check(cell)
+                .map_err(|e| bad(e, &limits::CELL.name()))?;
+        }
+        limits::CARD_WIDTH
+            .check(self.card_width)
+            .map_err(|e| bad(e, &limits::CARD_WIDTH.name()))?;
+        if self.depth == 0 {
+            return Err(SourceError::Option(
+                "--depth must be at least 1 cell".into(),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// A voxel card that pops up, its crease pattern, and the card folded shut.
+#[derive(Clone, Debug)]
+pub struct VoxelDesign {
+    /// The card (fitted when asked).
+    pub card: VoxelCard,
+    /// Its crease pattern (valleys +90°, mountains −90°, cuts).
+    pub pattern: CreasePattern,
+    /// The card folded shut (opening 0°).
+    pub closed: FoldedState,
+    /// What `foldcam popup voxel` prints when it has written the card.
+    pub summary: Vec<String>,
+}
+
+impl VoxelDesign {
+    /// The card's folded state at an opening angle, degrees (0 shut, 90 standing).
+    pub fn fold_at(&self, opening_deg: f64) -> FoldedState {
+        fold_card(&self.card, &self.pattern, opening_deg).state
+    }
+
+    /// As one design (no folded state: the command writes the pattern alone).
+    pub fn into_design(self, kind: DesignKind) -> super::Design {
+        super::Design {
+            kind,
+            made: "voxel pop-up card (Mitani, Suzuki & Uno 2003)",
+            pattern: self.pattern,
+            folded: None,
+            summary: self.summary,
+            sheets: 1,
+        }
+    }
+}
+
+/// Reads or builds the card `file` describes: a mesh when `mesh` is given (already read from
+/// the file), a height map for a `.png`, else the text format.
+///
+/// # Errors
+/// Bad input naming the file and the place; bad options.
+pub fn load_card(
+    file: &DesignFile<'_>,
+    mesh: Option<&PolyMesh>,
+    options: &VoxelOptions,
+    progress: &mut dyn Progress,
+) -> Result<VoxelCard, SourceError> {
+    let at = |e: &dyn std::fmt::Display| SourceError::input(file.name, e);
+    let is_png = file
+        .name
+        .to_string_lossy()
+        .to_ascii_lowercase()
+        .ends_with(".png");
+    let field = if let Some(mesh) = mesh {
+        let placement = MeshPlacement {
+            up: options.up,
+            resolution: options.resolution,
+            keep_depth: options.keep_depth,
+        };
+        let started = Stopwatch::start();
+        let (field, _) = depth_field_from_mesh(mesh, &placement).map_err(|e| at(&e))?;
+        progress.note(format!(
+            "{} faces seen from the front as {} × {} × {} cells in {:.1?}",
+            mesh.faces().len(),
+            field.nx,
+            field.ny,
+            field.nz,
+            started.elapsed()
+        ));
+        field
+    } else if is_png {
+        if options.depth == 0 {
+            return Err(SourceError::Option(
+                "--depth must be at least 1 cell".into(),
+            ));
+        }
+        let image = image::load_from_memory_with_format(file.bytes, image::ImageFormat::Png)
+            .map_err(|e| at(&e))?;
+        let grey = image.to_luma16();
+        let map = DepthMap {
+            width: grey.width() as usize,
+            height: grey.height() as usize,
+            levels: grey.as_raw(),
+        };
+        DepthField::from_grey(map, options.depth).map_err(|e| at(&e))?
+    } else {
+        return parse_voxel_card(file.text()?).map_err(|e| at(&e));
+    };
+    card_from_field(file.name, &field, options, progress)
+}
+
+/// The conversion of section 3 (bump removal, filling under overhangs by eq. 7, windows,
+/// thin tops) on a depth field, then the margin.
+fn card_from_field(
+    name: &Path,
+    field: &DepthField,
+    options: &VoxelOptions,
+    progress: &mut dyn Progress,
+) -> Result<VoxelCard, SourceError> {
+    let cell_mm = options
+        .cell_mm
+        .unwrap_or(options.card_width / field.nx as f64);
+    progress.note(format!(
+        "building a card of {} × {} × {} cells: {} (estimated)",
+        field.nx,
+        field.ny,
+        field.nz,
+        conversion_estimate(field)
+    ));
+    let convert = ConvertOptions {
+        element: options.morphology,
+        windows: options.windows,
+        window_gap: options.window_gap,
+        thin_top: options.thin_top,
+    };
+    progress.busy("building the card");
+    let built = card_from_depths(field, cell_mm, &convert);
+    progress.idle();
+    let (mut card, report) = built.map_err(|e| SourceError::input(name, e))?;
+    card.set_margin_mm(options.card_margin)
+        .map_err(|e| SourceError::Option(format!("--card-margin: {e}")))?;
+    conversion_notes(&report, progress);
+    Ok(card)
+}
+
+fn conversion_notes(r: &ConvertReport, progress: &mut dyn Progress) {
+    progress.note(format!(
+        "bumps removed ({} cells changed) in {:.1?}",
+        r.smoothed_cells, r.smoothing_time
+    ));
+    progress.note(format!(
+        "filling under overhangs added {} voxels in {} rows; {} of {} candidate rows became \
+         windows; {:.1?}",
+        r.added_cells, r.filled_rows, r.window_rows, r.window_candidates, r.constraint_time
+    ));
+    progress.note(format!(
+        "{} of {} thin top faces left out; {} pop-up checks; {:.1?}",
+        r.tops_omitted, r.thin_tops, r.checks, r.thin_top_time
+    ));
+}
+
+/// Checks, fits (when asked) and creases a loaded card. `converted` says whether the card
+/// came from a mesh or height map (the refusal then suggests other conversion options).
+///
+/// # Errors
+/// [`SourceError::NotMade`] when the card would not pop up, loses a piece or (with `fit`)
+/// cannot be fitted; bad input when the crease pattern cannot be made.
+pub fn finish_card(
+    name: &Path,
+    card: VoxelCard,
+    converted: bool,
+    options: &VoxelOptions,
+    progress: &mut dyn Progress,
+) -> Result<VoxelDesign, SourceError> {
+    let report = check_popup(&card);
+    if !report.passed() {
+        let mut lines = vec![format!("{}: the card would not pop up", name.display())];
+        lines.extend(
+            report
+                .problems
+                .iter()
+                .take(PROBLEMS_SHOWN)
+                .map(|p| format!("  {p}")),
+        );
+        if report.problems.len() > PROBLEMS_SHOWN {
+            lines.push(format!(
+                "  … and {} more front faces",
+                report.problems.len() - PROBLEMS_SHOWN
+            ));
+        }
+        if converted {
+            lines.push(format!(
+                "  try: a smaller --morphology (now {}; 3 is the paper's, 1 turns bump removal \
+                 off), another --resolution (now {}), or --thin-top 0",
+                options.morphology, options.resolution
+            ));
+        }
+        return Err(SourceError::NotMade { lines });
+    }
+    let card = if options.fit {
+        match fit_voxel_card(&card) {
+            Ok(fitted) => {
+                report_fit(name, &fitted, "margin", progress);
+                fitted.card
+            }
+            Err(e) => {
+                return Err(SourceError::NotMade {
+                    lines: vec![format!("{}: {e}", name.display())],
+                });
+            }
+        }
+    } else {
+        card
+    };
+    let pattern = crease_pattern(&card).map_err(|e| SourceError::input(name, e))?;
+    let closed = fold_card(&card, &pattern, 0.0).state;
+    let hint = "try another --resolution, a larger --thin-top (or 0 to keep every top), or a \
+                smaller --morphology";
+    card_holds(
+        name,
+        &pattern,
+        &closed,
+        options.fit,
+        hint,
+        |_| true,
+        progress,
+    )?;
+    let (w, h) = card.sheet_mm();
+    let summary = vec![format!(
+        "{}: {} × {} × {} cells of {:.3} mm, sheet {w:.1} × {h:.1} mm, pops up",
+        name.display(),
+        card.nx(),
+        card.ny(),
+        card.nz(),
+        card.cell_mm()
+    )];
+    Ok(VoxelDesign {
+        card,
+        pattern,
+        closed,
+        summary,
+    })
+}
+
+/// [`load_card`] then [`finish_card`]: the whole of `foldcam popup voxel` but the writing.
+///
+/// # Errors
+/// As the two steps.
+pub fn build(
+    file: &DesignFile<'_>,
+    mesh: Option<&PolyMesh>,
+    options: &VoxelOptions,
+    progress: &mut dyn Progress,
+) -> Result<VoxelDesign, SourceError> {
+    // Everything but the text format went through the conversion.
+    let converted = mesh.is_some()
+        || !file
+            .name
+            .to_string_lossy()
+            .to_ascii_lowercase()
+            .ends_with(".txt");
+    let card = load_card(file, mesh, options, progress)?;
+    finish_card(file.name, card, converted, options, progress)
+}
