@@ -77,7 +77,10 @@ fn a_built_design_is_the_pattern_the_command_writes() {
     for (rel, cmd) in cases {
         let bytes = example(rel);
         let name = Path::new(rel);
-        let file = DesignFile { name, bytes: &bytes };
+        let file = DesignFile {
+            name,
+            bytes: &bytes,
+        };
         let mut notes = Vec::new();
         let design = build_design(&file, &[], &DesignOptions::default(), &mut notes).unwrap();
         let input = repo_file(&format!("examples/{rel}"));
@@ -138,7 +141,10 @@ fn a_mesh_given_alone_becomes_a_tessellation_when_open_and_a_card_when_closed() 
     };
     let auto = build_design(&file, &[], &opts(MeshUse::Auto), &mut Vec::new()).unwrap();
     assert!(auto.made.contains("Tachi"), "{}", auto.made);
-    assert!(auto.folded.is_some(), "a tessellation carries its folded form");
+    assert!(
+        auto.folded.is_some(),
+        "a tessellation carries its folded form"
+    );
     let card = build_design(&file, &[], &opts(MeshUse::PopupCard), &mut Vec::new()).unwrap();
     assert!(card.made.contains("Mitani"), "{}", card.made);
     let building = example("popup/building.obj");

@@ -61,10 +61,7 @@ fn examples() -> Vec<String> {
 fn command(rel: &str, input: &str, out: &str) -> Vec<String> {
     let words: Vec<&str> = if rel.starts_with("patterns/") {
         vec!["convert", input, out]
-    } else if rel.ends_with(".voxel.txt")
-        || rel == "popup/building.obj"
-        || AS_CARD.contains(&rel)
-    {
+    } else if rel.ends_with(".voxel.txt") || rel == "popup/building.obj" || AS_CARD.contains(&rel) {
         vec!["popup", "voxel", input, "-o", out]
     } else if rel.ends_with(".popup.toml") {
         vec!["popup", "poly", input, "-o", out]
@@ -171,10 +168,7 @@ fn open_and_compare(rels: &[String]) -> usize {
 
 #[test]
 fn the_studio_opens_every_bundled_example_as_the_command_line_builds_it() {
-    let rels: Vec<String> = examples()
-        .into_iter()
-        .filter(|r| !skipped(r))
-        .collect();
+    let rels: Vec<String> = examples().into_iter().filter(|r| !skipped(r)).collect();
     // Every kind of example is among them (a renamed folder would otherwise shrink the test).
     for folder in [
         "patterns/",

@@ -103,18 +103,6 @@ impl DesignKind {
         let lower = name.to_string_lossy().to_ascii_lowercase();
         Self::EXTENSIONS.iter().any(|e| lower.ends_with(e))
     }
-
-    /// What the kind is, for messages.
-    pub fn describe(self) -> &'static str {
-        match self {
-            DesignKind::VoxelText => "voxel pop-up card",
-            DesignKind::HeightMap => "height map",
-            DesignKind::Mesh => "mesh",
-            DesignKind::PopupPolygon => "polygon pop-up card",
-            DesignKind::FoldScript => "fold script",
-            DesignKind::PaperCraft => "paper craft",
-        }
-    }
 }
 
 /// What to make of a mesh (OBJ or STL) given alone.
@@ -351,6 +339,7 @@ pub fn build_design(
         .ok_or_else(|| SourceError::Unrecognised(file.display()))?;
     match kind {
         DesignKind::VoxelText | DesignKind::HeightMap => {
+            options.voxel.validate()?;
             voxel::build(file, None, &options.voxel, progress).map(|d| d.into_design(kind))
         }
         DesignKind::Mesh => {
@@ -360,8 +349,11 @@ pub fn build_design(
                     tessellate::build(file, &mesh, &options.tessellation, progress)
                         .map(|d| d.into_design())
                 }
-                _ => voxel::build(file, Some(&mesh), &options.voxel, progress)
-                    .map(|d| d.into_design(kind)),
+                _ => {
+                    options.voxel.validate()?;
+                    voxel::build(file, Some(&mesh), &options.voxel, progress)
+                        .map(|d| d.into_design(kind))
+                }
             }
         }
         DesignKind::PopupPolygon => {
