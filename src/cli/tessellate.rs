@@ -6,8 +6,8 @@ use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
 use foldcam::design::tessellation::{
-    FitOptions, Limits, SHRINK_LADDER, StarOptions, TessellateOptions, Tessellation, TuckKind,
-    TuckLayout, TuckShape, tessellate_shrinking,
+    FitOptions, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessellateOptions,
+    Tessellation, TuckKind, TuckLayout, TuckShape, tessellate_scheduled,
 };
 use foldcam::formats::OutputSet;
 use foldcam::machine::load_material;
@@ -97,6 +97,11 @@ pub struct Args {
     /// Surface fit after solving (Tachi 2014), with this tangential weight w in [0, 1].
     #[arg(long, value_name = "W")]
     pub fit: Option<f64>,
+    /// Re-triangulate the surface near-regularly (valence 6, no pole fans) before
+    /// tessellating, with about FACES faces (default: as many as the input has). Without it
+    /// this is tried only when no face shrink works on the input's own triangles.
+    #[arg(long, value_name = "FACES", num_args = 0..=1, default_missing_value = "0")]
+    pub remesh: Option<usize>,
     /// Newton iteration cap.
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
@@ -169,7 +174,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     );
     let shrinks = args.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
     eprintln!(
-        "foldcam: estimate: {} per solve, up to {} solve(s) (one per face shrink tried)",
+        "foldcam: estimate: {} per solve, up to {} solve(s) (one per face shrink tried, twice \
+         if the surface is re-triangulated)",
         foldcam::design::tessellation::estimate::solve_estimate(mesh.faces().len()),
         shrinks.len()
     );
@@ -179,7 +185,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
                 "trying a smaller shrink"
             } else {
-                "no shrink worked; reporting the first"
+                "no shrink worked on these triangles"
             };
             eprintln!(
                 "foldcam: shrink {s}: {}; {next}",
@@ -187,7 +193,16 @@ pub fn run(args: Args) -> Result<Outcome> {
             );
         }
     };
-    let t = tessellate_shrinking(&mesh, &opts, &shrinks, retry, |it| {
+    let schedule = Schedule {
+        shrinks,
+        remesh: if args.remesh.is_some() {
+            Remesh::First
+        } else {
+            Remesh::Fallback
+        },
+        remesh_faces: args.remesh.filter(|&f| f > 0),
+    };
+    let t = tessellate_scheduled(&mesh, &opts, &schedule, retry, |it| {
         bar.set_position(it.index as u64);
         bar.suspend(|| eprintln!(
             "  iteration {:3}: developability {:.2e} rad, max fold {:.2} deg, min angle {:.2} deg, \

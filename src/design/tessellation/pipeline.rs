@@ -4,6 +4,7 @@ use super::constraints::{Limits, assign_folds};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
+use super::remesh::{RemeshReport, remesh};
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
 use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks};
 use super::unfold::{Unfolded, unfold};
@@ -71,6 +72,9 @@ pub struct Tessellation {
     /// The conditions left unmet by a solve that did not converge, per input vertex, see
     /// [`diagnose::after_solving`].
     pub unmet: Vec<Violation>,
+    /// When the input was re-triangulated before tessellating ([`Remesh`]), what changed;
+    /// the input vertices named in `infeasible` and `unmet` are then the new mesh's.
+    pub remeshed: Option<RemeshReport>,
 }
 
 impl Tessellation {
@@ -83,8 +87,11 @@ impl Tessellation {
                 self.intersections.len()
             ),
         };
+        let remeshed = self
+            .remeshed
+            .map_or(String::new(), |r| format!("{}\n", r.describe()));
         format!(
-            "{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
+            "{remeshed}{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
             self.report.summary(),
             self.intersection_tolerance
         )
@@ -143,6 +150,79 @@ pub fn tessellate_shrinking(
         first.get_or_insert(t);
     }
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
+}
+
+/// Whether [`tessellate_scheduled`] re-triangulates the input ([`remesh`](super::remesh)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Remesh {
+    /// Never: the input's own triangles only.
+    Never,
+    /// Only when no face shrink works on the input's own triangles (the default).
+    #[default]
+    Fallback,
+    /// Always, before the first solve.
+    First,
+}
+
+/// What [`tessellate_scheduled`] tries, in order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Schedule {
+    /// Face shrinks, largest first (each a full solve).
+    pub shrinks: Vec<f64>,
+    /// Whether and when to re-triangulate the input.
+    pub remesh: Remesh,
+    /// Faces of the re-triangulation; `None`: as many as the input has.
+    pub remesh_faces: Option<usize>,
+}
+
+/// The default schedule: every shrink of [`SHRINK_LADDER`] on the input, then on a
+/// near-regular re-triangulation of the same surface with as many faces.
+pub fn default_schedule() -> Schedule {
+    Schedule {
+        shrinks: SHRINK_LADDER.to_vec(),
+        remesh: Remesh::Fallback,
+        remesh_faces: None,
+    }
+}
+
+/// [`tessellate_shrinking`] over `schedule`: the shrinks on the input mesh, then (or instead,
+/// by [`Schedule::remesh`]) on its re-triangulation, until a result has no
+/// [`Tessellation::problem`]. `attempt` hears every result that has one. Returns the first
+/// usable result, else the first result. A re-triangulation that fails (for instance on a
+/// mesh too small for it) is skipped when the input was tried, an error otherwise.
+pub fn tessellate_scheduled(
+    mesh: &PolyMesh,
+    opts: &TessellateOptions,
+    schedule: &Schedule,
+    mut attempt: impl FnMut(f64, &Tessellation),
+    mut progress: impl FnMut(&Iteration),
+) -> Result<Tessellation, TessError> {
+    let mut first: Option<Tessellation> = None;
+    if schedule.remesh != Remesh::First {
+        let t = tessellate_shrinking(mesh, opts, &schedule.shrinks, &mut attempt, &mut progress)?;
+        // tessellate_shrinking has told `attempt` about every failed shrink.
+        if t.problem().is_none() || schedule.remesh == Remesh::Never {
+            return Ok(t);
+        }
+        first = Some(t);
+    }
+    let faces = schedule.remesh_faces.unwrap_or(mesh.faces().len());
+    let (remeshed, report) = match remesh(mesh, faces) {
+        Ok(r) => r,
+        Err(e) => return first.ok_or(e),
+    };
+    let mut t = tessellate_shrinking(
+        &remeshed,
+        opts,
+        &schedule.shrinks,
+        &mut attempt,
+        &mut progress,
+    )?;
+    t.remeshed = Some(report);
+    Ok(match first {
+        Some(f) if t.problem().is_some() => f,
+        _ => t,
+    })
 }
 
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler
@@ -256,6 +336,7 @@ pub fn tessellate(
         intersection_tolerance: opts.intersection_tolerance,
         infeasible,
         unmet,
+        remeshed: None,
     })
 }
 

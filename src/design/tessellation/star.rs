@@ -124,12 +124,43 @@ pub struct InitialPattern {
 /// Inserts star tucks into `mesh` (§2.1). Errors: `shrink` outside (0, 1], a checkerboard
 /// layout the mesh cannot take, or an interior vertex with fewer than three star points.
 pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPattern, TessError> {
+    star_tucks_shrunk(mesh, opts, None)
+}
+
+/// [`star_tucks`] with a shrink per input face (`face_shrink[f]` in (0, 1], overriding
+/// `opts.shrink`): a smaller shrink where the tucks must open wider (Tachi 2014, Fig. 14: the
+/// tucks that a uniform shrink makes too tight). [`InitialPattern::shrink`] is then the
+/// smallest of them.
+pub fn star_tucks_shrunk(
+    mesh: &HalfEdgeMesh,
+    opts: &StarOptions,
+    face_shrink: Option<&[f64]>,
+) -> Result<InitialPattern, TessError> {
     if !(opts.shrink > 0.0 && opts.shrink <= 1.0) {
         return Err(TessError::BadParameter(format!(
             "shrink must be in (0, 1], got {}",
             opts.shrink
         )));
     }
+    if let Some(fs) = face_shrink {
+        if fs.len() != mesh.faces().len() {
+            return Err(TessError::BadParameter(format!(
+                "{} face shrinks for {} faces",
+                fs.len(),
+                mesh.faces().len()
+            )));
+        }
+        if let Some((f, s)) = fs
+            .iter()
+            .enumerate()
+            .find(|(_, s)| !(**s > 0.0 && **s <= 1.0))
+        {
+            return Err(TessError::BadParameter(format!(
+                "shrink of face {f} must be in (0, 1], got {s}"
+            )));
+        }
+    }
+    let shrink_of = |f: usize| face_shrink.map_or(opts.shrink, |fs| fs[f]);
     opts.tuck.validate().map_err(TessError::BadParameter)?;
     let colours = checkerboard_colours(mesh);
     let layout = match (opts.layout, colours.is_some()) {
@@ -176,7 +207,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         vertex_of_corner[h] = id;
         let f = hes[h].face as usize;
         let c = mesh.face_centroid(f);
-        let p = c + opts.shrink * (mesh.positions()[hes[h].from as usize] - c);
+        let p = c + shrink_of(f) * (mesh.positions()[hes[h].from as usize] - c);
         sums[id as usize].0 += p;
         sums[id as usize].1 += 1.0;
     }
@@ -268,7 +299,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         layout,
         depth,
         points,
-        shrink: opts.shrink,
+        shrink: face_shrink.map_or(opts.shrink, |fs| fs.iter().copied().fold(1.0, f64::min)),
         truncated,
     })
 }
