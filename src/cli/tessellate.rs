@@ -99,7 +99,8 @@ pub struct Args {
     pub fit: Option<f64>,
     /// Re-triangulate the surface near-regularly (valence 6, no pole fans) before
     /// tessellating, with about FACES faces (default: as many as the input has). Without it
-    /// this is tried only when no face shrink works on the input's own triangles.
+    /// both the input's own triangles and the re-triangulation are tried, the latter first
+    /// when the input has face corners sharper than the vertex-angle limit.
     #[arg(long, value_name = "FACES", num_args = 0..=1, default_missing_value = "0")]
     pub remesh: Option<usize>,
     /// Newton iteration cap.
@@ -196,9 +197,9 @@ pub fn run(args: Args) -> Result<Outcome> {
     let schedule = Schedule {
         shrinks,
         remesh: if args.remesh.is_some() {
-            Remesh::First
+            Remesh::Only
         } else {
-            Remesh::Fallback
+            Remesh::Auto
         },
         remesh_faces: args.remesh.filter(|&f| f > 0),
     };

@@ -4,7 +4,7 @@ use super::constraints::{Limits, assign_folds};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
-use super::remesh::{RemeshReport, remesh};
+use super::remesh::{RemeshReport, min_corner_angle, remesh};
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
 use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks};
 use super::unfold::{Unfolded, unfold};
@@ -157,11 +157,14 @@ pub fn tessellate_shrinking(
 pub enum Remesh {
     /// Never: the input's own triangles only.
     Never,
-    /// Only when no face shrink works on the input's own triangles (the default).
+    /// Both, the more promising first (the default): the re-triangulation first when the
+    /// input has a face corner sharper than the vertex-angle limit (every face corner is an
+    /// angle between two creases of the initial pattern, Tachi 2014 §2.1, so such a face
+    /// must be distorted before the limit can hold), else the input's own triangles first.
     #[default]
-    Fallback,
-    /// Always, before the first solve.
-    First,
+    Auto,
+    /// The re-triangulation only.
+    Only,
 }
 
 /// What [`tessellate_scheduled`] tries, in order.
@@ -175,21 +178,22 @@ pub struct Schedule {
     pub remesh_faces: Option<usize>,
 }
 
-/// The default schedule: every shrink of [`SHRINK_LADDER`] on the input, then on a
-/// near-regular re-triangulation of the same surface with as many faces.
+/// The default schedule: every shrink of [`SHRINK_LADDER`], on the input's own triangles and
+/// on a near-regular re-triangulation of the same surface with as many faces
+/// ([`Remesh::Auto`]).
 pub fn default_schedule() -> Schedule {
     Schedule {
         shrinks: SHRINK_LADDER.to_vec(),
-        remesh: Remesh::Fallback,
+        remesh: Remesh::Auto,
         remesh_faces: None,
     }
 }
 
-/// [`tessellate_shrinking`] over `schedule`: the shrinks on the input mesh, then (or instead,
-/// by [`Schedule::remesh`]) on its re-triangulation, until a result has no
+/// [`tessellate_shrinking`] over `schedule`: the shrinks on the input mesh and on its
+/// re-triangulation, in the order [`Schedule::remesh`] says, until a result has no
 /// [`Tessellation::problem`]. `attempt` hears every result that has one. Returns the first
 /// usable result, else the first result. A re-triangulation that fails (for instance on a
-/// mesh too small for it) is skipped when the input was tried, an error otherwise.
+/// mesh too small for it) is skipped when the input is tried too, an error otherwise.
 pub fn tessellate_scheduled(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
@@ -197,32 +201,49 @@ pub fn tessellate_scheduled(
     mut attempt: impl FnMut(f64, &Tessellation),
     mut progress: impl FnMut(&Iteration),
 ) -> Result<Tessellation, TessError> {
+    let sharp = min_corner_angle(mesh) < opts.solve.limits.min_vertex_angle;
+    let order: &[bool] = match schedule.remesh {
+        Remesh::Never => &[false],
+        Remesh::Only => &[true],
+        Remesh::Auto if sharp => &[true, false],
+        Remesh::Auto => &[false, true],
+    };
     let mut first: Option<Tessellation> = None;
-    if schedule.remesh != Remesh::First {
-        let t = tessellate_shrinking(mesh, opts, &schedule.shrinks, &mut attempt, &mut progress)?;
-        // tessellate_shrinking has told `attempt` about every failed shrink.
-        if t.problem().is_none() || schedule.remesh == Remesh::Never {
+    let mut failure = None;
+    for &remeshed in order {
+        // tessellate_shrinking tells `attempt` about every failed shrink.
+        let t = if remeshed {
+            let faces = schedule.remesh_faces.unwrap_or(mesh.faces().len());
+            match remesh(mesh, faces) {
+                Ok((m, report)) => {
+                    let mut t = tessellate_shrinking(
+                        &m,
+                        opts,
+                        &schedule.shrinks,
+                        &mut attempt,
+                        &mut progress,
+                    )?;
+                    t.remeshed = Some(report);
+                    t
+                }
+                Err(e) => {
+                    failure = Some(e);
+                    continue;
+                }
+            }
+        } else {
+            tessellate_shrinking(mesh, opts, &schedule.shrinks, &mut attempt, &mut progress)?
+        };
+        if t.problem().is_none() {
             return Ok(t);
         }
-        first = Some(t);
+        first.get_or_insert(t);
     }
-    let faces = schedule.remesh_faces.unwrap_or(mesh.faces().len());
-    let (remeshed, report) = match remesh(mesh, faces) {
-        Ok(r) => r,
-        Err(e) => return first.ok_or(e),
-    };
-    let mut t = tessellate_shrinking(
-        &remeshed,
-        opts,
-        &schedule.shrinks,
-        &mut attempt,
-        &mut progress,
-    )?;
-    t.remeshed = Some(report);
-    Ok(match first {
-        Some(f) if t.problem().is_some() => f,
-        _ => t,
-    })
+    match (first, failure) {
+        (Some(t), _) => Ok(t),
+        (None, Some(e)) => Err(e),
+        (None, None) => Err(TessError::BadParameter("nothing to try".into())),
+    }
 }
 
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler

@@ -75,35 +75,15 @@ pub fn remesh(mesh: &PolyMesh, faces: usize) -> Result<(PolyMesh, RemeshReport),
     let x = mesh.positions();
     let area3: f64 = triangles.iter().map(|t| tri_area3(x, t)).sum();
     let area2: f64 = triangles.iter().map(|t| tri_area2(&uv, t).abs()).sum();
-    // Lattice spacing: `faces` equilateral triangles of side h on the mapped area.
-    let h = (4.0 * area2 / (3f64.sqrt() * faces as f64)).sqrt();
-    let locate = Locator::new(&uv, &triangles, h);
-    let reach = (1.0 / h).ceil() as i64 + 2;
-    let mut index: HashMap<(i64, i64), Option<u32>> = HashMap::new();
-    let mut positions = Vec::new();
-    let mut vertex = |i: i64, j: i64| -> Option<u32> {
-        *index.entry((i, j)).or_insert_with(|| {
-            let p = DVec2::new(i as f64 + 0.5 * j as f64, 0.75f64.sqrt() * j as f64) * h;
-            let (t, b) = locate.find(p)?;
-            let [a, bb, c] = triangles[t].map(|v| x[v as usize]);
-            positions.push(b[0] * a + b[1] * bb + b[2] * c);
-            Some((positions.len() - 1) as u32)
-        })
-    };
-    let mut out_faces = Vec::new();
-    for j in -reach..=reach {
-        for i in -reach..=reach {
-            for tri in [
-                [(i, j), (i + 1, j), (i, j + 1)],
-                [(i + 1, j), (i + 1, j + 1), (i, j + 1)],
-            ] {
-                let v = tri.map(|(a, b)| vertex(a, b));
-                if let [Some(a), Some(b), Some(c)] = v {
-                    out_faces.push(vec![a, b, c]);
-                }
-            }
-        }
+    // Lattice spacing: `faces` equilateral triangles of side h on the mapped area, then once
+    // more corrected by the count kept (the lattice stops short of the boundary).
+    let mut h = (4.0 * area2 / (3f64.sqrt() * faces as f64)).sqrt();
+    let mut built = lattice(&uv, &triangles, x, h);
+    if !built.1.is_empty() {
+        h *= (built.1.len() as f64 / faces as f64).sqrt();
+        built = lattice(&uv, &triangles, x, h);
     }
+    let (positions, out_faces) = built;
     let out_faces = largest_piece(&out_faces);
     let (positions, out_faces) = compact(&positions, &out_faces);
     let out = PolyMesh::new(positions, out_faces)
@@ -116,6 +96,43 @@ pub fn remesh(mesh: &PolyMesh, faces: usize) -> Result<(PolyMesh, RemeshReport),
         area_kept: out.area() / area3,
     };
     Ok((out, report))
+}
+
+/// The lattice of spacing `h` over the mapped disk `uv`: its vertices carried back onto the
+/// surface `x` and its triangles whose corners all fall inside the mapped mesh.
+fn lattice(
+    uv: &[DVec2],
+    triangles: &[[u32; 3]],
+    x: &[DVec3],
+    h: f64,
+) -> (Vec<DVec3>, Vec<Vec<u32>>) {
+    let locate = Locator::new(uv, triangles, h);
+    let reach = (1.0 / h).ceil() as i64 + 2;
+    let mut index: HashMap<(i64, i64), Option<u32>> = HashMap::new();
+    let mut positions = Vec::new();
+    let mut vertex = |i: i64, j: i64| -> Option<u32> {
+        *index.entry((i, j)).or_insert_with(|| {
+            let p = DVec2::new(i as f64 + 0.5 * j as f64, 0.75f64.sqrt() * j as f64) * h;
+            let (t, b) = locate.find(p)?;
+            let [a, bb, c] = triangles[t].map(|v| x[v as usize]);
+            positions.push(b[0] * a + b[1] * bb + b[2] * c);
+            Some((positions.len() - 1) as u32)
+        })
+    };
+    let mut faces = Vec::new();
+    for j in -reach..=reach {
+        for i in -reach..=reach {
+            for tri in [
+                [(i, j), (i + 1, j), (i, j + 1)],
+                [(i + 1, j), (i + 1, j + 1), (i, j + 1)],
+            ] {
+                if let [Some(a), Some(b), Some(c)] = tri.map(|(a, b)| vertex(a, b)) {
+                    faces.push(vec![a, b, c]);
+                }
+            }
+        }
+    }
+    (positions, faces)
 }
 
 /// Faces fanned into triangles from their first corner.

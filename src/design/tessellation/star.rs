@@ -398,3 +398,52 @@ fn union(uf: &mut [usize], a: usize, b: usize) {
         uf[ra] = rb;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::tessellation::spherical_cap;
+
+    /// A uniform per-face shrink gives the pattern of the global one; a face left at shrink 1
+    /// keeps its corners on the input vertices (digon layout: every face has its own
+    /// corners), the others move towards their centroids by 1 − s.
+    #[test]
+    fn per_face_shrinks_move_each_face_by_its_own_factor() {
+        let mesh = spherical_cap(6, 2, 40.0, 50.0);
+        let he = HalfEdgeMesh::new(&mesh, 1e-9).expect("manifold");
+        let opts = StarOptions {
+            shrink: 0.7,
+            layout: TuckLayout::Digon,
+            ..StarOptions::default()
+        };
+        let global = star_tucks(&he, &opts).expect("pattern");
+        let nf = mesh.faces().len();
+        let uniform = star_tucks_shrunk(&he, &opts, Some(&vec![0.7; nf])).expect("pattern");
+        assert_eq!(global.mesh.positions, uniform.mesh.positions);
+        let mut shrinks = vec![0.7; nf];
+        shrinks[0] = 1.0;
+        let mixed = star_tucks_shrunk(&he, &opts, Some(&shrinks)).expect("pattern");
+        assert_eq!(mixed.shrink, 0.7);
+        let x = mesh.positions();
+        let hes = he.half_edges();
+        for h in he.face_half_edges(0) {
+            // Corner h of face 0 is the pattern vertex made for half-edge h (digon layout).
+            let v = hes[h as usize].from as usize;
+            let found = mixed.mesh.positions[..mixed.mesh.corner_count]
+                .iter()
+                .any(|p| p.distance(x[v]) < 1e-12);
+            assert!(found, "corner of face 0 at input vertex {v}");
+        }
+        let c = he.face_centroid(1);
+        let v = mesh.faces()[1][0] as usize;
+        let expected = c + 0.7 * (x[v] - c);
+        assert!(
+            mixed.mesh.positions[..mixed.mesh.corner_count]
+                .iter()
+                .any(|p| p.distance(expected) < 1e-12)
+        );
+        assert!(star_tucks_shrunk(&he, &opts, Some(&[0.5])).is_err());
+        shrinks[3] = 0.0;
+        assert!(star_tucks_shrunk(&he, &opts, Some(&shrinks)).is_err());
+    }
+}
