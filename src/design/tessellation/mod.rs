@@ -21,6 +21,11 @@
 //! Beyond the paper (which leaves global collisions to the user's eye), the folded form is
 //! checked exactly for intersecting faces ([`intersect`]). Boundary non-overlap (eq. 2) is a
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
+//! Meshes whose own triangles make the limits unreachable (a modelling program's sphere: a
+//! 12-valent pole, face corners sharper than the crease-angle limit) are re-triangulated
+//! near-regularly ([`remesh`], Floater's (2003) mean-value map onto a disk), by
+//! [`tessellate_scheduled`] as the default does; [`distance`] measures how far the folded
+//! form lies from the input surface.
 
 pub mod boundary;
 pub mod constraints;
