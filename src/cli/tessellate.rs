@@ -10,7 +10,7 @@ use foldcam::design::source::tessellate::{
     tessellate_mesh,
 };
 use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
-use foldcam::design::tessellation::{TuckKind, TuckLayout};
+use foldcam::design::tessellation::{Remesh, TuckKind, TuckLayout};
 use foldcam::formats::OutputSet;
 use foldcam::machine::load_material;
 use foldcam::mesh::read_mesh;
@@ -100,6 +100,12 @@ pub struct Args {
     /// Surface fit after solving (Tachi 2014), with this tangential weight w in [0, 1].
     #[arg(long, value_name = "W")]
     pub fit: Option<f64>,
+    /// Re-triangulate the surface near-regularly (valence 6, no pole fans) before
+    /// tessellating, with about FACES faces (default: as many as the input has). Without it
+    /// both the input's own triangles and the re-triangulation are tried, the latter first
+    /// when the input has face corners sharper than the vertex-angle limit.
+    #[arg(long, value_name = "FACES", num_args = 0..=1, default_missing_value = "0")]
+    pub remesh: Option<usize>,
     /// Newton iteration cap.
     #[arg(long, default_value_t = 200)]
     pub max_iterations: usize,
@@ -148,6 +154,12 @@ pub fn run(args: Args) -> Result<Outcome> {
         ground: args.ground,
         fit: args.fit,
         max_iterations: args.max_iterations,
+        remesh: if args.remesh.is_some() {
+            Remesh::Only
+        } else {
+            Remesh::Auto
+        },
+        remesh_faces: args.remesh.filter(|&f| f > 0),
     };
     let mut progress = DesignProgress::counting(args.max_iterations as u64);
     let result = tessellate_mesh(&args.mesh, &mesh, &options, &mut progress);

@@ -8,8 +8,8 @@ use std::path::Path;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
-    FitOptions, Iteration, Limits, SHRINK_LADDER, StarOptions, TessellateOptions, Tessellation,
-    TuckKind, TuckLayout, TuckShape, Unfolded, tessellate_shrinking,
+    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessellateOptions,
+    Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded, tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -49,6 +49,10 @@ pub struct TessellationOptions {
     pub fit: Option<f64>,
     /// Newton iteration cap, 1 to [`MAX_ITERATIONS`].
     pub max_iterations: usize,
+    /// Whether and when to re-triangulate the surface near-regularly first.
+    pub remesh: Remesh,
+    /// Faces of the re-triangulation; `None`: as many as the input has.
+    pub remesh_faces: Option<usize>,
 }
 
 impl Default for TessellationOptions {
@@ -64,6 +68,8 @@ impl Default for TessellationOptions {
             ground: false,
             fit: None,
             max_iterations: 200,
+            remesh: Remesh::Auto,
+            remesh_faces: None,
         }
     }
 }
@@ -181,7 +187,8 @@ pub fn tessellate_mesh(
     ));
     let shrinks = options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
     progress.note(format!(
-        "estimate: {} per solve, up to {} solve(s) (one per face shrink tried)",
+        "estimate: {} per solve, up to {} solve(s) (one per face shrink tried, twice if the \
+         surface is re-triangulated)",
         solve_estimate(mesh.faces().len()),
         shrinks.len()
     ));
@@ -189,16 +196,21 @@ pub fn tessellate_mesh(
     progress.busy("solving");
     // Both callbacks speak through `progress`, one at a time.
     let shared = std::cell::RefCell::new(&mut *progress);
-    let t = tessellate_shrinking(
+    let schedule = Schedule {
+        shrinks,
+        remesh: options.remesh,
+        remesh_faces: options.remesh_faces,
+    };
+    let t = tessellate_scheduled(
         mesh,
         &opts,
-        &shrinks,
+        &schedule,
         |s: f64, t: &Tessellation| {
             if !asked {
                 let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
                     "trying a smaller shrink"
                 } else {
-                    "no shrink worked; reporting the first"
+                    "no shrink worked on these triangles"
                 };
                 shared.borrow_mut().note(format!(
                     "shrink {s}: {}; {next}",

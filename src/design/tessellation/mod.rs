@@ -21,10 +21,16 @@
 //! Beyond the paper (which leaves global collisions to the user's eye), the folded form is
 //! checked exactly for intersecting faces ([`intersect`]). Boundary non-overlap (eq. 2) is a
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
+//! Meshes whose own triangles make the limits unreachable (a modelling program's sphere: a
+//! 12-valent pole, face corners sharper than the crease-angle limit) are re-triangulated
+//! near-regularly ([`remesh`], Floater's (2003) mean-value map onto a disk), by
+//! [`tessellate_scheduled`] as the default does; [`distance`] measures how far the folded
+//! form lies from the input surface.
 
 pub mod boundary;
 pub mod constraints;
 pub mod diagnose;
+pub mod distance;
 pub mod estimate;
 pub mod fit;
 pub mod geometry;
@@ -32,6 +38,7 @@ pub mod intersect;
 mod min_norm;
 pub mod model;
 pub mod pipeline;
+pub mod remesh;
 pub mod rigid;
 pub mod samples;
 pub mod sectors;
@@ -45,15 +52,20 @@ use thiserror::Error;
 
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
 pub use diagnose::{Condition, Violation};
+pub use distance::{SurfaceDistance, corner_distance};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
-    SHRINK_LADDER, TessellateOptions, Tessellation, disk, tessellate, tessellate_shrinking,
+    Remesh, SHRINK_LADDER, Schedule, TessellateOptions, Tessellation, default_schedule, disk,
+    tessellate, tessellate_scheduled, tessellate_shrinking,
 };
+pub use remesh::{RemeshReport, remesh};
 pub use samples::{SampleSurface, sample_surface, spherical_cap};
 pub use solver::{Iteration, SolveOptions, SolveReport, solve};
-pub use star::{InitialPattern, StarOptions, TuckLayout, max_star_points, star_tucks};
+pub use star::{
+    InitialPattern, StarOptions, TuckLayout, max_star_points, star_tucks, star_tucks_shrunk,
+};
 pub use tuck::{TuckKind, TuckShape};
 pub use unfold::{Unfolded, unfold};
 

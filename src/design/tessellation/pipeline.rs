@@ -4,6 +4,7 @@ use super::constraints::{Limits, assign_folds};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
+use super::remesh::{RemeshReport, min_corner_angle, remesh};
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
 use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks};
 use super::unfold::{Unfolded, unfold};
@@ -71,6 +72,9 @@ pub struct Tessellation {
     /// The conditions left unmet by a solve that did not converge, per input vertex, see
     /// [`diagnose::after_solving`].
     pub unmet: Vec<Violation>,
+    /// When the input was re-triangulated before tessellating ([`Remesh`]), what changed;
+    /// the input vertices named in `infeasible` and `unmet` are then the new mesh's.
+    pub remeshed: Option<RemeshReport>,
 }
 
 impl Tessellation {
@@ -83,8 +87,11 @@ impl Tessellation {
                 self.intersections.len()
             ),
         };
+        let remeshed = self
+            .remeshed
+            .map_or(String::new(), |r| format!("{}\n", r.describe()));
         format!(
-            "{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
+            "{remeshed}{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
             self.report.summary(),
             self.intersection_tolerance
         )
@@ -143,6 +150,100 @@ pub fn tessellate_shrinking(
         first.get_or_insert(t);
     }
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
+}
+
+/// Whether [`tessellate_scheduled`] re-triangulates the input ([`remesh`](super::remesh)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Remesh {
+    /// Never: the input's own triangles only.
+    Never,
+    /// Both, the more promising first (the default): the re-triangulation first when the
+    /// input has a face corner sharper than the vertex-angle limit (every face corner is an
+    /// angle between two creases of the initial pattern, Tachi 2014 §2.1, so such a face
+    /// must be distorted before the limit can hold), else the input's own triangles first.
+    #[default]
+    Auto,
+    /// The re-triangulation only.
+    Only,
+}
+
+/// What [`tessellate_scheduled`] tries, in order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Schedule {
+    /// Face shrinks, largest first (each a full solve).
+    pub shrinks: Vec<f64>,
+    /// Whether and when to re-triangulate the input.
+    pub remesh: Remesh,
+    /// Faces of the re-triangulation; `None`: as many as the input has.
+    pub remesh_faces: Option<usize>,
+}
+
+/// The default schedule: every shrink of [`SHRINK_LADDER`], on the input's own triangles and
+/// on a near-regular re-triangulation of the same surface with as many faces
+/// ([`Remesh::Auto`]).
+pub fn default_schedule() -> Schedule {
+    Schedule {
+        shrinks: SHRINK_LADDER.to_vec(),
+        remesh: Remesh::Auto,
+        remesh_faces: None,
+    }
+}
+
+/// [`tessellate_shrinking`] over `schedule`: the shrinks on the input mesh and on its
+/// re-triangulation, in the order [`Schedule::remesh`] says, until a result has no
+/// [`Tessellation::problem`]. `attempt` hears every result that has one. Returns the first
+/// usable result, else the first result. A re-triangulation that fails (for instance on a
+/// mesh too small for it) is skipped when the input is tried too, an error otherwise.
+pub fn tessellate_scheduled(
+    mesh: &PolyMesh,
+    opts: &TessellateOptions,
+    schedule: &Schedule,
+    mut attempt: impl FnMut(f64, &Tessellation),
+    mut progress: impl FnMut(&Iteration),
+) -> Result<Tessellation, TessError> {
+    let sharp = min_corner_angle(mesh) < opts.solve.limits.min_vertex_angle;
+    let order: &[bool] = match schedule.remesh {
+        Remesh::Never => &[false],
+        Remesh::Only => &[true],
+        Remesh::Auto if sharp => &[true, false],
+        Remesh::Auto => &[false, true],
+    };
+    let mut first: Option<Tessellation> = None;
+    let mut failure = None;
+    for &remeshed in order {
+        // tessellate_shrinking tells `attempt` about every failed shrink.
+        let t = if remeshed {
+            let faces = schedule.remesh_faces.unwrap_or(mesh.faces().len());
+            match remesh(mesh, faces) {
+                Ok((m, report)) => {
+                    let mut t = tessellate_shrinking(
+                        &m,
+                        opts,
+                        &schedule.shrinks,
+                        &mut attempt,
+                        &mut progress,
+                    )?;
+                    t.remeshed = Some(report);
+                    t
+                }
+                Err(e) => {
+                    failure = Some(e);
+                    continue;
+                }
+            }
+        } else {
+            tessellate_shrinking(mesh, opts, &schedule.shrinks, &mut attempt, &mut progress)?
+        };
+        if t.problem().is_none() {
+            return Ok(t);
+        }
+        first.get_or_insert(t);
+    }
+    match (first, failure) {
+        (Some(t), _) => Ok(t),
+        (None, Some(e)) => Err(e),
+        (None, None) => Err(TessError::BadParameter("nothing to try".into())),
+    }
 }
 
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler
@@ -256,6 +357,7 @@ pub fn tessellate(
         intersection_tolerance: opts.intersection_tolerance,
         infeasible,
         unmet,
+        remeshed: None,
     })
 }
 

@@ -124,12 +124,43 @@ pub struct InitialPattern {
 /// Inserts star tucks into `mesh` (§2.1). Errors: `shrink` outside (0, 1], a checkerboard
 /// layout the mesh cannot take, or an interior vertex with fewer than three star points.
 pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPattern, TessError> {
+    star_tucks_shrunk(mesh, opts, None)
+}
+
+/// [`star_tucks`] with a shrink per input face (`face_shrink[f]` in (0, 1], overriding
+/// `opts.shrink`): a smaller shrink where the tucks must open wider (Tachi 2014, Fig. 14: the
+/// tucks that a uniform shrink makes too tight). [`InitialPattern::shrink`] is then the
+/// smallest of them.
+pub fn star_tucks_shrunk(
+    mesh: &HalfEdgeMesh,
+    opts: &StarOptions,
+    face_shrink: Option<&[f64]>,
+) -> Result<InitialPattern, TessError> {
     if !(opts.shrink > 0.0 && opts.shrink <= 1.0) {
         return Err(TessError::BadParameter(format!(
             "shrink must be in (0, 1], got {}",
             opts.shrink
         )));
     }
+    if let Some(fs) = face_shrink {
+        if fs.len() != mesh.faces().len() {
+            return Err(TessError::BadParameter(format!(
+                "{} face shrinks for {} faces",
+                fs.len(),
+                mesh.faces().len()
+            )));
+        }
+        if let Some((f, s)) = fs
+            .iter()
+            .enumerate()
+            .find(|(_, s)| !(**s > 0.0 && **s <= 1.0))
+        {
+            return Err(TessError::BadParameter(format!(
+                "shrink of face {f} must be in (0, 1], got {s}"
+            )));
+        }
+    }
+    let shrink_of = |f: usize| face_shrink.map_or(opts.shrink, |fs| fs[f]);
     opts.tuck.validate().map_err(TessError::BadParameter)?;
     let colours = checkerboard_colours(mesh);
     let layout = match (opts.layout, colours.is_some()) {
@@ -176,7 +207,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         vertex_of_corner[h] = id;
         let f = hes[h].face as usize;
         let c = mesh.face_centroid(f);
-        let p = c + opts.shrink * (mesh.positions()[hes[h].from as usize] - c);
+        let p = c + shrink_of(f) * (mesh.positions()[hes[h].from as usize] - c);
         sums[id as usize].0 += p;
         sums[id as usize].1 += 1.0;
     }
@@ -268,7 +299,7 @@ pub fn star_tucks(mesh: &HalfEdgeMesh, opts: &StarOptions) -> Result<InitialPatt
         layout,
         depth,
         points,
-        shrink: opts.shrink,
+        shrink: face_shrink.map_or(opts.shrink, |fs| fs.iter().copied().fold(1.0, f64::min)),
         truncated,
     })
 }
@@ -365,5 +396,54 @@ fn union(uf: &mut [usize], a: usize, b: usize) {
     let (ra, rb) = (find(uf, a), find(uf, b));
     if ra != rb {
         uf[ra] = rb;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::tessellation::spherical_cap;
+
+    /// A uniform per-face shrink gives the pattern of the global one; a face left at shrink 1
+    /// keeps its corners on the input vertices (digon layout: every face has its own
+    /// corners), the others move towards their centroids by 1 − s.
+    #[test]
+    fn per_face_shrinks_move_each_face_by_its_own_factor() {
+        let mesh = spherical_cap(6, 2, 40.0, 50.0);
+        let he = HalfEdgeMesh::new(&mesh, 1e-9).expect("manifold");
+        let opts = StarOptions {
+            shrink: 0.7,
+            layout: TuckLayout::Digon,
+            ..StarOptions::default()
+        };
+        let global = star_tucks(&he, &opts).expect("pattern");
+        let nf = mesh.faces().len();
+        let uniform = star_tucks_shrunk(&he, &opts, Some(&vec![0.7; nf])).expect("pattern");
+        assert_eq!(global.mesh.positions, uniform.mesh.positions);
+        let mut shrinks = vec![0.7; nf];
+        shrinks[0] = 1.0;
+        let mixed = star_tucks_shrunk(&he, &opts, Some(&shrinks)).expect("pattern");
+        assert_eq!(mixed.shrink, 0.7);
+        let x = mesh.positions();
+        let hes = he.half_edges();
+        for h in he.face_half_edges(0) {
+            // Corner h of face 0 is the pattern vertex made for half-edge h (digon layout).
+            let v = hes[h as usize].from as usize;
+            let found = mixed.mesh.positions[..mixed.mesh.corner_count]
+                .iter()
+                .any(|p| p.distance(x[v]) < 1e-12);
+            assert!(found, "corner of face 0 at input vertex {v}");
+        }
+        let c = he.face_centroid(1);
+        let v = mesh.faces()[1][0] as usize;
+        let expected = c + 0.7 * (x[v] - c);
+        assert!(
+            mixed.mesh.positions[..mixed.mesh.corner_count]
+                .iter()
+                .any(|p| p.distance(expected) < 1e-12)
+        );
+        assert!(star_tucks_shrunk(&he, &opts, Some(&[0.5])).is_err());
+        shrinks[3] = 0.0;
+        assert!(star_tucks_shrunk(&he, &opts, Some(&shrinks)).is_err());
     }
 }

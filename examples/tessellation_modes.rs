@@ -1,0 +1,103 @@
+//! The table the tessellation issue asks for: every tuck mode on one mesh with the 0.5 mm
+//! stainless limits and the default face-shrink schedule, with iterations, time, the largest
+//! fold, the smallest angle between creases and the distance of the folded form's face corners
+//! to the input surface.
+//!
+//! `cargo run --release --example tessellation_modes -- MESH.obj [MODE ...]`
+//! `cargo run --release --example tessellation_modes -- cap N RINGS DEGREES RADIUS [MODE ...]`
+//! MODE is star, truncated, twisted or twist (all four by default).
+
+use std::time::Instant;
+
+use foldcam::design::tessellation::{
+    Limits, TessellateOptions, TuckKind, corner_distance, default_schedule, spherical_cap,
+    tessellate_scheduled,
+};
+use foldcam::mesh::read_mesh;
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let (mesh, rest) = match args.first().map(String::as_str) {
+        Some("cap") if args.len() >= 5 => {
+            let n: usize = args[1].parse()?;
+            let rings: usize = args[2].parse()?;
+            let deg: f64 = args[3].parse()?;
+            let radius: f64 = args[4].parse()?;
+            (spherical_cap(n, rings, deg, radius), &args[5..])
+        }
+        Some(path) => (read_mesh(std::path::Path::new(path))?, &args[1..]),
+        None => {
+            return Err(
+                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS [MODE...]".into(),
+            );
+        }
+    };
+    let modes: Vec<TuckKind> = if rest.is_empty() {
+        vec![
+            TuckKind::Star,
+            TuckKind::Truncated,
+            TuckKind::Twisted,
+            TuckKind::TwistFold,
+        ]
+    } else {
+        rest.iter()
+            .map(|m| match m.as_str() {
+                "star" => Ok(TuckKind::Star),
+                "truncated" => Ok(TuckKind::Truncated),
+                "twisted" => Ok(TuckKind::Twisted),
+                "twist" => Ok(TuckKind::TwistFold),
+                other => Err(format!("unknown mode {other}")),
+            })
+            .collect::<Result<_, _>>()?
+    };
+    println!(
+        "{} faces, limits: fold <= 165 deg, creases >= 30 deg apart (0.5 mm stainless)",
+        mesh.faces().len()
+    );
+    println!(
+        "| mode | result | schedule | iterations (last solve / all) | time s (last / all) | max fold deg | min crease angle deg | corners to surface mm (max / mean) |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    for kind in modes {
+        let mut opts = TessellateOptions::with_limits(Limits::from_degrees(165.0, 30.0));
+        opts.star.tuck.kind = kind;
+        let start = Instant::now();
+        let mut all_iterations = 0;
+        let mut last_start = Instant::now();
+        let t = tessellate_scheduled(
+            &mesh,
+            &opts,
+            &default_schedule(),
+            |_, t| {
+                all_iterations += t.report.iterations;
+                last_start = Instant::now();
+            },
+            |_| {},
+        )?;
+        let all = start.elapsed().as_secs_f64();
+        let last = last_start.elapsed().as_secs_f64();
+        all_iterations += t.report.iterations;
+        let d = corner_distance(&mesh, &t.mesh);
+        let r = &t.report.last;
+        println!(
+            "| {kind} | {} | {} | {} / {} | {:.2} / {:.2} | {:.2} | {:.2} | {:.2} / {:.2} |",
+            t.problem().unwrap_or_else(|| "ok".into()),
+            match &t.remeshed {
+                Some(r) => format!(
+                    "remeshed to {} faces, shrink {}",
+                    r.faces[1], t.initial.shrink
+                ),
+                None => format!("shrink {}", t.initial.shrink),
+            },
+            t.report.iterations,
+            all_iterations,
+            last,
+            all,
+            r.max_fold.to_degrees(),
+            r.min_vertex_angle.to_degrees(),
+            d.max,
+            d.mean
+        );
+    }
+    Ok(())
+}
