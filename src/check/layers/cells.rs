@@ -186,24 +186,79 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
             longest[r] = Some(i);
         }
     }
-    (0..n as u32)
-        .map(|i| {
-            let s = segments[i as usize];
-            if !grouped[i as usize] {
-                return s;
+    // Each grouped segment whose two ends both move onto its group's line, as the parameters
+    // of its ends along that line; the others as they are, or moved end by end.
+    let mut out: Vec<[DVec2; 2]> = Vec::with_capacity(n);
+    let mut on_line: Vec<Vec<(f64, f64)>> = vec![Vec::new(); n];
+    let mut first_of: Vec<Option<usize>> = vec![None; n];
+    for i in 0..n as u32 {
+        let s = segments[i as usize];
+        if !grouped[i as usize] {
+            out.push(s);
+            continue;
+        }
+        let r = root(&mut parent, i) as usize;
+        let Some(k) = longest[r] else {
+            out.push(s);
+            continue;
+        };
+        let [a, b] = segments[k as usize];
+        let u = (b - a).normalize_or_zero();
+        let t = s.map(|p| (p - a).dot(u));
+        let q = t.map(|t| a + u * t);
+        if q[0].distance(s[0]) <= 2.0 * tol && q[1].distance(s[1]) <= 2.0 * tol {
+            on_line[r].push((t[0].min(t[1]), t[0].max(t[1])));
+            if first_of[r].is_none() {
+                // The group's pieces take the place of its first segment.
+                first_of[r] = Some(out.len());
+                out.push([DVec2::ZERO; 2]);
             }
-            let r = root(&mut parent, i) as usize;
-            let Some(k) = longest[r] else {
-                return s;
-            };
-            let [a, b] = segments[k as usize];
-            let u = (b - a).normalize_or_zero();
-            s.map(|p| {
-                let q = a + u * (p - a).dot(u);
-                if q.distance(p) <= 2.0 * tol { q } else { p }
-            })
-        })
-        .collect()
+            continue;
+        }
+        out.push(std::array::from_fn(|j| {
+            if q[j].distance(s[j]) <= 2.0 * tol {
+                q[j]
+            } else {
+                s[j]
+            }
+        }));
+    }
+    // A pile of overlapping segments on one line becomes the pieces between its ends, each
+    // once: the same points and the same covered stretches, without the pile's every pair to
+    // test for crossings.
+    let mut pieces_at: Vec<(usize, Vec<[DVec2; 2]>)> = Vec::new();
+    for r in 0..n {
+        let Some(slot) = first_of[r] else {
+            continue;
+        };
+        let Some(k) = longest[r] else {
+            continue;
+        };
+        let [a, b] = segments[k as usize];
+        let u = (b - a).normalize_or_zero();
+        let intervals = &mut on_line[r];
+        intervals.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut ends: Vec<f64> = intervals.iter().flat_map(|&(lo, hi)| [lo, hi]).collect();
+        ends.sort_by(f64::total_cmp);
+        ends.dedup();
+        let mut pieces = Vec::new();
+        let (mut next, mut reach) = (0, f64::NEG_INFINITY);
+        for w in ends.windows(2) {
+            while next < intervals.len() && intervals[next].0 <= w[0] {
+                reach = reach.max(intervals[next].1);
+                next += 1;
+            }
+            if reach >= w[1] {
+                pieces.push([a + u * w[0], a + u * w[1]]);
+            }
+        }
+        pieces_at.push((slot, pieces));
+    }
+    pieces_at.sort_by_key(|p| std::cmp::Reverse(p.0));
+    for (slot, pieces) in pieces_at {
+        out.splice(slot..=slot, pieces);
+    }
+    out
 }
 
 /// The folded edges cut into a planar graph, and the merge distance chosen for it.
@@ -243,12 +298,18 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
         if tol < floor {
             break;
         }
+        let t0 = std::time::Instant::now();
         let mut sheet = raw(tol);
+        let t1 = t0.elapsed().as_secs_f64();
         let options = PlanarizeOptions {
             tolerance: Some(tol),
             faces: false,
         };
-        if planarize(&mut sheet, &options).is_err() {
+        let failed = planarize(&mut sheet, &options).is_err();
+        if std::env::var_os("LAYERS_TRACE").is_some() {
+            eprintln!("step {i}: raw {} segs {:.3}s, planarize {:.3}s -> {} v {} e", segments.len(), t1, t0.elapsed().as_secs_f64()-t1, sheet.vertices.len(), sheet.edges.len());
+        }
+        if failed {
             (run, last, length) = (None, (usize::MAX, usize::MAX), 0);
             continue;
         }
