@@ -360,8 +360,8 @@ fn explain(path: &Path, near: &[f64]) -> ExitCode {
             if foldcam::geom::segment::distance_to_point(a, b, at) > r {
                 continue;
             }
-            let sides = arr.segment_cells[s]
-                .map(|c| c.map(|c| (c, arr.cell_faces[c as usize].clone())));
+            let sides =
+                arr.segment_cells[s].map(|c| c.map(|c| (c, arr.cell_faces[c as usize].clone())));
             println!(
                 "segment {s}: {a:?} - {b:?}\n  edges {:?}\n  left {:?}\n  right {:?}",
                 arr.segment_edges[s], sides[0], sides[1]

@@ -112,7 +112,11 @@ const STABLE_REPEATS: usize = 3;
 /// Folded segments that lie along one line to within `tol` (each end of either within `tol`
 /// of the other's line, overlapping by more than `tol` along it), moved onto one line: the line of the
 /// longest segment of each such group, each end projected onto it when it lies within twice
-/// `tol` of it. Creases of different faces that fold onto one line differ by the rounding of
+/// `tol` of it. A group whose segments all move onto the line is returned as the pieces
+/// between their ends, each stretch once (in the place of the group's first segment): layers
+/// of a folded form pile dozens of creases on one line, and planarising the pile itself made
+/// its members cross one another at tiny angles, at places that moved with the merge
+/// distance (extra cells and constraints, and a false contradiction in Hashimoto's Venusaur). Creases of different faces that fold onto one line differ by the rounding of
 /// the file's coordinates (often single precision); left apart they cross at a very small
 /// angle at places that move with every merge distance, and the arrangement never settles.
 fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
@@ -298,17 +302,12 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
         if tol < floor {
             break;
         }
-        let t0 = std::time::Instant::now();
         let mut sheet = raw(tol);
-        let t1 = t0.elapsed().as_secs_f64();
         let options = PlanarizeOptions {
             tolerance: Some(tol),
             faces: false,
         };
         let failed = planarize(&mut sheet, &options).is_err();
-        if std::env::var_os("LAYERS_TRACE").is_some() {
-            eprintln!("step {i}: raw {} segs {:.3}s, planarize {:.3}s -> {} v {} e", segments.len(), t1, t0.elapsed().as_secs_f64()-t1, sheet.vertices.len(), sheet.edges.len());
-        }
         if failed {
             (run, last, length) = (None, (usize::MAX, usize::MAX), 0);
             continue;
@@ -578,5 +577,57 @@ pub fn interior_point(rings: &[Vec<DVec2>]) -> DVec2 {
             .and_then(|r| r.first())
             .copied()
             .unwrap_or(DVec2::ZERO),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::snap_to_common_lines;
+    use glam::DVec2;
+
+    #[test]
+    fn a_pile_of_collinear_segments_becomes_its_pieces_once() {
+        let p = |x: f64, y: f64| DVec2::new(x, y);
+        // Three overlapping strokes along y = 0 (one a rounding error off it), and one
+        // stroke crossing them.
+        let segments = [
+            [p(0.0, 0.0), p(2.0, 0.0)],
+            [p(1.0, 1e-12), p(3.0, 0.0)],
+            [p(2.5, 0.0), p(1.5, 0.0)],
+            [p(1.2, -1.0), p(1.2, 1.0)],
+        ];
+        let out = snap_to_common_lines(&segments, 1e-6);
+        // The cross stroke is left as it is.
+        assert!(out.contains(&segments[3]));
+        let mut pieces: Vec<(f64, f64)> = out
+            .iter()
+            .filter(|s| s[0].y.abs() < 1e-9 && s[1].y.abs() < 1e-9)
+            .map(|s| (s[0].x.min(s[1].x), s[0].x.max(s[1].x)))
+            .collect();
+        pieces.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Cut at every end: 0, 1, 1.5, 2, 2.5, 3; each stretch once.
+        let expected = [(0.0, 1.0), (1.0, 1.5), (1.5, 2.0), (2.0, 2.5), (2.5, 3.0)];
+        assert_eq!(pieces.len(), expected.len(), "{pieces:?}");
+        for (got, want) in pieces.iter().zip(expected) {
+            assert!(
+                (got.0 - want.0).abs() < 1e-9 && (got.1 - want.1).abs() < 1e-9,
+                "{pieces:?}"
+            );
+        }
+        assert_eq!(out.len(), expected.len() + 1);
+    }
+
+    #[test]
+    fn separate_stretches_of_one_line_leave_their_gap_open() {
+        let p = |x: f64| DVec2::new(x, 0.0);
+        let segments = [[p(0.0), p(2.0)], [p(1.0), p(1.5)], [p(3.0), p(4.0)]];
+        let out = snap_to_common_lines(&segments, 1e-6);
+        // The first two overlap and are one group; the third only shares their line.
+        assert!(out.contains(&segments[2]));
+        assert!(
+            !out.iter()
+                .any(|s| s[0].x.min(s[1].x) < 2.5 && s[0].x.max(s[1].x) > 2.5)
+        );
+        assert_eq!(out.len(), 4, "{out:?}");
     }
 }

@@ -245,14 +245,9 @@ impl LayerSolver {
             traced = copy;
             &traced
         };
-        let trace = std::env::var_os("LAYERS_TRACE").is_some();
-        let t0 = std::time::Instant::now();
         let folded = folded::fold_faces(cp, vertex_agreement(cp).max(tol))?;
-        if trace { eprintln!("fold {:.3}", t0.elapsed().as_secs_f64()); }
         let (arr, _) = cells::arrange(cp, &folded, tol);
-        if trace { eprintln!("arrange {:.3}", t0.elapsed().as_secs_f64()); }
         let sys = constraints::build(cp, &folded, &arr)?;
-        if trace { eprintln!("build {:.3} ({} constraints)", t0.elapsed().as_secs_f64(), sys.constraint_count()); }
         let mut solver = LayerSolver {
             report: LayerReport {
                 states: "0".into(),
@@ -279,14 +274,11 @@ impl LayerSolver {
             counts: Vec::new(),
         };
         solver.solve(opts);
-        if trace { eprintln!("solve {:.3}", t0.elapsed().as_secs_f64()); }
         Ok(solver)
     }
 
     fn solve(&mut self, opts: &LayerOptions) {
-        let te = std::time::Instant::now();
         let mut engine = Engine::new(&self.sys);
-        if std::env::var_os("LAYERS_TRACE").is_some() { eprintln!("  engine {:.3}", te.elapsed().as_secs_f64()); }
         for &(lit, e) in &self.sys.forced {
             if !engine.set_literal(lit) {
                 let (a, b) = self.sys.faces_of(lit >> 1);
@@ -298,11 +290,8 @@ impl LayerSolver {
             self.report.contradiction = Some(self.conflict(c, "propagation"));
             return;
         }
-        if std::env::var_os("LAYERS_TRACE").is_some() { eprintln!("  propagated {:.3}", te.elapsed().as_secs_f64()); }
         self.report.forced = engine.value.iter().filter(|&&v| v != -1).count();
-        let tc = std::time::Instant::now();
         let components = engine.components();
-        if std::env::var_os("LAYERS_TRACE").is_some() { eprintln!("  components {:.3}", tc.elapsed().as_secs_f64()); }
         let cap = opts.max_states.map(u128::from);
         let mut product = BigCount::one();
         let mut exact = true;

@@ -136,6 +136,21 @@ struct Transit {
     constraint: u32,
 }
 
+/// Choices the first, depth-first enumeration of a component may make before the component
+/// is counted by splitting instead (see [`Engine::count`]).
+const ENUMERATION_DECISIONS: u64 = 50_000;
+
+/// States the first enumeration lists one by one before the component is counted by
+/// splitting instead.
+const ENUMERATION_STATES: u128 = 4096;
+
+/// Components of at most this many variables are split again after every choice.
+const SPLIT_ALWAYS: usize = 256;
+
+/// Larger components are split again after a choice that settled at least one in this many
+/// of their variables (see [`Engine::branch`]).
+const SPLIT_SHARE: usize = 32;
+
 /// Most component counts remembered before the memory is cleared.
 const CACHE_ENTRIES: usize = 1 << 20;
 
@@ -406,7 +421,24 @@ impl<'a> Engine<'a> {
     /// the state numbered k (from 0, in depth-first order along `order`) and leaves it set;
     /// otherwise every value set by the search is undone.
     pub fn count(&mut self, order: &[u32], cap: Option<u128>, keep: Option<u128>) -> Count {
-        if keep.is_none() {
+        if keep.is_some() {
+            return self.enumerate(order, cap, keep, None).unwrap_or(Count {
+                states: 0,
+                exact: false,
+            });
+        }
+        // Depth-first along the breadth-first order first, as Flat-Folder does: each choice
+        // propagates next to the last, so dead ends show at once; components with few states
+        // (however many variables) are done this way. Many states, or a long search, go to
+        // counting by splitting.
+        let budget = Some(ENUMERATION_DECISIONS);
+        let first_cap = cap.map_or(ENUMERATION_STATES, |c| c.min(ENUMERATION_STATES));
+        if let Some(count) = self.enumerate(order, Some(first_cap), None, budget)
+            && (count.exact || cap.is_some_and(|c| count.states >= c))
+        {
+            return count;
+        }
+        {
             let mut vars: Vec<u32> = order
                 .iter()
                 .copied()
@@ -422,23 +454,30 @@ impl<'a> Engine<'a> {
             {
                 count.states = c;
             }
-            return count;
+            count
         }
-        self.enumerate(order, cap, keep)
     }
 
-    /// Depth-first enumeration of every state of `order` (see [`Engine::count`]).
-    fn enumerate(&mut self, order: &[u32], cap: Option<u128>, keep: Option<u128>) -> Count {
+    /// Depth-first enumeration of every state of `order` (see [`Engine::count`]); `None`
+    /// when more than `budget` choices were needed (everything undone).
+    fn enumerate(
+        &mut self,
+        order: &[u32],
+        cap: Option<u128>,
+        keep: Option<u128>,
+        budget: Option<u64>,
+    ) -> Option<Count> {
         let base = self.trail.len();
         let mut total: u128 = 0;
+        let mut choices: u64 = 0;
         let next_unset = |value: &[i8], from: usize| {
             (from..order.len()).find(|&p| value[order[p] as usize] == -1)
         };
         let Some(first) = next_unset(&self.value, 0) else {
-            return Count {
+            return Some(Count {
                 states: 1,
                 exact: true,
-            };
+            });
         };
         // (position in `order`, next value to try, trail length before trying it)
         let mut frames: Vec<(usize, i8, usize)> = vec![(first, 0, base)];
@@ -451,6 +490,11 @@ impl<'a> Engine<'a> {
             if let Some(top) = frames.last_mut() {
                 top.1 += 1;
             }
+            choices += 1;
+            if budget.is_some_and(|b| choices > b) {
+                self.undo_to(base);
+                return None;
+            }
             self.set_literal((order[pos] << 1) | (1 - next as u32));
             if self.propagate().is_err() {
                 continue;
@@ -459,27 +503,27 @@ impl<'a> Engine<'a> {
                 Some(p) => frames.push((p, 0, self.trail.len())),
                 None => {
                     if keep == Some(total) {
-                        return Count {
+                        return Some(Count {
                             states: total + 1,
                             exact: false,
-                        };
+                        });
                     }
                     total += 1;
                     if cap.is_some_and(|c| total >= c) {
                         self.undo_to(base);
-                        return Count {
+                        return Some(Count {
                             states: total,
                             exact: false,
-                        };
+                        });
                     }
                 }
             }
         }
         self.undo_to(base);
-        Count {
+        Some(Count {
             states: total,
             exact: true,
-        }
+        })
     }
 
     /// The unset variables of `vars` split into the components that the binding constraints
@@ -624,10 +668,7 @@ impl<'a> Engine<'a> {
     /// Branches on the variable of `comp` with the most constraints (see
     /// [`Engine::count_split`]).
     fn branch(&mut self, comp: &[u32], cap: Option<u128>) -> Count {
-        let Some(&pick) = comp
-            .iter()
-            .max_by_key(|&&v| (self.degree(v), v))
-        else {
+        let Some(&pick) = comp.iter().max_by_key(|&&v| (self.degree(v), v)) else {
             return Count {
                 states: 1,
                 exact: true,
@@ -641,7 +682,20 @@ impl<'a> Engine<'a> {
             let mark = self.trail.len();
             self.set_literal((pick << 1) | value);
             if self.propagate().is_ok() {
-                let c = self.count_split(comp, cap);
+                // Splitting walks every constraint of the component: worth it only when the
+                // choice settled a good share of it. Otherwise branch on in the same (still
+                // correct, if perhaps not independent) set of variables.
+                let settled = self.trail.len() - mark;
+                let c = if comp.len() <= SPLIT_ALWAYS || settled * SPLIT_SHARE >= comp.len() {
+                    self.count_split(comp, cap)
+                } else {
+                    let rest: Vec<u32> = comp
+                        .iter()
+                        .copied()
+                        .filter(|&v| self.value[v as usize] == -1)
+                        .collect();
+                    self.branch(&rest, cap)
+                };
                 total.exact &= c.exact;
                 total.states = total.states.saturating_add(c.states);
                 total.exact &= total.states != u128::MAX;
@@ -762,7 +816,9 @@ mod tests {
             }
             for comp in engine.components() {
                 let split = engine.count(&comp, None, None);
-                let listed = engine.enumerate(&comp, None, None);
+                let listed = engine
+                    .enumerate(&comp, None, None, None)
+                    .expect("no budget");
                 assert_eq!(split, listed, "seed {seed}");
             }
         }
