@@ -37,7 +37,8 @@ pub fn main() -> ExitCode {
         return one(Path::new(args.get(1).map_or("", String::as_str)));
     }
     if args.first().map(String::as_str) == Some("--explain") {
-        return explain(Path::new(args.get(1).map_or("", String::as_str)));
+        let near: Vec<f64> = args[2..].iter().filter_map(|a| a.parse().ok()).collect();
+        return explain(Path::new(args.get(1).map_or("", String::as_str)), &near);
     }
     let mut timeout = 30.0;
     let mut filter = String::new();
@@ -276,18 +277,28 @@ fn one(path: &Path) -> ExitCode {
         return ExitCode::SUCCESS;
     }
     match solve_layers(&cp, &LayerOptions::default()) {
-        Ok(r) => println!(
-            "{} {} components={} variables={} constraints={:?} comps={:?}",
-            r.states,
-            if r.exact { "exact" } else { "capped" },
-            r.components,
-            r.variables,
-            r.constraints,
-            r.component_states
-                .iter()
-                .map(|c| c.states.clone())
-                .collect::<Vec<_>>()
-        ),
+        Ok(r) => {
+            println!(
+                "{} {} components={} variables={} constraints={:?} comps={:?}",
+                r.states,
+                if r.exact { "exact" } else { "capped" },
+                r.components,
+                r.variables,
+                r.constraints,
+                r.component_states
+                    .iter()
+                    .map(|c| c.states.clone())
+                    .collect::<Vec<_>>()
+            );
+            // A second line (the set's summary reads only the first): where a
+            // contradiction is.
+            if let Some(c) = &r.contradiction {
+                println!(
+                    "contradiction {}: faces {:?} at folded {:?}, pattern {:?}",
+                    c.kind, c.faces, c.folded_position, c.positions
+                );
+            }
+        }
         Err(e) => println!("error: {e}"),
     }
     ExitCode::SUCCESS
@@ -296,7 +307,11 @@ fn one(path: &Path) -> ExitCode {
 /// Prints, for one file, the merge distance the arrangement settled on as a divisor of the
 /// shortest folded edge (Flat-Folder's CSV column `eps` is the divisor it settled on), the
 /// numbers of cells and segments, and the solver's counts.
-fn explain(path: &Path) -> ExitCode {
+///
+/// With `near` = `[x, y, r]` (folded coordinates), also lists the arrangement's segments
+/// within `r` of `(x, y)`: their ends, the pattern faces of the cells on either side and the
+/// pattern edges along them.
+fn explain(path: &Path, near: &[f64]) -> ExitCode {
     let mut cp = match formats::load(path) {
         Ok(i) => i.pattern,
         Err(e) => {
@@ -339,5 +354,19 @@ fn explain(path: &Path) -> ExitCode {
         arr.cell_faces.len(),
         arr.segment_cells.len()
     );
+    if let [x, y, r] = *near {
+        let at = glam::DVec2::new(x, y);
+        for (s, &[a, b]) in arr.segment_ends.iter().enumerate() {
+            if foldcam::geom::segment::distance_to_point(a, b, at) > r {
+                continue;
+            }
+            let sides =
+                arr.segment_cells[s].map(|c| c.map(|c| (c, arr.cell_faces[c as usize].clone())));
+            println!(
+                "segment {s}: {a:?} - {b:?}\n  edges {:?}\n  left {:?}\n  right {:?}",
+                arr.segment_edges[s], sides[0], sides[1]
+            );
+        }
+    }
     one(path)
 }

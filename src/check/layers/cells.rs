@@ -112,7 +112,11 @@ const STABLE_REPEATS: usize = 3;
 /// Folded segments that lie along one line to within `tol` (each end of either within `tol`
 /// of the other's line, overlapping by more than `tol` along it), moved onto one line: the line of the
 /// longest segment of each such group, each end projected onto it when it lies within twice
-/// `tol` of it. Creases of different faces that fold onto one line differ by the rounding of
+/// `tol` of it. A group whose segments all move onto the line is returned as the pieces
+/// between their ends, each stretch once (in the place of the group's first segment): layers
+/// of a folded form pile dozens of creases on one line, and planarising the pile itself made
+/// its members cross one another at tiny angles, at places that moved with the merge
+/// distance (extra cells and constraints, and a false contradiction in Hashimoto's Venusaur). Creases of different faces that fold onto one line differ by the rounding of
 /// the file's coordinates (often single precision); left apart they cross at a very small
 /// angle at places that move with every merge distance, and the arrangement never settles.
 fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
@@ -186,24 +190,79 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
             longest[r] = Some(i);
         }
     }
-    (0..n as u32)
-        .map(|i| {
-            let s = segments[i as usize];
-            if !grouped[i as usize] {
-                return s;
+    // Each grouped segment whose two ends both move onto its group's line, as the parameters
+    // of its ends along that line; the others as they are, or moved end by end.
+    let mut out: Vec<[DVec2; 2]> = Vec::with_capacity(n);
+    let mut on_line: Vec<Vec<(f64, f64)>> = vec![Vec::new(); n];
+    let mut first_of: Vec<Option<usize>> = vec![None; n];
+    for i in 0..n as u32 {
+        let s = segments[i as usize];
+        if !grouped[i as usize] {
+            out.push(s);
+            continue;
+        }
+        let r = root(&mut parent, i) as usize;
+        let Some(k) = longest[r] else {
+            out.push(s);
+            continue;
+        };
+        let [a, b] = segments[k as usize];
+        let u = (b - a).normalize_or_zero();
+        let t = s.map(|p| (p - a).dot(u));
+        let q = t.map(|t| a + u * t);
+        if q[0].distance(s[0]) <= 2.0 * tol && q[1].distance(s[1]) <= 2.0 * tol {
+            on_line[r].push((t[0].min(t[1]), t[0].max(t[1])));
+            if first_of[r].is_none() {
+                // The group's pieces take the place of its first segment.
+                first_of[r] = Some(out.len());
+                out.push([DVec2::ZERO; 2]);
             }
-            let r = root(&mut parent, i) as usize;
-            let Some(k) = longest[r] else {
-                return s;
-            };
-            let [a, b] = segments[k as usize];
-            let u = (b - a).normalize_or_zero();
-            s.map(|p| {
-                let q = a + u * (p - a).dot(u);
-                if q.distance(p) <= 2.0 * tol { q } else { p }
-            })
-        })
-        .collect()
+            continue;
+        }
+        out.push(std::array::from_fn(|j| {
+            if q[j].distance(s[j]) <= 2.0 * tol {
+                q[j]
+            } else {
+                s[j]
+            }
+        }));
+    }
+    // A pile of overlapping segments on one line becomes the pieces between its ends, each
+    // once: the same points and the same covered stretches, without the pile's every pair to
+    // test for crossings.
+    let mut pieces_at: Vec<(usize, Vec<[DVec2; 2]>)> = Vec::new();
+    for r in 0..n {
+        let Some(slot) = first_of[r] else {
+            continue;
+        };
+        let Some(k) = longest[r] else {
+            continue;
+        };
+        let [a, b] = segments[k as usize];
+        let u = (b - a).normalize_or_zero();
+        let intervals = &mut on_line[r];
+        intervals.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut ends: Vec<f64> = intervals.iter().flat_map(|&(lo, hi)| [lo, hi]).collect();
+        ends.sort_by(f64::total_cmp);
+        ends.dedup();
+        let mut pieces = Vec::new();
+        let (mut next, mut reach) = (0, f64::NEG_INFINITY);
+        for w in ends.windows(2) {
+            while next < intervals.len() && intervals[next].0 <= w[0] {
+                reach = reach.max(intervals[next].1);
+                next += 1;
+            }
+            if reach >= w[1] {
+                pieces.push([a + u * w[0], a + u * w[1]]);
+            }
+        }
+        pieces_at.push((slot, pieces));
+    }
+    pieces_at.sort_by_key(|p| std::cmp::Reverse(p.0));
+    for (slot, pieces) in pieces_at {
+        out.splice(slot..=slot, pieces);
+    }
+    out
 }
 
 /// The folded edges cut into a planar graph, and the merge distance chosen for it.
@@ -248,7 +307,8 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
             tolerance: Some(tol),
             faces: false,
         };
-        if planarize(&mut sheet, &options).is_err() {
+        let failed = planarize(&mut sheet, &options).is_err();
+        if failed {
             (run, last, length) = (None, (usize::MAX, usize::MAX), 0);
             continue;
         }
@@ -517,5 +577,57 @@ pub fn interior_point(rings: &[Vec<DVec2>]) -> DVec2 {
             .and_then(|r| r.first())
             .copied()
             .unwrap_or(DVec2::ZERO),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::snap_to_common_lines;
+    use glam::DVec2;
+
+    #[test]
+    fn a_pile_of_collinear_segments_becomes_its_pieces_once() {
+        let p = |x: f64, y: f64| DVec2::new(x, y);
+        // Three overlapping strokes along y = 0 (one a rounding error off it), and one
+        // stroke crossing them.
+        let segments = [
+            [p(0.0, 0.0), p(2.0, 0.0)],
+            [p(1.0, 1e-12), p(3.0, 0.0)],
+            [p(2.5, 0.0), p(1.5, 0.0)],
+            [p(1.2, -1.0), p(1.2, 1.0)],
+        ];
+        let out = snap_to_common_lines(&segments, 1e-6);
+        // The cross stroke is left as it is.
+        assert!(out.contains(&segments[3]));
+        let mut pieces: Vec<(f64, f64)> = out
+            .iter()
+            .filter(|s| s[0].y.abs() < 1e-9 && s[1].y.abs() < 1e-9)
+            .map(|s| (s[0].x.min(s[1].x), s[0].x.max(s[1].x)))
+            .collect();
+        pieces.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Cut at every end: 0, 1, 1.5, 2, 2.5, 3; each stretch once.
+        let expected = [(0.0, 1.0), (1.0, 1.5), (1.5, 2.0), (2.0, 2.5), (2.5, 3.0)];
+        assert_eq!(pieces.len(), expected.len(), "{pieces:?}");
+        for (got, want) in pieces.iter().zip(expected) {
+            assert!(
+                (got.0 - want.0).abs() < 1e-9 && (got.1 - want.1).abs() < 1e-9,
+                "{pieces:?}"
+            );
+        }
+        assert_eq!(out.len(), expected.len() + 1);
+    }
+
+    #[test]
+    fn separate_stretches_of_one_line_leave_their_gap_open() {
+        let p = |x: f64| DVec2::new(x, 0.0);
+        let segments = [[p(0.0), p(2.0)], [p(1.0), p(1.5)], [p(3.0), p(4.0)]];
+        let out = snap_to_common_lines(&segments, 1e-6);
+        // The first two overlap and are one group; the third only shares their line.
+        assert!(out.contains(&segments[2]));
+        assert!(
+            !out.iter()
+                .any(|s| s[0].x.min(s[1].x) < 2.5 && s[0].x.max(s[1].x) > 2.5)
+        );
+        assert_eq!(out.len(), 4, "{out:?}");
     }
 }

@@ -62,16 +62,22 @@ pub struct Constraint {
     pub place: Place,
 }
 
-/// Most transitivity triples generated before the problem is refused as too large.
-pub const MAX_TRIPLES: usize = 60_000_000;
+/// Most transitivity triples generated before the problem is refused as too large: about
+/// 48 bytes each with the solver's rows (3.8 GB at the limit). Imai's Shrimp v2 has 67.5
+/// million (Flat-Folder's count).
+pub const MAX_TRIPLES: usize = 80_000_000;
 
 /// The constraint system of one folded form.
 #[derive(Clone, Debug, Default)]
 pub struct System {
     /// Face pairs `(lo, hi)` packed as `lo << 32 | hi`, sorted: the variables.
     pub pairs: Vec<u64>,
-    /// Constraints.
+    /// Constraints other than the transitivity ones of [`System::triples`] (numbered first).
     pub constraints: Vec<Constraint>,
+    /// Transitivity constraints, numbered after [`System::constraints`]: the variables of "a
+    /// above b", "a above c" and "b above c" for three faces `a < b < c` (so no literal is
+    /// negated). Kept apart, at 12 bytes each: real designs have tens of millions.
+    pub triples: Vec<[u32; 3]>,
     /// Forced literals from mountain and valley creases: `(literal, edge)`.
     pub forced: Vec<(u32, u32)>,
     /// Constraint counts by [`Kind`].
@@ -94,6 +100,42 @@ impl System {
     pub fn faces_of(&self, var: u32) -> (u32, u32) {
         let k = self.pairs[var as usize];
         ((k >> 32) as u32, k as u32)
+    }
+
+    /// Number of constraints, the transitivity triples included.
+    pub fn constraint_count(&self) -> usize {
+        self.constraints.len() + self.triples.len()
+    }
+
+    /// The kind and literals of constraint `c` (see [`System::triples`] for the numbering).
+    #[inline]
+    pub fn lits(&self, c: u32) -> (Kind, [u32; 6], usize) {
+        let n = self.constraints.len();
+        if (c as usize) < n {
+            let con = &self.constraints[c as usize];
+            (con.kind, con.lits, con.len as usize)
+        } else {
+            let [x, y, z] = self.triples[c as usize - n];
+            (Kind::Transitivity, [x << 1, y << 1, z << 1, 0, 0, 0], 3)
+        }
+    }
+
+    /// Constraint `c` written out (see [`System::triples`] for the numbering).
+    pub fn constraint(&self, c: u32) -> Constraint {
+        let n = self.constraints.len();
+        if (c as usize) < n {
+            return self.constraints[c as usize].clone();
+        }
+        let (kind, lits, len) = self.lits(c);
+        let (a, b) = self.faces_of(lits[0] >> 1);
+        let (_, d) = self.faces_of(lits[2] >> 1);
+        Constraint {
+            kind,
+            lits,
+            len: len as u8,
+            faces: [a, b, d, d],
+            place: Place::Common,
+        }
     }
 
     fn push(&mut self, kind: Kind, faces: &[u32], pairs: &[(u32, u32)], place: Place) {
@@ -232,13 +274,45 @@ fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result
         .filter(|faces| seen.insert(faces))
         .collect();
     let (face_cells, n_faces) = face_cells(&cells);
+    // The variables of each face's pairs with higher faces are one run of `pairs`: where each
+    // run starts, and the variable of `(a, c)` for every `c` of the current face `a`.
+    let n_rows = sys
+        .pairs
+        .last()
+        .map_or(0, |&k| (k >> 32) as usize + 1)
+        .max(n_faces);
+    let mut row_start = vec![sys.pairs.len() as u32; n_rows + 1];
+    for (i, &key) in sys.pairs.iter().enumerate().rev() {
+        row_start[(key >> 32) as usize] = i as u32;
+    }
+    for a in (0..n_rows).rev() {
+        row_start[a] = row_start[a].min(row_start[a + 1]);
+    }
+    let var_in_row = |x: usize, y: u32| -> Option<u32> {
+        let (lo, hi) = (row_start[x] as usize, row_start[x + 1] as usize);
+        sys.pairs[lo..hi]
+            .binary_search_by_key(&y, |&k| k as u32)
+            .ok()
+            .map(|j| (lo + j) as u32)
+    };
+    let mut var_of_a = vec![u32::MAX; n_faces];
+    let mut current_a = usize::MAX;
     let mut mark = vec![u32::MAX; n_faces];
     let mut thirds: Vec<u32> = Vec::new();
-    let mut triples: Vec<[u32; 3]> = Vec::new();
+    let mut found: Vec<[u32; 3]> = Vec::new();
     for (i, &key) in sys.pairs.iter().enumerate() {
         let (a, b) = ((key >> 32) as usize, (key & 0xffff_ffff) as usize);
         if b >= n_faces {
             continue;
+        }
+        if a != current_a {
+            current_a = a;
+            for j in row_start[a]..row_start[a + 1] {
+                // Faces beyond `n_faces` are in no cell of three: never a third face.
+                if let Some(slot) = var_of_a.get_mut(sys.pairs[j as usize] as u32 as usize) {
+                    *slot = j;
+                }
+            }
         }
         thirds.clear();
         let (ca, cb) = (&face_cells[a], &face_cells[b]);
@@ -260,23 +334,27 @@ fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result
             }
         }
         thirds.sort_unstable();
-        triples.extend(thirds.iter().map(|&c| [a as u32, b as u32, c]));
-        if triples.len() > MAX_TRIPLES {
+        // a < b < c: every literal "x above y" has x < y, so none is negated.
+        for &c in &thirds {
+            let ac = var_of_a[c as usize];
+            let Some(bc) = var_in_row(b, c) else {
+                continue;
+            };
+            if ac == u32::MAX || row_start[a] > ac || ac >= row_start[a + 1] {
+                continue;
+            }
+            found.push([i as u32, ac, bc]);
+        }
+        if found.len() > MAX_TRIPLES {
             return Err(LayerError::TooLarge {
                 what: "transitivity constraints",
-                count: triples.len(),
+                count: found.len(),
                 limit: MAX_TRIPLES,
             });
         }
     }
-    for [a, b, d] in triples {
-        sys.push(
-            Kind::Transitivity,
-            &[a, b, d],
-            &[(a, b), (a, d), (b, d)],
-            Place::Common,
-        );
-    }
+    sys.counts[Kind::Transitivity as usize] = found.len();
+    sys.triples = found;
     Ok(())
 }
 

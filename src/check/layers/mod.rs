@@ -534,7 +534,7 @@ impl LayerSolver {
     }
 
     fn conflict(&self, c: u32, stage: &str) -> Contradiction {
-        let con = &self.sys.constraints[c as usize];
+        let con = &self.sys.constraint(c);
         let n = match con.kind {
             Kind::TacoTaco | Kind::TortillaTortilla => 4,
             Kind::TacoTortilla | Kind::Transitivity => 3,
