@@ -616,3 +616,28 @@ async fn legend() -> Json<Value> {
     let fault = format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
     Json(json!({ "assignments": entries, "fault": fault }))
 }
+
+/// A download: the bytes with a content type and a file name made safe for the header.
+pub(super) fn download(mime: &'static str, file: &str, bytes: Vec<u8>) -> Response {
+    let safe: String = file
+        .chars()
+        .map(|c| {
+            if c.is_ascii_graphic() && c != '"' && c != '\\' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    (
+        [
+            (header::CONTENT_TYPE, mime.to_string()),
+            (
+                header::CONTENT_DISPOSITION,
+                format!("attachment; filename=\"{safe}\""),
+            ),
+        ],
+        bytes,
+    )
+        .into_response()
+}

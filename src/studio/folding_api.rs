@@ -26,14 +26,16 @@ use std::sync::{Arc, Mutex, PoisonError};
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, QueryRejection};
 use axum::extract::{Query, State};
-use axum::http::{StatusCode, header};
-use axum::response::{IntoResponse, Response};
+use axum::http::StatusCode;
+use axum::response::Response;
 use axum::routing::{get, post};
 use axum::{Json, Router};
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use super::api::{ApiError, ApiResult, Opened, PathId, Studio, blocking, opened, upload_name};
+use super::api::{
+    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_name,
+};
 use super::document::Document;
 use super::edit_api::json_body;
 use crate::design::folding::Folding;
@@ -540,31 +542,6 @@ async fn forward(
         Ok(Json(session_view(id, s)))
     })
     .await
-}
-
-/// A download: the bytes with a content type and a file name made safe for the header.
-fn download(mime: &'static str, file: &str, bytes: Vec<u8>) -> Response {
-    let safe: String = file
-        .chars()
-        .map(|c| {
-            if c.is_ascii_graphic() && c != '"' && c != '\\' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect();
-    (
-        [
-            (header::CONTENT_TYPE, mime.to_string()),
-            (
-                header::CONTENT_DISPOSITION,
-                format!("attachment; filename=\"{safe}\""),
-            ),
-        ],
-        bytes,
-    )
-        .into_response()
 }
 
 /// The file stem a session's downloads take.

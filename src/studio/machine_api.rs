@@ -8,12 +8,12 @@ use axum::Json;
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, PathRejection, QueryRejection};
 use axum::extract::{Path, Query, State};
-use axum::http::{StatusCode, header};
-use axum::response::{IntoResponse, Response};
+use axum::http::StatusCode;
+use axum::response::Response;
 use serde::Deserialize;
 use serde_json::{Value, json};
 
-use super::api::{ApiError, ApiResult, PathId, Studio, blocking, upload_name};
+use super::api::{ApiError, ApiResult, PathId, Studio, blocking, download, upload_name};
 use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
 use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
@@ -113,28 +113,7 @@ pub(super) async fn cut(
         } else {
             format!("{stem}.{}", kind.extension())
         };
-        // The file name is ours (a stem of letters the user chose, quoted safely).
-        let safe: String = file
-            .chars()
-            .map(|c| {
-                if c.is_ascii_graphic() && c != '"' && c != '\\' {
-                    c
-                } else {
-                    '_'
-                }
-            })
-            .collect();
-        Ok((
-            [
-                (header::CONTENT_TYPE, "application/octet-stream".to_string()),
-                (
-                    header::CONTENT_DISPOSITION,
-                    format!("attachment; filename=\"{safe}\""),
-                ),
-            ],
-            bytes,
-        )
-            .into_response())
+        Ok(download("application/octet-stream", &file, bytes))
     })
     .await
 }

@@ -297,6 +297,21 @@ mod tests {
     }
 
     /// Applies gestures one after the other; returns the folding and the steps made.
+    /// The steps written as a script on the square sheet, read back and run.
+    fn replay(steps: Vec<StepSpec>) -> Folding {
+        let script = Script {
+            title: None,
+            sheet: SheetSpec {
+                square: Some(SIDE),
+                rectangle: None,
+                polygon: None,
+            },
+            snap: SnapSpec::default(),
+            steps,
+        };
+        run_script(&parse_script(&write_script(&script)).unwrap()).unwrap()
+    }
+
     fn perform(gestures: &[Gesture]) -> (Folding, Vec<StepSpec>) {
         let mut f = square();
         let mut steps = Vec::new();
@@ -402,17 +417,7 @@ mod tests {
         let expected = folds(&crease_pattern(&run_script(&example).unwrap()).pattern);
         assert_eq!(folds(&crease_pattern(&f).pattern), expected);
         // The written script replays to the same pattern.
-        let script = Script {
-            title: None,
-            sheet: SheetSpec {
-                square: Some(SIDE),
-                rectangle: None,
-                polygon: None,
-            },
-            snap: SnapSpec::default(),
-            steps,
-        };
-        let replayed = run_script(&parse_script(&write_script(&script)).unwrap()).unwrap();
+        let replayed = replay(steps);
         assert_eq!(
             crease_pattern(&replayed).pattern,
             crease_pattern(&f).pattern
@@ -426,17 +431,7 @@ mod tests {
             [20.0, 31.0],
             Operation::FoldUp { angle_deg: 75.0 },
         )]);
-        let script = Script {
-            title: Some("fold up".into()),
-            sheet: SheetSpec {
-                square: Some(SIDE),
-                rectangle: None,
-                polygon: None,
-            },
-            snap: SnapSpec::default(),
-            steps,
-        };
-        let replayed = run_script(&parse_script(&write_script(&script)).unwrap()).unwrap();
+        let replayed = replay(steps);
         assert_eq!(replayed.current(), f.current());
     }
 
@@ -455,17 +450,7 @@ mod tests {
         );
         let drag = steps[0].drag.as_ref().unwrap();
         assert!(drag.edge && drag.from[1] == SIDE, "{drag:?}");
-        let script = Script {
-            title: None,
-            sheet: SheetSpec {
-                square: Some(SIDE),
-                rectangle: None,
-                polygon: None,
-            },
-            snap: SnapSpec::default(),
-            steps,
-        };
-        let replayed = run_script(&parse_script(&write_script(&script)).unwrap()).unwrap();
+        let replayed = replay(steps);
         assert_eq!(replayed.current(), f.current());
     }
 
