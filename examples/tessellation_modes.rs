@@ -77,7 +77,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let all = start.elapsed().as_secs_f64();
         let last = last_start.elapsed().as_secs_f64();
         all_iterations += t.report.iterations;
-        let d = corner_distance(&mesh, &t.mesh);
+        let d = corner_distance(&mesh, &t.mesh).ok_or("the input mesh has no area")?;
         let r = &t.report.last;
         println!(
             "| {kind} | {} | {} | {} / {} | {:.2} / {:.2} | {:.2} | {:.2} | {:.2} / {:.2} |",

@@ -5,15 +5,27 @@
 use std::path::Path;
 
 use super::{Progress, SourceError};
-use crate::design::popup::fit::{CLOSED_SLACK_MM, Fitted};
+use crate::design::popup::fit::{CLOSED_SLACK_MM, FitError, Fitted};
 use crate::design::popup::integrity::{closed_overhang, loose_pieces_where};
 use crate::pattern::{CreasePattern, Face, FoldedState};
 
 /// Most loose pieces listed in a refusal.
 const LOOSE_SHOWN: usize = 20;
 
-/// Says (as a note) what fitting added, if anything; `what` names the paper that grew.
-pub fn report_fit<T>(input: &Path, fitted: &Fitted<T>, what: &str, progress: &mut dyn Progress) {
+/// The card `fit` gave back, after saying (as a note) what it added, if anything; `what`
+/// names the paper that grew. A fit that cannot hold the card refuses it.
+///
+/// # Errors
+/// [`SourceError::NotMade`] with the fit's reason.
+pub fn take_fit<T>(
+    input: &Path,
+    fit: Result<Fitted<T>, FitError>,
+    what: &str,
+    progress: &mut dyn Progress,
+) -> Result<T, SourceError> {
+    let fitted = fit.map_err(|e| SourceError::NotMade {
+        lines: vec![format!("{}: {e}", input.display())],
+    })?;
     if let Some(o) = fitted.before {
         progress.note(format!(
             "{}: folded shut, the card reached {:.1} mm beyond its outline (at x = {:.1}, y = \
@@ -25,6 +37,7 @@ pub fn report_fit<T>(input: &Path, fitted: &Fitted<T>, what: &str, progress: &mu
             fitted.added_mm
         ));
     }
+    Ok(fitted.card)
 }
 
 /// Checks that a card holds together and closes within its outline. Loose pieces refuse

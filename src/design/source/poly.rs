@@ -2,7 +2,7 @@
 //! asked, the replay of its operations with the pop-up check, the crease pattern and the
 //! card's own checks — what `foldcam popup poly` does before it writes anything.
 
-use super::card::{card_holds, report_fit};
+use super::card::{card_holds, take_fit};
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::popup::fit::fit_design;
 use crate::design::popup::polygon::{
@@ -68,17 +68,7 @@ pub fn build(
     let path = file.name;
     let design = parse_design(file.text()?).map_err(|e| SourceError::input(path, e))?;
     let design = if options.fit {
-        match fit_design(&design) {
-            Ok(fitted) => {
-                report_fit(path, &fitted, "back sheet", progress);
-                fitted.card
-            }
-            Err(e) => {
-                return Err(SourceError::NotMade {
-                    lines: vec![format!("{}: {e}", path.display())],
-                });
-            }
-        }
+        take_fit(path, fit_design(&design), "back sheet", progress)?
     } else {
         design
     };

@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use super::card::{card_holds, report_fit};
+use super::card::{card_holds, take_fit};
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::clock::Stopwatch;
 use crate::design::popup::fit::fit_voxel_card;
@@ -274,17 +274,7 @@ pub fn finish_card(
         return Err(SourceError::NotMade { lines });
     }
     let card = if options.fit {
-        match fit_voxel_card(&card) {
-            Ok(fitted) => {
-                report_fit(name, &fitted, "margin", progress);
-                fitted.card
-            }
-            Err(e) => {
-                return Err(SourceError::NotMade {
-                    lines: vec![format!("{}: {e}", name.display())],
-                });
-            }
-        }
+        take_fit(name, fit_voxel_card(&card), "margin", progress)?
     } else {
         card
     };

@@ -431,10 +431,11 @@ mod tests {
             })
             .fold(0.0f64, f64::max);
         let centre = DVec3::new(0.0, 0.0, -100.0);
+        let surface = crate::design::papercraft::ReferenceMesh::new(&cap).expect("the cap");
         for p in out.positions() {
             let d = p.distance(centre) - 100.0;
             assert!(d <= 1e-9 && d >= -sag - 1e-9, "{p} {d} (sag {sag})");
-            assert!(crate::design::tessellation::distance::point_to_mesh(&cap, *p) < 1e-9);
+            assert!(surface.project(*p).distance < 1e-9);
         }
     }
 }
