@@ -25,8 +25,8 @@
 
 use glam::DVec2;
 
-use crate::geom::HashGrid;
 use crate::geom::segment::project;
+use crate::geom::{DisjointSets, HashGrid};
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
 /// Default snapping tolerance relative to the drawing's bounding-box diagonal (1e-3: 0.28 mm
@@ -104,27 +104,19 @@ pub fn snap_junctions(cp: &mut CreasePattern, tolerance: f64) -> usize {
     for &v in &candidates {
         grid.insert(cp.vertices[v], v);
     }
-    let mut parent: Vec<usize> = (0..cp.vertices.len()).collect();
-    fn root(parent: &mut [usize], mut v: usize) -> usize {
-        while parent[v] != v {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        v
-    }
+    let mut groups = DisjointSets::new(cp.vertices.len());
     for &v in &candidates {
         let p = cp.vertices[v];
         for w in grid.near(p) {
             if w > v && p.distance(cp.vertices[w]) <= tolerance {
-                let (a, b) = (root(&mut parent, v), root(&mut parent, w));
-                parent[a.max(b)] = a.min(b);
+                groups.union(v, w);
             }
         }
     }
     // The clusters, each listed by its root.
     let mut clusters: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
     for &v in &candidates {
-        clusters.entry(root(&mut parent, v)).or_default().push(v);
+        clusters.entry(groups.find(v)).or_default().push(v);
     }
     // Every point from the positions as read, then every move: clusters do not see each
     // other's moves, whatever the order.

@@ -22,6 +22,7 @@ use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
 
+use crate::geom::DisjointSets;
 use crate::geom::triangulate::{TriangulateError, triangulate_polygon};
 use crate::pattern::{Assignment, CreasePattern, EdgeId, Face, FaceId, VertexId};
 
@@ -122,28 +123,6 @@ pub fn crease_target_deg(edge: &crate::pattern::Edge) -> Option<f64> {
     }
 }
 
-/// Union–find over face corners.
-struct Corners {
-    parent: Vec<u32>,
-}
-
-impl Corners {
-    fn find(&mut self, mut a: u32) -> u32 {
-        while self.parent[a as usize] != a {
-            let up = self.parent[self.parent[a as usize] as usize];
-            self.parent[a as usize] = up;
-            a = up;
-        }
-        a
-    }
-    fn union(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            self.parent[ra.max(rb) as usize] = ra.min(rb);
-        }
-    }
-}
-
 fn pair(a: VertexId, b: VertexId) -> (u32, u32) {
     let (a, b) = (a.index() as u32, b.index() as u32);
     (a.min(b), a.max(b))
@@ -193,9 +172,7 @@ impl BarHingeModel {
                 }
             }
         }
-        let mut uf = Corners {
-            parent: (0..corner_vertex.len() as u32).collect(),
-        };
+        let mut uf = DisjointSets::new(corner_vertex.len());
         let cut = |key: &(u32, u32)| {
             edge_of
                 .get(key)
@@ -207,7 +184,10 @@ impl BarHingeModel {
             }
             for w in fs.windows(2) {
                 for v in [key.0, key.1] {
-                    uf.union(corner_of[&(w[0], v)], corner_of[&(w[1], v)]);
+                    uf.union(
+                        corner_of[&(w[0], v)] as usize,
+                        corner_of[&(w[1], v)] as usize,
+                    );
                 }
             }
         }
@@ -216,7 +196,7 @@ impl BarHingeModel {
         let mut class_vertex: HashMap<u32, u32> = HashMap::new();
         let mut taken = vec![false; n];
         for c in 0..corner_vertex.len() as u32 {
-            let root = uf.find(c);
+            let root = uf.find(c as usize) as u32;
             if class_vertex.contains_key(&root) {
                 continue;
             }
@@ -232,7 +212,7 @@ impl BarHingeModel {
         }
         let mut model_of = |f: usize, v: VertexId| -> u32 {
             let c = corner_of[&(f as u32, v.index() as u32)];
-            class_vertex[&uf.find(c)]
+            class_vertex[&(uf.find(c as usize) as u32)]
         };
         let rest: Vec<DVec3> = source
             .iter()

@@ -10,6 +10,7 @@
 use glam::DVec2;
 
 use super::folded::FoldedFaces;
+use crate::geom::DisjointSets;
 use crate::pattern::faces::find_faces;
 use crate::pattern::{Assignment, CreasePattern, PlanarizeOptions, VertexId, planarize};
 
@@ -145,14 +146,7 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
             && t.iter().all(|&p| line_distance(s, p) <= tol)
             && s.iter().all(|&p| line_distance(t, p) <= tol)
     };
-    let mut parent: Vec<u32> = (0..n as u32).collect();
-    fn root(parent: &mut [u32], mut x: u32) -> u32 {
-        while parent[x as usize] != x {
-            parent[x as usize] = parent[parent[x as usize] as usize];
-            x = parent[x as usize];
-        }
-        x
-    }
+    let mut groups = DisjointSets::new(n);
     for i in 0..n {
         let (lo, hi) = boxes[i];
         let mut close = Vec::new();
@@ -169,10 +163,7 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
                 && lo.cmple(jhi).all()
                 && along(segments[i], segments[j as usize])
             {
-                let (a, b) = (root(&mut parent, i as u32), root(&mut parent, j));
-                if a != b {
-                    parent[a.max(b) as usize] = a.min(b);
-                }
+                groups.union(i, j as usize);
             }
         }
     }
@@ -181,7 +172,7 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
     let length = |i: u32| segments[i as usize][0].distance(segments[i as usize][1]);
     let mut grouped = vec![false; n];
     for i in 0..n as u32 {
-        let r = root(&mut parent, i) as usize;
+        let r = groups.find(i as usize);
         if r != i as usize {
             grouped[r] = true;
             grouped[i as usize] = true;
@@ -201,7 +192,7 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
             out.push(s);
             continue;
         }
-        let r = root(&mut parent, i) as usize;
+        let r = groups.find(i as usize);
         let Some(k) = longest[r] else {
             out.push(s);
             continue;

@@ -20,6 +20,7 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 
+use crate::geom::DisjointSets;
 use crate::geom::polygon::signed_area;
 use crate::pattern::faces::find_faces;
 use crate::pattern::{Assignment, CreasePattern, Face, FoldedState, VertexId};
@@ -73,14 +74,14 @@ pub fn loose_pieces_where(cp: &CreasePattern, paper: impl Fn(&Face) -> bool) -> 
             }
         }
     }
-    let mut parent: Vec<usize> = (0..faces.len()).collect();
+    let mut groups = DisjointSets::new(faces.len());
     for e in &cp.edges {
         if !holds(e.assignment) {
             continue;
         }
         if let Some(fs) = by_pair.get(&key(e.vertices[0], e.vertices[1])) {
             for w in fs.windows(2) {
-                union(&mut parent, w[0], w[1]);
+                groups.union(w[0], w[1]);
             }
         }
     }
@@ -95,7 +96,7 @@ pub fn loose_pieces_where(cp: &CreasePattern, paper: impl Fn(&Face) -> bool) -> 
             .map(|h| signed_area(h.iter().map(|&v| cp.position(v))))
             .sum();
         let area = signed_area(ring.iter().copied()) + holes;
-        let root = find(&mut parent, f);
+        let root = groups.find(f);
         *has_paper.entry(root).or_default() |= declared[f];
         let piece = pieces.entry(root).or_insert(LoosePiece {
             area_mm2: 0.0,
@@ -117,21 +118,6 @@ pub fn loose_pieces_where(cp: &CreasePattern, paper: impl Fn(&Face) -> bool) -> 
         .filter(|(root, _)| has_paper.get(root).copied().unwrap_or(false))
         .map(|(_, piece)| piece)
         .collect()
-}
-
-fn find(parent: &mut [usize], mut i: usize) -> usize {
-    while parent[i] != i {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    i
-}
-
-fn union(parent: &mut [usize], a: usize, b: usize) {
-    let (ra, rb) = (find(parent, a), find(parent, b));
-    if ra != rb {
-        parent[ra.max(rb)] = ra.min(rb);
-    }
 }
 
 /// How far a card folded shut reaches beyond its own outline.

@@ -11,6 +11,8 @@
 use glam::DVec2;
 use rayon::prelude::*;
 
+use crate::geom::DisjointSets;
+
 /// Cell size over tolerance: large enough that few points sit near a border, small enough that
 /// distinct vertices of a real drawing rarely share a cell.
 const CELL_OVER_TOL: f64 = 64.0;
@@ -18,9 +20,8 @@ const CELL_OVER_TOL: f64 = 64.0;
 /// Maps every vertex to the representative of its group (`rep[i] <= i`). Returns the map and
 /// the number of vertices merged into others.
 pub(super) fn merge_close(points: &[DVec2], tol: f64) -> (Vec<u32>, usize) {
-    let mut parent: Vec<u32> = (0..points.len() as u32).collect();
     if tol <= 0.0 || points.len() < 2 {
-        return (parent, 0);
+        return ((0..points.len() as u32).collect(), 0);
     }
     let grid = SortedCells::new(points, tol);
     let pairs: Vec<(u32, u32)> = grid
@@ -34,18 +35,17 @@ pub(super) fn merge_close(points: &[DVec2], tol: f64) -> (Vec<u32>, usize) {
             a.append(&mut b);
             a
         });
+    let mut groups = DisjointSets::new(points.len());
     for (a, b) in pairs {
-        union(&mut parent, a, b);
+        groups.union(a as usize, b as usize);
     }
-    let mut merged = 0;
-    for i in 0..parent.len() {
-        let r = find(&mut parent, i as u32);
-        parent[i] = r;
-        if r != i as u32 {
-            merged += 1;
-        }
-    }
-    (parent, merged)
+    let rep: Vec<u32> = groups.roots().into_iter().map(|r| r as u32).collect();
+    let merged = rep
+        .iter()
+        .enumerate()
+        .filter(|&(i, &r)| r != i as u32)
+        .count();
+    (rep, merged)
 }
 
 /// Vertex indices sorted by cell.
@@ -126,14 +126,11 @@ impl SortedCells {
                 _ => distinct.push(i),
             }
         }
-        let mut local: Vec<u32> = (0..distinct.len() as u32).collect();
+        let mut local = DisjointSets::new(distinct.len());
         for (k, &i) in distinct.iter().enumerate() {
             let p = points[i as usize];
             for (l, &j) in distinct.iter().enumerate().skip(k + 1) {
-                if points[j as usize].distance_squared(p) <= tol2
-                    && find(&mut local, k as u32) != find(&mut local, l as u32)
-                {
-                    union(&mut local, k as u32, l as u32);
+                if points[j as usize].distance_squared(p) <= tol2 && local.union(k, l) {
                     out.push((i, j));
                 }
             }
@@ -169,25 +166,6 @@ impl SortedCells {
     }
 }
 
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let p = parent[x as usize];
-        parent[x as usize] = parent[p as usize];
-        x = p;
-    }
-    x
-}
-
-/// Joins two groups, keeping the smaller index as the root.
-fn union(parent: &mut [u32], a: u32, b: u32) {
-    let ra = find(parent, a);
-    let rb = find(parent, b);
-    if ra != rb {
-        let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-        parent[hi as usize] = lo;
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -207,17 +185,15 @@ mod tests {
 
     /// Brute force: the same grouping from all pairs within `tol`.
     fn brute(points: &[DVec2], tol: f64) -> Vec<u32> {
-        let mut parent: Vec<u32> = (0..points.len() as u32).collect();
+        let mut groups = DisjointSets::new(points.len());
         for i in 0..points.len() {
             for j in 0..i {
                 if points[i].distance(points[j]) <= tol {
-                    union(&mut parent, i as u32, j as u32);
+                    groups.union(i, j);
                 }
             }
         }
-        (0..points.len() as u32)
-            .map(|i| find(&mut parent, i))
-            .collect()
+        groups.roots().into_iter().map(|r| r as u32).collect()
     }
 
     #[test]
