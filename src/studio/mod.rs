@@ -23,6 +23,7 @@ pub mod document;
 mod edit_api;
 pub mod flat;
 mod folding_api;
+mod tessellate_api;
 mod machine_api;
 pub mod settings;
 pub mod toolpath;
