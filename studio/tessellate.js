@@ -12,6 +12,8 @@ const POLL_MS = 200;
 /** Paper colours, as in the Folded view. */
 const FRONT = 0xf4efe6;
 const BACK = 0x6a8fd8;
+/** Opacity of the paper in the 3D view. */
+const PAPER_OPACITY = 0.8;
 /** Crease colours: within the limit from "barely folded" to "at the limit", and the faults. */
 const EASY = new THREE.Color(0x2e7d32);
 const NEAR = new THREE.Color(0xf2a900);
@@ -81,10 +83,10 @@ class Shell {
     this.camera.position.set(0, 0, this.radius * 3.4);
     this.camera.near = this.radius * 0.01;
     this.camera.far = this.radius * 20;
-    const front = new THREE.MeshLambertMaterial({ color: FRONT, side: THREE.FrontSide,
-      polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
-    const back = new THREE.MeshLambertMaterial({ color: BACK, side: THREE.BackSide,
-      polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
+    // A little see-through, so that the creases behind the surface (the tucks) show.
+    const paper = { transparent: true, opacity: PAPER_OPACITY, depthWrite: false };
+    const front = new THREE.MeshLambertMaterial({ color: FRONT, side: THREE.FrontSide, ...paper });
+    const back = new THREE.MeshLambertMaterial({ color: BACK, side: THREE.BackSide, ...paper });
     this.model.add(new THREE.Mesh(geometry, front), new THREE.Mesh(geometry, back));
   }
 
@@ -338,11 +340,12 @@ export class TessellationView {
     this.result = result;
     this.shell.showFolded(result.folded, result.limits.max_fold_angle);
     const v = result.violations;
+    const deg = (x) => `${Number(x.toFixed(2))}°`;
+    const [fold, angle] = [deg(result.limits.max_fold_angle), deg(result.limits.min_vertex_angle)];
     this.$('tess-violations').textContent = v.creases || v.vertices
-      ? `${v.creases} crease(s) and ${v.vertices} vertex(es) miss the limits (fold ≤ ${result.limits.max_fold_angle}°, ` +
-        `angle between creases ≥ ${result.limits.min_vertex_angle}°)`
-      : `every crease folds within ${result.limits.max_fold_angle}° and every angle between creases is at least ` +
-        `${result.limits.min_vertex_angle}°`;
+      ? `${v.creases} crease(s) and ${v.vertices} vertex(es) miss the limits (fold ≤ ${fold}, ` +
+        `angle between creases ≥ ${angle})`
+      : `every crease folds within ${fold} and every angle between creases is at least ${angle}`;
     this.$('tess-report').replaceChildren(...result.lines.join('\n').split('\n').map((l) => {
       const li = document.createElement('li'); li.textContent = l; return li;
     }));

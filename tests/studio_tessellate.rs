@@ -370,3 +370,76 @@ fn a_long_solve_is_cancelled_and_bad_options_are_refused() {
         "{body}"
     );
 }
+
+#[test]
+fn the_command_reads_a_design_file_whose_options_its_flags_override() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::copy(
+        repo_file("examples/tessellation/dome.obj"),
+        d.join("dome.obj"),
+    )
+    .unwrap();
+    let design = "mesh = \"dome.obj\"\n[tessellation]\ntuck = \"truncated\"\nshrink = 0.7\n";
+    std::fs::write(d.join("d.tess.toml"), design).unwrap();
+    let run = |args: &[&str]| foldcam(args, d);
+    let read = |name: &str| -> Value {
+        serde_json::from_slice(&std::fs::read(d.join(name)).unwrap()).unwrap()
+    };
+    // The file's truncated stars are what `--tuck truncated --shrink 0.7` makes.
+    assert!(
+        run(&["tessellate", "d.tess.toml", "-o", "file.fold"])
+            .status
+            .success()
+    );
+    let flags = ["--tuck", "truncated", "--shrink", "0.7", "-o", "flags.fold"];
+    assert!(
+        run(&[&["tessellate", "dome.obj"][..], &flags].concat())
+            .status
+            .success()
+    );
+    assert_same_fold(&read("file.fold"), &read("flags.fold"));
+    // A flag given overrides the file: `--tuck star` is the plain star at shrink 0.7.
+    let over = [
+        "tessellate",
+        "d.tess.toml",
+        "--tuck",
+        "star",
+        "-o",
+        "over.fold",
+    ];
+    assert!(run(&over).status.success());
+    let plain = [
+        "tessellate",
+        "dome.obj",
+        "--shrink",
+        "0.7",
+        "-o",
+        "plain.fold",
+    ];
+    assert!(run(&plain).status.success());
+    assert_same_fold(&read("over.fold"), &read("plain.fold"));
+    assert_ne!(
+        read("over.fold")["edges_vertices"],
+        read("file.fold")["edges_vertices"]
+    );
+
+    // Bad input: exit 2, the file and the key named, nothing written.
+    std::fs::write(
+        d.join("bad.tess.toml"),
+        "mesh = \"dome.obj\"\n[tessellation]\nmax_fold_angle = 200\n",
+    )
+    .unwrap();
+    let out = run(&["tessellate", "bad.tess.toml", "-o", "bad.fold"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("bad.tess.toml") && err.contains("max_fold_angle"),
+        "{err}"
+    );
+    std::fs::write(d.join("lost.tess.toml"), "mesh = \"nowhere.obj\"\n").unwrap();
+    let out = run(&["tessellate", "lost.tess.toml", "-o", "lost.fold"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("nowhere.obj"));
+    assert!(!d.join("bad.fold").exists() && !d.join("lost.fold").exists());
+}
