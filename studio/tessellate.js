@@ -12,8 +12,6 @@ const POLL_MS = 200;
 /** Paper colours, as in the Folded view. */
 const FRONT = 0xf4efe6;
 const BACK = 0x6a8fd8;
-/** Opacity of the paper in the 3D view. */
-const PAPER_OPACITY = 0.8;
 /** Crease colours: within the limit from "barely folded" to "at the limit", and the faults. */
 const EASY = new THREE.Color(0x2e7d32);
 const NEAR = new THREE.Color(0xf2a900);
@@ -80,11 +78,11 @@ class Shell {
     geometry.computeVertexNormals();
     this.centre = center.clone();
     this.radius = radius || 1;
-    this.camera.position.set(0, 0, this.radius * 3.4);
+    this.camera.position.set(0, 0, this.radius * 4.2);
     this.camera.near = this.radius * 0.01;
     this.camera.far = this.radius * 20;
-    // A little see-through, so that the creases behind the surface (the tucks) show.
-    const paper = { transparent: true, opacity: PAPER_OPACITY, depthWrite: false };
+    // Pushed back a little in depth, so that the creases drawn on the paper stay visible.
+    const paper = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
     const front = new THREE.MeshLambertMaterial({ color: FRONT, side: THREE.FrontSide, ...paper });
     const back = new THREE.MeshLambertMaterial({ color: BACK, side: THREE.BackSide, ...paper });
     this.model.add(new THREE.Mesh(geometry, front), new THREE.Mesh(geometry, back));

@@ -23,9 +23,9 @@ pub mod document;
 mod edit_api;
 pub mod flat;
 mod folding_api;
-mod tessellate_api;
 mod machine_api;
 pub mod settings;
+mod tessellate_api;
 pub mod toolpath;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
