@@ -14,9 +14,10 @@ export async function call(url, options = {}) {
   return body;
 }
 
-/** The file of a set to open: a paper-craft design (its mesh comes with it), else the first. */
+/** The file of a set to open: a paper-craft or tessellation design (its mesh comes with it),
+ * else the first. */
 export function mainFile(files) {
-  return files.find((f) => f.name.toLowerCase().endsWith('.craft.toml')) || files[0];
+  return files.find((f) => /\.(craft|tess)\.toml$/i.test(f.name)) || files[0];
 }
 
 /** Uploads the files dropped or picked together: the main one is opened, the others go with

@@ -4,10 +4,10 @@ use std::path::PathBuf;
 
 use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
-use foldcam::design::source::SourceError;
-use foldcam::design::source::tessellate::{
-    DEFAULT_MAX_FOLD_DEG, DEFAULT_MIN_VERTEX_DEG, MAX_ITERATIONS, TessellationOptions,
-    tessellate_mesh,
+use foldcam::design::source::tess_design::{self, TessSettings};
+use foldcam::design::source::tessellate::{MAX_ITERATIONS, TessellationOptions, tessellate_mesh};
+use foldcam::design::source::{
+    DesignFile, DesignKind, SourceError, mesh_path_beside, read_design_file,
 };
 use foldcam::design::tessellation::rigid::{RigidModel, RigidOptions, simulate};
 use foldcam::design::tessellation::{Remesh, TuckKind, TuckLayout};
@@ -65,28 +65,31 @@ pub enum Layout {
                   foldcam cut dome.fold -m linuxcnc-fiber -x stainless-0.5 -o dome.ngc"
 )]
 pub struct Args {
-    /// Input mesh (.obj or .stl), a disk with one boundary, in millimetres.
+    /// Input mesh (.obj or .stl), a disk with one boundary, in millimetres; or a tessellation
+    /// design (.tess.toml, as the studio saves it) naming its mesh and options, which the
+    /// options given here override.
     pub mesh: PathBuf,
     #[command(flatten)]
     pub out: super::design_output::DesignOutput,
-    /// Tuck structure.
-    #[arg(long, value_enum, default_value = "star")]
-    pub tuck: Tuck,
-    /// Gap layout of the star tucks.
-    #[arg(long, value_enum, default_value = "auto")]
-    pub layout: Layout,
+    /// Tuck structure [default: star].
+    #[arg(long, value_enum)]
+    pub tuck: Option<Tuck>,
+    /// Gap layout of the star tucks [default: auto].
+    #[arg(long, value_enum)]
+    pub layout: Option<Layout>,
     /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6, 0.5,
     /// 0.45 and 0.4 are tried in turn until the result converges without face collisions.
     #[arg(long)]
     pub shrink: Option<f64>,
     /// Truncated star and twist fold: initial size of the flat n-gon, the fraction in (0, 1)
-    /// of the way from the key vertex towards each face corner (the solver then adapts it).
-    #[arg(long, default_value_t = 0.3)]
-    pub truncation: f64,
+    /// of the way from the key vertex towards each face corner (the solver then adapts it)
+    /// [default: 0.3].
+    #[arg(long)]
+    pub truncation: Option<f64>,
     /// Twisted star and twist fold: initial twist about the vertex normal, degrees (non-zero,
-    /// within ±90; the sign picks the handedness).
-    #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
-    pub twist: f64,
+    /// within ±90; the sign picks the handedness) [default: 15].
+    #[arg(long, allow_negative_numbers = true)]
+    pub twist: Option<f64>,
     /// Largest fold angle, degrees (180 − δ_fold).
     #[arg(long, value_parser = degrees)]
     pub max_fold_angle: Option<f64>,
@@ -106,9 +109,9 @@ pub struct Args {
     /// when the input has face corners sharper than the vertex-angle limit.
     #[arg(long, value_name = "FACES", num_args = 0..=1, default_missing_value = "0")]
     pub remesh: Option<usize>,
-    /// Newton iteration cap.
-    #[arg(long, default_value_t = 200)]
-    pub max_iterations: usize,
+    /// Newton iteration cap [default: 200].
+    #[arg(long)]
+    pub max_iterations: Option<usize>,
     /// Write a preview of the folded form.
     #[arg(long)]
     pub png: Option<PathBuf>,
@@ -125,44 +128,25 @@ pub struct Args {
 
 /// Runs `foldcam tessellate`.
 pub fn run(args: Args) -> Result<Outcome> {
-    if args.max_iterations == 0 || args.max_iterations > MAX_ITERATIONS {
+    if args
+        .max_iterations
+        .is_some_and(|n| n == 0 || n > MAX_ITERATIONS)
+    {
         bail!("--max-iterations must be between 1 and {MAX_ITERATIONS}");
     }
-    let mesh = read_mesh(&args.mesh).map_err(|e| anyhow!("{}: {e}", args.mesh.display()))?;
-    let (mut fold, mut corner) = (DEFAULT_MAX_FOLD_DEG, DEFAULT_MIN_VERTEX_DEG);
+    let (mesh_path, from_file) = design_or_mesh(&args)?;
+    let mesh = read_mesh(&mesh_path).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
+    let mut options = TessellationOptions::default();
     if let Some(name) = &args.out.material {
         let m = load_material(name)?;
-        (fold, corner) = (m.limits.max_fold_angle_deg, m.limits.min_vertex_angle_deg);
+        options.max_fold_angle_deg = m.limits.max_fold_angle_deg;
+        options.min_vertex_angle_deg = m.limits.min_vertex_angle_deg;
     }
-    let options = TessellationOptions {
-        tuck: match args.tuck {
-            Tuck::Star => TuckKind::Star,
-            Tuck::Truncated => TuckKind::Truncated,
-            Tuck::Twisted => TuckKind::Twisted,
-            Tuck::Twist => TuckKind::TwistFold,
-        },
-        layout: match args.layout {
-            Layout::Auto => TuckLayout::Auto,
-            Layout::Checkerboard => TuckLayout::Checkerboard,
-            Layout::Digon => TuckLayout::Digon,
-        },
-        shrink: args.shrink,
-        truncation: args.truncation,
-        twist_deg: args.twist,
-        max_fold_angle_deg: args.max_fold_angle.unwrap_or(fold),
-        min_vertex_angle_deg: args.min_vertex_angle.unwrap_or(corner),
-        ground: args.ground,
-        fit: args.fit,
-        max_iterations: args.max_iterations,
-        remesh: if args.remesh.is_some() {
-            Remesh::Only
-        } else {
-            Remesh::Auto
-        },
-        remesh_faces: args.remesh.filter(|&f| f > 0),
-    };
-    let mut progress = DesignProgress::counting(args.max_iterations as u64);
-    let result = tessellate_mesh(&args.mesh, &mesh, &options, &mut progress);
+    // The design file's options over the material's, the command line's over both.
+    from_file.apply_to(&mut options);
+    settings(&args).apply_to(&mut options);
+    let mut progress = DesignProgress::counting(options.max_iterations as u64);
+    let result = tessellate_mesh(&mesh_path, &mesh, &options, &mut progress);
     // The report is printed whether or not the result is usable.
     let lines: &[String] = match &result {
         Ok(t) => &t.summary,
@@ -214,6 +198,56 @@ pub fn run(args: Args) -> Result<Outcome> {
         .map_err(|e| anyhow!("{}: {e}", png.display()))?;
         super::input::stage_image(&mut outputs, png, bytes, "png")?;
     }
-    super::input::commit(outputs, &[&args.mesh])?;
+    super::input::commit(outputs, &[&args.mesh, &mesh_path])?;
     Ok(Outcome::Done)
+}
+
+/// The mesh to read and the options a design file sets: a `.tess.toml` (or a `.toml` with
+/// `[tessellation]`) names its mesh relative to its own folder; anything else is the mesh.
+fn design_or_mesh(args: &Args) -> Result<(PathBuf, TessSettings)> {
+    let lower = args.mesh.to_string_lossy().to_ascii_lowercase();
+    if !lower.ends_with(".toml") {
+        return Ok((args.mesh.clone(), TessSettings::default()));
+    }
+    let bytes = read_design_file(&args.mesh)?;
+    let file = DesignFile {
+        name: &args.mesh,
+        bytes: &bytes,
+    };
+    if DesignKind::recognise(&args.mesh, &bytes) != Some(DesignKind::Tessellation) {
+        bail!(
+            "{}: not a tessellation design (a .tess.toml with mesh = \"...\" and \
+             [tessellation]) nor a mesh (.obj, .stl)",
+            args.mesh.display()
+        );
+    }
+    let design = tess_design::parse(&file)?;
+    Ok((mesh_path_beside(&args.mesh, &design.mesh), design.settings))
+}
+
+/// The options given on the command line.
+fn settings(args: &Args) -> TessSettings {
+    TessSettings {
+        tuck: args.tuck.map(|t| match t {
+            Tuck::Star => TuckKind::Star,
+            Tuck::Truncated => TuckKind::Truncated,
+            Tuck::Twisted => TuckKind::Twisted,
+            Tuck::Twist => TuckKind::TwistFold,
+        }),
+        layout: args.layout.map(|l| match l {
+            Layout::Auto => TuckLayout::Auto,
+            Layout::Checkerboard => TuckLayout::Checkerboard,
+            Layout::Digon => TuckLayout::Digon,
+        }),
+        shrink: args.shrink,
+        truncation: args.truncation,
+        twist_deg: args.twist,
+        max_fold_angle_deg: args.max_fold_angle,
+        min_vertex_angle_deg: args.min_vertex_angle,
+        ground: args.ground.then_some(true),
+        fit: args.fit,
+        remesh: args.remesh.map(|_| Remesh::Only),
+        remesh_faces: args.remesh.filter(|&f| f > 0),
+        max_iterations: args.max_iterations,
+    }
 }

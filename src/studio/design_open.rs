@@ -2,9 +2,9 @@
 //! meshes (tessellation or pop-up card) built by [`crate::design::source`] exactly as the
 //! matching `foldcam` command builds them, then opened as a pattern document.
 //!
-//! A paper-craft design names its mesh by a relative path. The studio reads no file for it:
-//! an upload's mesh must come in the same request (the files dropped together), a command-line
-//! design's mesh must itself be named on the command line.
+//! A paper-craft or tessellation design names its mesh by a relative path. The studio reads no
+//! file for it: an upload's mesh must come in the same request (the files dropped together), a
+//! command-line design's mesh must itself be named on the command line.
 
 use std::path::{Path, PathBuf};
 
@@ -13,7 +13,7 @@ use serde::Deserialize;
 use super::document::Document;
 use crate::design::source::{
     DesignFile, DesignKind, DesignOptions, MeshUse, SourceError, build_design, craft,
-    mesh_path_beside, read_design_file,
+    mesh_path_beside, read_design_file, tess_design,
 };
 use crate::formats::Format;
 
@@ -72,9 +72,13 @@ pub fn open_path(path: &Path, given: &[PathBuf], mesh_use: MeshUse) -> Result<Do
         bytes: &bytes,
     };
     let mut companion = None;
-    if DesignKind::recognise(path, &bytes) == Some(DesignKind::PaperCraft) {
-        let parsed = craft::parse(&file).map_err(|e| message(&e))?;
-        let wanted = mesh_path_beside(path, &parsed.mesh_name());
+    let mesh_named = match DesignKind::recognise(path, &bytes) {
+        Some(DesignKind::PaperCraft) => Some(craft::parse(&file).map(|p| p.mesh_name())),
+        Some(DesignKind::Tessellation) => Some(tess_design::parse(&file).map(|d| d.mesh)),
+        _ => None,
+    };
+    if let Some(named) = mesh_named {
+        let wanted = mesh_path_beside(path, &named.map_err(|e| message(&e))?);
         let same = |a: &Path, b: &Path| {
             a == b || matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
         };

@@ -25,6 +25,7 @@ pub mod flat;
 mod folding_api;
 mod machine_api;
 pub mod settings;
+mod tessellate_api;
 pub mod toolpath;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};

@@ -20,6 +20,8 @@ pub mod card;
 pub mod craft;
 pub mod poly;
 pub mod script;
+pub mod tess_design;
+pub mod tess_limits;
 pub mod tessellate;
 pub mod voxel;
 
@@ -51,6 +53,9 @@ pub enum DesignKind {
     FoldScript,
     /// A paper-craft design (`.craft.toml`, or a `.toml` naming a `mesh`).
     PaperCraft,
+    /// A tessellation design (`.tess.toml`, or a `.toml` with `[tessellation]`): a mesh and
+    /// the options of `foldcam tessellate` ([`tess_design`]).
+    Tessellation,
 }
 
 impl DesignKind {
@@ -62,11 +67,12 @@ impl DesignKind {
         ".stl",
         ".popup.toml",
         ".craft.toml",
+        ".tess.toml",
         ".toml",
     ];
 
     /// The kind `name` and its content `bytes` show: the ending first; a plain `.toml` by
-    /// its top-level tables (`mesh` a paper craft, `[card]` a pop-up card, `[sheet]` a fold
+    /// its top-level tables (`[tessellation]` a tessellation design, else `mesh` a paper craft, `[card]` a pop-up card, `[sheet]` a fold
     /// script). `None` for any other file (a crease pattern, say).
     pub fn recognise(name: &Path, bytes: &[u8]) -> Option<DesignKind> {
         let lower = name.to_string_lossy().to_ascii_lowercase();
@@ -81,9 +87,13 @@ impl DesignKind {
             Some(DesignKind::PopupPolygon)
         } else if ends(".craft.toml") {
             Some(DesignKind::PaperCraft)
+        } else if ends(tess_design::EXTENSION) {
+            Some(DesignKind::Tessellation)
         } else if ends(".toml") {
             let table: toml::Table = std::str::from_utf8(bytes).ok()?.parse().ok()?;
-            if table.contains_key("mesh") {
+            if table.contains_key("tessellation") {
+                Some(DesignKind::Tessellation)
+            } else if table.contains_key("mesh") {
                 Some(DesignKind::PaperCraft)
             } else if table.contains_key("card") {
                 Some(DesignKind::PopupPolygon)
@@ -226,6 +236,9 @@ pub enum SourceError {
     /// An option out of its range (the message names the option and the range).
     #[error("{0}")]
     Option(String),
+    /// The build was cancelled through [`Progress::cancelled`].
+    #[error("cancelled")]
+    Cancelled,
     /// The design was read but its own check refuses it (the card would not pop up, the
     /// solver did not converge): the lines `foldcam` prints on standard output before exiting
     /// with status 1.
@@ -234,7 +247,7 @@ pub enum SourceError {
         /// The report, one line each.
         lines: Vec<String>,
     },
-    /// A paper-craft design whose mesh is not among the files given with it.
+    /// A paper-craft or tessellation design whose mesh is not among the files given with it.
     #[error(
         "{design}: its mesh {mesh} is not among the files given with it: drop {mesh} together \
          with {design} (or name both on the command line)"
@@ -248,7 +261,7 @@ pub enum SourceError {
     /// The file is not one this module builds.
     #[error(
         "{0}: not a design file foldcam recognises (a .voxel.txt, height-map .png, .obj or \
-         .stl mesh, .popup.toml, .craft.toml, or a fold script .toml with [sheet] and [[step]])"
+         .stl mesh, .popup.toml, .craft.toml, .tess.toml, or a fold script .toml with [sheet] and [[step]])"
     )]
     Unrecognised(String),
 }
@@ -281,6 +294,11 @@ pub trait Progress {
     fn idle(&mut self) {}
     /// One iteration of the tessellation solver (Tachi 2014).
     fn iteration(&mut self, _it: &crate::design::tessellation::Iteration) {}
+    /// Whether the caller wants the build stopped: asked between solver iterations (the
+    /// tessellation then ends with [`SourceError::Cancelled`]); never by default.
+    fn cancelled(&self) -> bool {
+        false
+    }
 }
 
 /// Collects the notes, ignores the rest.
@@ -377,6 +395,25 @@ pub fn build_design(
                 })?;
             let mesh = mesh_file.mesh()?;
             craft::build(parsed, mesh_file.name, &mesh, progress)?.into_design(file.name)
+        }
+        DesignKind::Tessellation => {
+            let design = tess_design::parse(file)?;
+            let wanted = mesh_file_name(&design.mesh);
+            let mesh_file = companions
+                .iter()
+                .find(|c| {
+                    c.name
+                        .file_name()
+                        .is_some_and(|n| Some(n) == wanted.as_deref())
+                })
+                .ok_or_else(|| SourceError::MissingMesh {
+                    design: file.display(),
+                    mesh: design.mesh.display().to_string(),
+                })?;
+            let mesh = mesh_file.mesh()?;
+            let mut opts = options.tessellation;
+            design.settings.apply_to(&mut opts);
+            tessellate::build(mesh_file, &mesh, &opts, progress).map(|d| d.into_design())
         }
     }
 }

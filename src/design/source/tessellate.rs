@@ -8,8 +8,9 @@ use std::path::Path;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
-    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessellateOptions,
-    Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded, tessellate_scheduled,
+    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessMesh,
+    TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
+    tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -169,13 +170,65 @@ pub fn build(
 /// [`build`] by name.
 ///
 /// # Errors
-/// As [`build`].
+/// As [`build`]; [`SourceError::Cancelled`] when `progress` asked to stop.
 pub fn tessellate_mesh(
     name: &Path,
     mesh: &PolyMesh,
     options: &TessellationOptions,
     progress: &mut dyn Progress,
 ) -> Result<TessellationDesign, SourceError> {
+    let outcome = tessellate_outcome(name, mesh, options, progress)?;
+    outcome
+        .design
+        .map_err(|lines| SourceError::NotMade { lines })
+}
+
+/// A solve's result, usable or not: the surface it left (to show where it misses the limits,
+/// see [`super::tess_limits`]) and either the design or the report of why it is refused.
+#[derive(Clone, Debug)]
+pub struct TessellationOutcome {
+    /// The surface the solve left (of the first attempt when none was usable), in the
+    /// mesh's units.
+    pub surface: TessMesh,
+    /// The limits it was solved for.
+    pub limits: Limits,
+    /// Its developability tolerance, radians per vertex.
+    pub tolerance: f64,
+    /// The design, or the lines `foldcam tessellate` prints before exiting with status 1.
+    pub design: Result<TessellationDesign, Vec<String>>,
+}
+
+/// Raised through the solver to stop it when [`Progress::cancelled`] says so, and caught in
+/// [`tessellate_outcome`]; the solver's callbacks have no other way out.
+struct Cancelled;
+
+/// Stops the solve when `progress` asks for it: unwinds with [`Cancelled`] (without the panic
+/// hook, so nothing is printed).
+fn stop_if_cancelled(progress: &dyn Progress) {
+    if progress.cancelled() {
+        std::panic::resume_unwind(Box::new(Cancelled));
+    }
+}
+
+/// [`SourceError::Cancelled`] when `progress` asks to stop before the solve begins.
+fn stop_if_cancelled_early(progress: &dyn Progress) -> Result<(), SourceError> {
+    if progress.cancelled() {
+        return Err(SourceError::Cancelled);
+    }
+    Ok(())
+}
+
+/// [`tessellate_mesh`], keeping the surface of a refused result.
+///
+/// # Errors
+/// Bad options or a mesh the tucks cannot be built on; [`SourceError::Cancelled`] when
+/// `progress` asked to stop (checked before every solver iteration and between attempts).
+pub fn tessellate_outcome(
+    name: &Path,
+    mesh: &PolyMesh,
+    options: &TessellationOptions,
+    progress: &mut dyn Progress,
+) -> Result<TessellationOutcome, SourceError> {
     let opts = options.to_solver()?;
     let limits = opts.solve.limits;
     progress.note(format!(
@@ -193,6 +246,7 @@ pub fn tessellate_mesh(
         shrinks.len()
     ));
     let asked = options.shrink.is_some();
+    stop_if_cancelled_early(progress)?;
     progress.busy("solving");
     // Both callbacks speak through `progress`, one at a time.
     let shared = std::cell::RefCell::new(&mut *progress);
@@ -201,25 +255,41 @@ pub fn tessellate_mesh(
         remesh: options.remesh,
         remesh_faces: options.remesh_faces,
     };
-    let t = tessellate_scheduled(
-        mesh,
-        &opts,
-        &schedule,
-        |s: f64, t: &Tessellation| {
-            if !asked {
-                let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
-                    "trying a smaller shrink"
-                } else {
-                    "no shrink worked on these triangles"
-                };
-                shared.borrow_mut().note(format!(
-                    "shrink {s}: {}; {next}",
-                    t.problem().unwrap_or_default()
-                ));
-            }
-        },
-        |it: &Iteration| shared.borrow_mut().iteration(it),
-    );
+    let run = || {
+        tessellate_scheduled(
+            mesh,
+            &opts,
+            &schedule,
+            |s: f64, t: &Tessellation| {
+                if !asked {
+                    let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
+                        "trying a smaller shrink"
+                    } else {
+                        "no shrink worked on these triangles"
+                    };
+                    shared.borrow_mut().note(format!(
+                        "shrink {s}: {}; {next}",
+                        t.problem().unwrap_or_default()
+                    ));
+                }
+                stop_if_cancelled(&**shared.borrow());
+            },
+            |it: &Iteration| {
+                shared.borrow_mut().iteration(it);
+                stop_if_cancelled(&**shared.borrow());
+            },
+        )
+    };
+    // Unwind safety: on cancellation everything the solve built is dropped unseen; `progress`
+    // only ever sees whole calls.
+    let t = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
+        Ok(t) => t,
+        Err(payload) if payload.is::<Cancelled>() => {
+            progress.idle();
+            return Err(SourceError::Cancelled);
+        }
+        Err(payload) => std::panic::resume_unwind(payload),
+    };
     progress.idle();
     let t = t.map_err(|e| SourceError::input(name, e))?;
     let mut lines = vec![
@@ -256,20 +326,28 @@ pub fn tessellate_mesh(
             fit.initial, fit.last, fit.accepted
         ));
     }
-    let unfolded = match (t.problem(), t.unfolded) {
-        (None, Ok(u)) => u,
+    let problem = t.problem();
+    let design = match (problem, t.unfolded) {
+        (None, Ok(unfolded)) => {
+            lines.push(format!(
+                "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
+                unfolded.max_length_error
+            ));
+            Ok(TessellationDesign {
+                unfolded,
+                summary: lines,
+            })
+        }
         (problem, unfolded) => {
             let why = problem.or(unfolded.err().map(|e| e.to_string()));
             lines.push(format!("nothing written: {}", why.unwrap_or_default()));
-            return Err(SourceError::NotMade { lines });
+            Err(lines)
         }
     };
-    lines.push(format!(
-        "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
-        unfolded.max_length_error
-    ));
-    Ok(TessellationDesign {
-        unfolded,
-        summary: lines,
+    Ok(TessellationOutcome {
+        surface: t.mesh,
+        limits,
+        tolerance: opts.solve.tolerance,
+        design,
     })
 }
