@@ -19,6 +19,7 @@
 //! | `POST /api/profiles/{machine,material}?name=N` | reads a TOML profile as `cut -m N.toml` would |
 //! | `GET /api/legend` | line colours and dashes of each assignment (as in our previews) |
 //! | `/api/fold/…` | the fold-sequence designer ([`super::folding_api`]) |
+//! | `/api/voxel/…` | the voxel pop-up editor ([`super::voxel_api`]) |
 //!
 //! Work that takes time (checks, folding, planning) runs on tokio's blocking pool.
 
@@ -296,6 +297,7 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/materials", get(machine_api::materials))
         .route("/api/legend", get(legend))
         .merge(super::folding_api::router(Arc::clone(&state)))
+        .merge(super::voxel_api::router(Arc::clone(&state)))
         .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))

@@ -26,6 +26,7 @@ mod folding_api;
 mod machine_api;
 pub mod settings;
 pub mod toolpath;
+mod voxel_api;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::PathBuf;
