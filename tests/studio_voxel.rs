@@ -93,7 +93,11 @@ fn voxels_added_in_the_studio_save_a_card_the_command_creases_the_same() {
     let v = ok(edit(&server, id, json!({"op": "push_out", "x": 4, "z": 2})));
     assert_eq!(v["change"], json!([3, 0]));
     // Side view: cell (5, 1, 3) added with the box below and behind it, 2 × 4 cells.
-    let v = ok(edit(&server, id, json!({"op": "add", "x": 5, "y": 1, "z": 3})));
+    let v = ok(edit(
+        &server,
+        id,
+        json!({"op": "add", "x": 5, "y": 1, "z": 3}),
+    ));
     assert_eq!(v["change"], json!([8, 0]));
     assert_eq!(v["depth"][5], json!([2, 2, 2, 2, 0, 0]));
     assert_eq!(v["makes_a_card"], true, "{v}");
@@ -143,9 +147,16 @@ fn the_card_opens_from_shut_to_flat() {
         br#"{"nx": 6, "ny": 4, "nz": 5, "cell_mm": 4, "margin_mm": 3}"#,
     ));
     let id = new["id"].as_u64().unwrap();
-    ok(edit(&server, id, json!({"op": "add", "x": 2, "y": 1, "z": 2})));
+    ok(edit(
+        &server,
+        id,
+        json!({"op": "add", "x": 2, "y": 1, "z": 2}),
+    ));
     let heights = |angle: f64| -> Vec<f64> {
-        let v = ok(get_json(&server, &format!("/api/voxel/{id}/open?angle={angle}")));
+        let v = ok(get_json(
+            &server,
+            &format!("/api/voxel/{id}/open?angle={angle}"),
+        ));
         assert!(!v["triangles"].as_array().unwrap().is_empty());
         v["positions"]
             .as_array()
@@ -175,8 +186,16 @@ fn a_card_that_cannot_pop_up_is_marked_where_the_command_refuses_it() {
     ));
     let id = new["id"].as_u64().unwrap();
     // A one-cell step whose top face is left out: its front face keeps the base only.
-    ok(edit(&server, id, json!({"op": "add", "x": 2, "y": 0, "z": 0})));
-    let v = ok(edit(&server, id, json!({"op": "omit_top", "x": 2, "z": 0, "on": true})));
+    ok(edit(
+        &server,
+        id,
+        json!({"op": "add", "x": 2, "y": 0, "z": 0}),
+    ));
+    let v = ok(edit(
+        &server,
+        id,
+        json!({"op": "omit_top", "x": 2, "z": 0, "on": true}),
+    ));
     assert_eq!(v["makes_a_card"], false, "{v}");
     let popup: Vec<&Value> = v["faults"]
         .as_array()
@@ -200,7 +219,10 @@ fn a_card_that_cannot_pop_up_is_marked_where_the_command_refuses_it() {
     let report = String::from_utf8_lossy(&out.stdout);
     assert!(report.contains("front face of cell (2, 0, 0)"), "{report}");
     let message = popup[0]["message"].as_str().unwrap();
-    assert!(message.contains("front face of cell (2, 0, 0)"), "{message}");
+    assert!(
+        message.contains("front face of cell (2, 0, 0)"),
+        "{message}"
+    );
     assert!(!dir.path().join("bad.fold").exists());
     // And so does the studio's crease pattern.
     let (status, reply) = server.post_json(&format!("/api/voxel/{id}/pattern"), b"");
@@ -241,12 +263,19 @@ fn cards_and_height_maps_load_and_bad_edits_are_refused() {
     // map and the base one cell deeper than the default depth of 40 cells.
     let mut png = Vec::new();
     let map = image::GrayImage::from_fn(7, 5, |x, y| {
-        image::Luma([if (2..5).contains(&x) && y >= 2 { 255 } else { 0 }])
+        image::Luma([if (2..5).contains(&x) && y >= 2 {
+            255
+        } else {
+            0
+        }])
     });
     image::DynamicImage::ImageLuma8(map)
         .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
         .unwrap();
-    let m = ok(server.post_json(&format!("/api/voxel/load?name={}", encode("relief.png")), &png));
+    let m = ok(server.post_json(
+        &format!("/api/voxel/load?name={}", encode("relief.png")),
+        &png,
+    ));
     assert_eq!(
         (m["nx"].as_u64(), m["ny"].as_u64(), m["nz"].as_u64()),
         (Some(7), Some(41), Some(6))
@@ -269,7 +298,10 @@ fn cards_and_height_maps_load_and_bad_edits_are_refused() {
     let (status, reply) = server.post_json("/api/voxel/load?name=bad.voxel.txt", b"cell_mm 5\n");
     assert_eq!(status, 422);
     assert!(
-        reply["error"].as_str().unwrap().starts_with("bad.voxel.txt"),
+        reply["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("bad.voxel.txt"),
         "{reply}"
     );
     let (status, _) = get_json(&server, "/api/voxel/999/open?angle=90");

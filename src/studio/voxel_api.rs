@@ -210,7 +210,12 @@ fn faults(card: &VoxelCard, v: &CardVerdict) -> Vec<FaultView> {
                 piece.area_mm2,
                 piece.cells[0].face
             ),
-            faces: piece.cells.iter().take(CELLS_SHOWN).map(face_view).collect(),
+            faces: piece
+                .cells
+                .iter()
+                .take(CELLS_SHOWN)
+                .map(face_view)
+                .collect(),
             more: piece.cells.len().saturating_sub(CELLS_SHOWN),
         });
     }
@@ -360,17 +365,14 @@ async fn load(
             _ => None,
         };
         let mut notes: Vec<String> = Vec::new();
-        let card = load_card(&file, mesh.as_ref(), &VoxelOptions::default(), &mut notes)
-            .map_err(fail)?;
+        let card =
+            load_card(&file, mesh.as_ref(), &VoxelOptions::default(), &mut notes).map_err(fail)?;
         start(&voxels, name, card)
     })
     .await
 }
 
-async fn show(
-    State(voxels): State<Arc<Voxels>>,
-    PathId(id): PathId,
-) -> ApiResult<Json<CardView>> {
+async fn show(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
     on_session(voxels, id, move |s| Ok(Json(card_view(id, s, None)?))).await
 }
 
@@ -382,8 +384,8 @@ async fn edit(
     let e: VoxelEdit = json_body(body, "voxel edit")?;
     on_session(voxels, id, move |s| {
         let mut card = s.card().clone();
-        let change =
-            apply_edit(&mut card, &e).map_err(|err| ApiError::input(format!("{}: {err}", s.name)))?;
+        let change = apply_edit(&mut card, &e)
+            .map_err(|err| ApiError::input(format!("{}: {err}", s.name)))?;
         s.versions.truncate(s.at + 1);
         s.versions.push(card);
         if s.versions.len() > MAX_VOXEL_UNDO {
@@ -395,10 +397,7 @@ async fn edit(
     .await
 }
 
-async fn undo(
-    State(voxels): State<Arc<Voxels>>,
-    PathId(id): PathId,
-) -> ApiResult<Json<CardView>> {
+async fn undo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
     on_session(voxels, id, move |s| {
         if s.at == 0 {
             return Err(ApiError::input("nothing to undo".into()));
@@ -409,10 +408,7 @@ async fn undo(
     .await
 }
 
-async fn redo(
-    State(voxels): State<Arc<Voxels>>,
-    PathId(id): PathId,
-) -> ApiResult<Json<CardView>> {
+async fn redo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
     on_session(voxels, id, move |s| {
         if s.at + 1 >= s.versions.len() {
             return Err(ApiError::input("nothing to redo".into()));

@@ -173,7 +173,11 @@ pub fn apply_edit(card: &mut VoxelCard, edit: &VoxelEdit) -> Result<EditChange, 
             row_in(card, x, z)?;
             let d = card.depth(x, z);
             if d >= card.ny() {
-                return Err(VoxelEditError::FullDepth { x, z, ny: card.ny() });
+                return Err(VoxelEditError::FullDepth {
+                    x,
+                    z,
+                    ny: card.ny(),
+                });
             }
             apply_edit(card, &VoxelEdit::Add { x, y: d, z })
         }
@@ -278,7 +282,13 @@ mod tests {
         let mut c = card();
         let got = apply_edit(&mut c, &VoxelEdit::Add { x: 2, y: 2, z: 3 }).unwrap();
         // §2.7: (y + 1)(z + 1) cells of the slice, nothing elsewhere.
-        assert_eq!(got, EditChange { added: 12, removed: 0 });
+        assert_eq!(
+            got,
+            EditChange {
+                added: 12,
+                removed: 0
+            }
+        );
         assert_eq!(filled(&c), 12);
         assert!(c.cell(2, 0, 0) && c.cell(2, 2, 3) && !c.cell(2, 3, 3) && !c.cell(2, 0, 4));
         assert!(!c.cell(1, 0, 0) && !c.cell(3, 0, 0));
@@ -292,7 +302,13 @@ mod tests {
         assert_eq!(filled(&c), 24);
         let got = apply_edit(&mut c, &VoxelEdit::Delete { x: 1, y: 1, z: 2 }).unwrap();
         // Rows z = 2..=5 keep y = 0 only: 4 × 3 cells go.
-        assert_eq!(got, EditChange { added: 0, removed: 12 });
+        assert_eq!(
+            got,
+            EditChange {
+                added: 0,
+                removed: 12
+            }
+        );
         assert_eq!(filled(&c), 12);
         assert!(c.cell(1, 0, 5) && !c.cell(1, 1, 2) && c.cell(1, 3, 1));
     }
@@ -323,8 +339,16 @@ mod tests {
         for edit in [
             VoxelEdit::Add { x: 5, y: 0, z: 0 },
             VoxelEdit::Delete { x: 0, y: 4, z: 0 },
-            VoxelEdit::Window { x: 0, z: 6, on: true },
-            VoxelEdit::Resize { nx: 0, ny: 4, nz: 4 },
+            VoxelEdit::Window {
+                x: 0,
+                z: 6,
+                on: true,
+            },
+            VoxelEdit::Resize {
+                nx: 0,
+                ny: 4,
+                nz: 4,
+            },
             VoxelEdit::CellSize { mm: -1.0 },
             VoxelEdit::Margin { mm: f64::NAN },
         ] {
@@ -342,10 +366,32 @@ mod tests {
     fn resizing_keeps_what_fits_and_stays_a_staircase() {
         let mut c = card();
         apply_edit(&mut c, &VoxelEdit::Add { x: 4, y: 3, z: 5 }).unwrap();
-        apply_edit(&mut c, &VoxelEdit::Window { x: 4, z: 1, on: true }).unwrap();
-        let got = apply_edit(&mut c, &VoxelEdit::Resize { nx: 6, ny: 2, nz: 3 }).unwrap();
+        apply_edit(
+            &mut c,
+            &VoxelEdit::Window {
+                x: 4,
+                z: 1,
+                on: true,
+            },
+        )
+        .unwrap();
+        let got = apply_edit(
+            &mut c,
+            &VoxelEdit::Resize {
+                nx: 6,
+                ny: 2,
+                nz: 3,
+            },
+        )
+        .unwrap();
         // 4 × 6 cells become 2 × 3.
-        assert_eq!(got, EditChange { added: 0, removed: 18 });
+        assert_eq!(
+            got,
+            EditChange {
+                added: 0,
+                removed: 18
+            }
+        );
         assert_eq!((c.nx(), c.ny(), c.nz()), (6, 2, 3));
         assert_eq!(c.depth(4, 0), 2);
         assert!(c.is_hole(4, 1) && c.is_staircase());

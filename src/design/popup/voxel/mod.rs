@@ -60,8 +60,8 @@ pub use convert::{
     card_from_depths, depth_field_from_mesh,
 };
 pub use crease::crease_pattern;
-pub use edit::{EditChange, VoxelEdit, VoxelEditError, apply_edit};
 pub use depth_map::{DepthMap, MIN_MAP_SIDE, card_from_depth_map};
+pub use edit::{EditChange, VoxelEdit, VoxelEditError, apply_edit};
 pub use fold::{FoldedCard, fold_card, open_transform};
 pub use format::{VoxelFormatError, format_voxel_card, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};

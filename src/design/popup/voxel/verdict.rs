@@ -339,7 +339,12 @@ mod tests {
             let v = card_verdict(&c).unwrap();
             let cp = crease_pattern(&c).unwrap();
             let pieces = loose_pieces(&cp);
-            assert_eq!(v.loose.len(), pieces.len(), "{}", super::super::format_voxel_card(&c));
+            assert_eq!(
+                v.loose.len(),
+                pieces.len(),
+                "{}",
+                super::super::format_voxel_card(&c)
+            );
             for (a, b) in v.loose.iter().zip(&pieces) {
                 assert!((a.area_mm2 - b.area_mm2).abs() < 1e-6, "{a:?} vs {b:?}");
             }
@@ -355,7 +360,10 @@ mod tests {
             }
         }
         // The random cards reached both faults (else this test checked nothing).
-        assert!(loose_seen > 0 && beyond_seen > 0, "{loose_seen} {beyond_seen}");
+        assert!(
+            loose_seen > 0 && beyond_seen > 0,
+            "{loose_seen} {beyond_seen}"
+        );
     }
 
     #[test]
