@@ -161,8 +161,13 @@ export class VoxelView {
       cell_mm: n('voxel-cell'), margin_mm: n('voxel-margin') }));
   }
 
+  /** Opens a .voxel.txt, or a height map or mesh converted with the Conversion options. */
   async load(file) {
-    await this.show(await call(`/api/voxel/load?name=${encodeURIComponent(file.name)}`, { method: 'POST', body: file }));
+    const n = (id) => Number(this.$(id).value);
+    const query = new URLSearchParams({ name: file.name, resolution: n('voxel-resolution'), depth: n('voxel-depth'),
+      card_width: n('voxel-width'), card_margin: n('voxel-margin'), morphology: n('voxel-morphology'),
+      thin_top: n('voxel-thin'), windows: this.$('voxel-windows').checked });
+    await this.show(await call(`/api/voxel/load?${query}`, { method: 'POST', body: file }));
   }
 
   async step(which) {
@@ -284,7 +289,7 @@ export class VoxelView {
     el('rect', { x: this.column * s, y: 0, width: s, height: v.nz * s, class: 'column' }, fg);
     for (const m of marked.filter((m) => m.kind !== 'base')) {
       el('rect', { x: m.cell[0] * s + 2, y: (v.nz - 1 - m.cell[2]) * s + 2, width: s - 4, height: s - 4,
-        class: `mark mark-${m.fault}` }, fg);
+        class: `mark mark-${m.fault}`, 'data-x': m.cell[0], 'data-z': m.cell[2] }, fg);
     }
     // Side view of the chosen column: y across (back sheet on the left), z up, the base below.
     const x = this.column;

@@ -165,6 +165,67 @@ async fn clicking_voxels_in_saves_a_card_the_command_creases_as_the_page_does() 
     );
     let [vertices, edges, m, v] = fold_counts(&dir.path().join("cli.fold"));
 
+    // The chimney's top left out (§3.3): its front face keeps the base only and the card no
+    // longer pops up. The page lists and marks the faces the command names when it refuses.
+    click(&c, "#voxel-tools button[data-voxel-tool='top']").await;
+    click(&c, "#voxel-front rect.cell[data-x='6'][data-z='7']").await;
+    edits_shown(&c, 5).await;
+    assert_eq!(text(&c, "#voxel-status").await, "cannot be made");
+    let saved = c
+        .execute_async(
+            "const done = arguments[arguments.length - 1];
+             fetch(document.getElementById('voxel-save').href).then(r => r.text())
+               .then(done, e => done('ERROR ' + e));",
+            vec![],
+        )
+        .await
+        .unwrap();
+    std::fs::write(dir.path().join("bad.voxel.txt"), saved.as_str().unwrap()).unwrap();
+    let out = foldcam(
+        &["popup", "voxel", "bad.voxel.txt", "-o", "bad.fold"],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let report = String::from_utf8_lossy(&out.stdout).to_string();
+    let named: Vec<&str> = report
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix("front face of cell "))
+        .collect();
+    assert!(!named.is_empty(), "{report}");
+    let listed = c
+        .find_all(Locator::Css("#voxel-faults li.fault-popup"))
+        .await
+        .unwrap();
+    assert_eq!(listed.len(), named.len());
+    for (li, line) in listed.iter().zip(&named) {
+        assert!(li.text().await.unwrap().ends_with(line), "{line}");
+    }
+    // Marked where the command says: (x, z) of each named cell "(x, y, z) …".
+    let mut want: Vec<(u64, u64)> = named
+        .iter()
+        .map(|l| {
+            let inside = &l[1..l.find(')').unwrap()];
+            let n: Vec<u64> = inside.split(", ").map(|t| t.parse().unwrap()).collect();
+            (n[0], n[2])
+        })
+        .collect();
+    let marks = c
+        .execute(
+            "return [...document.querySelectorAll('#voxel-front rect.mark-popup')]
+               .map((r) => [+r.dataset.x, +r.dataset.z])",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let mut marked: Vec<(u64, u64)> = serde_json::from_value(marks).unwrap();
+    want.sort_unstable();
+    marked.sort_unstable();
+    assert_eq!(marked, want);
+    keep_screenshot(&c, "studio-voxel-fault.png").await;
+    click(&c, "#voxel-undo").await;
+    edits_shown(&c, 6).await;
+    assert_eq!(text(&c, "#voxel-status").await, "pops up");
+
     // To a crease pattern document: the command's counts; the check passes.
     click(&c, "#voxel-pattern").await;
     wait_until(

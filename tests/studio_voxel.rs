@@ -260,7 +260,7 @@ fn cards_and_height_maps_load_and_bad_edits_are_refused() {
     let id = v["id"].as_u64().unwrap();
 
     // A height map: one pixel per cell along the fold, the back sheet one row higher than the
-    // map and the base one cell deeper than the default depth of 40 cells.
+    // map and the base one cell deeper than the depth asked for (white stands that far out).
     let mut png = Vec::new();
     let map = image::GrayImage::from_fn(7, 5, |x, y| {
         image::Luma([if (2..5).contains(&x) && y >= 2 {
@@ -273,14 +273,20 @@ fn cards_and_height_maps_load_and_bad_edits_are_refused() {
         .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
         .unwrap();
     let m = ok(server.post_json(
-        &format!("/api/voxel/load?name={}", encode("relief.png")),
+        &format!("/api/voxel/load?name={}&depth=10", encode("relief.png")),
         &png,
     ));
     assert_eq!(
         (m["nx"].as_u64(), m["ny"].as_u64(), m["nz"].as_u64()),
-        (Some(7), Some(41), Some(6))
+        (Some(7), Some(11), Some(6))
     );
-    assert_eq!(m["depth"][3][0], 40, "{}", m["depth"]);
+    assert_eq!(m["depth"][3][0], 10, "{}", m["depth"]);
+    let (status, reply) = server.post_json("/api/voxel/load?name=relief.png&resolution=0", &png);
+    assert_eq!(status, 422);
+    assert!(
+        reply["error"].as_str().unwrap().contains("--resolution"),
+        "{reply}"
+    );
 
     // A mesh seen from the front: 80 cells along the fold by default, as the command.
     let building = std::fs::read(repo_file("examples/popup/building.obj")).unwrap();
@@ -306,4 +312,73 @@ fn cards_and_height_maps_load_and_bad_edits_are_refused() {
     );
     let (status, _) = get_json(&server, "/api/voxel/999/open?angle=90");
     assert_eq!(status, 404);
+}
+
+#[test]
+fn faces_beyond_the_closed_card_are_marked_and_the_command_warns_as_far() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let new = ok(server.post_json(
+        "/api/voxel/new",
+        br#"{"nx": 5, "ny": 4, "nz": 5, "cell_mm": 5, "margin_mm": 1}"#,
+    ));
+    let id = new["id"].as_u64().unwrap();
+    // A block 3 cells deep and 4 high under a back sheet 5 high.
+    let v = ok(edit(
+        &server,
+        id,
+        json!({"op": "add", "x": 2, "y": 2, "z": 3}),
+    ));
+    assert_eq!(v["makes_a_card"], true, "a warning only: {v}");
+    let beyond: Vec<&Value> = v["faults"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|f| f["kind"] == "beyond")
+        .collect();
+    assert_eq!(beyond.len(), 1, "{v}");
+    // Folded shut (eq. 6 at θ = 180°) a face corner at (y, z) lies y + z cells from the fold;
+    // the closed outline reaches max(ny, nz) cells and the margin: the front and top faces
+    // whose far corner (y + 1, z + 1) passes 5 cells + 1 mm are beyond.
+    let limit = 5.0 + 1.0 / 5.0;
+    let mut expected = Vec::new();
+    for z in 0..4 {
+        if (2 + z + 2) as f64 > limit {
+            expected.push(json!(["front", [2, 2, z]]));
+        }
+    }
+    for y in 0..3 {
+        if (y + 3 + 2) as f64 > limit {
+            expected.push(json!(["top", [2, y, 3]]));
+        }
+    }
+    let mut got: Vec<Value> = beyond[0]["faces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| json!([f["kind"], f["cell"]]))
+        .collect();
+    let key = |v: &Value| v.to_string();
+    got.sort_by_key(key);
+    expected.sort_by_key(key);
+    assert_eq!(got, expected);
+
+    // The command builds the card with a warning that names the same distance.
+    let (_, saved) = server.get(&format!("/api/voxel/{id}/save"));
+    std::fs::write(dir.path().join("tall.voxel.txt"), saved).unwrap();
+    let out = foldcam(
+        &["popup", "voxel", "tall.voxel.txt", "-o", "tall.fold"],
+        dir.path(),
+    );
+    assert!(out.status.success());
+    let warning = String::from_utf8_lossy(&out.stderr);
+    let reach = |text: &str, after: &str| -> String {
+        let rest = &text[text.find(after).unwrap_or_else(|| panic!("{text}")) + after.len()..];
+        rest.split(" mm").next().unwrap().to_string()
+    };
+    let message = beyond[0]["message"].as_str().unwrap();
+    assert_eq!(
+        reach(message, "up to "),
+        reach(&warning, "the card reaches ")
+    );
 }

@@ -7,7 +7,7 @@
 //! | route | does |
 //! | --- | --- |
 //! | `POST /api/voxel/new` | a session on an empty card (JSON `{"nx", "ny", "nz", "cell_mm", "margin_mm"}`) |
-//! | `POST /api/voxel/load?name=N` | a session on the body: a `.voxel.txt`, or a height-map `.png` or an OBJ/STL mesh made a card as `foldcam popup voxel` makes it (its defaults) |
+//! | `POST /api/voxel/load?name=N` | a session on the body: a `.voxel.txt`, or a height-map `.png` or an OBJ/STL mesh made a card as `foldcam popup voxel` makes it (its options `resolution`, `depth`, `card_width`, `card_margin`, `morphology`, `windows`, `thin_top` in the query) |
 //! | `GET /api/voxel/{id}` | the session's view: depths, windows, left-out tops, faults |
 //! | `POST /api/voxel/{id}/edit` | one edit (JSON [`VoxelEdit`]) |
 //! | `POST /api/voxel/{id}/undo`, `…/redo` | steps back or forward through the edits |
@@ -340,9 +340,39 @@ async fn new_card(
     .await
 }
 
+/// `name`: the file's name; the rest are `foldcam popup voxel`'s options of the same names
+/// (its defaults when left out) for a height map or mesh.
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct LoadQuery {
     name: String,
+    resolution: Option<usize>,
+    depth: Option<usize>,
+    card_width: Option<f64>,
+    card_margin: Option<f64>,
+    morphology: Option<usize>,
+    windows: Option<bool>,
+    thin_top: Option<usize>,
+}
+
+impl LoadQuery {
+    fn options(&self) -> ApiResult<VoxelOptions> {
+        let d = VoxelOptions::default();
+        let options = VoxelOptions {
+            resolution: self.resolution.unwrap_or(d.resolution),
+            depth: self.depth.unwrap_or(d.depth),
+            card_width: self.card_width.unwrap_or(d.card_width),
+            card_margin: self.card_margin.unwrap_or(d.card_margin),
+            morphology: self.morphology.unwrap_or(d.morphology),
+            windows: self.windows.unwrap_or(d.windows),
+            thin_top: self.thin_top.unwrap_or(d.thin_top),
+            ..d
+        };
+        options
+            .validate()
+            .map_err(|e| ApiError::input(design_open::message(&e)))?;
+        Ok(options)
+    }
 }
 
 async fn load(
@@ -352,6 +382,7 @@ async fn load(
 ) -> ApiResult<Json<CardView>> {
     let Query(q) = query?;
     let name = upload_name(&q.name);
+    let options = q.options()?;
     let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
     blocking(move || {
         let path = std::path::PathBuf::from(&name);
@@ -365,8 +396,7 @@ async fn load(
             _ => None,
         };
         let mut notes: Vec<String> = Vec::new();
-        let card =
-            load_card(&file, mesh.as_ref(), &VoxelOptions::default(), &mut notes).map_err(fail)?;
+        let card = load_card(&file, mesh.as_ref(), &options, &mut notes).map_err(fail)?;
         start(&voxels, name, card)
     })
     .await
