@@ -8,6 +8,7 @@ import { Editor } from './edit.js';
 import { FlatView } from './flat.js';
 import { FoldingView } from './folding.js';
 import { TessellationView } from './tessellate.js';
+import { VoxelView } from './voxel.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
@@ -19,6 +20,8 @@ machineView.onError = (promise) => guarded(() => promise);
 // The fold-sequence designer; its crease pattern opens as a document in the pattern view.
 new FoldingView($('view-folding'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 new TessellationView($('view-tessellate'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+// The voxel pop-up editor; its crease pattern opens as a document the same way.
+new VoxelView($('view-voxel'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 let edits = 0;
 
 function showError(e) {

@@ -20,6 +20,7 @@
 //! | `GET /api/legend` | line colours and dashes of each assignment (as in our previews) |
 //! | `/api/fold/…` | the fold-sequence designer ([`super::folding_api`]) |
 //! | `/api/tess/…` | the tessellation designer ([`super::tessellate_api`]) |
+//! | `/api/voxel/…` | the voxel pop-up editor ([`super::voxel_api`]) |
 //!
 //! Work that takes time (checks, folding, planning) runs on tokio's blocking pool.
 
@@ -298,6 +299,7 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/legend", get(legend))
         .merge(super::folding_api::router(Arc::clone(&state)))
         .merge(super::tessellate_api::router(Arc::clone(&state)))
+        .merge(super::voxel_api::router(Arc::clone(&state)))
         .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))

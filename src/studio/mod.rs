@@ -27,6 +27,7 @@ mod machine_api;
 pub mod settings;
 mod tessellate_api;
 pub mod toolpath;
+mod voxel_api;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::PathBuf;

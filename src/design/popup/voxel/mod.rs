@@ -13,6 +13,9 @@
 //! - [`parse_voxel_card`], [`format_voxel_card`] (`format.rs`): the text format; samples in
 //!   `examples/popup/`.
 //! - [`card_from_depth_map`] (`depth_map.rs`): grey-level depth maps made staircase by eq. 7.
+//! - [`apply_edit`] (`edit.rs`): the editor's edits from the front and side views (§2.7).
+//! - [`card_verdict`] (`verdict.rs`): no pop-up, loose pieces and faces beyond the closed card,
+//!   each at the pattern cells and voxel faces at fault.
 //! - [`card_from_depths`] (`convert/`): §3 — a [`DepthField`] from a height map or a mesh
 //!   rendered from the front ([`depth_field_from_mesh`]), bump removal by opening and closing,
 //!   eq. 7, windows where the card still pops up, thin top faces left out.
@@ -42,12 +45,14 @@ mod check;
 mod convert;
 mod crease;
 mod depth_map;
+mod edit;
 pub mod estimate;
 pub(crate) mod fold;
 mod format;
 mod model;
 mod runs;
 pub mod surface;
+mod verdict;
 
 pub use check::{FrontCellProblem, PopupProblem, PopupReport, check_popup};
 pub use convert::{
@@ -56,6 +61,10 @@ pub use convert::{
 };
 pub use crease::crease_pattern;
 pub use depth_map::{DepthMap, MIN_MAP_SIDE, card_from_depth_map};
+pub use edit::{EditChange, VoxelEdit, VoxelEditError, apply_edit};
 pub use fold::{FoldedCard, fold_card, open_transform};
 pub use format::{VoxelFormatError, format_voxel_card, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};
+pub use verdict::{
+    BeyondCell, CardVerdict, LooseCells, PatternCell, VoxelFace, card_verdict, face_of,
+};

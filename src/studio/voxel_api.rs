@@ -1,0 +1,588 @@
+//! The studio's voxel pop-up editor: the editor of Mitani, Suzuki & Uno (2003), §2.7, over
+//! the library's voxel card ([`crate::design::popup::voxel`]). Each session holds a card and
+//! its earlier versions (undo, redo); every reply carries the card's faults at their places
+//! ([`card_verdict`]), so the page can mark them; the card opens from 0° to 180° by the
+//! paper's eq. 6 ([`fold_card`]).
+//!
+//! | route | does |
+//! | --- | --- |
+//! | `POST /api/voxel/new` | a session on an empty card (JSON `{"nx", "ny", "nz", "cell_mm", "margin_mm"}`) |
+//! | `POST /api/voxel/load?name=N` | a session on the body: a `.voxel.txt`, or a height-map `.png` or an OBJ/STL mesh made a card as `foldcam popup voxel` makes it (its options `resolution`, `depth`, `card_width`, `card_margin`, `morphology`, `windows`, `thin_top` in the query) |
+//! | `GET /api/voxel/{id}` | the session's view: depths, windows, left-out tops, faults |
+//! | `POST /api/voxel/{id}/edit` | one edit (JSON [`VoxelEdit`]) |
+//! | `POST /api/voxel/{id}/undo`, `…/redo` | steps back or forward through the edits |
+//! | `GET /api/voxel/{id}/open?angle=A` | the card opened A degrees (0 shut, 90 standing, 180 flat): triangles, and the faulty cells as quads |
+//! | `GET /api/voxel/{id}/save` | the card as the `.voxel.txt` `foldcam popup voxel` reads |
+//! | `POST /api/voxel/{id}/pattern` | the saved card built as `foldcam popup voxel` builds it, opened as a studio document |
+
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex, PoisonError};
+
+use axum::body::Bytes;
+use axum::extract::rejection::{BytesRejection, QueryRejection};
+use axum::extract::{Query, State};
+use axum::http::StatusCode;
+use axum::response::Response;
+use axum::routing::{get, post};
+use axum::{Json, Router};
+use glam::{DVec2, DVec3};
+use serde::{Deserialize, Serialize};
+
+use super::api::{
+    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_name,
+};
+use super::design_open;
+use super::edit_api::json_body;
+use crate::design::popup::voxel::surface::Surface;
+use crate::design::popup::voxel::{
+    CardVerdict, EditChange, PatternCell, VoxelCard, VoxelEdit, VoxelFace, apply_edit,
+    card_verdict, crease_pattern, fold_card, format_voxel_card, open_transform,
+};
+use crate::design::source::voxel::{VoxelOptions, load_card};
+use crate::design::source::{DesignFile, DesignKind, MeshUse, SourceError};
+use crate::geom::triangulate::triangulate_polygon;
+
+/// Most voxel sessions kept at once; the oldest is dropped first.
+pub const MAX_VOXEL_SESSIONS: usize = 16;
+
+/// Most card versions kept for undo.
+pub const MAX_VOXEL_UNDO: usize = 200;
+
+/// Most faulty cells sent for one fault (the page marks them; the list says how many more).
+pub const CELLS_SHOWN: usize = 2_000;
+
+/// One card being edited.
+struct Session {
+    /// The file it came from, or "card.voxel.txt".
+    name: String,
+    /// Every version; `at` is shown.
+    versions: Vec<VoxelCard>,
+    at: usize,
+}
+
+impl Session {
+    fn card(&self) -> &VoxelCard {
+        &self.versions[self.at]
+    }
+
+    /// The name of the saved file: the session's, ending in `.voxel.txt`.
+    fn file_name(&self) -> String {
+        let stem = self
+            .name
+            .trim_end_matches(".voxel.txt")
+            .trim_end_matches(".png")
+            .trim_end_matches(".txt")
+            .replace(' ', "-");
+        format!("{}.voxel.txt", if stem.is_empty() { "card" } else { &stem })
+    }
+}
+
+/// The editor's state: the sessions, and the studio (to open a pattern as a document).
+pub(super) struct Voxels {
+    studio: Arc<Studio>,
+    sessions: Mutex<VecDeque<(u64, Arc<Mutex<Session>>)>>,
+    next: Mutex<u64>,
+}
+
+impl Voxels {
+    fn add(&self, session: Session) -> (u64, Arc<Mutex<Session>>) {
+        let id = {
+            let mut next = self.next.lock().unwrap_or_else(PoisonError::into_inner);
+            *next += 1;
+            *next - 1
+        };
+        let session = Arc::new(Mutex::new(session));
+        let mut s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
+        s.push_back((id, Arc::clone(&session)));
+        while s.len() > MAX_VOXEL_SESSIONS {
+            s.pop_front();
+        }
+        (id, session)
+    }
+
+    fn get(&self, id: u64) -> ApiResult<Arc<Mutex<Session>>> {
+        let s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
+        s.iter()
+            .find(|(i, _)| *i == id)
+            .map(|(_, x)| Arc::clone(x))
+            .ok_or_else(|| {
+                ApiError::new(
+                    StatusCode::NOT_FOUND,
+                    format!("voxel card {id} is not open (start it again)"),
+                )
+            })
+    }
+}
+
+/// The editor's routes (merged into the studio's router).
+pub(super) fn router(studio: Arc<Studio>) -> Router<Arc<Studio>> {
+    let voxels = Arc::new(Voxels {
+        studio,
+        sessions: Mutex::new(VecDeque::new()),
+        next: Mutex::new(0),
+    });
+    Router::new()
+        .route("/api/voxel/new", post(new_card))
+        .route("/api/voxel/load", post(load))
+        .route("/api/voxel/{id}", get(show))
+        .route("/api/voxel/{id}/edit", post(edit))
+        .route("/api/voxel/{id}/undo", post(undo))
+        .route("/api/voxel/{id}/redo", post(redo))
+        .route("/api/voxel/{id}/open", get(open_card))
+        .route("/api/voxel/{id}/save", get(save))
+        .route("/api/voxel/{id}/pattern", post(to_pattern))
+        .with_state(voxels)
+}
+
+/// The request of `new`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NewCard {
+    nx: usize,
+    ny: usize,
+    nz: usize,
+    cell_mm: f64,
+    #[serde(default)]
+    margin_mm: f64,
+}
+
+/// A face as the page marks it: `kind` is `front` or `top` (of voxel `cell`), `back` (the
+/// back sheet at x = cell[0], z = cell[2]) or `base` (the base at x = cell[0], y = cell[1]).
+#[derive(Serialize)]
+struct FaceView {
+    kind: &'static str,
+    cell: [usize; 3],
+    /// Pattern column and row.
+    pattern: [usize; 2],
+}
+
+fn face_view(c: &PatternCell) -> FaceView {
+    let (kind, cell) = match c.face {
+        VoxelFace::Front { x, y, z } => ("front", [x, y, z]),
+        VoxelFace::Top { x, y, z } => ("top", [x, y, z]),
+        VoxelFace::BackSheet { x, z } => ("back", [x, 0, z]),
+        VoxelFace::Base { x, y } => ("base", [x, y, 0]),
+    };
+    FaceView {
+        kind,
+        cell,
+        pattern: [c.x, c.row],
+    }
+}
+
+/// One fault of the card, at its place.
+#[derive(Serialize)]
+struct FaultView {
+    /// `popup` (refused), `loose` (refused) or `beyond` (a warning).
+    kind: &'static str,
+    message: String,
+    faces: Vec<FaceView>,
+    /// Faces at fault left out of `faces` (beyond [`CELLS_SHOWN`]).
+    more: usize,
+}
+
+fn faults(card: &VoxelCard, v: &CardVerdict) -> Vec<FaultView> {
+    let s = Surface::new(card);
+    let mut out: Vec<FaultView> = v
+        .popup
+        .iter()
+        .map(|p| {
+            let row = p.z + card.ny() - p.depth;
+            FaultView {
+                kind: "popup",
+                message: format!("the card would not pop up: {p}"),
+                faces: vec![face_view(&PatternCell {
+                    x: p.x,
+                    row,
+                    face: crate::design::popup::voxel::face_of(&s, p.x, row),
+                })],
+                more: 0,
+            }
+        })
+        .collect();
+    for piece in &v.loose {
+        out.push(FaultView {
+            kind: "loose",
+            message: format!(
+                "a piece of {} cell(s), {:.1} mm², is cut on every side and falls out (it starts \
+                 at {})",
+                piece.cells.len(),
+                piece.area_mm2,
+                piece.cells[0].face
+            ),
+            faces: piece
+                .cells
+                .iter()
+                .take(CELLS_SHOWN)
+                .map(face_view)
+                .collect(),
+            more: piece.cells.len().saturating_sub(CELLS_SHOWN),
+        });
+    }
+    if let Some(far) = v.beyond.first() {
+        out.push(FaultView {
+            kind: "beyond",
+            message: format!(
+                "folded shut, {} face cell(s) reach beyond the closed card, up to {:.1} mm at {}: \
+                 a larger margin or a lower model holds them",
+                v.beyond.len(),
+                far.beyond_mm,
+                far.cell.face
+            ),
+            faces: v
+                .beyond
+                .iter()
+                .take(CELLS_SHOWN)
+                .map(|b| face_view(&b.cell))
+                .collect(),
+            more: v.beyond.len().saturating_sub(CELLS_SHOWN),
+        });
+    }
+    out
+}
+
+/// The session as the page shows it.
+#[derive(Serialize)]
+struct CardView {
+    id: u64,
+    name: String,
+    nx: usize,
+    ny: usize,
+    nz: usize,
+    cell_mm: f64,
+    margin_mm: f64,
+    /// Sheet width and height, mm.
+    sheet_mm: [f64; 2],
+    /// `depth[x][z]`: the row's filled cells are y < depth.
+    depth: Vec<Vec<usize>>,
+    /// `window[x][z]` (eq. 5).
+    window: Vec<Vec<bool>>,
+    /// `omitted[x][z]`: the row's top face is left out (§3.3).
+    omitted: Vec<Vec<bool>>,
+    /// Pops up and holds together (faces beyond the closed card only warn).
+    makes_a_card: bool,
+    faults: Vec<FaultView>,
+    undo: bool,
+    redo: bool,
+    /// What the last edit changed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    change: Option<[usize; 2]>,
+}
+
+fn card_view(id: u64, s: &Session, change: Option<EditChange>) -> ApiResult<CardView> {
+    let card = s.card();
+    let verdict = card_verdict(card)
+        .map_err(|e| ApiError::input(format!("{}: the crease pattern: {e}", s.name)))?;
+    let per_row = |f: &dyn Fn(usize, usize) -> bool| -> Vec<Vec<bool>> {
+        (0..card.nx())
+            .map(|x| (0..card.nz()).map(|z| f(x, z)).collect())
+            .collect()
+    };
+    let (w, h) = card.sheet_mm();
+    Ok(CardView {
+        id,
+        name: s.name.clone(),
+        nx: card.nx(),
+        ny: card.ny(),
+        nz: card.nz(),
+        cell_mm: card.cell_mm(),
+        margin_mm: card.margin_mm(),
+        sheet_mm: [w, h],
+        depth: (0..card.nx())
+            .map(|x| (0..card.nz()).map(|z| card.depth(x, z)).collect())
+            .collect(),
+        window: per_row(&|x, z| card.is_hole(x, z)),
+        omitted: per_row(&|x, z| card.is_top_omitted(x, z)),
+        makes_a_card: verdict.makes_a_card(),
+        faults: faults(card, &verdict),
+        undo: s.at > 0,
+        redo: s.at + 1 < s.versions.len(),
+        change: change.map(|c| [c.added, c.removed]),
+    })
+}
+
+/// Runs `work` on session `id` off the async threads.
+async fn on_session<T: Send + 'static>(
+    voxels: Arc<Voxels>,
+    id: u64,
+    work: impl FnOnce(&mut Session) -> ApiResult<T> + Send + 'static,
+) -> ApiResult<T> {
+    let session = voxels.get(id)?;
+    blocking(move || {
+        let mut s = session.lock().unwrap_or_else(PoisonError::into_inner);
+        work(&mut s)
+    })
+    .await
+}
+
+fn start(voxels: &Voxels, name: String, card: VoxelCard) -> ApiResult<Json<CardView>> {
+    let (id, s) = voxels.add(Session {
+        name,
+        versions: vec![card],
+        at: 0,
+    });
+    let s = s.lock().unwrap_or_else(PoisonError::into_inner);
+    Ok(Json(card_view(id, &s, None)?))
+}
+
+async fn new_card(
+    State(voxels): State<Arc<Voxels>>,
+    body: Result<Bytes, BytesRejection>,
+) -> ApiResult<Json<CardView>> {
+    let q: NewCard = json_body(body, "new card")?;
+    blocking(move || {
+        let mut card = VoxelCard::new(q.nx, q.ny, q.nz, q.cell_mm)
+            .map_err(|e| ApiError::input(format!("new card: {e}")))?;
+        card.set_margin_mm(q.margin_mm)
+            .map_err(|e| ApiError::input(format!("new card: {e}")))?;
+        start(&voxels, "card.voxel.txt".into(), card)
+    })
+    .await
+}
+
+/// `name`: the file's name; the rest are `foldcam popup voxel`'s options of the same names
+/// (its defaults when left out) for a height map or mesh.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LoadQuery {
+    name: String,
+    resolution: Option<usize>,
+    depth: Option<usize>,
+    card_width: Option<f64>,
+    card_margin: Option<f64>,
+    morphology: Option<usize>,
+    windows: Option<bool>,
+    thin_top: Option<usize>,
+}
+
+impl LoadQuery {
+    fn options(&self) -> ApiResult<VoxelOptions> {
+        let d = VoxelOptions::default();
+        let options = VoxelOptions {
+            resolution: self.resolution.unwrap_or(d.resolution),
+            depth: self.depth.unwrap_or(d.depth),
+            card_width: self.card_width.unwrap_or(d.card_width),
+            card_margin: self.card_margin.unwrap_or(d.card_margin),
+            morphology: self.morphology.unwrap_or(d.morphology),
+            windows: self.windows.unwrap_or(d.windows),
+            thin_top: self.thin_top.unwrap_or(d.thin_top),
+            ..d
+        };
+        options
+            .validate()
+            .map_err(|e| ApiError::input(design_open::message(&e)))?;
+        Ok(options)
+    }
+}
+
+async fn load(
+    State(voxels): State<Arc<Voxels>>,
+    query: Result<Query<LoadQuery>, QueryRejection>,
+    body: Result<Bytes, BytesRejection>,
+) -> ApiResult<Json<CardView>> {
+    let Query(q) = query?;
+    let name = upload_name(&q.name);
+    let options = q.options()?;
+    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    blocking(move || {
+        let path = std::path::PathBuf::from(&name);
+        let file = DesignFile {
+            name: &path,
+            bytes: &body,
+        };
+        let fail = |e: SourceError| ApiError::input(design_open::message(&e));
+        let mesh = match DesignKind::recognise(&path, &body) {
+            Some(DesignKind::Mesh) => Some(file.mesh().map_err(fail)?),
+            _ => None,
+        };
+        let mut notes: Vec<String> = Vec::new();
+        let card = load_card(&file, mesh.as_ref(), &options, &mut notes).map_err(fail)?;
+        start(&voxels, name, card)
+    })
+    .await
+}
+
+async fn show(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
+    on_session(voxels, id, move |s| Ok(Json(card_view(id, s, None)?))).await
+}
+
+async fn edit(
+    State(voxels): State<Arc<Voxels>>,
+    PathId(id): PathId,
+    body: Result<Bytes, BytesRejection>,
+) -> ApiResult<Json<CardView>> {
+    let e: VoxelEdit = json_body(body, "voxel edit")?;
+    on_session(voxels, id, move |s| {
+        let mut card = s.card().clone();
+        let change = apply_edit(&mut card, &e)
+            .map_err(|err| ApiError::input(format!("{}: {err}", s.name)))?;
+        s.versions.truncate(s.at + 1);
+        s.versions.push(card);
+        if s.versions.len() > MAX_VOXEL_UNDO {
+            s.versions.remove(0);
+        }
+        s.at = s.versions.len() - 1;
+        Ok(Json(card_view(id, s, Some(change))?))
+    })
+    .await
+}
+
+async fn undo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
+    on_session(voxels, id, move |s| {
+        if s.at == 0 {
+            return Err(ApiError::input("nothing to undo".into()));
+        }
+        s.at -= 1;
+        Ok(Json(card_view(id, s, None)?))
+    })
+    .await
+}
+
+async fn redo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
+    on_session(voxels, id, move |s| {
+        if s.at + 1 >= s.versions.len() {
+            return Err(ApiError::input("nothing to redo".into()));
+        }
+        s.at += 1;
+        Ok(Json(card_view(id, s, None)?))
+    })
+    .await
+}
+
+#[derive(Deserialize)]
+struct OpenQuery {
+    angle: f64,
+}
+
+/// The card opened: every pattern face triangulated on its pattern polygon, the triangles
+/// on the folded vertices; each faulty cell as a quad at its place.
+#[derive(Serialize)]
+struct OpenView {
+    /// The opening angle, degrees (0 shut, 90 standing, 180 flat).
+    angle: f64,
+    /// Folded vertices, mm (x along the fold, y towards the viewer, z up).
+    positions: Vec<[f64; 3]>,
+    /// Three vertex indices each.
+    triangles: Vec<[usize; 3]>,
+    /// For each fault of the view (same order), the corners of its faulty cells, mm.
+    faults: Vec<Vec<[[f64; 3]; 4]>>,
+}
+
+fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, String> {
+    if !angle.is_finite() {
+        return Err(format!("angle {angle}: expected degrees from 0 to 180"));
+    }
+    let cp = crease_pattern(card).map_err(|e| format!("the crease pattern: {e}"))?;
+    let folded = fold_card(card, &cp, angle).state;
+    let mut triangles = Vec::new();
+    for (pattern_face, face) in cp.faces.iter().flatten().zip(folded.faces.iter().flatten()) {
+        let ring = |r: &[crate::pattern::VertexId]| -> Vec<DVec2> {
+            r.iter().map(|&v| cp.position(v)).collect()
+        };
+        let holes: Vec<Vec<DVec2>> = pattern_face
+            .holes
+            .iter()
+            .map(|h| ring(h.as_slice()))
+            .collect();
+        let tris = triangulate_polygon(&ring(pattern_face.outer.as_slice()), &holes)
+            .map_err(|e| format!("a face of the card: {e}"))?;
+        let ids: Vec<usize> = face
+            .outer
+            .iter()
+            .chain(face.holes.iter().flatten())
+            .map(|v| v.index())
+            .collect();
+        triangles.extend(tris.iter().map(|t| t.map(|k| ids[k])));
+    }
+    let verdict = card_verdict(card).map_err(|e| format!("the crease pattern: {e}"))?;
+    let surface = Surface::new(card);
+    let (s, ny) = (card.cell_mm(), card.ny() as f64);
+    let quad = |f: &FaceView| -> [[f64; 3]; 4] {
+        let [x, r] = f.pattern;
+        let plane = surface.plane(x as i64, r as i64);
+        let v0 = r as f64 - ny;
+        [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)].map(|(du, dv)| {
+            let p = DVec3::from(plane.to_card(x as f64 + du, v0 + dv));
+            (open_transform(p, angle) * s).to_array()
+        })
+    };
+    Ok(OpenView {
+        angle,
+        positions: folded.positions.iter().map(|p| p.to_array()).collect(),
+        triangles,
+        faults: faults(card, &verdict)
+            .iter()
+            .map(|f| f.faces.iter().map(quad).collect())
+            .collect(),
+    })
+}
+
+async fn open_card(
+    State(voxels): State<Arc<Voxels>>,
+    PathId(id): PathId,
+    query: Result<Query<OpenQuery>, QueryRejection>,
+) -> ApiResult<Json<OpenView>> {
+    let Query(q) = query?;
+    on_session(voxels, id, move |s| {
+        open_view(s.card(), q.angle)
+            .map(Json)
+            .map_err(|e| ApiError::input(format!("{}: {e}", s.name)))
+    })
+    .await
+}
+
+async fn save(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Response> {
+    on_session(voxels, id, move |s| {
+        Ok(download(
+            "text/plain; charset=utf-8",
+            &s.file_name(),
+            format_voxel_card(s.card()).into_bytes(),
+        ))
+    })
+    .await
+}
+
+async fn to_pattern(
+    State(voxels): State<Arc<Voxels>>,
+    PathId(id): PathId,
+) -> ApiResult<Json<Opened>> {
+    let studio = Arc::clone(&voxels.studio);
+    let (name, text) = on_session(voxels, id, move |s| {
+        Ok((s.file_name(), format_voxel_card(s.card())))
+    })
+    .await?;
+    blocking(move || {
+        // The saved file, built as an upload of it is (and as `foldcam popup voxel` builds it).
+        let doc = design_open::open_upload(&name, text.as_bytes(), &[], MeshUse::Auto)
+            .map_err(ApiError::input)?;
+        opened(&studio, doc)
+    })
+    .await
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_open_card_covers_the_sheet_at_every_angle() {
+        let mut card = VoxelCard::new(4, 3, 3, 5.0).unwrap();
+        card.add(1, 1, 1).unwrap();
+        // Every triangle is one of the card's faces moved rigidly (eq. 6 is an isometry of
+        // each face), so the triangles' area is the sheet's at any opening.
+        let (w, h) = card.sheet_mm();
+        for angle in [0.0, 30.0, 90.0, 150.0, 180.0] {
+            let v = open_view(&card, angle).unwrap();
+            let area: f64 = v
+                .triangles
+                .iter()
+                .map(|t| {
+                    let p = t.map(|k| DVec3::from(v.positions[k]));
+                    0.5 * (p[1] - p[0]).cross(p[2] - p[0]).length()
+                })
+                .sum();
+            assert!((area - w * h).abs() < 1e-6, "{angle}°: {area} vs {}", w * h);
+        }
+        assert!(open_view(&card, f64::NAN).is_err());
+    }
+}
