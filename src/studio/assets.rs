@@ -30,6 +30,7 @@ static ASSETS: &[Asset] = &[
     asset!("fold.js", "text/javascript; charset=utf-8"),
     asset!("folding.js", "text/javascript; charset=utf-8"),
     asset!("machine.js", "text/javascript; charset=utf-8"),
+    asset!("popup.js", "text/javascript; charset=utf-8"),
     asset!(
         "vendor/three.module.min.js",
         "text/javascript; charset=utf-8"
