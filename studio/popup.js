@@ -11,7 +11,7 @@ import { call } from './api.js';
 const NS = 'http://www.w3.org/2000/svg';
 /** Pick reach around the pointer, screen pixels. */
 const PICK_PIXELS = 8;
-/** Paper colours as in the 3D view: the front (the pattern as drawn) and the back. */
+/** Paper colours as in the Folded view: the front (the pattern as drawn) and the back. */
 const FRONT = 0xf4efe6;
 const BACK = 0x6a8fd8;
 
@@ -221,11 +221,19 @@ export class PopupView {
     const step = Number(this.$('popup-snap').value);
     if (step > 0) {
       const grid = el('g', { class: 'popup-grid' }, this.layer);
-      for (let y = 0; y <= depth + 1e-9; y += step) el('line', { x1: y, y1: 0, x2: y, y2: height }, grid);
-      for (let z = 0; z <= height + 1e-9; z += step) el('line', { x1: 0, y1: z, x2: depth, y2: z }, grid);
+      const hair = { 'vector-effect': 'non-scaling-stroke' };
+      for (let y = 0; y <= depth + 1e-9; y += step) el('line', { x1: y, y1: 0, x2: y, y2: height, ...hair }, grid);
+      for (let z = 0; z <= height + 1e-9; z += step) el('line', { x1: 0, y1: z, x2: depth, y2: z, ...hair }, grid);
     }
-    el('line', { x1: 0, y1: 0, x2: 0, y2: height, class: 'popup-sheet' }, this.layer);
-    el('line', { x1: 0, y1: 0, x2: depth, y2: 0, class: 'popup-sheet' }, this.layer);
+    const sheet = { class: 'popup-sheet', 'vector-effect': 'non-scaling-stroke' };
+    el('line', { x1: 0, y1: 0, x2: 0, y2: height, ...sheet }, this.layer);
+    el('line', { x1: 0, y1: 0, x2: depth, y2: 0, ...sheet }, this.layer);
+    // Names of the two sheets, upright (outside the flipped layer).
+    const size = 12 * this.mmPerPixel();
+    el('text', { x: size * 0.4, y: -height + size, 'font-size': size, class: 'popup-label' }, this.svg)
+      .textContent = `back sheet (y = 0), ${height} mm`;
+    el('text', { x: depth, y: size * 1.3, 'font-size': size, 'text-anchor': 'end', class: 'popup-label' }, this.svg)
+      .textContent = `base (z = 0), ${depth} mm`;
     const failing = new Set(this.view.findings.map((f) => f.operation).filter((n) => n));
     const drag = this.drag;
     for (const op of this.view.operations) {
@@ -391,12 +399,13 @@ export class PopupView {
     this.scene.background = new THREE.Color(0xeef1f5);
     this.scene.add(new THREE.AmbientLight(0xffffff, 1.2));
     const sun = new THREE.DirectionalLight(0xffffff, 2.0);
-    sun.position.set(1, -2, 3);
+    sun.position.set(-1, 3, 2);
     this.scene.add(sun);
     this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
     this.model = new THREE.Group();
     this.scene.add(this.model);
-    this.model.rotation.set(-1.1, 0, -0.5);
+    // Seen from in front of the card and above it (z up), turned a little to one side.
+    this.camera.up.set(0, 0, 1);
     let drag = null;
     const canvas = this.renderer.domElement;
     canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; });
@@ -452,13 +461,18 @@ export class PopupView {
     const [w, depth, height] = this.view.card;
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(positions), 3));
-    geometry.translate(-w / 2, -depth / 2, -height / 3);
+    geometry.translate(-w / 2, -depth / 3, -height / 4);
     geometry.computeVertexNormals();
-    const front = new THREE.MeshLambertMaterial({ color: FRONT, side: THREE.FrontSide });
-    const back = new THREE.MeshLambertMaterial({ color: BACK, side: THREE.BackSide });
-    this.model.add(new THREE.Mesh(geometry, front), new THREE.Mesh(geometry, back));
+    // The faces wind counter-clockwise on the pattern, so in space the card's inside (the
+    // pattern's drawn side) is their back: drawn in the paper's front colour.
+    const inside = new THREE.MeshLambertMaterial({ color: FRONT, side: THREE.BackSide });
+    const outside = new THREE.MeshLambertMaterial({ color: BACK, side: THREE.FrontSide });
+    const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry, 20),
+      new THREE.LineBasicMaterial({ color: 0x444444, transparent: true, opacity: 0.5 }));
+    this.model.add(new THREE.Mesh(geometry, inside), new THREE.Mesh(geometry, outside), edges);
     const radius = Math.hypot(w, depth, height) / 2 || 1;
-    this.camera.position.set(0, 0, radius * 3.4);
+    this.camera.position.set(-0.9 * radius, 2.6 * radius, 1.7 * radius);
+    this.camera.lookAt(0, 0, 0);
     this.camera.near = radius * 0.01;
     this.camera.far = radius * 20;
     this.drawThree();
