@@ -355,9 +355,8 @@ export class PopupView {
     const p = this.toSide(e);
     if (drag.adding) {
       const { op } = this.addition(drag.from, this.snap(p));
-      const extent = op.plane === 'vertical'
-        ? op.polygon[2][1] - op.polygon[0][1] : op.polygon[2][1] - op.polygon[0][1];
-      if (extent <= 0) { this.draw(); return; }
+      // A click without extent on the plane adds nothing.
+      if (op.polygon[2][1] - op.polygon[0][1] <= 0) { this.draw(); return; }
       await this.edit({ add: op });
       this.selected = this.view.operations.length;
       this.draw();

@@ -1,6 +1,6 @@
 //! The polygon pop-up editor (Mitani & Suzuki 2004) in headless Chromium: a wall and its roof
 //! added with the mouse on the card's side section, the live check naming the wall until the
-//! roof holds it, undo and redo, the saved design run through `foldcam popup poly` and its
+//! roof holds it, the wall moved with the mouse off its roof and named again, undo and redo, the saved design run through `foldcam popup poly` and its
 //! crease pattern compared line for line with the one the page draws, and the pattern opened
 //! as a studio document. Keeps `docs/studio-popup.png` with `FOLDCAM_SCREENSHOTS=docs`.
 
@@ -191,6 +191,23 @@ async fn a_wall_and_its_roof_drawn_with_the_mouse_save_as_the_cli_builds_them() 
             "no fold at v = {v}"
         );
     }
+
+    // Select the wall and drag it 10 mm forward: the roof no longer reaches it, and the
+    // page says so at the wall. Undo puts it back.
+    click(&c, "#popup-tools button[data-popup-tool='select']").await;
+    let from = screen_in(&c, "popup-side", 30.0, 10.0).await;
+    let to = screen_in(&c, "popup-side", 40.0, 10.0).await;
+    pointer_drag(&c, from, to).await;
+    operations_shown(&c, 2, false).await;
+    let failing = c
+        .find_all(Locator::Css("#popup-side line.popup-op.failing"))
+        .await
+        .unwrap();
+    assert_eq!(failing.len(), 1);
+    assert_eq!(failing[0].attr("x1").await.unwrap().as_deref(), Some("40"));
+    assert!(text(&c, "#popup-findings li").await.contains("(y = 40 mm)"));
+    click(&c, "#popup-undo").await;
+    operations_shown(&c, 2, true).await;
 
     // Undo takes the roof away again, redo brings it back.
     click(&c, "#popup-undo").await;

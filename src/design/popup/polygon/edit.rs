@@ -24,7 +24,7 @@ use thiserror::Error;
 use super::check::PopupReport;
 use super::design::{Add, Design, DesignError, Operation, PlaneName, Units};
 use super::lines::PieceId;
-use super::model::{FaceKind, Plane, PolygonCard};
+use super::model::{Plane, PolygonCard};
 use crate::design::popup::problem::PopupProblem;
 
 /// Smallest side (mm) of the box a resized outline is fitted into.
@@ -324,14 +324,6 @@ pub fn write_design(design: &Design) -> String {
         }
     }
     out
-}
-
-/// The face kind of a design's plane name.
-pub fn face_kind(plane: PlaneName) -> FaceKind {
-    match plane {
-        PlaneName::Vertical => FaceKind::Vertical,
-        PlaneName::Horizontal => FaceKind::Horizontal,
-    }
 }
 
 #[cfg(test)]

@@ -60,8 +60,7 @@ pub use design::{
     Replay, Units, parse_design,
 };
 pub use edit::{
-    Edit, EditError, Finding, MIN_RESIZE_MM, apply_edit, face_kind, findings, outline_box,
-    write_design,
+    Edit, EditError, Finding, MIN_RESIZE_MM, apply_edit, findings, outline_box, write_design,
 };
 pub use fold::{FoldedPolygonCard, face_planes, fold_card, holds_paper, standing_corners};
 pub use from_voxel::from_voxel;
