@@ -9,6 +9,7 @@ import { FlatView } from './flat.js';
 import { FoldingView } from './folding.js';
 import { TessellationView } from './tessellate.js';
 import { VoxelView } from './voxel.js';
+import { PopupView } from './popup.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
@@ -22,6 +23,8 @@ new FoldingView($('view-folding'), async (view) => { await opened(view); await s
 new TessellationView($('view-tessellate'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 // The voxel pop-up editor; its crease pattern opens as a document the same way.
 new VoxelView($('view-voxel'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+// The polygon pop-up editor; its saved design opens as a document in the pattern view.
+new PopupView($('view-popup'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 let edits = 0;
 
 function showError(e) {

@@ -32,6 +32,7 @@ static ASSETS: &[Asset] = &[
     asset!("machine.js", "text/javascript; charset=utf-8"),
     asset!("tessellate.js", "text/javascript; charset=utf-8"),
     asset!("voxel.js", "text/javascript; charset=utf-8"),
+    asset!("popup.js", "text/javascript; charset=utf-8"),
     asset!(
         "vendor/three.module.min.js",
         "text/javascript; charset=utf-8"

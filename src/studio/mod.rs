@@ -24,6 +24,7 @@ mod edit_api;
 pub mod flat;
 mod folding_api;
 mod machine_api;
+mod popup_api;
 pub mod settings;
 mod tessellate_api;
 pub mod toolpath;

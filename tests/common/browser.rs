@@ -1,7 +1,10 @@
-//! The studio in headless Chromium over WebDriver (Debian's `chromium` and `chromium-driver`,
-//! installed by `.ci/run`): the browser, waiting for the page, clicks and screenshots, shared
-//! by the browser scenarios (the same harness as `studio_browser.rs`). A machine without them
-//! fails: a browser test never passes quietly.
+//! Headless Chromium for the studio's browser scenarios (Debian's `chromium` and
+//! `chromium-driver`, installed by `.ci/run`), driven over WebDriver: the driver, the browser,
+//! waiting for the page, real pointer drags and screenshots. A machine without them fails the
+//! scenarios: they do not pass quietly.
+//!
+//! Set `FOLDCAM_SCREENSHOTS=DIR` to keep the screenshots (the README's pictures come from
+//! `FOLDCAM_SCREENSHOTS=docs cargo test --test NAME`).
 #![allow(dead_code)]
 
 use std::net::TcpListener;
@@ -9,10 +12,11 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
+use fantoccini::actions::{InputSource, MouseActions, PointerAction};
 use fantoccini::{Client, ClientBuilder, Locator};
 use serde_json::{Value, json};
 
-/// Longest wait for the page to reach a state (solving runs in a debug build here).
+/// Longest wait for the page to reach a state (a debug build serves it).
 pub const PAGE_TIMEOUT: Duration = Duration::from_secs(180);
 
 /// Browser window size, pixels.
@@ -36,6 +40,7 @@ pub fn free_port() -> u16 {
         .port()
 }
 
+/// Starts `chromedriver`; panics naming the packages when it is missing.
 pub fn start_driver() -> Driver {
     let port = free_port();
     let child = Command::new("chromedriver")
@@ -60,6 +65,7 @@ pub fn start_driver() -> Driver {
     Driver(child, port)
 }
 
+/// A headless Chromium session of [`WINDOW`]'s size.
 pub async fn browser(driver: &Driver) -> Client {
     let mut caps = serde_json::Map::new();
     caps.insert(
@@ -85,7 +91,8 @@ pub async fn browser(driver: &Driver) -> Client {
         .unwrap_or_else(|e| panic!("headless Chromium did not start: {e}"))
 }
 
-/// Waits until `script` (a function body) returns true; panics with `what` after the timeout.
+/// Waits until `script` (a function body) returns true; panics with `what` and the page's
+/// error after [`PAGE_TIMEOUT`].
 pub async fn wait_until(c: &Client, script: &str, what: &str) {
     let start = Instant::now();
     loop {
@@ -108,6 +115,7 @@ pub async fn wait_until(c: &Client, script: &str, what: &str) {
     }
 }
 
+/// The text of the element `css`.
 pub async fn text(c: &Client, css: &str) -> String {
     c.find(Locator::Css(css))
         .await
@@ -115,6 +123,16 @@ pub async fn text(c: &Client, css: &str) -> String {
         .text()
         .await
         .unwrap()
+}
+
+/// Clicks the element `css`.
+pub async fn click(c: &Client, css: &str) {
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .click()
+        .await
+        .unwrap();
 }
 
 /// The screenshot folder asked for with `FOLDCAM_SCREENSHOTS=DIR`, if any.
@@ -126,7 +144,7 @@ pub fn screenshots_dir() -> Option<PathBuf> {
     })
 }
 
-/// Takes a screenshot; keeps it as `name` in the screenshot folder when one is asked for.
+/// Takes a screenshot; keeps it as `name` when `FOLDCAM_SCREENSHOTS` is set.
 pub async fn keep_screenshot(c: &Client, name: &str) {
     let png = c.screenshot().await.unwrap();
     assert!(png.starts_with(b"\x89PNG"), "a PNG screenshot");
@@ -135,12 +153,55 @@ pub async fn keep_screenshot(c: &Client, name: &str) {
     }
 }
 
-/// Clicks the element `css` selects.
-pub async fn click(c: &Client, css: &str) {
-    c.find(Locator::Css(css))
-        .await
-        .expect(css)
-        .click()
+/// Viewport position (CSS pixels) of drawing point `(x, y)` in the SVG `svg` (its first group
+/// holds the drawing in its own coordinates).
+pub async fn screen_in(c: &Client, svg: &str, x: f64, y: f64) -> (f64, f64) {
+    let at = c
+        .execute(
+            "const svg = document.getElementById(arguments[0]);
+             const m = svg.querySelector('g').getScreenCTM();
+             const p = svg.createSVGPoint(); p.x = arguments[1]; p.y = arguments[2];
+             const q = p.matrixTransform(m); return [q.x, q.y];",
+            vec![json!(svg), json!(x), json!(y)],
+        )
         .await
         .unwrap();
+    (at[0].as_f64().unwrap(), at[1].as_f64().unwrap())
+}
+
+/// A real pointer drag from one viewport point to another, in eight moves.
+pub async fn pointer_drag(c: &Client, from: (f64, f64), to: (f64, f64)) {
+    let mut drag = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: from.0,
+            y: from.1,
+        })
+        .then(PointerAction::Down { button: 0 });
+    for k in 1..=8 {
+        let t = f64::from(k) / 8.0;
+        drag = drag.then(PointerAction::MoveTo {
+            duration: Some(Duration::from_millis(60)),
+            x: from.0 + (to.0 - from.0) * t,
+            y: from.1 + (to.1 - from.1) * t,
+        });
+    }
+    c.perform_actions(drag.then(PointerAction::Up { button: 0 }))
+        .await
+        .unwrap();
+}
+
+/// Fetches `url` from the page (with its cookies and origin) as text.
+pub async fn fetch_text(c: &Client, url: &str) -> String {
+    let text = c
+        .execute_async(
+            "const done = arguments[arguments.length - 1];
+             fetch(arguments[0]).then(r => r.text()).then(done, e => done('ERROR ' + e));",
+            vec![json!(url)],
+        )
+        .await
+        .unwrap();
+    let text = text.as_str().unwrap().to_string();
+    assert!(!text.starts_with("ERROR "), "{url}: {text}");
+    text
 }

@@ -10,6 +10,8 @@
 //!   outline.
 //! - [`check_popup`] (`check.rs`): the two directed floods of §3.6.
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 7 as a [`FoldedState`].
+//! - [`apply_edit`] (`edit.rs`): the editor's add / move / resize / remove on a design, the
+//!   failing faces in words ([`findings`]) and the design written back ([`write_design`]).
 //! - [`from_voxel`]: a voxel card (Mitani, Suzuki & Uno 2003) as a polygon card, for refinement.
 //! - [`parse_design`] (`design.rs`): TOML design files replaying the operations of §3.1;
 //!   examples in `examples/popup/*.popup.toml`.
@@ -44,6 +46,7 @@
 mod check;
 mod crease;
 mod design;
+mod edit;
 mod fold;
 mod from_voxel;
 mod grid;
@@ -55,6 +58,9 @@ pub use crease::{PATTERN_TOLERANCE_MM, crease_pattern, crease_pattern_from};
 pub use design::{
     Add, CardSize, Design, DesignError, MAX_DESIGN_POINTS, MAX_OPERATIONS, Operation, PlaneName,
     Replay, Units, parse_design,
+};
+pub use edit::{
+    Edit, EditError, Finding, MIN_RESIZE_MM, apply_edit, findings, outline_box, write_design,
 };
 pub use fold::{FoldedPolygonCard, face_planes, fold_card, holds_paper, standing_corners};
 pub use from_voxel::from_voxel;
