@@ -11,7 +11,8 @@
 //! - flat diagonals (polygon faces, the n-gon of a truncated star) stay flat: eq. 3 with
 //!   ρ_limit = 0 as an equality;
 //! - vertex-adjacent faces, eq. 5–7: a crease passing through a face that shares only its
-//!   vertex gets the penalty row `f_o = 0` (see [`vertex_penalty`]).
+//!   vertex gets the penalty row `√f_o = 0` (see [`vertex_penalty`]; the root is a deviation
+//!   that keeps Newton's convergence quadratic near contact).
 //!
 //! Inequalities are handled as the paper handles eq. 2: a violated one becomes an equality for
 //! that step (an active set). Deviation: each inequality targets a small margin m inside its
@@ -240,17 +241,31 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
     if limits.vertex_penalty {
         for fan in &mesh.fans {
             for c in vertex_penalty::illegal_creases(x, fan) {
-                out.push(Row {
-                    family: Family::VertexPenalty,
-                    value: c.penalty,
-                    entries: c.grad,
-                });
+                out.extend(penalty_row(c));
             }
         }
     }
     let mut all: Vec<Row> = dev.into_iter().flatten().collect();
     all.extend(out);
     all
+}
+
+/// The eq. 5–7 row of an illegal crease as `√f_o = 0` (Tachi's f_o grows with the square of
+/// the angular penetration, so its root is about linear in it and Newton's method pulls the
+/// crease back to contact quadratically; the row `f_o = 0` only halves the penetration per
+/// step and stalls near contact, where its gradient falls under the Tikhonov term of the
+/// minimum-norm step). Same zero set; `None` at contact (f_o = 0, no gradient).
+fn penalty_row(c: vertex_penalty::Crease) -> Option<Row> {
+    if c.penalty <= 0.0 {
+        return None;
+    }
+    let root = c.penalty.sqrt();
+    let scale = 0.5 / root;
+    Some(Row {
+        family: Family::VertexPenalty,
+        value: root,
+        entries: c.grad.into_iter().map(|(v, g)| (v, scale * g)).collect(),
+    })
 }
 
 /// §5 vertex-angle rows: `θ − (δ_corner + m)` for every sector (the angle between two
