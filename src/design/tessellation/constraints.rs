@@ -480,4 +480,58 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn the_penalty_row_is_the_root_of_eq_7_with_its_gradient() {
+        // A six-face fan with crease 0 pushed out through the far sectors (illegal).
+        let mut positions = vec![DVec3::ZERO];
+        positions.extend((0..6).map(|k| {
+            let a = k as f64 * PI / 3.0;
+            DVec3::new(a.cos(), a.sin(), 0.5)
+        }));
+        positions[1] = DVec3::new(-1.0, 0.05, 0.18);
+        let triangles = (0..6u32).map(|k| [0, 1 + k, 1 + (k + 1) % 6]).collect();
+        let mesh = TessMesh::from_triangles(
+            positions,
+            triangles,
+            &std::collections::HashMap::new(),
+            Vec::new(),
+            Vec::new(),
+            0,
+        );
+        let limits = Limits::from_degrees(180.0, 0.0);
+        let penalty_of = |x: &[DVec3]| -> Vec<f64> {
+            rows(&mesh, x, &limits)
+                .into_iter()
+                .filter(|r| r.family == Family::VertexPenalty)
+                .map(|r| r.value)
+                .collect()
+        };
+        let x = mesh.positions.clone();
+        let (count, worst) = vertex_penalty::measure(&x, &mesh.fans);
+        let base: Vec<Row> = rows(&mesh, &x, &limits)
+            .into_iter()
+            .filter(|r| r.family == Family::VertexPenalty)
+            .collect();
+        assert_eq!((count, base.len()), (1, 1));
+        assert!((base[0].value * base[0].value - worst).abs() < 1e-12 * worst.max(1.0));
+        let h = 1e-7;
+        for v in 0..x.len() {
+            for c in 0..3 {
+                let (mut up, mut down) = (x.clone(), x.clone());
+                up[v][c] += h;
+                down[v][c] -= h;
+                let numeric = (penalty_of(&up)[0] - penalty_of(&down)[0]) / (2.0 * h);
+                let analytic = base[0]
+                    .entries
+                    .iter()
+                    .find(|(w, _)| *w as usize == v)
+                    .map_or(0.0, |(_, g)| g[c]);
+                assert!(
+                    (numeric - analytic).abs() < 1e-5,
+                    "vertex {v}: {numeric} vs {analytic}"
+                );
+            }
+        }
+    }
 }
