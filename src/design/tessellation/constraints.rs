@@ -11,7 +11,8 @@
 //! - flat diagonals (polygon faces, the n-gon of a truncated star) stay flat: eq. 3 with
 //!   ρ_limit = 0 as an equality;
 //! - vertex-adjacent faces, eq. 5–7: a crease passing through a face that shares only its
-//!   vertex gets the penalty row `f_o = 0` (see [`vertex_penalty`]).
+//!   vertex gets the penalty row `√f_o = 0` (see [`vertex_penalty`]; the root is a deviation
+//!   that keeps Newton's convergence quadratic near contact).
 //!
 //! Inequalities are handled as the paper handles eq. 2: a violated one becomes an equality for
 //! that step (an active set). Deviation: each inequality targets a small margin m inside its
@@ -240,17 +241,31 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
     if limits.vertex_penalty {
         for fan in &mesh.fans {
             for c in vertex_penalty::illegal_creases(x, fan) {
-                out.push(Row {
-                    family: Family::VertexPenalty,
-                    value: c.penalty,
-                    entries: c.grad,
-                });
+                out.extend(penalty_row(c));
             }
         }
     }
     let mut all: Vec<Row> = dev.into_iter().flatten().collect();
     all.extend(out);
     all
+}
+
+/// The eq. 5–7 row of an illegal crease as `√f_o = 0` (Tachi's f_o grows with the square of
+/// the angular penetration, so its root is about linear in it and Newton's method pulls the
+/// crease back to contact quadratically; the row `f_o = 0` only halves the penetration per
+/// step and stalls near contact, where its gradient falls under the Tikhonov term of the
+/// minimum-norm step). Same zero set; `None` at contact (f_o = 0, no gradient).
+fn penalty_row(c: vertex_penalty::Crease) -> Option<Row> {
+    if c.penalty <= 0.0 {
+        return None;
+    }
+    let root = c.penalty.sqrt();
+    let scale = 0.5 / root;
+    Some(Row {
+        family: Family::VertexPenalty,
+        value: root,
+        entries: c.grad.into_iter().map(|(v, g)| (v, scale * g)).collect(),
+    })
 }
 
 /// §5 vertex-angle rows: `θ − (δ_corner + m)` for every sector (the angle between two
@@ -461,6 +476,60 @@ mod tests {
                     (numeric - analytic).abs() < 1e-5,
                     "row {k} {:?} vertex {v}: {numeric} vs {analytic}",
                     row.family
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_penalty_row_is_the_root_of_eq_7_with_its_gradient() {
+        // A six-face fan with crease 0 pushed out through the far sectors (illegal).
+        let mut positions = vec![DVec3::ZERO];
+        positions.extend((0..6).map(|k| {
+            let a = k as f64 * PI / 3.0;
+            DVec3::new(a.cos(), a.sin(), 0.5)
+        }));
+        positions[1] = DVec3::new(-1.0, 0.05, 0.18);
+        let triangles = (0..6u32).map(|k| [0, 1 + k, 1 + (k + 1) % 6]).collect();
+        let mesh = TessMesh::from_triangles(
+            positions,
+            triangles,
+            &std::collections::HashMap::new(),
+            Vec::new(),
+            Vec::new(),
+            0,
+        );
+        let limits = Limits::from_degrees(180.0, 0.0);
+        let penalty_of = |x: &[DVec3]| -> Vec<f64> {
+            rows(&mesh, x, &limits)
+                .into_iter()
+                .filter(|r| r.family == Family::VertexPenalty)
+                .map(|r| r.value)
+                .collect()
+        };
+        let x = mesh.positions.clone();
+        let (count, worst) = vertex_penalty::measure(&x, &mesh.fans);
+        let base: Vec<Row> = rows(&mesh, &x, &limits)
+            .into_iter()
+            .filter(|r| r.family == Family::VertexPenalty)
+            .collect();
+        assert_eq!((count, base.len()), (1, 1));
+        assert!((base[0].value * base[0].value - worst).abs() < 1e-12 * worst.max(1.0));
+        let h = 1e-7;
+        for v in 0..x.len() {
+            for c in 0..3 {
+                let (mut up, mut down) = (x.clone(), x.clone());
+                up[v][c] += h;
+                down[v][c] -= h;
+                let numeric = (penalty_of(&up)[0] - penalty_of(&down)[0]) / (2.0 * h);
+                let analytic = base[0]
+                    .entries
+                    .iter()
+                    .find(|(w, _)| *w as usize == v)
+                    .map_or(0.0, |(_, g)| g[c]);
+                assert!(
+                    (numeric - analytic).abs() < 1e-5,
+                    "vertex {v}: {numeric} vs {analytic}"
                 );
             }
         }

@@ -58,7 +58,7 @@ pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
     Remesh, SHRINK_LADDER, Schedule, TessellateOptions, Tessellation, default_schedule, disk,
-    tessellate, tessellate_scheduled, tessellate_shrinking,
+    tessellate, tessellate_scheduled, tessellate_shrinking, tessellate_with_face_shrink,
 };
 pub use remesh::{RemeshReport, remesh};
 pub use samples::{SampleSurface, sample_surface, spherical_cap};

@@ -6,7 +6,7 @@ use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
 use super::remesh::{RemeshReport, min_corner_angle, remesh};
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
-use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks};
+use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks_shrunk};
 use super::unfold::{Unfolded, unfold};
 use super::{TessError, TessMesh};
 use crate::mesh::{HalfEdgeMesh, PolyMesh};
@@ -295,13 +295,34 @@ pub fn tessellate(
     opts: &TessellateOptions,
     progress: impl FnMut(&Iteration),
 ) -> Result<Tessellation, TessError> {
+    tessellate_shrunk(mesh, opts, None, progress)
+}
+
+/// [`tessellate`] with a face shrink per input face (`face_shrink[f]` in (0, 1], overriding
+/// `opts.star.shrink`; see [`star_tucks_shrunk`](super::star::star_tucks_shrunk)).
+/// Errors as [`tessellate`], and when `face_shrink` does not have one entry per face.
+pub fn tessellate_with_face_shrink(
+    mesh: &PolyMesh,
+    opts: &TessellateOptions,
+    face_shrink: &[f64],
+    progress: impl FnMut(&Iteration),
+) -> Result<Tessellation, TessError> {
+    tessellate_shrunk(mesh, opts, Some(face_shrink), progress)
+}
+
+fn tessellate_shrunk(
+    mesh: &PolyMesh,
+    opts: &TessellateOptions,
+    face_shrink: Option<&[f64]>,
+    progress: impl FnMut(&Iteration),
+) -> Result<Tessellation, TessError> {
     let he = disk(mesh)?;
     let mut star = opts.star;
     let l = opts.solve.limits;
     star.max_star_points = star
         .max_star_points
         .or(Some(max_star_points(l.min_vertex_angle + l.margin)));
-    let mut initial = star_tucks(&he, &star)?;
+    let mut initial = star_tucks_shrunk(&he, &star, face_shrink)?;
     assign_folds(&mut initial.mesh);
     let mut solved = initial.mesh.clone();
     let mut solve_opts = opts.solve;
