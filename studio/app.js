@@ -7,6 +7,7 @@ import { MachineView } from './machine.js';
 import { Editor } from './edit.js';
 import { FlatView } from './flat.js';
 import { FoldingView } from './folding.js';
+import { CraftView } from './craft.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
@@ -17,6 +18,7 @@ const flatView = new FlatView($('view-flat'));
 machineView.onError = (promise) => guarded(() => promise);
 // The fold-sequence designer; its crease pattern opens as a document in the pattern view.
 new FoldingView($('view-folding'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+new CraftView($('view-craft'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 let edits = 0;
 
 function showError(e) {

@@ -296,6 +296,7 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/materials", get(machine_api::materials))
         .route("/api/legend", get(legend))
         .merge(super::folding_api::router(Arc::clone(&state)))
+        .merge(super::craft_api::router(Arc::clone(&state)))
         .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))

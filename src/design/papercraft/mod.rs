@@ -46,6 +46,7 @@ pub mod layout;
 pub mod neighbour;
 pub mod network;
 pub mod packing;
+pub mod paint;
 pub mod parts;
 pub mod reference;
 pub mod shapes;

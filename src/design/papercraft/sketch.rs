@@ -173,6 +173,9 @@ pub fn snap_line(
 pub struct Regions {
     /// Regions on the mesh: their cut lines in order round each.
     pub loops: Vec<Vec<usize>>,
+    /// The same regions as half-edges (`2e` along cut line e, `2e + 1` against it), each
+    /// region on the left of its half-edges seen from outside.
+    pub sides: Vec<Vec<usize>>,
     /// Holes of an open mesh bounded by cut lines.
     pub holes: Vec<Vec<usize>>,
     /// Cut lines with a loose end.
@@ -251,6 +254,7 @@ pub fn regions(mesh: &ReferenceMesh, lines: &[CutLine]) -> Regions {
             out.holes.push(cut_lines);
         } else {
             out.loops.push(cut_lines);
+            out.sides.push(face);
         }
     }
     out
@@ -278,7 +282,7 @@ fn merge_ends(lines: &[CutLine]) -> (usize, Vec<[usize; 2]>) {
     (vertices.len(), ends)
 }
 
-fn mesh_diagonal(mesh: &ReferenceMesh) -> f64 {
+pub(super) fn mesh_diagonal(mesh: &ReferenceMesh) -> f64 {
     let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     for t in 0..mesh.triangle_count() {
         for p in mesh.triangle(t) {
@@ -292,6 +296,21 @@ fn mesh_diagonal(mesh: &ReferenceMesh) -> f64 {
 /// Whether the point a [`HOLE_STEP`] to the left of the middle of `line` (walked backwards
 /// when `reversed`) is off the mesh: its closest mesh point is farther than half the step.
 fn left_is_off_mesh(mesh: &ReferenceMesh, line: &CutLine, reversed: bool, diagonal: f64) -> bool {
+    let step = HOLE_STEP * diagonal;
+    let Some(p) = left_of(mesh, line, reversed, step) else {
+        return false;
+    };
+    mesh.project(p).distance > 0.5 * step
+}
+
+/// The point `step` (mesh units) to the left of the middle of `line` in the tangent plane
+/// (walked backwards when `reversed`); `None` where the line has no direction.
+pub(super) fn left_of(
+    mesh: &ReferenceMesh,
+    line: &CutLine,
+    reversed: bool,
+    step: f64,
+) -> Option<DVec3> {
     let segs = line.segments() as f64;
     let mid = segs / 2.0;
     let here = mesh.project(line.at(mid));
@@ -300,11 +319,8 @@ fn left_is_off_mesh(mesh: &ReferenceMesh, line: &CutLine, reversed: bool, diagon
     if reversed {
         d = -d;
     }
-    let Some(left) = here.normal.cross(d).try_normalize() else {
-        return false;
-    };
-    let step = HOLE_STEP * diagonal;
-    mesh.project(here.point + left * step).distance > 0.5 * step
+    let left = here.normal.cross(d).try_normalize()?;
+    Some(here.point + left * step)
 }
 
 impl Sketch {

@@ -167,3 +167,31 @@ fn a_bow_tie_crosses_itself_and_a_square_does_not() {
     assert!(!outline_crosses_itself(&square));
     assert!(outline_crosses_itself(&bow_tie));
 }
+
+#[test]
+fn painting_gives_each_gore_an_eighth_of_the_vase() {
+    // The eight gores are congruent (turns of one another by 45°), so each region's
+    // triangles must cover about an eighth of the mesh's area, and (nearly) every triangle is
+    // painted.
+    let (mesh, design, mesh_area) = vase();
+    let lines = Sketch::from_design(&design).cut_lines().unwrap();
+    let found = regions(&mesh, &lines);
+    let label = crate::design::papercraft::paint::paint_regions(&mesh, &lines, &found);
+    let mut area = vec![0.0; found.loops.len()];
+    let mut unpainted = 0.0;
+    for (t, l) in label.iter().enumerate() {
+        let [a, b, c] = mesh.triangle(t);
+        let here = (b - a).cross(c - a).length() / 2.0;
+        match l {
+            Some(r) => area[*r] += here,
+            None => unpainted += here,
+        }
+    }
+    assert!(
+        unpainted < 0.001 * mesh_area,
+        "{unpainted} of {mesh_area} unpainted"
+    );
+    for a in area {
+        assert!((a / mesh_area - 0.125).abs() < 0.01, "{a} of {mesh_area}");
+    }
+}
