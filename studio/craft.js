@@ -183,6 +183,8 @@ export class CraftView {
       + `${view.sheets} sheet(s). Click points on the mesh, then Finish line (Enter); drag to turn.`;
     this.$('craft-error').textContent = view.error ? `The parts cannot be made: ${view.error}` : '';
     this.root.dataset.parts = String(view.parts.length);
+    this.root.dataset.lines = String(view.lines.length);
+    this.root.dataset.faults = String(view.regions.filter((r) => r.error).length);
   }
 
   /** Cut lines (open ones dashed), the points clicked so far and their curve. */
@@ -233,7 +235,7 @@ export class CraftView {
     }
     const pts = (list, s) => list.map(([x, y]) => `${x + s * (w + 10)},${h - y}`).join(' ');
     this.view.parts.forEach((part, i) => {
-      const g = el('g', { 'data-part': i, 'data-region': part.region ?? -1 }, svg);
+      const g = el('g', { 'data-part': i, 'data-region': part.region ?? -1, 'data-sheet': part.sheet }, svg);
       const fill = hex(part.region === null ? NONE : this.regionColour(part.region));
       for (const tab of part.tabs) el('polygon', { points: pts(tab, part.sheet), class: 'craft-tab' }, g);
       el('polygon', {

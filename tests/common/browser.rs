@@ -1,0 +1,156 @@
+//! Headless Chromium for the studio's browser tests (Debian's `chromium` and
+//! `chromium-driver`, installed by `.ci/run`), driven over WebDriver: the part of the harness
+//! of `studio_browser.rs` the editors' scenarios share. A machine without them fails these
+//! tests: they do not pass quietly.
+//!
+//! Set `FOLDCAM_SCREENSHOTS=DIR` to keep the screenshots.
+#![allow(dead_code)]
+
+use std::net::TcpListener;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use fantoccini::actions::{InputSource, MouseActions, PointerAction};
+use fantoccini::{Client, ClientBuilder, Locator};
+use serde_json::{Value, json};
+
+/// Longest wait for the page to reach a state (work runs in a debug build here).
+pub const PAGE_TIMEOUT: Duration = Duration::from_secs(180);
+
+/// Browser window size, pixels.
+pub const WINDOW: (u32, u32) = (1400, 860);
+
+/// `chromedriver` on a free port, stopped when dropped.
+pub struct Driver(Child, u16);
+
+impl Drop for Driver {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+fn free_port() -> u16 {
+    TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port()
+}
+
+/// Starts chromedriver; panics with how to install it when it is missing.
+pub fn start_driver() -> Driver {
+    let port = free_port();
+    let child = Command::new("chromedriver")
+        .arg(format!("--port={port}"))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap_or_else(|e| {
+            panic!(
+                "chromedriver could not start ({e}): install Debian's chromium and \
+                 chromium-driver (`apt-get install -y chromium chromium-driver`, as .ci/run does)"
+            )
+        });
+    let start = Instant::now();
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "chromedriver did not listen"
+        );
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    Driver(child, port)
+}
+
+/// A headless Chromium session of [`WINDOW`]'s size, WebGL by SwiftShader.
+pub async fn browser(driver: &Driver) -> Client {
+    let mut caps = serde_json::Map::new();
+    caps.insert(
+        "goog:chromeOptions".into(),
+        json!({
+            "args": [
+                "--headless=new",
+                "--no-sandbox",
+                "--disable-dev-shm-usage",
+                "--disable-gpu-sandbox",
+                "--use-angle=swiftshader",
+                "--enable-unsafe-swiftshader",
+                "--hide-scrollbars",
+                format!("--window-size={},{}", WINDOW.0, WINDOW.1),
+            ]
+        }),
+    );
+    let connector = hyper_util::client::legacy::connect::HttpConnector::new();
+    ClientBuilder::new(connector)
+        .capabilities(caps)
+        .connect(&format!("http://127.0.0.1:{}", driver.1))
+        .await
+        .unwrap_or_else(|e| panic!("headless Chromium did not start: {e}"))
+}
+
+/// Waits until `script` (a function body) returns true; panics with `what` and the page's
+/// error after [`PAGE_TIMEOUT`].
+pub async fn wait_until(c: &Client, script: &str, what: &str) {
+    let start = Instant::now();
+    loop {
+        let done = c.execute(script, vec![]).await.expect("script runs");
+        if done == Value::Bool(true) {
+            return;
+        }
+        let error = c
+            .execute(
+                "return document.getElementById('error').textContent",
+                vec![],
+            )
+            .await
+            .unwrap();
+        assert!(
+            start.elapsed() < PAGE_TIMEOUT,
+            "timed out waiting for {what}; the page says {error}"
+        );
+        tokio::time::sleep(Duration::from_millis(150)).await;
+    }
+}
+
+/// Clicks the element `css`.
+pub async fn click(c: &Client, css: &str) {
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .click()
+        .await
+        .unwrap();
+}
+
+/// A real pointer click at a viewport point (CSS pixels).
+pub async fn pointer_click(c: &Client, at: (f64, f64)) {
+    let actions = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: at.0,
+            y: at.1,
+        })
+        .then(PointerAction::Down { button: 0 })
+        .then(PointerAction::Up { button: 0 });
+    c.perform_actions(actions).await.unwrap();
+}
+
+fn screenshots_dir() -> Option<PathBuf> {
+    std::env::var_os("FOLDCAM_SCREENSHOTS").map(|d| {
+        let d = Path::new(env!("CARGO_MANIFEST_DIR")).join(d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    })
+}
+
+/// Takes a screenshot, checks it is a PNG, and keeps it as `name` under
+/// `FOLDCAM_SCREENSHOTS` when that is set.
+pub async fn keep_screenshot(c: &Client, name: &str) {
+    let png = c.screenshot().await.unwrap();
+    assert!(png.starts_with(b"\x89PNG"), "a PNG screenshot");
+    if let Some(d) = screenshots_dir() {
+        std::fs::write(d.join(name), png).unwrap();
+    }
+}
