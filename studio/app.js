@@ -10,6 +10,7 @@ import { FoldingView } from './folding.js';
 import { TessellationView } from './tessellate.js';
 import { VoxelView } from './voxel.js';
 import { PopupView } from './popup.js';
+import { CraftView } from './craft.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
@@ -25,6 +26,7 @@ new TessellationView($('view-tessellate'), async (view) => { await opened(view);
 new VoxelView($('view-voxel'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 // The polygon pop-up editor; its saved design opens as a document in the pattern view.
 new PopupView($('view-popup'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+new CraftView($('view-craft'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 let edits = 0;
 
 function showError(e) {

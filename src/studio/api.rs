@@ -301,6 +301,7 @@ pub fn router(state: Arc<Studio>) -> Router {
         .merge(super::tessellate_api::router(Arc::clone(&state)))
         .merge(super::voxel_api::router(Arc::clone(&state)))
         .merge(super::popup_api::router(Arc::clone(&state)))
+        .merge(super::craft_api::router(Arc::clone(&state)))
         .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))

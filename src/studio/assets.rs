@@ -29,6 +29,7 @@ static ASSETS: &[Asset] = &[
     asset!("flat.js", "text/javascript; charset=utf-8"),
     asset!("fold.js", "text/javascript; charset=utf-8"),
     asset!("folding.js", "text/javascript; charset=utf-8"),
+    asset!("craft.js", "text/javascript; charset=utf-8"),
     asset!("machine.js", "text/javascript; charset=utf-8"),
     asset!("tessellate.js", "text/javascript; charset=utf-8"),
     asset!("voxel.js", "text/javascript; charset=utf-8"),

@@ -18,6 +18,7 @@
 
 pub mod api;
 pub mod assets;
+mod craft_api;
 pub mod design_open;
 pub mod document;
 mod edit_api;

@@ -135,6 +135,19 @@ pub async fn click(c: &Client, css: &str) {
         .unwrap();
 }
 
+/// A real pointer click at a viewport point (CSS pixels).
+pub async fn pointer_click(c: &Client, at: (f64, f64)) {
+    let actions = MouseActions::new("mouse".to_string())
+        .then(PointerAction::MoveTo {
+            duration: None,
+            x: at.0,
+            y: at.1,
+        })
+        .then(PointerAction::Down { button: 0 })
+        .then(PointerAction::Up { button: 0 });
+    c.perform_actions(actions).await.unwrap();
+}
+
 /// The screenshot folder asked for with `FOLDCAM_SCREENSHOTS=DIR`, if any.
 pub fn screenshots_dir() -> Option<PathBuf> {
     std::env::var_os("FOLDCAM_SCREENSHOTS").map(|d| {

@@ -22,6 +22,8 @@
 //!   pattern per sheet (outlines cut, tab roots mountain folds).
 //! - [`design`]: the TOML design file (placed and automatic patches) and the whole chain,
 //!   run by `foldcam papercraft DESIGN -o parts.fold`.
+//! - [`sketch`], [`autofit`]: the studio's cut-line drawing — regions traced from the cut
+//!   lines, a cylinder fitted to each, the design file written and built.
 //! - [`shapes`]: meshes of bodies of revolution and of elliptic-section bodies (the fish)
 //!   for tests and examples.
 //!
@@ -32,6 +34,7 @@
 //! within 0.005 mm, where arcs left gaps of up to 1.8 mm that no flat or cylindrical cap
 //! could close).
 
+pub mod autofit;
 pub mod bspline;
 pub mod cut_line;
 pub mod cylinder;
@@ -43,9 +46,11 @@ pub mod layout;
 pub mod neighbour;
 pub mod network;
 pub mod packing;
+pub mod paint;
 pub mod parts;
 pub mod reference;
 pub mod shapes;
+pub mod sketch;
 pub mod trim;
 pub mod walls;
 
