@@ -22,11 +22,11 @@
 //! (bounded by [`LayerOptions::max_states`] per component); transitivity constraints are capped
 //! at [`constraints::MAX_TRIPLES`].
 
-pub mod cells;
-pub mod constraints;
+pub(crate) mod cells;
+pub(crate) mod constraints;
 mod decimal;
-pub mod folded;
-pub mod search;
+pub(crate) mod folded;
+pub(crate) mod search;
 mod verdict;
 
 use glam::DVec2;
@@ -34,9 +34,11 @@ use serde::Serialize;
 
 use crate::pattern::faces::find_faces;
 use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState, VertexId};
+pub use cells::arrange;
 use constraints::{Kind, Place, System};
 pub use decimal::BigCount;
 use folded::FoldedFaces;
+pub use folded::fold_faces;
 use search::{Count, Engine};
 pub use verdict::{LayerCheck, check_layers, flat_fold_warning, meant_to_fold_flat};
 

@@ -16,7 +16,7 @@
 //! design that its own check refuses ([`SourceError::NotMade`]: the lines `foldcam` prints
 //! before exiting with status 1).
 
-pub mod card;
+pub(crate) mod card;
 pub mod craft;
 pub mod poly;
 pub mod script;

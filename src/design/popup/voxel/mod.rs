@@ -42,12 +42,12 @@ mod check;
 mod convert;
 mod crease;
 mod depth_map;
-pub mod estimate;
+pub(crate) mod estimate;
 pub(crate) mod fold;
 mod format;
 mod model;
 mod runs;
-pub mod surface;
+pub(crate) mod surface;
 
 pub use check::{FrontCellProblem, PopupProblem, PopupReport, check_popup};
 pub use convert::{
@@ -59,3 +59,4 @@ pub use depth_map::{DepthMap, MIN_MAP_SIDE, card_from_depth_map};
 pub use fold::{FoldedCard, fold_card, open_transform};
 pub use format::{VoxelFormatError, format_voxel_card, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};
+pub use surface::{Line, Plane, Surface};
