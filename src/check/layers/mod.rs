@@ -237,7 +237,7 @@ impl LayerSolver {
     /// Builds and counts the layer problem of `cp`.
     pub fn new(cp: &CreasePattern, opts: &LayerOptions) -> Result<LayerSolver, LayerError> {
         let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
-        let tol = (diag * opts.relative_tolerance).max(1e-12);
+        let tol = (diag * opts.relative_tolerance).max(crate::geom::tolerance::ROUNDOFF);
         let traced;
         let cp = if cp.faces.is_some() {
             cp
