@@ -6,7 +6,7 @@
 //! 1 s. Run with `cargo bench --bench fold3d`.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
-use foldcam::check::fold3d::solver::Solver;
+use foldcam::check::fold3d::Solver;
 use foldcam::check::fold3d::{BarHingeModel, FoldOptions, fold};
 use foldcam::design::classic::MiuraOri;
 use foldcam::pattern::{CreasePattern, PlanarizeOptions, planarize};

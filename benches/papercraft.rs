@@ -13,9 +13,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use foldcam::design::papercraft::ReferenceMesh;
-use foldcam::design::papercraft::design::parse_design;
-use foldcam::design::papercraft::layout::{SheetSpec, pack_boxes};
-use foldcam::design::papercraft::packing::pack_shapes;
+use foldcam::design::papercraft::pack_shapes;
+use foldcam::design::papercraft::parse_design;
+use foldcam::design::papercraft::{SheetSpec, pack_boxes};
 use foldcam::mesh::read_mesh;
 use glam::DVec3;
 

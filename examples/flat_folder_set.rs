@@ -328,7 +328,7 @@ fn explain(path: &Path, near: &[f64]) -> ExitCode {
         return ExitCode::from(2);
     }
     // Any gap between two placements of a vertex is let through: this only looks at geometry.
-    let folded = match foldcam::check::layers::folded::fold_faces(&cp, f64::MAX) {
+    let folded = match foldcam::check::layers::fold_faces(&cp, f64::MAX) {
         Ok(f) => f,
         Err(e) => {
             println!("error: {e}");
@@ -347,7 +347,7 @@ fn explain(path: &Path, near: &[f64]) -> ExitCode {
         .fold(f64::MAX, f64::min);
     let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
     let floor = (diag * foldcam::check::layers::RELATIVE_TOLERANCE).max(1e-12);
-    let (arr, tol) = foldcam::check::layers::cells::arrange(&cp, &folded, floor);
+    let (arr, tol) = foldcam::check::layers::arrange(&cp, &folded, floor);
     println!(
         "chosen tol {tol:.3e} (shortest / {:.0}): {} cells, {} segments",
         shortest / tol,
@@ -357,7 +357,7 @@ fn explain(path: &Path, near: &[f64]) -> ExitCode {
     if let [x, y, r] = *near {
         let at = glam::DVec2::new(x, y);
         for (s, &[a, b]) in arr.segment_ends.iter().enumerate() {
-            if foldcam::geom::segment::distance_to_point(a, b, at) > r {
+            if foldcam::geom::distance_to_point(a, b, at) > r {
                 continue;
             }
             let sides =

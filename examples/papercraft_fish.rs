@@ -30,8 +30,8 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use foldcam::design::papercraft::fit::fit_directrix;
-use foldcam::design::papercraft::shapes::elliptic_body;
+use foldcam::design::papercraft::elliptic_body;
+use foldcam::design::papercraft::fit_directrix;
 use glam::DVec3;
 
 const GORES: usize = 6;

@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use foldcam::design::papercraft::shapes::revolution;
+use foldcam::design::papercraft::revolution;
 use glam::DVec3;
 
 const GORES: usize = 8;

@@ -3,7 +3,7 @@
 
 use foldcam::check::{CheckOptions, check};
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura, grid, waterbomb_base};
-use foldcam::pattern::vertex_fan::VertexFans;
+use foldcam::pattern::VertexFans;
 use foldcam::pattern::{Assignment, CreasePattern, VertexId};
 use glam::DVec2;
 

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use foldcam::check::{CheckOptions, FindingKind, check};
 use foldcam::formats;
-use foldcam::pattern::vertex_fan::VertexFans;
+use foldcam::pattern::VertexFans;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 
 fn testdata() -> PathBuf {

@@ -8,9 +8,9 @@ use fab_common::{
     area, assert_cut_edges_covered, bounds, is_closed, options, polygon, square, with_role,
 };
 use foldcam::design::classic::MiuraOri;
-use foldcam::fab::geometry::{toolpaths, toolpaths_with_warnings};
 use foldcam::fab::{ContourRole, FabError, Operation, PlanOptions, Tabs, Toolpath};
-use foldcam::geom::polygon::contains_point;
+use foldcam::fab::{toolpaths, toolpaths_with_warnings};
+use foldcam::geom::contains_point;
 use foldcam::pattern::{Assignment, CreasePattern, Units};
 use glam::DVec2;
 

@@ -1,7 +1,7 @@
 //! Ordering of toolpaths: precedence, permutation, travel, joining.
 
-use foldcam::fab::order::{order, ranks, travel_mm};
 use foldcam::fab::{ContourRole, Operation, Toolpath};
+use foldcam::fab::{order, ranks, travel_mm};
 use foldcam::pattern::EdgeId;
 use glam::DVec2;
 use proptest::prelude::*;

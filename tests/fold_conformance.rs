@@ -180,13 +180,13 @@ fn generated_patterns_cut_on_card_without_the_fold_angle_warning() {
     let stainless =
         foldcam::machine::load_material("stainless-0.5").unwrap_or_else(|e| panic!("{e}"));
     for (name, cp) in generated() {
-        let warnings = foldcam::fab::plan::design_limit_warnings(&cp, &card);
+        let warnings = foldcam::fab::design_limit_warnings(&cp, &card);
         assert!(
             !warnings.iter().any(|w| w.contains("fold further")),
             "{name}: {warnings:?}"
         );
         // The angle is not hidden: a sheet that cannot fold that far still says so.
-        let warnings = foldcam::fab::plan::design_limit_warnings(&cp, &stainless);
+        let warnings = foldcam::fab::design_limit_warnings(&cp, &stainless);
         assert!(
             warnings.iter().any(|w| w.contains("fold further")),
             "{name}"

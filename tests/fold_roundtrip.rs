@@ -156,7 +156,7 @@ proptest! {
         let back = read_str(&text).map_err(|e| TestCaseError::fail(format!("{e}\n{text}")))?;
         prop_assert!(back.folded.is_none());
         // A pattern without faces is written with them (planarised first if it must be).
-        let cp = foldcam::formats::fold::faces::with_faces(&cp, true).into_owned();
+        let cp = foldcam::formats::fold::with_faces(&cp, true).into_owned();
         prop_assert_eq!(&back.pattern, &cp);
         // Bit-exact coordinates (PartialEq on f64 would accept 0.0 for -0.0).
         for (a, b) in back.pattern.vertices.iter().zip(&cp.vertices) {
@@ -603,7 +603,7 @@ proptest! {
         }
         // Not mirrored: the faces come out counter-clockwise like the strip's.
         for f in cp.faces.iter().flatten() {
-            let area = foldcam::geom::polygon::signed_area(f.outer.iter().map(|v| cp.vertices[v.index()]));
+            let area = foldcam::geom::signed_area(f.outer.iter().map(|v| cp.vertices[v.index()]));
             prop_assert!(area > 0.0);
         }
         // The edges come from the faces: boundary where one face, unassigned across creases.
@@ -652,7 +652,7 @@ fn tilted_flat_pattern_is_rotated_onto_xy() {
     }
     for f in cp.faces.iter().flatten() {
         let ring = f.outer.iter().map(|v| cp.vertices[v.index()]);
-        assert!(foldcam::geom::polygon::signed_area(ring) > 0.0);
+        assert!(foldcam::geom::signed_area(ring) > 0.0);
     }
     assert_eq!(cp.meta.frame_extra["frame_attributes"], json!(["2D"]));
 }

@@ -97,7 +97,7 @@ fn unfolded_faces_are_counter_clockwise_and_do_not_overlap() {
             .as_ref()
             .unwrap_or_else(|| panic!("{name}: no faces"));
         let area = |f: &foldcam::pattern::Face| {
-            foldcam::geom::polygon::signed_area(f.outer.iter().map(|v| cp.vertices[v.index()]))
+            foldcam::geom::signed_area(f.outer.iter().map(|v| cp.vertices[v.index()]))
         };
         assert!(faces.iter().all(|f| area(f) > 0.0), "{name}");
         // No overlap: the union of the faces (by i_overlay) is as large as their areas added up.
@@ -165,7 +165,7 @@ fn origami_simulator_patterns_become_flat() {
         // Faces counter-clockwise (Origami Simulator's run clockwise once y is turned up).
         for f in cp.faces.iter().flatten() {
             let ring = f.outer.iter().map(|v| cp.vertices[v.index()]);
-            assert!(foldcam::geom::polygon::signed_area(ring) > 0.0, "{name}");
+            assert!(foldcam::geom::signed_area(ring) > 0.0, "{name}");
         }
         assert!(
             imported.warnings.iter().any(|w| w.contains("reversed")),

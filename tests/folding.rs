@@ -6,11 +6,11 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use foldcam::check::{CheckOptions, check};
-use foldcam::design::folding::crease::{crease_pattern, step_states};
-use foldcam::design::folding::drag::{Drag, Snap, Snapped};
-use foldcam::design::folding::layers::layer_problems;
-use foldcam::design::folding::script::{ScriptError, parse_script, run_script};
+use foldcam::design::folding::layer_problems;
+use foldcam::design::folding::{Drag, Snap, Snapped};
 use foldcam::design::folding::{Fold, FoldError, Folding, Layers, Turn};
+use foldcam::design::folding::{ScriptError, parse_script, run_script};
+use foldcam::design::folding::{crease_pattern, step_states};
 use foldcam::fab::{PlanOptions, plan};
 use foldcam::formats::fold::{frame_count, parse_root, resolve_frame, write_string_frames};
 use foldcam::machine::{load_machine, load_material};

@@ -3,8 +3,8 @@
 //! no code with them: winding numbers summed from angles, golden-section minimisation of a
 //! convex distance, and dense sampling.
 
-use foldcam::geom::polygon::contains_point;
-use foldcam::geom::segment::{Crossing, intersect, segment_distance, slide_interval};
+use foldcam::geom::contains_point;
+use foldcam::geom::{Crossing, intersect, segment_distance, slide_interval};
 use glam::DVec2;
 use proptest::prelude::*;
 

@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use foldcam::check::layers::{LayerOptions, LayerSolver, solve_layers};
 use foldcam::check::{CheckOptions, FindingKind, check};
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
-use foldcam::design::folding::crease::{crease_pattern, step_states};
-use foldcam::design::folding::script::{parse_script, run_script};
+use foldcam::design::folding::{crease_pattern, step_states};
+use foldcam::design::folding::{parse_script, run_script};
 use foldcam::formats;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 use glam::DVec2;
@@ -523,7 +523,7 @@ fn square_twist_pleats_have_the_classic_width_and_angle() {
                 "{twist_deg}°: {width}"
             );
         }
-        let fans = foldcam::pattern::vertex_fan::VertexFans::new(&cp);
+        let fans = foldcam::pattern::VertexFans::new(&cp);
         let smallest = cp
             .vertex_ids()
             .filter(|&v| fans.of(v).len() == 4)

@@ -1,7 +1,7 @@
 //! The motion-time model against closed forms: trapezoids, triangles, junction speeds.
 
-use foldcam::machine::motion::{Kinematics, Move, job_time, junction_speed, move_times};
 use foldcam::machine::{Bed, Corner, Dialect, MachineProfile};
+use foldcam::machine::{Kinematics, Move, job_time, junction_speed, move_times};
 use glam::DVec2;
 use proptest::prelude::*;
 

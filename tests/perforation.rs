@@ -6,7 +6,7 @@
 mod fab_common;
 
 use fab_common::{options, point_segment, polygon, segment_segment};
-use foldcam::fab::geometry::toolpaths_with_warnings;
+use foldcam::fab::toolpaths_with_warnings;
 use foldcam::fab::{Operation, PlanOptions, Toolpath};
 use foldcam::pattern::{Assignment, CreasePattern};
 use glam::DVec2;

@@ -1,9 +1,9 @@
 //! Planarisation: crossings split, touches split, duplicates merged, faces traced; random
 //! drawings come out as planar graphs with Euler's formula holding.
 
-use foldcam::geom::polygon::contains_point;
-use foldcam::geom::segment::{Crossing, intersect};
-use foldcam::pattern::faces::find_faces;
+use foldcam::geom::contains_point;
+use foldcam::geom::{Crossing, intersect};
+use foldcam::pattern::find_faces;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 use glam::DVec2;
 use proptest::prelude::*;
@@ -303,7 +303,7 @@ proptest! {
         // Every face outline is counter-clockwise, and each hole lies inside its face.
         for f in cp.faces.iter().flatten() {
             let ring: Vec<DVec2> = f.outer.iter().map(|&v| cp.position(v)).collect();
-            prop_assert!(foldcam::geom::polygon::signed_area(ring.iter().copied()) > 0.0);
+            prop_assert!(foldcam::geom::signed_area(ring.iter().copied()) > 0.0);
             for hole in &f.holes {
                 let p = cp.position(hole[0]);
                 prop_assert!(contains_point(&ring, p), "hole at {p} outside its face");
@@ -362,7 +362,7 @@ fn islands_nest_inside_holes_and_separate_sheets_stay_outside() {
     assert_eq!(set.faces.len(), 4);
     assert_eq!(set.outer.len(), 2, "two sheets on the unbounded face");
     let area = |f: &foldcam::pattern::Face| {
-        foldcam::geom::polygon::signed_area(f.outer.iter().map(|&v| cp.position(v)))
+        foldcam::geom::signed_area(f.outer.iter().map(|&v| cp.position(v)))
     };
     for f in &set.faces {
         let expected_holes = match area(f).round() as i64 {

@@ -22,7 +22,7 @@ fn example(name: &str) -> String {
 /// counted by the library's flood over the re-read pattern (as in tests/popup_integrity.rs).
 fn loose_in(out: &Path) -> usize {
     let cp = foldcam::formats::load(out).unwrap().pattern;
-    foldcam::design::popup::integrity::loose_pieces(&cp).len()
+    foldcam::design::popup::loose_pieces(&cp).len()
 }
 
 /// Whole millimetres of paper `--fit` adds at a time.

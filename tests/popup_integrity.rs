@@ -12,7 +12,7 @@ use bin::{foldcam, repo_file};
 
 use std::path::Path;
 
-use foldcam::design::popup::integrity::{loose_pieces, loose_pieces_where};
+use foldcam::design::popup::{loose_pieces, loose_pieces_where};
 use foldcam::pattern::{Assignment, CreasePattern, Face};
 use glam::DVec2;
 

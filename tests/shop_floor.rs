@@ -267,7 +267,7 @@ fn plotters_draw_mountains_and_valleys_on_separate_layers_with_a_pause() {
 
 #[test]
 fn perforation_bridges_are_the_material_left_after_the_kerf() {
-    use foldcam::fab::{Operation, geometry};
+    use foldcam::fab::{Operation, toolpaths};
     use foldcam::pattern::Assignment;
     use glam::DVec2;
     let mut cp = CreasePattern::new();
@@ -280,7 +280,7 @@ fn perforation_bridges_are_the_material_left_after_the_kerf() {
     assert!(kerf > 0.05);
     // Mean gap between the toolpath dashes, mm.
     let mean_gap = |o: &PlanOptions| {
-        let paths = geometry::toolpaths(&cp, o).expect("toolpaths");
+        let paths = toolpaths(&cp, o).expect("toolpaths");
         let dashes = &paths[0].strokes;
         let gaps: Vec<f64> = dashes
             .windows(2)
@@ -381,7 +381,7 @@ fn lightburn_projects_parse_back_with_one_layer_per_operation_and_the_material_v
 
 #[test]
 fn origin_centre_and_offset_move_the_job_on_the_bed() {
-    use foldcam::fab::placement::Placement;
+    use foldcam::fab::Placement;
     use glam::DVec2;
     let cp = SquareTwist::default().build().expect("twist");
     let machine = load_machine("grbl-diode").expect("shipped");

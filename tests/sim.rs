@@ -99,7 +99,7 @@ fn clean_grbl_job() {
 
 #[test]
 fn sim_time_is_the_planner_time_plus_dwells() {
-    use foldcam::machine::motion::{Move, job_time};
+    use foldcam::machine::{Move, job_time};
     let machine = laser(Dialect::Grbl);
     let text = "M4 S500\nG0 X10 Y10\nG1 X40 Y10 F1800\nG1 X40 Y30\nG1 X10 Y10\nG0 X0 Y0\nM5\nM2";
     let r = run(text, &machine);

@@ -115,7 +115,7 @@ fn snapping_keeps_every_circle_of_the_circular_pleat_apart() {
     // 8 px at 96 px per inch; the snapping tolerance is well under it.
     let spacing_mm = 8.0 * 25.4 / 96.0;
     let (lo, hi) = snapped.pattern.bounds().unwrap();
-    let tolerance = lo.distance(hi) * formats::snap::SNAP_RELATIVE;
+    let tolerance = lo.distance(hi) * formats::SNAP_RELATIVE;
     assert!(tolerance < spacing_mm / 4.0);
     for (i, (b, a)) in before.iter().zip(&after).enumerate() {
         // Snapping closes any circle the drawing left open (one is: a chord end a hair off

@@ -4,8 +4,8 @@
 //! (design::papercraft: parsed; building needs a mesh file). Errors must say something.
 #![no_main]
 
-use foldcam::design::folding::script::{parse_script, run_script};
-use foldcam::design::papercraft::design::parse_design as parse_papercraft;
+use foldcam::design::folding::{parse_script, run_script};
+use foldcam::design::papercraft::parse_design as parse_papercraft;
 use foldcam::design::popup::polygon::parse_design as parse_popup;
 use libfuzzer_sys::fuzz_target;
 

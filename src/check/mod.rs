@@ -43,8 +43,8 @@
 //! and faces plus a parallel pass over the vertices; nothing is allocated per vertex unless it
 //! fails a check.
 
-pub mod applies;
-pub mod developability;
+pub(crate) mod applies;
+pub(crate) mod developability;
 mod edges;
 mod flat_foldability;
 pub mod fold3d;
@@ -61,6 +61,7 @@ use crate::pattern::faces::find_faces_with;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, FoldedState, VertexId};
 
+pub use applies::CheckRun;
 pub use report::{
     AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
     finding_line,

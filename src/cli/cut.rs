@@ -100,7 +100,7 @@ fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64
     }
     super::input::commit(outputs, &[])?;
     for job in &p.jobs {
-        if let Some((lo, hi)) = foldcam::fab::frame::bounds(job) {
+        if let Some((lo, hi)) = foldcam::fab::bounds(job) {
             let how = if power > 0.0 && !machine.pen_tool() {
                 format!("at {:.0}% power", power * 100.0)
             } else {

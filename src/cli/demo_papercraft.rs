@@ -6,7 +6,7 @@ use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
 use foldcam::design::papercraft::ReferenceMesh;
-use foldcam::design::papercraft::design::parse_design;
+use foldcam::design::papercraft::parse_design;
 use foldcam::formats::{self, write_atomic};
 use foldcam::render::{PreviewOptions, preview_png};
 

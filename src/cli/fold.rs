@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow};
-use foldcam::design::folding::display::{display_states, sheet_size, step_captions};
+use foldcam::design::folding::{display_states, sheet_size, step_captions};
 use foldcam::design::source::{DesignFile, read_design_file, script};
 use foldcam::formats::OutputSet;
 use foldcam::formats::fold::write_string_frames;

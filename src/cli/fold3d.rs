@@ -8,7 +8,7 @@ use anyhow::{Result, anyhow, bail};
 use foldcam::check::fold3d::{Fold, FoldOptions, Stop, fold};
 use foldcam::formats::fold::write_string;
 use foldcam::formats::write_atomic;
-use foldcam::render::heat::heat_color;
+use foldcam::render::heat_color;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;

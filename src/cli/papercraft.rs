@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow};
 use foldcam::design::source::{DesignFile, craft, mesh_path_beside, read_design_file};
-use foldcam::fab::operations::label_operation;
+use foldcam::fab::label_operation;
 use foldcam::fab::{PlanOptions, plan};
 use foldcam::formats::OutputSet;
 use foldcam::machine::{MachineProfile, Material};

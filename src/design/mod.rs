@@ -1,7 +1,7 @@
 //! Design sources: programs that produce crease patterns.
 
 pub mod classic;
-pub mod estimate;
+pub(crate) mod estimate;
 pub mod folding;
 pub mod papercraft;
 pub mod popup;

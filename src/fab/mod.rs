@@ -8,26 +8,33 @@
 //! [`placement`] and [`sides`] (bed placement, two-sided jobs, registration marks), [`order`]
 //! (precedence and travel), [`stats`], and [`plan`](mod@plan) (the whole pipeline).
 
-pub mod contours;
-pub mod creases;
-pub mod frame;
-pub mod geometry;
-pub mod kerf;
-pub mod lines;
-pub mod operations;
+pub(crate) mod contours;
+pub(crate) mod creases;
+pub(crate) mod frame;
+pub(crate) mod geometry;
+pub(crate) mod kerf;
+pub(crate) mod lines;
+pub(crate) mod operations;
 mod options;
-pub mod order;
-pub mod perforation;
-pub mod placement;
-pub mod plan;
-pub mod sides;
-pub mod stats;
-pub mod tabs;
+pub(crate) mod order;
+pub(crate) mod perforation;
+pub(crate) mod placement;
+pub(crate) mod plan;
+pub(crate) mod sides;
+pub(crate) mod stats;
+pub(crate) mod tabs;
 pub mod testgrid;
-pub mod timing;
+pub(crate) mod timing;
 
+pub use frame::bounds;
+pub use geometry::{toolpaths, toolpaths_with_warnings};
+pub use operations::label_operation;
 pub use options::PlanOverrides;
+pub use order::{order, ranks, travel_mm};
+pub use placement::{Placement, bed_to_machine, bounds_of, place};
 pub use plan::plan;
+pub use plan::{design_limit_warnings, plan_toolpaths};
+pub use sides::{mirror, registration_marks, split};
 
 use glam::{DAffine2, DVec2};
 use serde::Serialize;

@@ -6,13 +6,13 @@
 //! format from the extension, name the file in every error and write atomically (a temporary
 //! file beside the target, then a rename), so a failed run never leaves a half-written output.
 
-pub mod atomic;
+pub(crate) mod atomic;
 pub mod cp;
 pub mod dxf;
 pub mod fold;
-pub mod options;
+pub(crate) mod options;
 pub mod opx;
-pub mod snap;
+pub(crate) mod snap;
 pub mod svg;
 
 use std::path::{Path, PathBuf};
@@ -21,6 +21,7 @@ use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions,
 
 pub use atomic::{OutputError, OutputSet, remove_pending_temporaries, write_atomic};
 pub use options::{DashedAs, ReadOptions};
+pub use snap::SNAP_RELATIVE;
 
 /// Most rounds of snapping (joining ends, merging junctions, planarising) on one drawing.
 const SNAP_ROUNDS: usize = 3;

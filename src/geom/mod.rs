@@ -5,20 +5,23 @@
 //! Vectors are glam's `DVec2`/`DVec3` (f64). Tolerances are explicit arguments; the shared
 //! defaults are named in [`tolerance`].
 
-pub mod angle;
-pub mod disjoint;
-pub mod grid;
-pub mod polygon;
-pub mod polyline;
-pub mod rect;
-pub mod segment;
-pub mod stroke_digits;
+pub(crate) mod angle;
+pub(crate) mod disjoint;
+pub(crate) mod grid;
+pub(crate) mod polygon;
+pub(crate) mod polyline;
+pub(crate) mod rect;
+pub(crate) mod segment;
+pub(crate) mod stroke_digits;
 pub mod tolerance;
-pub mod triangulate;
-pub mod unfold;
+pub(crate) mod triangulate;
+pub(crate) mod unfold;
 
 pub use disjoint::DisjointSets;
 pub use glam::{DVec2, DVec3};
 pub use grid::HashGrid;
+pub use polygon::{contains_point, segment_crosses_ring, signed_area};
 pub use rect::Rect;
 pub use segment::Segment;
+pub use segment::{Crossing, distance_to_point, intersect, segment_distance, slide_interval};
+pub use triangulate::{TriangulateError, triangulate_polygon};

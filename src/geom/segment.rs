@@ -61,7 +61,7 @@ impl Segment {
     /// Where it meets `other` (see [`intersect`] for `eps`, relative, and the parameters).
     ///
     /// ```
-    /// use foldcam::geom::{DVec2, Segment, segment::Crossing};
+    /// use foldcam::geom::{Crossing, DVec2, Segment};
     /// let s = Segment::new(DVec2::ZERO, DVec2::new(2.0, 2.0));
     /// let t = Segment::new(DVec2::new(0.0, 2.0), DVec2::new(2.0, 0.0));
     /// assert_eq!(s.intersect(t, 1e-12), Crossing::Point { t: 0.5, u: 0.5 });

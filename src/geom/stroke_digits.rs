@@ -36,11 +36,6 @@ const DIGITS: [u8; 10] = [
     0b111_1111, 0b110_1111,
 ];
 
-/// Whether the font draws `c`.
-pub fn supports(c: char) -> bool {
-    c.is_ascii_digit() || matches!(c, '.' | '-' | ' ')
-}
-
 /// Width of `text` at height `height`, mm: the advance of every character but the last, plus
 /// the last one's width.
 pub fn text_width(text: &str, height: f64) -> f64 {

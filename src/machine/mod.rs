@@ -15,13 +15,13 @@
 //! refused with a [`ProfileError`] naming the file, the dotted key, the value found and the
 //! line. The accepted ranges are listed in `machines/README.md`.
 
-pub mod commands;
-pub mod control;
+pub(crate) mod commands;
+pub(crate) mod control;
 mod fields;
 mod load;
 mod locate;
 mod material;
-pub mod motion;
+pub(crate) mod motion;
 mod operation;
 mod profile;
 mod read_machine;
@@ -36,6 +36,7 @@ pub use load::{
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
+pub use motion::{Kinematics, Move, job_time, junction_speed, move_times};
 pub use operation::Operation;
 pub use profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,

@@ -18,7 +18,7 @@
 //! # Ok::<(), foldcam::mesh::MeshError>(())
 //! ```
 
-pub mod half_edge;
+pub(crate) mod half_edge;
 mod read;
 
 pub use half_edge::{HalfEdgeError, HalfEdgeMesh};

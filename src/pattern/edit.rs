@@ -12,8 +12,8 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 use super::{
-    Assignment, CreasePattern, EdgeId, MAX_COORDINATE, PlanarizeError, PlanarizeOptions,
-    PlanarizeReport, VertexId, planarize,
+    Assignment, CreasePattern, MAX_COORDINATE, PlanarizeError, PlanarizeOptions, PlanarizeReport,
+    VertexId, planarize,
 };
 
 /// One edit of a crease pattern. Positions are in the pattern's unit (x right, y up).
@@ -230,14 +230,6 @@ fn apply_to(
             Ok(EditReport::from(&planarize(cp, &options)?))
         }
     }
-}
-
-/// The edge of `cp` joining `a` and `b`, if any (for callers that address edges by ends).
-pub fn edge_between(cp: &CreasePattern, a: VertexId, b: VertexId) -> Option<EdgeId> {
-    cp.edges
-        .iter()
-        .position(|e| e.vertices == [a, b] || e.vertices == [b, a])
-        .map(EdgeId::new)
 }
 
 #[cfg(test)]

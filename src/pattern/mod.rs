@@ -12,20 +12,22 @@ mod assignment;
 mod crease_pattern;
 pub mod edit;
 mod error;
-pub mod faces;
+pub(crate) mod faces;
 mod folded;
 mod ids;
-pub mod planarize;
+pub(crate) mod planarize;
 mod scale;
 pub mod snap;
-pub mod vertex_fan;
+pub(crate) mod vertex_fan;
 
 pub use assignment::{Assignment, UnknownAssignment};
 pub use crease_pattern::{
     CreasePattern, Edge, Face, MAX_COORDINATE, Metadata, UnitlessError, Units,
 };
 pub use error::PatternError;
+pub use faces::find_faces;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};
 pub use planarize::{PlanarizeError, PlanarizeOptions, PlanarizeReport, planarize};
 pub use scale::{Scale, ScaleError, Scaled};
+pub use vertex_fan::VertexFans;

@@ -16,8 +16,8 @@
 mod check;
 mod dxf;
 pub mod gcode;
-pub mod layers;
-pub mod lbrn;
+pub(crate) mod layers;
+pub(crate) mod lbrn;
 mod number;
 mod style;
 mod svg;

@@ -86,7 +86,7 @@ impl Layout {
 
     /// The pixel position of a pattern point (f64; convert to f32 only for tiny-skia).
     #[inline]
-    pub fn to_px(&self, p: DVec2) -> DVec2 {
+    pub fn to_px(self, p: DVec2) -> DVec2 {
         DVec2::new(
             self.left + (p.x - self.anchor.x) * self.scale,
             self.top + (self.anchor.y - p.y) * self.scale,

@@ -17,25 +17,26 @@
 //! [`shade`], the painter's order in [`depth_order`], animations in [`animation`], fold-step
 //! sheets with captions at one scale in [`step_sheet`].
 
-pub mod animation;
+pub(crate) mod animation;
 mod chain;
-pub mod depth_order;
-pub mod font;
-pub mod heat;
-pub mod layout;
-pub mod legend;
+pub(crate) mod depth_order;
+pub(crate) mod font;
+pub(crate) mod heat;
+pub(crate) mod layout;
+pub(crate) mod legend;
 mod preview;
-pub mod rings;
-pub mod shade;
-pub mod step_sheet;
-pub mod style;
-pub mod top_view;
-pub mod view3d;
+pub(crate) mod rings;
+pub(crate) mod shade;
+pub(crate) mod step_sheet;
+pub(crate) mod style;
+pub(crate) mod top_view;
+pub(crate) mod view3d;
 
 use crate::check::Finding;
 use crate::pattern::CreasePattern;
 
 pub use animation::render_gif;
+pub use heat::heat_color;
 pub use layout::{MAX_SIZE, MIN_SIZE};
 pub use preview::render_pixmap;
 pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};

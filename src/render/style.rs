@@ -40,9 +40,6 @@ pub const DRAW_ORDER: [Assignment; 7] = [
 /// Colour of fault highlights (rings and edge halos), RGBA.
 pub const FAULT_COLOR: [u8; 4] = [255, 128, 0, 255];
 
-/// Colour of the scale bar and its label.
-pub const SCALE_BAR_COLOR: [u8; 4] = [40, 40, 40, 255];
-
 /// The style of an assignment for a base line width `lw` (pixels).
 pub fn line_style(a: Assignment, lw: f32) -> LineStyle {
     let (color, width, dash): ([u8; 4], f32, Option<Vec<f32>>) = match a {

@@ -2,7 +2,7 @@
 
 use super::*;
 use foldcam::design::classic::MiuraOri;
-use foldcam::fab::{geometry, plan};
+use foldcam::fab::{plan, toolpaths};
 use foldcam::machine::{load_machine, load_material, shipped_machines, shipped_materials};
 
 /// The edges of `paths`, sorted (a multiset).
@@ -28,7 +28,7 @@ fn miura_plans_with_every_shipped_profile() {
                     let case = format!("{machine_name} {material_name} {two_sided} {origin:?}");
                     let p = plan(&cp, &m, &mat, &opts).unwrap_or_else(|e| panic!("{case}: {e}"));
                     // Nothing lost or duplicated between the geometry and the jobs.
-                    let given = geometry::toolpaths(&cp, &opts).unwrap();
+                    let given = toolpaths(&cp, &opts).unwrap();
                     let planned = p.jobs.iter().flat_map(|j| &j.paths);
                     assert_eq!(
                         edge_multiset(given.iter()),

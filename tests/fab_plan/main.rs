@@ -8,10 +8,10 @@ mod placement;
 mod sides;
 mod stats;
 
-use foldcam::fab::placement::{bed_to_machine, bounds_of, place};
-use foldcam::fab::plan::{design_limit_warnings, plan_toolpaths};
-use foldcam::fab::sides::{mirror, registration_marks, split};
 use foldcam::fab::{ContourRole, FabError, Operation, PlanOptions, Side, Toolpath};
+use foldcam::fab::{bed_to_machine, bounds_of, place};
+use foldcam::fab::{design_limit_warnings, plan_toolpaths};
+use foldcam::fab::{mirror, registration_marks, split};
 use foldcam::machine::{
     Bed, Corner, DesignLimits, Dialect, MachineProfile, Material, OperationMapping,
     OperationSettings, Perforation, SettingsByOperation,

@@ -4,8 +4,8 @@
 //! folds on about its own crease.
 
 use foldcam::check::{CheckOptions, check};
-use foldcam::design::folding::crease::crease_pattern;
-use foldcam::design::folding::layers::layer_problems;
+use foldcam::design::folding::crease_pattern;
+use foldcam::design::folding::layer_problems;
 use foldcam::design::folding::{Fold, FoldError, Folding, Layers, Turn};
 use foldcam::pattern::Assignment;
 use glam::{DVec2, DVec3};

@@ -3,10 +3,10 @@
 //! shape, its layer order and a flat-foldable crease pattern.
 
 use foldcam::check::{CheckOptions, check};
-use foldcam::design::folding::crease::crease_pattern;
-use foldcam::design::folding::layers::layer_problems;
-use foldcam::design::folding::script::{parse_script, run_script};
+use foldcam::design::folding::crease_pattern;
+use foldcam::design::folding::layer_problems;
 use foldcam::design::folding::{CellId, Fold, FoldError, Folding, Layers, Turn};
+use foldcam::design::folding::{parse_script, run_script};
 use foldcam::pattern::Assignment;
 use glam::{DVec2, DVec3};
 

@@ -3,9 +3,9 @@
 //! [`FoldError::TuckBlocked`] and the state stays as it was; the same tuck without that layer,
 //! or a shallower one that misses it, is made.
 
-use foldcam::design::folding::layers::layer_problems;
-use foldcam::design::folding::script::{parse_script, run_script};
+use foldcam::design::folding::layer_problems;
 use foldcam::design::folding::{Fold, FoldError, Folding, Layers, Turn};
+use foldcam::design::folding::{parse_script, run_script};
 use glam::DVec3;
 
 use super::{foldcam, square};

@@ -1,5 +1,5 @@
-use foldcam::design::papercraft::cut_line::CutLine;
-use foldcam::design::papercraft::shapes::sphere;
+use foldcam::design::papercraft::CutLine;
+use foldcam::design::papercraft::sphere;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use glam::DVec3;
 

@@ -1,6 +1,6 @@
+use foldcam::design::papercraft::BSpline;
+use foldcam::design::papercraft::CylinderPatch;
 use foldcam::design::papercraft::PapercraftError;
-use foldcam::design::papercraft::bspline::BSpline;
-use foldcam::design::papercraft::cylinder::CylinderPatch;
 use glam::{DVec2, DVec3};
 
 use crate::support::{Rng, curve_length};

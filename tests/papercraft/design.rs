@@ -1,6 +1,6 @@
 use std::path::Path;
 
-use foldcam::design::papercraft::design::parse_design;
+use foldcam::design::papercraft::parse_design;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::mesh::read_mesh;
 

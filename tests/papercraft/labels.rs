@@ -1,11 +1,11 @@
 //! Edge labels: matching on both parts of every shared cut line, inside their parts, and
 //! marked by the machine when the material marks flat lines.
 
-use foldcam::design::papercraft::design::Made;
-use foldcam::design::papercraft::labels::{baseline, frames_overlap, make_upright, reads_upright};
+use foldcam::design::papercraft::Made;
+use foldcam::design::papercraft::{baseline, frames_overlap, make_upright, reads_upright};
 use foldcam::fab::{Operation, PlanOptions, plan};
-use foldcam::geom::polygon::contains_point;
-use foldcam::geom::segment::{Crossing, intersect};
+use foldcam::geom::contains_point;
+use foldcam::geom::{Crossing, intersect};
 use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::Assignment;
 use foldcam::{post, sim};
@@ -163,8 +163,7 @@ fn a_label_turned_upside_down_is_turned_back_in_place() {
     let rot = DVec2::from_angle(angle);
     for (a, b) in before.iter().zip(&part.labels) {
         assert!(reads_upright(rot.rotate(baseline(b))));
-        let centre =
-            |l: &foldcam::design::papercraft::labels::Label| 0.25 * l.frame.iter().sum::<DVec2>();
+        let centre = |l: &foldcam::design::papercraft::Label| 0.25 * l.frame.iter().sum::<DVec2>();
         assert!(centre(a).distance(centre(b)) < 1e-9);
         assert!(
             (baseline(a) + baseline(b)).length() < 1e-9,

@@ -2,12 +2,12 @@
 
 use std::path::Path;
 
-use foldcam::design::papercraft::bspline::BSpline;
-use foldcam::design::papercraft::cylinder::CylinderPatch;
-use foldcam::design::papercraft::design::{Design, Made, parse_design};
-use foldcam::design::papercraft::fit::fit_directrix;
-use foldcam::design::papercraft::neighbour::boundary_gap;
-use foldcam::design::papercraft::walls::Walls;
+use foldcam::design::papercraft::BSpline;
+use foldcam::design::papercraft::CylinderPatch;
+use foldcam::design::papercraft::Walls;
+use foldcam::design::papercraft::boundary_gap;
+use foldcam::design::papercraft::fit_directrix;
+use foldcam::design::papercraft::{Design, Made, parse_design};
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::mesh::read_mesh;
 use glam::DVec3;

@@ -1,6 +1,6 @@
+use foldcam::design::papercraft::CutLine;
+use foldcam::design::papercraft::Network;
 use foldcam::design::papercraft::PapercraftError;
-use foldcam::design::papercraft::cut_line::CutLine;
-use foldcam::design::papercraft::network::Network;
 use glam::DVec3;
 
 use crate::support::{cube_lines, cube_patches};

@@ -1,14 +1,12 @@
 //! Packing on part shapes: gaps measured between the real outlines and tabs, parts inside
 //! their sheets, and interlocking shapes needing fewer sheets than their boxes.
 
-use foldcam::design::papercraft::design::parse_design;
-use foldcam::design::papercraft::layout::{
-    Placement, SheetSpec, pack, pack_boxes, part_points, usage,
-};
-use foldcam::design::papercraft::packing::pack_shapes;
-use foldcam::design::papercraft::parts::Part;
-use foldcam::geom::polygon::contains_point;
-use foldcam::geom::segment::segment_distance;
+use foldcam::design::papercraft::Part;
+use foldcam::design::papercraft::pack_shapes;
+use foldcam::design::papercraft::parse_design;
+use foldcam::design::papercraft::{Placement, SheetSpec, pack, pack_boxes, part_points, usage};
+use foldcam::geom::contains_point;
+use foldcam::geom::segment_distance;
 use glam::DVec2;
 
 use crate::support::{Rng, build_example};

@@ -1,13 +1,13 @@
-use foldcam::design::papercraft::bspline::BSpline;
-use foldcam::design::papercraft::cylinder::CylinderPatch;
-use foldcam::design::papercraft::layout::{Placement, SheetSpec, pack, part_points, sheet_pattern};
-use foldcam::design::papercraft::network::Network;
-use foldcam::design::papercraft::parts::{Part, TabStyle, add_tabs};
-use foldcam::design::papercraft::trim::real_boundary;
-use foldcam::design::papercraft::walls::Walls;
+use foldcam::design::papercraft::BSpline;
+use foldcam::design::papercraft::CylinderPatch;
+use foldcam::design::papercraft::Network;
+use foldcam::design::papercraft::Walls;
+use foldcam::design::papercraft::real_boundary;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
-use foldcam::geom::polygon::{contains_point, signed_area};
-use foldcam::geom::segment::{Crossing, distance_to_point, intersect};
+use foldcam::design::papercraft::{Part, TabStyle, add_tabs};
+use foldcam::design::papercraft::{Placement, SheetSpec, pack, part_points, sheet_pattern};
+use foldcam::geom::{Crossing, distance_to_point, intersect};
+use foldcam::geom::{contains_point, signed_area};
 use foldcam::pattern::{Assignment, CreasePattern};
 use glam::{DVec2, DVec3};
 

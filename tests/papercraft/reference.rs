@@ -1,5 +1,5 @@
-use foldcam::design::papercraft::shapes::{revolution, sphere};
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh, closest_on_triangle};
+use foldcam::design::papercraft::{revolution, sphere};
 use foldcam::mesh::PolyMesh;
 use glam::DVec3;
 

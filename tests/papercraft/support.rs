@@ -3,7 +3,7 @@
 #[path = "../common/cuts_clean.rs"]
 mod cuts_clean;
 
-use foldcam::design::papercraft::cut_line::CutLine;
+use foldcam::design::papercraft::CutLine;
 use foldcam::mesh::PolyMesh;
 use glam::DVec3;
 
@@ -136,7 +136,7 @@ pub fn assert_cuts_clean_on_paper(name: &str, cp: &foldcam::pattern::CreasePatte
 }
 
 /// The glued length of cut line `e` on each part that has it.
-pub fn side_lengths(made: &foldcam::design::papercraft::design::Made, e: usize) -> Vec<f64> {
+pub fn side_lengths(made: &foldcam::design::papercraft::Made, e: usize) -> Vec<f64> {
     made.parts
         .iter()
         .flat_map(|part| {
@@ -153,17 +153,17 @@ pub fn side_lengths(made: &foldcam::design::papercraft::design::Made, e: usize) 
 }
 
 /// The bundled example design `examples/papercraft/NAME.craft.toml`, parsed.
-pub fn example_design(name: &str) -> foldcam::design::papercraft::design::Design {
+pub fn example_design(name: &str) -> foldcam::design::papercraft::Design {
     let dir = std::path::Path::new("examples/papercraft");
     let text = std::fs::read_to_string(dir.join(format!("{name}.craft.toml"))).unwrap();
-    foldcam::design::papercraft::design::parse_design(&text).unwrap()
+    foldcam::design::papercraft::parse_design(&text).unwrap()
 }
 
 /// Builds the bundled example `examples/papercraft/NAME.craft.toml` once per test binary
 /// (the fish takes most of a second in a release build) and hands out copies.
-pub fn build_example(name: &str) -> foldcam::design::papercraft::design::Made {
+pub fn build_example(name: &str) -> foldcam::design::papercraft::Made {
+    use foldcam::design::papercraft::Made;
     use foldcam::design::papercraft::ReferenceMesh;
-    use foldcam::design::papercraft::design::Made;
     use std::collections::HashMap;
     use std::sync::{Arc, Mutex, OnceLock};
     static BUILT: OnceLock<Mutex<HashMap<String, Arc<OnceLock<Made>>>>> = OnceLock::new();

@@ -1,9 +1,9 @@
-use foldcam::design::papercraft::bspline::BSpline;
-use foldcam::design::papercraft::cylinder::CylinderPatch;
-use foldcam::design::papercraft::network::Network;
-use foldcam::design::papercraft::trim::{RealBoundary, real_boundary};
-use foldcam::design::papercraft::walls::Walls;
+use foldcam::design::papercraft::BSpline;
+use foldcam::design::papercraft::CylinderPatch;
+use foldcam::design::papercraft::Network;
+use foldcam::design::papercraft::Walls;
 use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
+use foldcam::design::papercraft::{RealBoundary, real_boundary};
 use glam::{DVec2, DVec3};
 
 use crate::support::{cube_corner, cube_lines, cube_mesh, cube_patches};
@@ -157,7 +157,7 @@ fn neighbouring_patches_meet_on_their_shared_wall() {
         b.half_edge,
         "the two patches use opposite half-edges"
     );
-    let flat_length = |s: &[foldcam::design::papercraft::trim::BoundaryPoint]| {
+    let flat_length = |s: &[foldcam::design::papercraft::BoundaryPoint]| {
         s.windows(2)
             .map(|w| w[0].flat.distance(w[1].flat))
             .sum::<f64>()

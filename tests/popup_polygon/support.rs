@@ -10,7 +10,7 @@ use foldcam::design::popup::polygon::{
     parse_design,
 };
 use foldcam::design::popup::voxel::{self, VoxelCard};
-use foldcam::geom::polygon::signed_area;
+use foldcam::geom::signed_area;
 use foldcam::pattern::{Assignment, CreasePattern, Face, FoldedState, VertexId};
 use glam::{DVec2, DVec3};
 use i_overlay::core::fill_rule::FillRule;
@@ -284,7 +284,7 @@ pub fn assert_pattern_condition(card: &PolygonCard) {
 pub fn assert_same_surface(vcard: &VoxelCard, pcard: &PolygonCard) {
     let s = vcard.cell_mm();
     let m = vcard.margin_mm();
-    let surface = voxel::surface::Surface::new(vcard);
+    let surface = voxel::Surface::new(vcard);
     let mut n = 0;
     for x in 0..surface.nx {
         for r in 0..surface.rows {

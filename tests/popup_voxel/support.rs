@@ -4,11 +4,11 @@
 // Shared by several test crates; each uses only some helpers.
 #![allow(dead_code)]
 
-use foldcam::design::popup::voxel::surface::{Line, Plane, Surface};
 use foldcam::design::popup::voxel::{
     FrontCellProblem, PopupProblem, VoxelCard, fold_card, parse_voxel_card,
 };
-use foldcam::geom::polygon::signed_area;
+use foldcam::design::popup::voxel::{Line, Plane, Surface};
+use foldcam::geom::signed_area;
 use foldcam::pattern::{Assignment, CreasePattern, Face};
 use glam::{DVec2, DVec3};
 

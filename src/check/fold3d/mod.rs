@@ -28,10 +28,10 @@
 //! three to four orders stiffer than creases, where Origami Simulator's interactive defaults
 //! are softer) fold a Miura-ori within 0.3 % of its rigid kinematics.
 
-pub mod dihedral;
-pub mod intersect;
-pub mod model;
-pub mod solver;
+pub(crate) mod dihedral;
+pub(crate) mod intersect;
+pub(crate) mod model;
+pub(crate) mod solver;
 
 use std::time::Duration;
 
@@ -42,7 +42,7 @@ use serde::Serialize;
 
 use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState};
 pub use model::{BarHingeModel, HingeKind, ModelError, crease_target_deg};
-use solver::Solver;
+pub use solver::Solver;
 
 /// Most triangle pairs listed as crossing.
 pub const MAX_CROSSINGS_LISTED: usize = 1000;

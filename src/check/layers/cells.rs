@@ -52,7 +52,7 @@ impl BoxGrid {
         } else {
             (lo, hi)
         };
-        let size = (hi - lo).max(DVec2::splat(1e-12));
+        let size = (hi - lo).max(DVec2::splat(crate::geom::tolerance::ROUNDOFF));
         let per_side = (boxes.len() as f64).sqrt().ceil().clamp(1.0, 1024.0);
         let cell = size.max_element() / per_side;
         let nx = ((size.x / cell).ceil() as usize).clamp(1, 1024);

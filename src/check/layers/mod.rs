@@ -22,11 +22,11 @@
 //! (bounded by [`LayerOptions::max_states`] per component); transitivity constraints are capped
 //! at [`constraints::MAX_TRIPLES`].
 
-pub mod cells;
-pub mod constraints;
+pub(crate) mod cells;
+pub(crate) mod constraints;
 mod decimal;
-pub mod folded;
-pub mod search;
+pub(crate) mod folded;
+pub(crate) mod search;
 mod verdict;
 
 use glam::DVec2;
@@ -34,9 +34,11 @@ use serde::Serialize;
 
 use crate::pattern::faces::find_faces;
 use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState, VertexId};
+pub use cells::arrange;
 use constraints::{Kind, Place, System};
 pub use decimal::BigCount;
 use folded::FoldedFaces;
+pub use folded::fold_faces;
 use search::{Count, Engine};
 pub use verdict::{LayerCheck, check_layers, flat_fold_warning, meant_to_fold_flat};
 
@@ -235,7 +237,7 @@ impl LayerSolver {
     /// Builds and counts the layer problem of `cp`.
     pub fn new(cp: &CreasePattern, opts: &LayerOptions) -> Result<LayerSolver, LayerError> {
         let diag = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
-        let tol = (diag * opts.relative_tolerance).max(1e-12);
+        let tol = (diag * opts.relative_tolerance).max(crate::geom::tolerance::ROUNDOFF);
         let traced;
         let cp = if cp.faces.is_some() {
             cp

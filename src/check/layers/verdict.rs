@@ -152,7 +152,9 @@ pub fn meant_to_fold_flat(cp: &CreasePattern) -> bool {
     let mut any = false;
     for e in cp.edges.iter().filter(|e| e.assignment.is_fold()) {
         any = true;
-        if e.fold_angle.is_some_and(|a| (a.abs() - 180.0).abs() > 1e-6) {
+        if e.fold_angle
+            .is_some_and(|a| (a.abs() - 180.0).abs() > crate::geom::tolerance::ANGLE_DEG)
+        {
             return false;
         }
     }

@@ -193,11 +193,6 @@ pub fn segment_crosses_interior(p: DVec2, q: DVec2, poly: &[DVec2], tol: f64) ->
     (t1 - t0) * len > tol
 }
 
-/// Whether `p` lies inside the convex polygon `poly` (counter-clockwise) or within `tol` of it.
-pub fn contains(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
-    contains_oriented(poly, p, tol, 1.0)
-}
-
 /// Whether `p` lies inside the convex polygon `poly` of either orientation, or within `tol`.
 pub fn contains_either(poly: &[DVec2], p: DVec2, tol: f64) -> bool {
     let sign = if double_area(poly) >= 0.0 { 1.0 } else { -1.0 };

@@ -48,23 +48,28 @@
 //! - Edge-onto-edge snapping applies to bends only; a snapped drag's destination is the image
 //!   of the picked vertex under the snapped fold.
 
-pub mod crease;
-pub mod display;
-pub mod drag;
+pub(crate) mod crease;
+pub(crate) mod display;
+pub(crate) mod drag;
 mod error;
-pub mod geometry;
-pub mod gesture;
-pub mod layers;
-pub mod operation;
-pub mod script;
+pub(crate) mod geometry;
+pub(crate) mod gesture;
+pub(crate) mod layers;
+pub(crate) mod operation;
+pub(crate) mod script;
 mod search;
-pub mod sheet;
-pub mod small;
+pub(crate) mod sheet;
+pub(crate) mod small;
 mod snap;
 mod stack;
-pub mod state;
+pub(crate) mod state;
 
+pub use crease::{crease_pattern, step_states};
+pub use display::{TopFace, display_states, faces_from_above, sheet_size, step_captions};
+pub use drag::{Drag, Snap, Snapped};
 pub use error::FoldError;
+pub use layers::layer_problems;
 pub use operation::{Fold, FoldReport, Layers, Turn};
+pub use script::{Script, ScriptError, parse_script, run_script, write_script};
 pub use small::{Neighbours, Ring};
 pub use state::{CellId, FaceCell, FaceGroup, Folding, LiveFace, Neighbour, State, Step};

@@ -34,27 +34,47 @@
 //! within 0.005 mm, where arcs left gaps of up to 1.8 mm that no flat or cylindrical cap
 //! could close).
 
-pub mod autofit;
-pub mod bspline;
-pub mod cut_line;
-pub mod cylinder;
-pub mod design;
-pub mod fit;
+pub(crate) mod autofit;
+pub(crate) mod bspline;
+pub(crate) mod cut_line;
+pub(crate) mod cylinder;
+pub(crate) mod design;
+pub(crate) mod fit;
 mod grid;
-pub mod labels;
-pub mod layout;
-pub mod neighbour;
-pub mod network;
-pub mod packing;
-pub mod paint;
-pub mod parts;
-pub mod reference;
-pub mod shapes;
-pub mod sketch;
-pub mod trim;
-pub mod walls;
+pub(crate) mod labels;
+pub(crate) mod layout;
+pub(crate) mod neighbour;
+pub(crate) mod network;
+pub(crate) mod packing;
+pub(crate) mod paint;
+pub(crate) mod parts;
+pub(crate) mod reference;
+pub(crate) mod shapes;
+pub(crate) mod sketch;
+pub(crate) mod trim;
+pub(crate) mod walls;
 
+pub use autofit::{FittedPatch, fit_cylinder};
+pub use bspline::BSpline;
+pub use cut_line::CutLine;
+pub use cylinder::CylinderPatch;
+pub use design::{Design, Made, parse_design};
+pub use fit::{Fit, fit_directrix};
+pub use labels::{Label, baseline, frames_overlap, make_upright, reads_upright};
+pub use layout::{Placement, SheetSpec, pack, pack_boxes, part_points, sheet_pattern, usage};
+pub use neighbour::boundary_gap;
+pub use network::Network;
+pub use packing::pack_shapes;
+pub use paint::paint_regions;
+pub use parts::{Part, TabStyle, add_tabs};
 pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
+pub use shapes::{elliptic_body, revolution, sphere};
+pub use sketch::{
+    Evaluation, RegionReport, Regions, Sketch, SketchParams, outline_crosses_itself, regions,
+    snap_line,
+};
+pub use trim::{BoundaryPoint, RealBoundary, real_boundary};
+pub use walls::Walls;
 
 use thiserror::Error;
 

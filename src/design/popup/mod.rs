@@ -11,11 +11,12 @@
 //! - [`integrity`]: whether a finished card holds together and closes within its outline.
 //! - [`fit`]: `--fit`, more paper above the model until the closed card holds every face.
 
-pub mod fit;
-pub mod integrity;
-pub mod opening;
+pub(crate) mod fit;
+pub(crate) mod integrity;
+pub(crate) mod opening;
 pub mod polygon;
-pub mod problem;
+pub(crate) mod problem;
 pub mod voxel;
 
+pub use integrity::{loose_pieces, loose_pieces_where};
 pub use problem::PopupProblem;

@@ -16,12 +16,12 @@
 //! design that its own check refuses ([`SourceError::NotMade`]: the lines `foldcam` prints
 //! before exiting with status 1).
 
-pub mod card;
+pub(crate) mod card;
 pub mod craft;
 pub mod poly;
 pub mod script;
 pub mod tess_design;
-pub mod tess_limits;
+pub(crate) mod tess_limits;
 pub mod tessellate;
 pub mod voxel;
 
@@ -34,6 +34,7 @@ use crate::pattern::{CreasePattern, FoldedState};
 pub use craft::{CraftDesign, ParsedCraft};
 pub use poly::{PolyDesign, PolyOptions};
 pub use script::ScriptDesign;
+pub use tess_limits::{CreaseState, LimitMap, VertexState, limit_map};
 pub use tessellate::{TessellationDesign, TessellationOptions};
 pub use voxel::{VoxelDesign, VoxelOptions};
 

@@ -35,7 +35,6 @@ mod visit;
 use glam::DVec2;
 
 pub use precedence::ranks;
-pub use visit::SAME_POINT_MM;
 
 use crate::fab::Toolpath;
 use visit::Visit;

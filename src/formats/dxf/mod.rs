@@ -18,8 +18,8 @@
 //! Then, as for SVG, the segments are planarised and line ends within the snapping tolerance
 //! joined ([`crate::formats::snap`]).
 
-pub mod assign;
-pub mod curves;
+pub(crate) mod assign;
+pub(crate) mod curves;
 
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;

@@ -46,7 +46,7 @@
 //! round trip reproduces every coordinate bit for bit.
 
 mod derived;
-pub mod faces;
+pub(crate) mod faces;
 mod frames;
 mod json;
 mod plane;
@@ -60,6 +60,7 @@ mod units;
 mod values;
 mod write;
 
+pub use faces::with_faces;
 pub use frames::{frame_count, resolve_frame};
 pub use read::{parse_root, read_frame_str, read_str};
 pub use unfold::{Unfolding, unfold};

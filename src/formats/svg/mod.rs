@@ -42,14 +42,14 @@
 //! title and description; join edges come back as unassigned; unitless patterns come back in
 //! millimetres (a user unit read as a CSS pixel, 25.4/96 mm).
 
-pub mod attributes;
+pub(crate) mod attributes;
 mod collect;
-pub mod flatten;
-pub mod frame;
-pub mod meaning;
-pub mod palette;
+pub(crate) mod flatten;
+pub(crate) mod frame;
+pub(crate) mod meaning;
+pub(crate) mod palette;
 mod read;
-pub mod write;
+pub(crate) mod write;
 
 pub use collect::{CURVE_TOLERANCE_MM, MAX_SEGMENTS};
 pub use read::{MERGE_TOLERANCE, merge_tolerance, read_str, read_str_with};

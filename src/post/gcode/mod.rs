@@ -51,10 +51,10 @@
 //!   the dialect.
 //! - `FileOnly` machines take no G-code: [`PostError::NoGcode`].
 
-pub mod grbl;
-pub mod linuxcnc;
-pub mod marlin;
-pub mod plotter;
+pub(crate) mod grbl;
+pub(crate) mod linuxcnc;
+pub(crate) mod marlin;
+pub(crate) mod plotter;
 mod program;
 
 use super::{PostError, check};

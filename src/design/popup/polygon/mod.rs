@@ -50,7 +50,7 @@ mod edit;
 mod fold;
 mod from_voxel;
 mod grid;
-pub mod lines;
+pub(crate) mod lines;
 mod model;
 
 pub use check::{FaceProblem, PopupProblem, PopupReport, check_popup, check_with_lines};

@@ -46,12 +46,12 @@ mod convert;
 mod crease;
 mod depth_map;
 mod edit;
-pub mod estimate;
+pub(crate) mod estimate;
 pub(crate) mod fold;
 mod format;
 mod model;
 mod runs;
-pub mod surface;
+pub(crate) mod surface;
 mod verdict;
 
 pub use check::{FrontCellProblem, PopupProblem, PopupReport, check_popup};
@@ -68,3 +68,4 @@ pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};
 pub use verdict::{
     BeyondCell, CardVerdict, LooseCells, PatternCell, VoxelFace, card_verdict, face_of,
 };
+pub use surface::{Line, Plane, Surface};
