@@ -7,127 +7,25 @@
 
 #[path = "common/bin.rs"]
 mod bin;
+#[path = "common/browser.rs"]
+mod browser;
 #[path = "common/studio.rs"]
 mod studio;
 
-use std::net::TcpListener;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use bin::{foldcam, repo_file};
+use browser::{
+    browser, click, keep_screenshot, pointer_drag, screen_in, start_driver, text, wait_until,
+};
 use fantoccini::actions::{InputSource, MouseActions, PointerAction};
-use fantoccini::{Client, ClientBuilder, Locator};
+use fantoccini::{Client, Locator};
 use serde_json::{Value, json};
 use studio::Server;
 
-/// Longest wait for the page to reach a state (folding runs in a debug build here).
-const PAGE_TIMEOUT: Duration = Duration::from_secs(180);
-
-/// Browser window size, pixels.
-const WINDOW: (u32, u32) = (1400, 860);
-
 /// A fold frame counts as changed where a pixel's channels differ by more than this.
 const PIXEL_TOLERANCE: u8 = 24;
-
-/// `chromedriver` on a free port, stopped when dropped.
-struct Driver(Child, u16);
-
-impl Drop for Driver {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-fn free_port() -> u16 {
-    TcpListener::bind("127.0.0.1:0")
-        .unwrap()
-        .local_addr()
-        .unwrap()
-        .port()
-}
-
-fn start_driver() -> Driver {
-    let port = free_port();
-    let child = Command::new("chromedriver")
-        .arg(format!("--port={port}"))
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap_or_else(|e| {
-            panic!(
-                "chromedriver could not start ({e}): install Debian's chromium and \
-                 chromium-driver (`apt-get install -y chromium chromium-driver`, as .ci/run does)"
-            )
-        });
-    let start = Instant::now();
-    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
-        assert!(
-            start.elapsed() < Duration::from_secs(30),
-            "chromedriver did not listen"
-        );
-        std::thread::sleep(Duration::from_millis(100));
-    }
-    Driver(child, port)
-}
-
-async fn browser(driver: &Driver) -> Client {
-    let mut caps = serde_json::Map::new();
-    caps.insert(
-        "goog:chromeOptions".into(),
-        json!({
-            "args": [
-                "--headless=new",
-                "--no-sandbox",
-                "--disable-dev-shm-usage",
-                "--disable-gpu-sandbox",
-                "--use-angle=swiftshader",
-                "--enable-unsafe-swiftshader",
-                "--hide-scrollbars",
-                format!("--window-size={},{}", WINDOW.0, WINDOW.1),
-            ]
-        }),
-    );
-    let connector = hyper_util::client::legacy::connect::HttpConnector::new();
-    ClientBuilder::new(connector)
-        .capabilities(caps)
-        .connect(&format!("http://127.0.0.1:{}", driver.1))
-        .await
-        .unwrap_or_else(|e| panic!("headless Chromium did not start: {e}"))
-}
-
-/// Waits until `script` (a function body) returns true; panics with `what` after the timeout.
-async fn wait_until(c: &Client, script: &str, what: &str) {
-    let start = Instant::now();
-    loop {
-        let done = c.execute(script, vec![]).await.expect("script runs");
-        if done == Value::Bool(true) {
-            return;
-        }
-        let error = c
-            .execute(
-                "return document.getElementById('error').textContent",
-                vec![],
-            )
-            .await
-            .unwrap();
-        assert!(
-            start.elapsed() < PAGE_TIMEOUT,
-            "timed out waiting for {what}; the page says {error}"
-        );
-        tokio::time::sleep(Duration::from_millis(150)).await;
-    }
-}
-
-async fn text(c: &Client, css: &str) -> String {
-    c.find(Locator::Css(css))
-        .await
-        .expect(css)
-        .text()
-        .await
-        .unwrap()
-}
 
 /// Chooses `file` in the page's file picker and waits for the document to be shown.
 async fn open(c: &Client, file: &Path) {
@@ -143,22 +41,6 @@ async fn open(c: &Client, file: &Path) {
         serde_json::to_string(&before.as_str().unwrap_or("none")).unwrap()
     );
     wait_until(c, &script, "the pattern to open").await;
-}
-
-fn screenshots_dir() -> Option<PathBuf> {
-    std::env::var_os("FOLDCAM_SCREENSHOTS").map(|d| {
-        let d = Path::new(env!("CARGO_MANIFEST_DIR")).join(d);
-        std::fs::create_dir_all(&d).unwrap();
-        d
-    })
-}
-
-async fn keep_screenshot(c: &Client, name: &str) {
-    let png = c.screenshot().await.unwrap();
-    assert!(png.starts_with(b"\x89PNG"), "a PNG screenshot");
-    if let Some(d) = screenshots_dir() {
-        std::fs::write(d.join(name), png).unwrap();
-    }
 }
 
 /// Pixels that differ between two screenshots of the same size, as a fraction.
@@ -457,15 +339,6 @@ async fn edits_done(c: &Client, n: usize) {
     .await;
 }
 
-async fn click(c: &Client, css: &str) {
-    c.find(Locator::Css(css))
-        .await
-        .expect(css)
-        .click()
-        .await
-        .unwrap();
-}
-
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     let dir = tempfile::tempdir().unwrap();
@@ -565,44 +438,6 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     let still = c.find_all(Locator::Css("#findings li")).await.unwrap();
     assert!(still.is_empty());
     c.close().await.unwrap();
-}
-
-/// Viewport position (CSS pixels) of sheet point `(x, y)` in the SVG `svg` (its first group
-/// holds the drawing in sheet coordinates).
-async fn screen_in(c: &Client, svg: &str, x: f64, y: f64) -> (f64, f64) {
-    let at = c
-        .execute(
-            "const svg = document.getElementById(arguments[0]);
-             const m = svg.querySelector('g').getScreenCTM();
-             const p = svg.createSVGPoint(); p.x = arguments[1]; p.y = arguments[2];
-             const q = p.matrixTransform(m); return [q.x, q.y];",
-            vec![json!(svg), json!(x), json!(y)],
-        )
-        .await
-        .unwrap();
-    (at[0].as_f64().unwrap(), at[1].as_f64().unwrap())
-}
-
-/// A real pointer drag from one viewport point to another, in eight moves.
-async fn pointer_drag(c: &Client, from: (f64, f64), to: (f64, f64)) {
-    let mut drag = MouseActions::new("mouse".to_string())
-        .then(PointerAction::MoveTo {
-            duration: None,
-            x: from.0,
-            y: from.1,
-        })
-        .then(PointerAction::Down { button: 0 });
-    for k in 1..=8 {
-        let t = f64::from(k) / 8.0;
-        drag = drag.then(PointerAction::MoveTo {
-            duration: Some(Duration::from_millis(60)),
-            x: from.0 + (to.0 - from.0) * t,
-            y: from.1 + (to.1 - from.1) * t,
-        });
-    }
-    c.perform_actions(drag.then(PointerAction::Up { button: 0 }))
-        .await
-        .unwrap();
 }
 
 /// Ends of the lines drawn in `css`, in drawing coordinates.

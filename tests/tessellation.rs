@@ -16,7 +16,6 @@ use std::path::PathBuf;
 
 use checks::*;
 use cuts_clean::assert_cuts_clean_on;
-use foldcam::design::tessellation::geometry::fold_angle;
 use foldcam::design::tessellation::*;
 use foldcam::mesh::{HalfEdgeMesh, PolyMesh};
 use foldcam::pattern::{Assignment, CreasePattern};

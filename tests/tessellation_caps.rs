@@ -11,7 +11,6 @@ mod cuts_clean;
 #[path = "common/overlap.rs"]
 mod overlap;
 
-use foldcam::design::tessellation::diagnose::{before_solving, sector_counts};
 use foldcam::design::tessellation::*;
 use foldcam::mesh::HalfEdgeMesh;
 use glam::DVec3;
@@ -123,7 +122,7 @@ fn solved_cap_scheduled(
     assert!(again.min_vertex_angle >= limits.min_vertex_angle, "{name}");
     // Creases may touch a vertex-adjacent face (penalty within the solver's tolerance), never
     // pass through one; the face-intersection test below is the stricter check.
-    assert!(again.max_penalty <= vertex_penalty::TOLERANCE, "{name}");
+    assert!(again.max_penalty <= PENALTY_TOLERANCE, "{name}");
     // Face corners come to rest on neighbouring faces; within 0.1 µm (float noise of the
     // solve, 5,000 times under the sheet's 0.5 mm) that is contact, not a crossing.
     let crossing =

@@ -6,9 +6,8 @@
 use std::path::PathBuf;
 
 use foldcam::design::classic::MiuraOri;
-use foldcam::design::tessellation::geometry::fold_angle;
 use foldcam::design::tessellation::rigid::*;
-use foldcam::design::tessellation::{Limits, TessellateOptions, tessellate};
+use foldcam::design::tessellation::{Limits, TessellateOptions, fold_angle, tessellate};
 use foldcam::machine::load_material;
 use foldcam::mesh::read_mesh;
 use foldcam::pattern::{Assignment, CreasePattern, Face, VertexId};

@@ -14,7 +14,6 @@ mod support;
 
 use std::f64::consts::PI;
 
-use foldcam::design::tessellation::geometry::fold_angle;
 use foldcam::design::tessellation::*;
 use foldcam::mesh::{HalfEdgeMesh, PolyMesh};
 use foldcam::pattern::{Assignment, CreasePattern};

@@ -49,11 +49,6 @@ pub fn get(name: &str) -> Option<(&'static [u8], &'static str)> {
         .map(|a| (a.bytes, a.mime))
 }
 
-/// Every embedded file's name.
-pub fn names() -> impl Iterator<Item = &'static str> {
-    ASSETS.iter().map(|a| a.name)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

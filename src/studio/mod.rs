@@ -16,19 +16,19 @@
 //! would print for the same input (without the leading `foldcam: `), with the upload's file
 //! name where the command line names the file.
 
-pub mod api;
-pub mod assets;
+pub(crate) mod api;
+pub(crate) mod assets;
 mod craft_api;
-pub mod design_open;
-pub mod document;
+pub(crate) mod design_open;
+pub(crate) mod document;
 mod edit_api;
-pub mod flat;
+pub(crate) mod flat;
 mod folding_api;
 mod machine_api;
 mod popup_api;
-pub mod settings;
+pub(crate) mod settings;
 mod tessellate_api;
-pub mod toolpath;
+pub(crate) mod toolpath;
 mod voxel_api;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};

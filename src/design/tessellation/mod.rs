@@ -27,33 +27,34 @@
 //! [`tessellate_scheduled`] as the default does; [`distance`] measures how far the folded
 //! form lies from the input surface.
 
-pub mod boundary;
-pub mod constraints;
-pub mod diagnose;
-pub mod distance;
-pub mod estimate;
-pub mod fit;
-pub mod geometry;
-pub mod intersect;
+pub(crate) mod boundary;
+pub(crate) mod constraints;
+pub(crate) mod diagnose;
+pub(crate) mod distance;
+pub(crate) mod estimate;
+pub(crate) mod fit;
+pub(crate) mod geometry;
+pub(crate) mod intersect;
 mod min_norm;
-pub mod model;
-pub mod pipeline;
-pub mod remesh;
+pub(crate) mod model;
+pub(crate) mod pipeline;
+pub(crate) mod remesh;
 pub mod rigid;
-pub mod samples;
-pub mod sectors;
-pub mod solver;
-pub mod star;
-pub mod tuck;
-pub mod unfold;
-pub mod vertex_penalty;
+pub(crate) mod samples;
+pub(crate) mod sectors;
+pub(crate) mod solver;
+pub(crate) mod star;
+pub(crate) mod tuck;
+pub(crate) mod unfold;
+pub(crate) mod vertex_penalty;
 
 use thiserror::Error;
 
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
-pub use diagnose::{Condition, Violation};
+pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{SurfaceDistance, corner_distance};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
+pub use geometry::{Graded, fold_angle};
 pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
@@ -68,6 +69,7 @@ pub use star::{
 };
 pub use tuck::{TuckKind, TuckShape};
 pub use unfold::{Unfolded, unfold};
+pub use vertex_penalty::TOLERANCE as PENALTY_TOLERANCE;
 
 use crate::mesh::HalfEdgeError;
 

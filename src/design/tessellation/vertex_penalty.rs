@@ -135,6 +135,7 @@ fn folds(x: &[DVec3], fan: &Fan) -> Vec<f64> {
 }
 
 /// The creases of `fan` at `x` that can be classified, with their penalties (eq. 5–7).
+#[cfg(test)]
 pub fn creases(x: &[DVec3], fan: &Fan) -> Vec<Crease> {
     classified(x, fan, false)
 }

@@ -65,7 +65,7 @@ pub use edit::{EditChange, VoxelEdit, VoxelEditError, apply_edit};
 pub use fold::{FoldedCard, fold_card, open_transform};
 pub use format::{VoxelFormatError, format_voxel_card, parse_voxel_card};
 pub use model::{MAX_CELLS_PER_AXIS, MAX_PATTERN_CELLS, VoxelCard, VoxelError};
+pub use surface::{Line, Plane, Surface};
 pub use verdict::{
     BeyondCell, CardVerdict, LooseCells, PatternCell, VoxelFace, card_verdict, face_of,
 };
-pub use surface::{Line, Plane, Surface};
