@@ -16,9 +16,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use bin::{foldcam, repo_file};
-use browser::{
-    browser, click, keep_screenshot, pointer_drag, screen_in, start_driver, text, wait_until,
-};
+use browser::{click, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until};
 use fantoccini::actions::{InputSource, MouseActions, PointerAction};
 use fantoccini::{Client, Locator};
 use serde_json::{Value, json};
@@ -85,15 +83,7 @@ async fn the_studio_works_in_a_real_browser() {
     assert!(out.status.success());
     let miura = dir.path().join("miura.fold");
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
 
     // 1. Upload a pattern: the page shows the counts the file holds.
     open(&c, &miura).await;
@@ -343,15 +333,7 @@ async fn edits_done(c: &Client, n: usize) {
 async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
     // A degree-4 vertex at (50, 50) that folds flat (the example's description: opposite
     // sectors sum to 180°, Kawasaki 1989), its creases folded all the way.
     let file = dir.path().join("flat-vertex.fold");
@@ -457,15 +439,7 @@ async fn line_ends(c: &Client, css: &str) -> Vec<[f64; 4]> {
 async fn dragging_a_corner_onto_the_opposite_one_folds_the_diagonal() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
     // The fold mode starts on a 150 mm square.
     click(&c, "#tabs button[data-view='folding']").await;
     wait_until(
@@ -644,15 +618,7 @@ async fn a_design_file_uploaded_in_the_browser_opens_as_the_command_builds_it() 
     );
     let summary = String::from_utf8_lossy(&out.stdout).trim().to_string();
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
     // Record what the page says while it works.
     c.execute(
         "window.busySeen = []; const b = document.getElementById('busy'); \

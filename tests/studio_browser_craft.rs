@@ -13,7 +13,7 @@ mod browser;
 mod studio;
 
 use bin::{foldcam, repo_file};
-use browser::{browser, click, keep_screenshot, pointer_click, start_driver, wait_until};
+use browser::{click, keep_screenshot, open_studio, pointer_click, wait_until};
 use serde_json::{Value, json};
 use studio::Server;
 
@@ -48,15 +48,7 @@ fn meridian_one() -> Vec<[f64; 3]> {
 async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
 
     // The tab opens the first example, the vase: 24 cut lines, eight gores, eight parts.
     click(&c, "#tabs button[data-view='craft']").await;

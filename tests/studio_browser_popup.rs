@@ -13,8 +13,7 @@ mod studio;
 
 use bin::foldcam;
 use browser::{
-    browser, click, fetch_text, keep_screenshot, pointer_drag, screen_in, start_driver, text,
-    wait_until,
+    click, fetch_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
 };
 use fantoccini::{Client, Locator};
 use serde_json::Value;
@@ -94,15 +93,7 @@ async fn operations_shown(c: &Client, n: usize, valid: bool) {
 async fn a_wall_and_its_roof_drawn_with_the_mouse_save_as_the_cli_builds_them() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
     // The tab starts on a blank 120 × 60 × 80 mm card; new faces span x 40..80 mm.
     click(&c, "#tabs button[data-view='popup']").await;
     operations_shown(&c, 0, true).await;

@@ -15,7 +15,7 @@ mod browser;
 mod studio;
 
 use bin::foldcam;
-use browser::{browser, click, keep_screenshot, start_driver, text, wait_until};
+use browser::{click, keep_screenshot, open_studio, text, wait_until};
 use fantoccini::Client;
 use serde_json::{Value, json};
 use studio::Server;
@@ -94,15 +94,7 @@ fn file_lines(fold: &Value) -> Lines {
 async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
     // The mode opens on the first bundled example, the dome.
     click(&c, "#tabs button[data-view='tessellate']").await;
     wait_until(

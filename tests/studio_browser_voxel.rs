@@ -15,7 +15,7 @@ mod browser;
 mod studio;
 
 use bin::{foldcam, repo_file};
-use browser::{browser, click, keep_screenshot, start_driver, text, wait_until};
+use browser::{click, keep_screenshot, open_studio, text, wait_until};
 use fantoccini::{Client, Locator};
 use serde_json::Value;
 use studio::Server;
@@ -78,15 +78,7 @@ async fn clicking_voxels_in_saves_a_card_the_command_creases_as_the_page_does() 
     let dir = tempfile::tempdir().unwrap();
     let house = repo_file("examples/popup/house.voxel.txt");
     let server = Server::start(&[], dir.path());
-    let driver = start_driver();
-    let c = browser(&driver).await;
-    c.goto(&server.url()).await.unwrap();
-    wait_until(
-        &c,
-        "return document.body.dataset.ready === 'true'",
-        "the page to start",
-    )
-    .await;
+    let (_driver, c) = open_studio(&server.url()).await;
     click(&c, "#tabs button[data-view='voxel']").await;
     edits_shown(&c, 1).await;
 

@@ -21,8 +21,7 @@
 //! Errors are JSON `{"error": …}`. A drawing whose parts cannot be made is still a view: the
 //! regions carry their own errors and `error` says why the whole did not build.
 
-use std::collections::VecDeque;
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Arc, PoisonError};
 
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, QueryRejection};
@@ -39,6 +38,7 @@ use super::api::{
 };
 use super::design_open;
 use super::edit_api::json_body;
+use super::sessions::Sessions;
 use crate::design::papercraft::ReferenceMesh;
 use crate::design::papercraft::design::parse_design;
 use crate::design::papercraft::paint::paint_regions;
@@ -170,48 +170,14 @@ fn read_mesh(name: &str, bytes: &[u8]) -> Result<PolyMesh, String> {
 /// The paper-craft mode's state.
 pub(super) struct Crafts {
     studio: Arc<Studio>,
-    sessions: Mutex<Sessions>,
-}
-
-#[derive(Default)]
-struct Sessions {
-    next: u64,
-    open: VecDeque<(u64, Arc<Mutex<Session>>)>,
-}
-
-impl Crafts {
-    fn add(&self, session: Session) -> (u64, Arc<Mutex<Session>>) {
-        let mut s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        let id = s.next;
-        s.next += 1;
-        let session = Arc::new(Mutex::new(session));
-        s.open.push_back((id, Arc::clone(&session)));
-        while s.open.len() > MAX_CRAFT_SESSIONS {
-            s.open.pop_front();
-        }
-        (id, session)
-    }
-
-    fn get(&self, id: u64) -> ApiResult<Arc<Mutex<Session>>> {
-        let s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        s.open
-            .iter()
-            .find(|(i, _)| *i == id)
-            .map(|(_, x)| Arc::clone(x))
-            .ok_or_else(|| {
-                ApiError::new(
-                    StatusCode::NOT_FOUND,
-                    format!("paper craft {id} is not open (open it again)"),
-                )
-            })
-    }
+    sessions: Sessions<Session>,
 }
 
 /// The paper-craft mode's routes (merged into the studio's router).
 pub(super) fn router(studio: Arc<Studio>) -> Router<Arc<Studio>> {
     let crafts = Arc::new(Crafts {
         studio,
-        sessions: Mutex::new(Sessions::default()),
+        sessions: Sessions::new("paper craft", MAX_CRAFT_SESSIONS),
     });
     Router::new()
         .route("/api/craft/examples", get(examples))
@@ -370,7 +336,7 @@ async fn on_session(
     with_mesh: bool,
     work: impl FnOnce(&mut Session) -> ApiResult<()> + Send + 'static,
 ) -> ApiResult<Json<SessionView>> {
-    let session = crafts.get(id)?;
+    let session = crafts.sessions.get(id)?;
     blocking(move || {
         let mut s = session.lock().unwrap_or_else(PoisonError::into_inner);
         work(&mut s)?;
@@ -385,7 +351,7 @@ async fn start(
 ) -> ApiResult<Json<SessionView>> {
     blocking(move || {
         let session = make().map_err(ApiError::input)?;
-        let (id, s) = crafts.add(session);
+        let (id, s) = crafts.sessions.add(session);
         let s = s.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(Json(session_view(id, &s, true)))
     })
@@ -553,7 +519,7 @@ async fn undo(
 }
 
 async fn design_file(State(crafts): State<Arc<Crafts>>, PathId(id): PathId) -> ApiResult<Response> {
-    let session = crafts.get(id)?;
+    let session = crafts.sessions.get(id)?;
     let s = session.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(download(
         "application/toml; charset=utf-8",
@@ -563,7 +529,7 @@ async fn design_file(State(crafts): State<Arc<Crafts>>, PathId(id): PathId) -> A
 }
 
 async fn mesh_file(State(crafts): State<Arc<Crafts>>, PathId(id): PathId) -> ApiResult<Response> {
-    let session = crafts.get(id)?;
+    let session = crafts.sessions.get(id)?;
     let s = session.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(download(
         "application/octet-stream",
@@ -577,7 +543,7 @@ async fn to_pattern(
     PathId(id): PathId,
 ) -> ApiResult<Json<Opened>> {
     let studio = Arc::clone(&crafts.studio);
-    let session = crafts.get(id)?;
+    let session = crafts.sessions.get(id)?;
     let (name, text, mesh_name, mesh) = {
         let s = session.lock().unwrap_or_else(PoisonError::into_inner);
         (

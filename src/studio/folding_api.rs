@@ -20,13 +20,11 @@
 //! as `foldcam fold` does). A preview whose fold is refused answers 200 with the plan and the
 //! reason in `refused`, so that the page can show the line and why it does not fold.
 
-use std::collections::VecDeque;
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Arc, PoisonError};
 
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, QueryRejection};
 use axum::extract::{Query, State};
-use axum::http::StatusCode;
 use axum::response::Response;
 use axum::routing::{get, post};
 use axum::{Json, Router};
@@ -38,6 +36,7 @@ use super::api::{
 };
 use super::document::Document;
 use super::edit_api::json_body;
+use super::sessions::Sessions;
 use crate::design::folding::Folding;
 use crate::design::folding::crease::{crease_pattern, step_states};
 use crate::design::folding::display::{TopFace, faces_from_above, sheet_size};
@@ -118,48 +117,14 @@ impl Session {
 /// The fold mode's state: the sessions, and the studio (to open a result as a document).
 pub(super) struct Folds {
     studio: Arc<Studio>,
-    sessions: Mutex<Sessions>,
-}
-
-#[derive(Default)]
-struct Sessions {
-    next: u64,
-    open: VecDeque<(u64, Arc<Mutex<Session>>)>,
-}
-
-impl Folds {
-    fn add(&self, session: Session) -> (u64, Arc<Mutex<Session>>) {
-        let mut s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        let id = s.next;
-        s.next += 1;
-        let session = Arc::new(Mutex::new(session));
-        s.open.push_back((id, Arc::clone(&session)));
-        while s.open.len() > MAX_FOLD_SESSIONS {
-            s.open.pop_front();
-        }
-        (id, session)
-    }
-
-    fn get(&self, id: u64) -> ApiResult<Arc<Mutex<Session>>> {
-        let s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        s.open
-            .iter()
-            .find(|(i, _)| *i == id)
-            .map(|(_, x)| Arc::clone(x))
-            .ok_or_else(|| {
-                ApiError::new(
-                    StatusCode::NOT_FOUND,
-                    format!("fold sequence {id} is not open (start it again)"),
-                )
-            })
-    }
+    sessions: Sessions<Session>,
 }
 
 /// The fold mode's routes (merged into the studio's router).
 pub(super) fn router(studio: Arc<Studio>) -> Router<Arc<Studio>> {
     let folds = Arc::new(Folds {
         studio,
-        sessions: Mutex::new(Sessions::default()),
+        sessions: Sessions::new("fold sequence", MAX_FOLD_SESSIONS),
     });
     Router::new()
         .route("/api/fold/new", post(new_sheet))
@@ -344,7 +309,7 @@ async fn on_session<T: Send + 'static>(
     id: u64,
     work: impl FnOnce(&mut Session) -> ApiResult<T> + Send + 'static,
 ) -> ApiResult<T> {
-    let session = folds.get(id)?;
+    let session = folds.sessions.get(id)?;
     blocking(move || {
         let mut s = session.lock().unwrap_or_else(PoisonError::into_inner);
         work(&mut s)
@@ -381,7 +346,7 @@ async fn new_sheet(
             steps: Vec::new(),
         };
         let session = Session::new("fold sequence".into(), script).map_err(ApiError::input)?;
-        let (id, s) = folds.add(session);
+        let (id, s) = folds.sessions.add(session);
         let s = s.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(Json(session_view(id, &s)))
     })
@@ -410,7 +375,7 @@ async fn from_script(
         })?;
         let script = parse_script(text).map_err(|e| ApiError::input(format!("{name}: {e}")))?;
         let session = Session::new(name, script).map_err(ApiError::input)?;
-        let (id, s) = folds.add(session);
+        let (id, s) = folds.sessions.add(session);
         let s = s.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(Json(session_view(id, &s)))
     })

@@ -26,6 +26,7 @@ pub(crate) mod flat;
 mod folding_api;
 mod machine_api;
 mod popup_api;
+mod sessions;
 pub(crate) mod settings;
 mod tessellate_api;
 pub(crate) mod toolpath;

@@ -19,14 +19,12 @@
 //! Errors are JSON `{"error": …}` with the library's message; a refused edit names its
 //! operation and leaves the session as it was.
 
-use std::collections::VecDeque;
 use std::path::Path;
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Arc, PoisonError};
 
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, QueryRejection};
 use axum::extract::{Query, State};
-use axum::http::StatusCode;
 use axum::response::Response;
 use axum::routing::{get, post};
 use axum::{Json, Router};
@@ -37,6 +35,7 @@ use super::api::{
 };
 use super::design_open::{message, open_upload};
 use super::edit_api::json_body;
+use super::sessions::Sessions;
 use crate::design::popup::polygon::{
     Add, CardSize, Design, Edit, Operation, PlaneName, apply_edit, crease_pattern, findings,
     fold_card, outline_box, parse_design, write_design,
@@ -71,48 +70,14 @@ impl Session {
 
 pub(super) struct Popups {
     studio: Arc<Studio>,
-    sessions: Mutex<Sessions>,
-}
-
-#[derive(Default)]
-struct Sessions {
-    next: u64,
-    open: VecDeque<(u64, Arc<Mutex<Session>>)>,
-}
-
-impl Popups {
-    fn add(&self, session: Session) -> (u64, Arc<Mutex<Session>>) {
-        let mut s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        let id = s.next;
-        s.next += 1;
-        let session = Arc::new(Mutex::new(session));
-        s.open.push_back((id, Arc::clone(&session)));
-        while s.open.len() > MAX_POPUP_SESSIONS {
-            s.open.pop_front();
-        }
-        (id, session)
-    }
-
-    fn get(&self, id: u64) -> ApiResult<Arc<Mutex<Session>>> {
-        let s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        s.open
-            .iter()
-            .find(|(i, _)| *i == id)
-            .map(|(_, x)| Arc::clone(x))
-            .ok_or_else(|| {
-                ApiError::new(
-                    StatusCode::NOT_FOUND,
-                    format!("pop-up card {id} is not open (start it again)"),
-                )
-            })
-    }
+    sessions: Sessions<Session>,
 }
 
 /// The pop-up editor's routes (merged into the studio's router).
 pub(super) fn router(studio: Arc<Studio>) -> Router<Arc<Studio>> {
     let popups = Arc::new(Popups {
         studio,
-        sessions: Mutex::new(Sessions::default()),
+        sessions: Sessions::new("pop-up card", MAX_POPUP_SESSIONS),
     });
     Router::new()
         .route("/api/popup/new", post(new_card))
@@ -324,7 +289,7 @@ async fn on_session<T: Send + 'static>(
     id: u64,
     work: impl FnOnce(&mut Session) -> ApiResult<T> + Send + 'static,
 ) -> ApiResult<T> {
-    let session = popups.get(id)?;
+    let session = popups.sessions.get(id)?;
     blocking(move || {
         let mut s = session.lock().unwrap_or_else(PoisonError::into_inner);
         work(&mut s)
@@ -337,7 +302,7 @@ fn start(popups: &Popups, name: String, design: Design) -> ApiResult<Json<Sessio
     design
         .build()
         .map_err(|e| ApiError::input(format!("{name}: {e}")))?;
-    let (id, s) = popups.add(Session {
+    let (id, s) = popups.sessions.add(Session {
         name,
         versions: vec![design],
         at: 0,

@@ -15,13 +15,11 @@
 //! | `GET /api/voxel/{id}/save` | the card as the `.voxel.txt` `foldcam popup voxel` reads |
 //! | `POST /api/voxel/{id}/pattern` | the saved card built as `foldcam popup voxel` builds it, opened as a studio document |
 
-use std::collections::VecDeque;
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Arc, PoisonError};
 
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, QueryRejection};
 use axum::extract::{Query, State};
-use axum::http::StatusCode;
 use axum::response::Response;
 use axum::routing::{get, post};
 use axum::{Json, Router};
@@ -33,6 +31,7 @@ use super::api::{
 };
 use super::design_open;
 use super::edit_api::json_body;
+use super::sessions::Sessions;
 use crate::design::popup::voxel::surface::Surface;
 use crate::design::popup::voxel::{
     CardVerdict, EditChange, PatternCell, VoxelCard, VoxelEdit, VoxelFace, apply_edit,
@@ -80,46 +79,14 @@ impl Session {
 /// The editor's state: the sessions, and the studio (to open a pattern as a document).
 pub(super) struct Voxels {
     studio: Arc<Studio>,
-    sessions: Mutex<VecDeque<(u64, Arc<Mutex<Session>>)>>,
-    next: Mutex<u64>,
-}
-
-impl Voxels {
-    fn add(&self, session: Session) -> (u64, Arc<Mutex<Session>>) {
-        let id = {
-            let mut next = self.next.lock().unwrap_or_else(PoisonError::into_inner);
-            *next += 1;
-            *next - 1
-        };
-        let session = Arc::new(Mutex::new(session));
-        let mut s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        s.push_back((id, Arc::clone(&session)));
-        while s.len() > MAX_VOXEL_SESSIONS {
-            s.pop_front();
-        }
-        (id, session)
-    }
-
-    fn get(&self, id: u64) -> ApiResult<Arc<Mutex<Session>>> {
-        let s = self.sessions.lock().unwrap_or_else(PoisonError::into_inner);
-        s.iter()
-            .find(|(i, _)| *i == id)
-            .map(|(_, x)| Arc::clone(x))
-            .ok_or_else(|| {
-                ApiError::new(
-                    StatusCode::NOT_FOUND,
-                    format!("voxel card {id} is not open (start it again)"),
-                )
-            })
-    }
+    sessions: Sessions<Session>,
 }
 
 /// The editor's routes (merged into the studio's router).
 pub(super) fn router(studio: Arc<Studio>) -> Router<Arc<Studio>> {
     let voxels = Arc::new(Voxels {
         studio,
-        sessions: Mutex::new(VecDeque::new()),
-        next: Mutex::new(0),
+        sessions: Sessions::new("voxel card", MAX_VOXEL_SESSIONS),
     });
     Router::new()
         .route("/api/voxel/new", post(new_card))
@@ -307,7 +274,7 @@ async fn on_session<T: Send + 'static>(
     id: u64,
     work: impl FnOnce(&mut Session) -> ApiResult<T> + Send + 'static,
 ) -> ApiResult<T> {
-    let session = voxels.get(id)?;
+    let session = voxels.sessions.get(id)?;
     blocking(move || {
         let mut s = session.lock().unwrap_or_else(PoisonError::into_inner);
         work(&mut s)
@@ -316,7 +283,7 @@ async fn on_session<T: Send + 'static>(
 }
 
 fn start(voxels: &Voxels, name: String, card: VoxelCard) -> ApiResult<Json<CardView>> {
-    let (id, s) = voxels.add(Session {
+    let (id, s) = voxels.sessions.add(Session {
         name,
         versions: vec![card],
         at: 0,

@@ -91,6 +91,21 @@ pub async fn browser(driver: &Driver) -> Client {
         .unwrap_or_else(|e| panic!("headless Chromium did not start: {e}"))
 }
 
+/// A headless Chromium on `url` (the studio's address), once the page has started; the
+/// driver lives as long as the returned value is kept.
+pub async fn open_studio(url: &str) -> (Driver, Client) {
+    let driver = start_driver();
+    let c = browser(&driver).await;
+    c.goto(url).await.unwrap();
+    wait_until(
+        &c,
+        "return document.body.dataset.ready === 'true'",
+        "the page to start",
+    )
+    .await;
+    (driver, c)
+}
+
 /// Waits until `script` (a function body) returns true; panics with `what` and the page's
 /// error after [`PAGE_TIMEOUT`].
 pub async fn wait_until(c: &Client, script: &str, what: &str) {
