@@ -4,7 +4,7 @@
 // resize it; its extent along the fold is edited in the fields. The server replays the
 // design after every edit (the paper's operations on the pattern) and checks it as
 // `foldcam popup poly` does; the faces that do not stand up are drawn red and said in words.
-// The card is shown opening from 0° to 180° (the paper's eq. 7, on the server).
+// The card is shown opening from 0° to 180° (Mitani & Suzuki 2004, eq. 7, computed on the server).
 import * as THREE from './vendor/three.module.min.js';
 import { call } from './api.js';
 
