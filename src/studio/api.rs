@@ -275,6 +275,21 @@ pub(super) fn upload_name(sent: &str) -> String {
         .to_string()
 }
 
+/// An upload's body, or why it could not be read, naming the upload.
+pub(super) fn upload_body(name: &str, body: Result<Bytes, BytesRejection>) -> ApiResult<Bytes> {
+    body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))
+}
+
+/// An upload read as UTF-8 text; the error names the upload and the first byte that is not.
+pub(super) fn upload_text<'a>(name: &str, body: &'a [u8]) -> ApiResult<&'a str> {
+    std::str::from_utf8(body).map_err(|e| {
+        ApiError::input(format!(
+            "{name}: byte {}: file is not valid UTF-8 text",
+            e.valid_up_to()
+        ))
+    })
+}
+
 /// The routes, with the upload limit of `state`'s configuration.
 pub fn router(state: Arc<Studio>) -> Router {
     let limit = state.config.max_upload_bytes;

@@ -34,7 +34,8 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use super::api::{
-    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_name,
+    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_body,
+    upload_name,
 };
 use super::design_open;
 use super::edit_api::json_body;
@@ -412,7 +413,7 @@ async fn from_mesh(
 ) -> ApiResult<Json<SessionView>> {
     let Query(q) = query?;
     let name = upload_name(&q.name);
-    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    let body = upload_body(&name, body)?;
     start(crafts, move || {
         Session::new(stem_of(&name), &name, body.to_vec(), None)
     })
@@ -431,7 +432,7 @@ async fn from_design(
         Some(w) => serde_json::from_str(w)
             .map_err(|e| ApiError::new(StatusCode::BAD_REQUEST, format!("with={w}: {e}")))?,
     };
-    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    let body = upload_body(&name, body)?;
     start(crafts, move || {
         let (main, companions) = design_open::split_body(&name, &body, &parts)?;
         let text = std::str::from_utf8(main)

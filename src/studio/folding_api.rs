@@ -32,7 +32,8 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use super::api::{
-    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_name,
+    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_body,
+    upload_name, upload_text,
 };
 use super::document::Document;
 use super::edit_api::json_body;
@@ -365,14 +366,9 @@ async fn from_script(
 ) -> ApiResult<Json<SessionView>> {
     let Query(q) = query?;
     let name = upload_name(&q.name);
-    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    let body = upload_body(&name, body)?;
     blocking(move || {
-        let text = std::str::from_utf8(&body).map_err(|e| {
-            ApiError::input(format!(
-                "{name}: byte {}: file is not valid UTF-8 text",
-                e.valid_up_to()
-            ))
-        })?;
+        let text = upload_text(&name, &body)?;
         let script = parse_script(text).map_err(|e| ApiError::input(format!("{name}: {e}")))?;
         let session = Session::new(name, script).map_err(ApiError::input)?;
         let (id, s) = folds.sessions.add(session);

@@ -13,7 +13,9 @@ use axum::response::Response;
 use serde::Deserialize;
 use serde_json::{Value, json};
 
-use super::api::{ApiError, ApiResult, PathId, Studio, blocking, download, upload_name};
+use super::api::{
+    ApiError, ApiResult, PathId, Studio, blocking, download, upload_body, upload_name,
+};
 use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
 use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
@@ -199,7 +201,7 @@ pub(super) async fn upload_profile(
         }
     };
     let name = upload_name(&q.name);
-    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    let body = upload_body(&name, body)?;
     if body.len() > MAX_PROFILE_BYTES {
         return Err(ApiError::new(
             StatusCode::PAYLOAD_TOO_LARGE,

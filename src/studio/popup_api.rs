@@ -31,7 +31,8 @@ use axum::{Json, Router};
 use serde::{Deserialize, Serialize};
 
 use super::api::{
-    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_name,
+    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_body,
+    upload_name, upload_text,
 };
 use super::design_open::{message, open_upload};
 use super::edit_api::json_body;
@@ -338,14 +339,9 @@ async fn from_design(
 ) -> ApiResult<Json<SessionView>> {
     let Query(q) = query?;
     let name = upload_name(&q.name);
-    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    let body = upload_body(&name, body)?;
     blocking(move || {
-        let text = std::str::from_utf8(&body).map_err(|e| {
-            ApiError::input(format!(
-                "{name}: byte {}: file is not valid UTF-8 text",
-                e.valid_up_to()
-            ))
-        })?;
+        let text = upload_text(&name, &body)?;
         let design = parse_design(text).map_err(|e| ApiError::input(format!("{name}: {e}")))?;
         let name = if name.ends_with(".popup.toml") {
             name

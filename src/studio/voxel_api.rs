@@ -27,7 +27,8 @@ use glam::{DVec2, DVec3};
 use serde::{Deserialize, Serialize};
 
 use super::api::{
-    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_name,
+    ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_body,
+    upload_name,
 };
 use super::design_open;
 use super::edit_api::json_body;
@@ -350,7 +351,7 @@ async fn load(
     let Query(q) = query?;
     let name = upload_name(&q.name);
     let options = q.options()?;
-    let body = body.map_err(|r| ApiError::new(r.status(), format!("{name}: {}", r.body_text())))?;
+    let body = upload_body(&name, body)?;
     blocking(move || {
         let path = std::path::PathBuf::from(&name);
         let file = DesignFile {
