@@ -5,6 +5,7 @@
 // red on the mesh and in the list, a part whose outline crosses itself is red on the sheet.
 // "Save design" downloads the .craft.toml `foldcam papercraft` reads, with its mesh.
 import * as THREE from './vendor/three.module.min.js';
+import { makeScene } from './scene3d.js';
 import { call } from './api.js';
 
 const NS = 'http://www.w3.org/2000/svg';
@@ -39,19 +40,8 @@ export class CraftView {
     this.$ = $;
     this.clicked = [];
     this.container = $('craft-3d');
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    this.container.appendChild(this.renderer.domElement);
-    this.scene = new THREE.Scene();
-    this.scene.background = new THREE.Color(0xeef1f5);
-    this.scene.add(new THREE.AmbientLight(0xffffff, 1.3));
-    const sun = new THREE.DirectionalLight(0xffffff, 1.8);
-    sun.position.set(1, 2, 3);
-    this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
-    this.model = new THREE.Group();
+    Object.assign(this, makeScene(this.container, { light: [1.3, 1.8] }));
     this.model.rotation.set(-1.2, 0, 0.6);
-    this.scene.add(this.model);
     this.overlay = new THREE.Group();
     this.model.add(this.overlay);
     this.raycaster = new THREE.Raycaster();

@@ -1,6 +1,7 @@
 // The folded form in 3D (three.js): frames of the bar-and-hinge simulation from flat to the
 // settled fold, chosen with a slider. Drag turns the model.
 import * as THREE from './vendor/three.module.min.js';
+import { makeScene, onDrag } from './scene3d.js';
 
 /** Paper colours: the front (the pattern as drawn) and the back. */
 const FRONT = 0xf4efe6;
@@ -9,30 +10,13 @@ const BACK = 0x6a8fd8;
 export class FoldView {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    container.appendChild(this.renderer.domElement);
-    this.scene = new THREE.Scene();
-    this.scene.background = new THREE.Color(0xeef1f5);
-    this.scene.add(new THREE.AmbientLight(0xffffff, 1.2));
-    const sun = new THREE.DirectionalLight(0xffffff, 2.0);
-    sun.position.set(1, 2, 3);
-    this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
-    this.model = new THREE.Group();
-    this.scene.add(this.model);
+    Object.assign(this, makeScene(container));
     this.model.rotation.set(-0.9, 0, 0.5);
-    let drag = null;
-    const el = this.renderer.domElement;
-    el.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; });
-    el.addEventListener('pointermove', (e) => {
-      if (!drag) return;
-      this.model.rotation.z += (e.clientX - drag[0]) * 0.01;
-      this.model.rotation.x += (e.clientY - drag[1]) * 0.01;
-      drag = [e.clientX, e.clientY];
+    onDrag(this.renderer.domElement, (dx, dy) => {
+      this.model.rotation.z += dx * 0.01;
+      this.model.rotation.x += dy * 0.01;
       this.draw();
     });
-    for (const end of ['pointerup', 'pointerleave']) el.addEventListener(end, () => { drag = null; });
     new ResizeObserver(() => this.draw()).observe(container);
   }
 

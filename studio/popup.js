@@ -6,6 +6,7 @@
 // `foldcam popup poly` does; the faces that do not stand up are drawn red and said in words.
 // The card is shown opening from 0° to 180° (Mitani & Suzuki 2004, eq. 7, computed on the server).
 import * as THREE from './vendor/three.module.min.js';
+import { makeScene, onDrag } from './scene3d.js';
 import { call } from './api.js';
 
 const NS = 'http://www.w3.org/2000/svg';
@@ -391,31 +392,13 @@ export class PopupView {
 
   setupThree(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    container.appendChild(this.renderer.domElement);
-    this.scene = new THREE.Scene();
-    this.scene.background = new THREE.Color(0xeef1f5);
-    this.scene.add(new THREE.AmbientLight(0xffffff, 1.2));
-    const sun = new THREE.DirectionalLight(0xffffff, 2.0);
-    sun.position.set(-1, 3, 2);
-    this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
-    this.model = new THREE.Group();
-    this.scene.add(this.model);
     // Seen from in front of the card and above it (z up), turned a little to one side.
-    this.camera.up.set(0, 0, 1);
-    let drag = null;
-    const canvas = this.renderer.domElement;
-    canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; });
-    canvas.addEventListener('pointermove', (e) => {
-      if (!drag) return;
-      this.model.rotation.z += (e.clientX - drag[0]) * 0.01;
-      this.model.rotation.x += (e.clientY - drag[1]) * 0.01;
-      drag = [e.clientX, e.clientY];
+    Object.assign(this, makeScene(container, { sun: [-1, 3, 2], zUp: true }));
+    onDrag(this.renderer.domElement, (dx, dy) => {
+      this.model.rotation.z += dx * 0.01;
+      this.model.rotation.x += dy * 0.01;
       this.drawThree();
     });
-    for (const end of ['pointerup', 'pointerleave']) canvas.addEventListener(end, () => { drag = null; });
     new ResizeObserver(() => this.drawThree()).observe(container);
   }
 

@@ -4,6 +4,7 @@
 // then see the folded form in 3D with every crease and vertex measured against the limits,
 // and the crease pattern. "Save design" downloads the .tess.toml `foldcam tessellate` reads.
 import * as THREE from './vendor/three.module.min.js';
+import { makeScene, onDrag } from './scene3d.js';
 import { call } from './api.js';
 
 const NS = 'http://www.w3.org/2000/svg';
@@ -39,30 +40,13 @@ const post = (url, body) => call(url, {
 class Shell {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    container.appendChild(this.renderer.domElement);
-    this.scene = new THREE.Scene();
-    this.scene.background = new THREE.Color(0xeef1f5);
-    this.scene.add(new THREE.AmbientLight(0xffffff, 1.2));
-    const sun = new THREE.DirectionalLight(0xffffff, 2.0);
-    sun.position.set(1, 2, 3);
-    this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
-    this.model = new THREE.Group();
-    this.scene.add(this.model);
+    Object.assign(this, makeScene(container));
     this.model.rotation.set(-1.0, 0, 0.6);
-    let drag = null;
-    const canvas = this.renderer.domElement;
-    canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; });
-    canvas.addEventListener('pointermove', (e) => {
-      if (!drag) return;
-      this.model.rotation.z += (e.clientX - drag[0]) * 0.01;
-      this.model.rotation.x += (e.clientY - drag[1]) * 0.01;
-      drag = [e.clientX, e.clientY];
+    onDrag(this.renderer.domElement, (dx, dy) => {
+      this.model.rotation.z += dx * 0.01;
+      this.model.rotation.x += dy * 0.01;
       this.draw();
     });
-    for (const end of ['pointerup', 'pointerleave']) canvas.addEventListener(end, () => { drag = null; });
     new ResizeObserver(() => this.draw()).observe(container);
   }
 

@@ -6,6 +6,7 @@
 // computed on the server). Faults (no pop-up, loose pieces, beyond the closed card) are
 // listed and marked on both views and on the 3D card.
 import * as THREE from './vendor/three.module.min.js';
+import { makeScene, onDrag } from './scene3d.js';
 import { call } from './api.js';
 
 const NS = 'http://www.w3.org/2000/svg';
@@ -31,31 +32,13 @@ const post = (url, body) => call(url, {
 class CardView3d {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    container.appendChild(this.renderer.domElement);
-    this.scene = new THREE.Scene();
-    this.scene.background = new THREE.Color(0xeef1f5);
-    this.scene.add(new THREE.AmbientLight(0xffffff, 1.3));
-    const sun = new THREE.DirectionalLight(0xffffff, 1.8);
-    sun.position.set(-1, 2, 3);
-    this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
-    this.camera.up.set(0, 0, 1);
-    this.model = new THREE.Group();
-    this.scene.add(this.model);
+    Object.assign(this, makeScene(container, { sun: [-1, 2, 3], light: [1.3, 1.8], zUp: true }));
     this.turn = [-0.6, 0.45];
-    let drag = null;
-    const canvas = this.renderer.domElement;
-    canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; });
-    canvas.addEventListener('pointermove', (e) => {
-      if (!drag) return;
-      this.turn[0] -= (e.clientX - drag[0]) * 0.01;
-      this.turn[1] = Math.max(-1.4, Math.min(1.4, this.turn[1] + (e.clientY - drag[1]) * 0.01));
-      drag = [e.clientX, e.clientY];
+    onDrag(this.renderer.domElement, (dx, dy) => {
+      this.turn[0] -= dx * 0.01;
+      this.turn[1] = Math.max(-1.4, Math.min(1.4, this.turn[1] + dy * 0.01));
       this.draw();
     });
-    for (const end of ['pointerup', 'pointerleave']) canvas.addEventListener(end, () => { drag = null; });
     new ResizeObserver(() => this.draw()).observe(container);
   }
 

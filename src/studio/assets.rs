@@ -31,6 +31,7 @@ static ASSETS: &[Asset] = &[
     asset!("folding.js", "text/javascript; charset=utf-8"),
     asset!("craft.js", "text/javascript; charset=utf-8"),
     asset!("machine.js", "text/javascript; charset=utf-8"),
+    asset!("scene3d.js", "text/javascript; charset=utf-8"),
     asset!("tessellate.js", "text/javascript; charset=utf-8"),
     asset!("voxel.js", "text/javascript; charset=utf-8"),
     asset!("popup.js", "text/javascript; charset=utf-8"),
