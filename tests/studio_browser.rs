@@ -16,7 +16,9 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use bin::{foldcam, repo_file};
-use browser::{click, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until};
+use browser::{
+    click, download_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
+};
 use fantoccini::actions::{InputSource, MouseActions, PointerAction};
 use fantoccini::{Client, Locator};
 use serde_json::{Value, json};
@@ -261,22 +263,7 @@ async fn the_studio_works_in_a_real_browser() {
     .await;
     let travel = c.find_all(Locator::Css("#tp-travel line")).await.unwrap();
     assert!(!travel.is_empty(), "travel is drawn");
-    let href = c
-        .find(Locator::Css("#dl-gcode"))
-        .await
-        .unwrap()
-        .attr("href")
-        .await
-        .unwrap()
-        .unwrap();
-    let served = c
-        .execute_async(
-            "const done = arguments[arguments.length - 1];
-             fetch(arguments[0]).then(r => r.text()).then(done, e => done('ERROR ' + e));",
-            vec![json!(href)],
-        )
-        .await
-        .unwrap();
+    let served = download_text(&c, "#dl-gcode").await;
     let out = foldcam(
         &[
             "cut",
@@ -297,7 +284,7 @@ async fn the_studio_works_in_a_real_browser() {
     );
     let cli = std::fs::read_to_string(dir.path().join("cli.gcode")).unwrap();
     assert!(
-        served.as_str() == Some(cli.as_str()),
+        served == cli,
         "the page's G-code differs from foldcam cut's"
     );
     keep_screenshot(&c, "studio-machine.png").await;
@@ -487,23 +474,8 @@ async fn dragging_a_corner_onto_the_opposite_one_folds_the_diagonal() {
     );
 
     // The saved script, folded by the CLI, gives the same crease.
-    let href = c
-        .find(Locator::Css("#folding-script"))
-        .await
-        .unwrap()
-        .attr("href")
-        .await
-        .unwrap()
-        .unwrap();
-    let script = c
-        .execute_async(
-            "const done = arguments[arguments.length - 1];
-             fetch(arguments[0]).then(r => r.text()).then(done, e => done('ERROR ' + e));",
-            vec![json!(href)],
-        )
-        .await
-        .unwrap();
-    std::fs::write(dir.path().join("saved.toml"), script.as_str().unwrap()).unwrap();
+    let script = download_text(&c, "#folding-script").await;
+    std::fs::write(dir.path().join("saved.toml"), &script).unwrap();
     let out = foldcam(&["fold", "saved.toml", "-o", "saved.fold"], dir.path());
     assert!(
         out.status.success(),

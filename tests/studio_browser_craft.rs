@@ -13,7 +13,7 @@ mod browser;
 mod studio;
 
 use bin::{foldcam, repo_file};
-use browser::{click, keep_screenshot, open_studio, pointer_click, wait_until};
+use browser::{click, keep_screenshot, link_href, open_studio, pointer_click, wait_until};
 use serde_json::{Value, json};
 use studio::Server;
 
@@ -141,19 +141,8 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
     keep_screenshot(&c, "studio-craft.png").await;
 
     // "Save design" and "Save mesh" are what the CLI builds.
-    let href = |css: &'static str| {
-        let c = c.clone();
-        async move {
-            c.find(fantoccini::Locator::Css(css))
-                .await
-                .unwrap()
-                .attr("href")
-                .await
-                .unwrap()
-                .unwrap()
-        }
-    };
-    let (design, mesh) = (href("#craft-save").await, href("#craft-save-mesh").await);
+    let design = link_href(&c, "#craft-save").await;
+    let mesh = link_href(&c, "#craft-save-mesh").await;
     let (status, design) = server.get(&design);
     assert_eq!(status, 200);
     let (status, mesh) = server.get(&mesh);

@@ -13,7 +13,7 @@ mod studio;
 
 use bin::foldcam;
 use browser::{
-    click, fetch_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
+    click, download_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
 };
 use fantoccini::{Client, Locator};
 use serde_json::Value;
@@ -149,15 +149,7 @@ async fn a_wall_and_its_roof_drawn_with_the_mouse_save_as_the_cli_builds_them() 
     keep_screenshot(&c, "studio-popup.png").await;
 
     // Saved and built by the CLI: the pattern the page draws, line for line.
-    let href = c
-        .find(Locator::Css("#popup-save"))
-        .await
-        .unwrap()
-        .attr("href")
-        .await
-        .unwrap()
-        .unwrap();
-    let saved = fetch_text(&c, &href).await;
+    let saved = download_text(&c, "#popup-save").await;
     std::fs::write(dir.path().join("box.popup.toml"), &saved).unwrap();
     let out = foldcam(
         &["popup", "poly", "box.popup.toml", "-o", "box.fold"],

@@ -233,3 +233,20 @@ pub async fn fetch_text(c: &Client, url: &str) -> String {
     assert!(!text.starts_with("ERROR "), "{url}: {text}");
     text
 }
+
+/// The `href` of the link `css` selects (a download the page built).
+pub async fn link_href(c: &Client, css: &str) -> String {
+    c.find(Locator::Css(css))
+        .await
+        .expect(css)
+        .attr("href")
+        .await
+        .unwrap()
+        .unwrap_or_else(|| panic!("{css} has no href"))
+}
+
+/// The text the page would download from the link `css`, fetched in the page.
+pub async fn download_text(c: &Client, css: &str) -> String {
+    let href = link_href(c, css).await;
+    fetch_text(c, &href).await
+}
