@@ -8,6 +8,8 @@
 mod bin;
 #[path = "common/browser.rs"]
 mod browser;
+#[path = "common/lines.rs"]
+mod lines;
 #[path = "common/studio.rs"]
 mod studio;
 
@@ -16,27 +18,12 @@ use browser::{
     click, download_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
 };
 use fantoccini::{Client, Locator};
+use lines::{Lines, fold_lines, line};
 use serde_json::Value;
 use studio::Server;
 
 /// Coordinates agree this closely, millimetres.
 const COORD_TOLERANCE: f64 = 1e-6;
-
-/// Lines as (ends sorted, rounded to [`COORD_TOLERANCE`]; assignment letter), sorted.
-type Lines = Vec<([[i64; 2]; 2], String)>;
-
-fn round(v: f64) -> i64 {
-    (v / COORD_TOLERANCE).round() as i64
-}
-
-fn line(ends: [f64; 4], letter: &str) -> ([[i64; 2]; 2], String) {
-    let mut e = [
-        [round(ends[0]), round(ends[1])],
-        [round(ends[2]), round(ends[3])],
-    ];
-    e.sort();
-    (e, letter.to_string())
-}
 
 /// The lines the page draws in its crease-pattern view.
 async fn drawn_lines(c: &Client) -> Lines {
@@ -50,28 +37,9 @@ async fn drawn_lines(c: &Client) -> Lines {
         .await
         .unwrap();
     let drawn: Vec<([f64; 4], String)> = serde_json::from_value(drawn).unwrap();
-    let mut out: Lines = drawn.iter().map(|(e, a)| line(*e, a)).collect();
-    out.sort();
-    out
-}
-
-/// The lines of a FOLD file.
-fn fold_lines(fold: &Value) -> Lines {
-    let coords = fold["vertices_coords"].as_array().unwrap();
-    let mut out: Lines = fold["edges_vertices"]
-        .as_array()
-        .unwrap()
+    let mut out: Lines = drawn
         .iter()
-        .zip(fold["edges_assignment"].as_array().unwrap())
-        .map(|(e, a)| {
-            let p = |i: &Value| coords[i.as_u64().unwrap() as usize].clone();
-            let (p, q) = (p(&e[0]), p(&e[1]));
-            let n = |v: &Value, k: usize| v[k].as_f64().unwrap();
-            line(
-                [n(&p, 0), n(&p, 1), n(&q, 0), n(&q, 1)],
-                a.as_str().unwrap(),
-            )
-        })
+        .map(|(e, a)| line(*e, a, COORD_TOLERANCE))
         .collect();
     out.sort();
     out
@@ -162,11 +130,11 @@ async fn a_wall_and_its_roof_drawn_with_the_mouse_save_as_the_cli_builds_them() 
     );
     let cli: Value =
         serde_json::from_slice(&std::fs::read(dir.path().join("box.fold")).unwrap()).unwrap();
-    let cli_lines = fold_lines(&cli);
+    let cli_lines = fold_lines(&cli, COORD_TOLERANCE);
     assert_eq!(drawn_lines(&c).await, cli_lines);
     // The box's folds where eq. 1 (v = z − y) puts them by hand, x from 40 to 80 mm.
     for v in [20.0, -10.0, -30.0] {
-        let fold = line([40.0, v, 80.0, v], "");
+        let fold = line([40.0, v, 80.0, v], "", COORD_TOLERANCE);
         assert!(
             cli_lines
                 .iter()

@@ -11,12 +11,15 @@
 mod bin;
 #[path = "common/browser.rs"]
 mod browser;
+#[path = "common/lines.rs"]
+mod lines;
 #[path = "common/studio.rs"]
 mod studio;
 
 use bin::foldcam;
 use browser::{click, keep_screenshot, open_studio, text, wait_until};
 use fantoccini::Client;
+use lines::{Lines, fold_lines, line};
 use serde_json::{Value, json};
 use studio::Server;
 
@@ -37,13 +40,6 @@ async fn fetch_link(c: &Client, css: &str) -> String {
     text.as_str().unwrap().to_string()
 }
 
-/// Segments (ends sorted, rounded to [`TOLERANCE_MM`]) with their assignment letter.
-type Lines = Vec<([[i64; 2]; 2], String)>;
-
-fn rounded(p: [f64; 2]) -> [i64; 2] {
-    p.map(|x| (x / TOLERANCE_MM).round() as i64)
-}
-
 /// The creases of the page's pattern drawing.
 async fn page_lines(c: &Client) -> Lines {
     let drawn = c
@@ -58,33 +54,7 @@ async fn page_lines(c: &Client) -> Lines {
     let drawn: Vec<([f64; 4], String)> = serde_json::from_value(drawn).unwrap();
     let mut out: Lines = drawn
         .into_iter()
-        .map(|([x1, y1, x2, y2], a)| {
-            let mut ends = [rounded([x1, y1]), rounded([x2, y2])];
-            ends.sort();
-            (ends, a)
-        })
-        .collect();
-    out.sort();
-    out
-}
-
-/// The creases of a FOLD file's crease-pattern frame.
-fn file_lines(fold: &Value) -> Lines {
-    let coords = fold["vertices_coords"].as_array().unwrap();
-    let point = |i: &Value| {
-        let c = &coords[i.as_u64().unwrap() as usize];
-        rounded([c[0].as_f64().unwrap(), c[1].as_f64().unwrap()])
-    };
-    let mut out: Lines = fold["edges_vertices"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .zip(fold["edges_assignment"].as_array().unwrap())
-        .map(|(e, a)| {
-            let mut ends = [point(&e[0]), point(&e[1])];
-            ends.sort();
-            (ends, a.as_str().unwrap().to_string())
-        })
+        .map(|(ends, a)| line(ends, &a, TOLERANCE_MM))
         .collect();
     out.sort();
     out
@@ -175,7 +145,7 @@ async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
     );
     let cli: Value =
         serde_json::from_slice(&std::fs::read(dir.path().join("cli.fold")).unwrap()).unwrap();
-    let (drawn, written) = (page_lines(&c).await, file_lines(&cli));
+    let (drawn, written) = (page_lines(&c).await, fold_lines(&cli, TOLERANCE_MM));
     assert!(!written.is_empty());
     assert_eq!(drawn, written, "the page's crease pattern is the command's");
 

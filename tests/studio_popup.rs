@@ -6,10 +6,13 @@
 
 #[path = "common/bin.rs"]
 mod bin;
+#[path = "common/lines.rs"]
+mod lines;
 #[path = "common/studio.rs"]
 mod studio;
 
 use bin::{foldcam, repo_file};
+use lines::{Lines, fold_lines};
 use serde_json::{Value, json};
 use studio::{Server, encode};
 
@@ -34,33 +37,8 @@ fn rect(x0: f64, w0: f64, x1: f64, w1: f64) -> Value {
     json!([[x0, w0], [x1, w0], [x1, w1], [x0, w1]])
 }
 
-/// Lines as (ends sorted, each rounded to [`COORD_TOLERANCE`]; assignment letter), sorted.
-type Lines = Vec<([[i64; 2]; 2], String)>;
-
 fn round(v: f64) -> i64 {
     (v / COORD_TOLERANCE).round() as i64
-}
-
-/// The lines of a FOLD file.
-fn fold_lines(fold: &Value) -> Lines {
-    let coords = fold["vertices_coords"].as_array().unwrap();
-    let point = |i: &Value| {
-        let c = &coords[i.as_u64().unwrap() as usize];
-        [round(c[0].as_f64().unwrap()), round(c[1].as_f64().unwrap())]
-    };
-    let mut out: Lines = fold["edges_vertices"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .zip(fold["edges_assignment"].as_array().unwrap())
-        .map(|(e, a)| {
-            let mut ends = [point(&e[0]), point(&e[1])];
-            ends.sort();
-            (ends, a.as_str().unwrap().to_string())
-        })
-        .collect();
-    out.sort();
-    out
 }
 
 /// The lines of a view: `edges` as `[[i, j], letter]` (the editor's) or `{v, a}` (a document's).
@@ -171,7 +149,7 @@ fn a_wall_alone_is_named_and_a_roof_makes_the_card_the_cli_makes() {
     );
     let cli: Value =
         serde_json::from_slice(&std::fs::read(dir.path().join("box.fold")).unwrap()).unwrap();
-    let cli_lines = fold_lines(&cli);
+    let cli_lines = fold_lines(&cli, COORD_TOLERANCE);
     let shown = view_lines(&view["pattern"]["vertices"], &view["pattern"]["edges"]);
     assert_eq!(shown, cli_lines);
     // The box's own folds where eq. 1 puts them by hand, x 40..80: the roof on the back
@@ -253,7 +231,7 @@ fn moves_and_resizes_are_the_papers_operations_and_refusals_change_nothing() {
         serde_json::from_slice(&std::fs::read(dir.path().join("door.fold")).unwrap()).unwrap();
     assert_eq!(
         view_lines(&door["pattern"]["vertices"], &door["pattern"]["edges"]),
-        fold_lines(&cli)
+        fold_lines(&cli, COORD_TOLERANCE)
     );
 }
 
@@ -329,8 +307,8 @@ fn a_bundled_design_opens_for_editing_and_saves_as_the_cli_reads_it() {
         serde_json::from_slice(&std::fs::read(dir.path().join(n)).unwrap()).unwrap()
     };
     assert_eq!(
-        fold_lines(&read("saved.fold")),
-        fold_lines(&read("original.fold"))
+        fold_lines(&read("saved.fold"), COORD_TOLERANCE),
+        fold_lines(&read("original.fold"), COORD_TOLERANCE)
     );
     // A file that is not a design is refused with its name and place.
     let (status, body) = server.post_json(
