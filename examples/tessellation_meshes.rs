@@ -8,17 +8,22 @@
 //!
 //! Run with `cargo run --example tessellation_meshes`; `-- RINGS DIR` writes patches of
 //! `6·RINGS²` faces into DIR instead (larger meshes for timing);
-//! `-- cap N RINGS DEGREES RADIUS DIR` writes one cap of `N·RINGS²` faces into DIR.
+//! `-- cap N RINGS DEGREES RADIUS DIR` writes one cap of `N·RINGS²` faces into DIR;
+//! `-- mask RINGS PATH` writes the face mask (`face_mask`, `6·RINGS²` faces) to PATH
+//! (`mask 8 examples/tessellation/mask.obj` is the bundled one).
 
 use std::path::Path;
 
-use foldcam::design::tessellation::{SampleSurface, sample_surface, spherical_cap};
+use foldcam::design::tessellation::{SampleSurface, face_mask, sample_surface, spherical_cap};
 use foldcam::formats::write_atomic;
 
 fn main() -> std::io::Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("cap") {
         return cap(&args[1..]);
+    }
+    if args.first().map(String::as_str) == Some("mask") {
+        return mask(&args[1..]);
     }
     let rings: usize = match args.first() {
         Some(r) => r
@@ -73,3 +78,23 @@ fn cap(args: &[String]) -> std::io::Result<()> {
     println!("wrote {} ({} faces)", path.display(), mesh.faces().len());
     Ok(())
 }
+
+/// `mask RINGS PATH`: the face mask of `6·RINGS²` faces, written to PATH with a comment line
+/// saying whose work it is.
+fn mask(args: &[String]) -> std::io::Result<()> {
+    let [rings, path] = args else {
+        return Err(std::io::Error::other("usage: mask RINGS PATH"));
+    };
+    let rings: usize = rings
+        .parse()
+        .map_err(|_| std::io::Error::other(format!("{rings:?} is not a ring count")))?;
+    let mesh = face_mask(rings);
+    let text = format!("{MASK_HEADER}{}", mesh.to_obj());
+    write_atomic(Path::new(path), text.as_bytes())?;
+    println!("wrote {path} ({} faces)", mesh.faces().len());
+    Ok(())
+}
+
+/// The first lines of `mask.obj`.
+const MASK_HEADER: &str = "# face mask: foldcam's own procedural model (face_mask in \
+src/design/tessellation/samples.rs), MIT like the rest of foldcam\n";

@@ -211,6 +211,8 @@ fn demo_runs_end_to_end() {
     for name in [
         "tessellation-dome.fold",
         "tessellation-dome.linuxcnc-fiber.ngc",
+        "tessellation-mask.fold",
+        "tessellation-mask.linuxcnc-fiber.ngc",
         "papercraft-vase-1.fold",
         "papercraft-vase-1.png",
         "papercraft-vase-1.grbl-diode.gcode",

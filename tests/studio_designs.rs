@@ -35,7 +35,8 @@ fn skipped(rel: &str) -> bool {
 /// `foldcam tessellate` on it had not finished after 8 minutes in a debug build (435 solver
 /// iterations), beyond what a test here may take. Its tessellation runs the same code as the
 /// three smaller meshes of `examples/tessellation/`, which are compared below.
-const AS_CARD: &[&str] = &["tessellation/cap.obj"];
+/// `mask.obj` (384 faces) likewise: its tessellation is checked in `tests/tessellation_mask.rs`.
+const AS_CARD: &[&str] = &["tessellation/cap.obj", "tessellation/mask.obj"];
 
 /// Every file under `examples/`, relative, sorted.
 fn examples() -> Vec<String> {

@@ -121,6 +121,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     machine_jobs(&args.out, &cases)?;
     popup_card(&args.out, args.width)?;
     super::demo_tessellation::dome(&args.out, args.width)?;
+    super::demo_tessellation::mask(&args.out, args.width)?;
     super::demo_papercraft::vase(&args.out, args.width)?;
     super::demo_fold3d::miura(&args.out, args.width)?;
     Ok(Outcome::Done)

@@ -1,55 +1,114 @@
-//! The demo's tessellation stage: the bundled dome (Tachi 2014) with truncated stars at the
-//! 0.5 mm stainless limits, unfolded, drawn, and perforated on the fiber laser through the
-//! simulated machine.
+//! The demo's tessellation stage: the bundled dome (Tachi 2014) with truncated stars and the
+//! bundled face mask with star tucks, both at the 0.5 mm stainless limits, unfolded, drawn,
+//! and perforated on the fiber laser through the simulated machine.
 
 use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
-use foldcam::design::tessellation::{Limits, TessellateOptions, TuckKind, tessellate};
+use foldcam::design::tessellation::{
+    Limits, TessellateOptions, Tessellation, TuckKind, corner_distance, default_schedule,
+    tessellate, tessellate_scheduled,
+};
 use foldcam::formats::{self, write_atomic};
 use foldcam::machine::load_material;
+use foldcam::mesh::PolyMesh;
 use foldcam::render::{View3d, render_folded_png};
+
+/// The face shrink the default ladder reaches on the mask (0.8 and 0.7 leave limits unmet):
+/// starting there saves the demo two failing solves (about 5 s of a release build).
+const MASK_FIRST_SHRINK: f64 = 0.6;
+
+/// The stainless limits of the demo's tessellations.
+fn stainless() -> Result<TessellateOptions> {
+    let material = load_material("stainless-0.5")?;
+    Ok(TessellateOptions::with_limits(Limits::from_degrees(
+        material.limits.max_fold_angle_deg,
+        material.limits.min_vertex_angle_deg,
+    )))
+}
 
 /// Tessellates the bundled dome, writes `tessellation-dome.fold` (pattern and folded form),
 /// its preview and the fiber-laser job into `dir`.
 pub fn dome(dir: &Path, width: u32) -> Result<()> {
     let obj = include_bytes!("../../examples/tessellation/dome.obj");
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("dome.obj: {e}"))?;
-    let material = load_material("stainless-0.5")?;
-    let mut opts = TessellateOptions::with_limits(Limits::from_degrees(
-        material.limits.max_fold_angle_deg,
-        material.limits.min_vertex_angle_deg,
-    ));
+    let mut opts = stainless()?;
     opts.star.tuck.kind = TuckKind::Truncated;
     let t = tessellate(&mesh, &opts, |_| {}).map_err(|e| anyhow!("dome.obj: {e}"))?;
-    if let Some(problem) = t.problem() {
-        bail!("dome.obj: {problem}");
-    }
-    let u = t.unfolded.as_ref().map_err(|e| anyhow!("dome.obj: {e}"))?;
-    let name = "tessellation-dome";
-    formats::save(
-        &dir.join(format!("{name}.fold")),
-        &u.pattern,
-        Some(&u.folded),
-    )?;
     let view = View3d {
         azimuth_deg: 30.0,
         elevation_deg: 35.0,
         ..View3d::with_width(width.min(800))
     };
-    let png = render_folded_png(&u.folded, &view)?;
+    cut(dir, "tessellation-dome", &mesh, &t, &view, "truncated star")
+}
+
+/// Tessellates the bundled face mask as `foldcam tessellate` does by default (star tucks, the
+/// face-shrink ladder, a re-triangulation when the input's own triangles fail) but starting
+/// the ladder at [`MASK_FIRST_SHRINK`], writes
+/// `tessellation-mask.fold`, its preview (seen from in front, slightly below) and the
+/// fiber-laser job into `dir`.
+pub fn mask(dir: &Path, width: u32) -> Result<()> {
+    let obj = include_bytes!("../../examples/tessellation/mask.obj");
+    let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("mask.obj: {e}"))?;
+    let mut schedule = default_schedule();
+    schedule.shrinks.retain(|&s| s <= MASK_FIRST_SHRINK);
+    let t = tessellate_scheduled(&mesh, &stainless()?, &schedule, |_, _| {}, |_| {})
+        .map_err(|e| anyhow!("mask.obj: {e}"))?;
+    let view = View3d {
+        azimuth_deg: 20.0,
+        elevation_deg: 60.0,
+        ..View3d::with_width(width.min(800))
+    };
+    cut(dir, "tessellation-mask", &mesh, &t, &view, "star")
+}
+
+/// Writes `NAME.fold`, `NAME.png` (the folded form seen through `view`) and the checked
+/// `NAME.linuxcnc-fiber.ngc` of the tessellation `t` of `mesh` (with `tucks`) into `dir`, and
+/// prints one line about them; fails when `t` is unusable or the simulated machine finds a
+/// problem.
+fn cut(
+    dir: &Path,
+    name: &str,
+    mesh: &PolyMesh,
+    t: &Tessellation,
+    view: &View3d,
+    tucks: &str,
+) -> Result<()> {
+    if let Some(problem) = t.problem() {
+        bail!("{name}: {problem}");
+    }
+    let u = t.unfolded.as_ref().map_err(|e| anyhow!("{name}: {e}"))?;
+    formats::save(
+        &dir.join(format!("{name}.fold")),
+        &u.pattern,
+        Some(&u.folded),
+    )?;
+    let png = render_folded_png(&u.folded, view)?;
     write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;
     let job = super::demo::checked_job(&u.pattern, "linuxcnc-fiber", "stainless-0.5")?;
     let path = dir.join(format!("{name}.linuxcnc-fiber.ngc"));
     write_atomic(&path, job.gcode.as_bytes()).with_context(|| path.display().to_string())?;
     let clean = job.clean;
     let r = &t.report.last;
+    let distance = corner_distance(mesh, &t.mesh).map_or(String::new(), |d| {
+        format!(
+            ", face corners within {:.1} mm of the input (mean {:.1} mm)",
+            d.max, d.mean
+        )
+    });
+    let remeshed = t
+        .remeshed
+        .map_or(String::new(), |r| format!(" (re-triangulated to {})", r.faces[1]));
     println!(
-        "\n{name} (tessellation, Tachi 2014): {} faces -> {} triangles with truncated stars, solved in {} \
-         iterations (developable to {:.0e} rad, folds <= {:.1} deg, creases >= {:.1} deg apart); \
-         linuxcnc-fiber/stainless-0.5 perforation {}; {name}.png shows it folded",
+        "\n{name} (tessellation, Tachi 2014): {} faces{remeshed} -> {} triangles with {} tucks, \
+         shrink {}, solved in {} iterations (developable to {:.0e} rad, folds <= {:.1} deg, \
+         creases >= {:.1} deg apart){distance}; linuxcnc-fiber/stainless-0.5 perforation {}; \
+         {name}.png shows it folded",
         mesh.faces().len(),
         t.mesh.triangles.len(),
+        tucks,
+        t.initial.shrink,
         t.report.iterations,
         r.developability.max(1e-16),
         r.max_fold.to_degrees(),

@@ -2,7 +2,9 @@
 //! where the amount of work is known, a spinner with the elapsed time where it is not. Both
 //! draw nothing when standard error is not a terminal, so logs and pipes stay clean.
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
+
+use foldcam::design::source::tessellate::{SolvePlan, SolveTracker};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
@@ -14,6 +16,17 @@ pub fn bar(len: u64, what: &str) -> ProgressBar {
         .progress_chars("=> ");
     bar.set_style(style);
     bar.set_message(what.to_string());
+    bar
+}
+
+/// A bar over a solve's `len` iterations whose message says where the tessellation stands
+/// ([`SolveTracker::status`]: the solve of the schedule, the residual, the time left).
+fn solve_bar(len: u64) -> ProgressBar {
+    let bar = ProgressBar::with_draw_target(Some(len), target());
+    let style = ProgressStyle::with_template("[{bar:24}] iteration {pos}/{len} {elapsed}: {msg}")
+        .unwrap_or_else(|_| ProgressStyle::default_bar())
+        .progress_chars("=> ");
+    bar.set_style(style);
     bar
 }
 
@@ -45,14 +58,18 @@ pub struct DesignProgress {
     /// The solver's iteration cap, when a bar should count iterations.
     pub iterations: Option<u64>,
     bar: Option<ProgressBar>,
+    /// Where a tessellation stands, and when it started (set on `busy`).
+    tracker: Option<(SolveTracker, Option<Instant>)>,
 }
 
 impl DesignProgress {
-    /// A bar over `iterations` solver iterations while solving.
-    pub fn counting(iterations: u64) -> DesignProgress {
+    /// A bar over each solve's iterations of `plan`, with the solve, the residual and the
+    /// time left in its message.
+    pub fn solving(plan: SolvePlan) -> DesignProgress {
         DesignProgress {
-            iterations: Some(iterations),
+            iterations: Some(plan.max_iterations as u64),
             bar: None,
+            tracker: Some((SolveTracker::new(plan), None)),
         }
     }
 }
@@ -66,9 +83,13 @@ impl foldcam::design::source::Progress for DesignProgress {
     }
 
     fn busy(&mut self, what: &str) {
-        self.bar = Some(match self.iterations {
-            Some(n) => bar(n, what),
-            None => spinner(what),
+        self.bar = Some(match (self.iterations, &mut self.tracker) {
+            (Some(n), Some((_, started))) => {
+                *started = Some(Instant::now());
+                solve_bar(n)
+            }
+            (Some(n), None) => bar(n, what),
+            (None, _) => spinner(what),
         });
     }
 
@@ -83,6 +104,10 @@ impl foldcam::design::source::Progress for DesignProgress {
         match &self.bar {
             Some(bar) => {
                 bar.set_position(it.index as u64);
+                if let Some((tracker, Some(started))) = &mut self.tracker {
+                    tracker.iteration(it, started.elapsed().as_secs_f64());
+                    bar.set_message(tracker.status());
+                }
                 bar.suspend(|| eprintln!("{line}"));
             }
             None => eprintln!("{line}"),

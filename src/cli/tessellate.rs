@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::source::tess_design::{self, TessSettings};
-use foldcam::design::source::tessellate::{MAX_ITERATIONS, TessellationOptions, tessellate_mesh};
+use foldcam::design::source::tessellate::{
+    MAX_ITERATIONS, TessellationOptions, solve_plan, tessellate_mesh,
+};
 use foldcam::design::source::{
     DesignFile, DesignKind, SourceError, mesh_path_beside, read_design_file,
 };
@@ -145,7 +147,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     // The design file's options over the material's, the command line's over both.
     from_file.apply_to(&mut options);
     settings(&args).apply_to(&mut options);
-    let mut progress = DesignProgress::counting(options.max_iterations as u64);
+    let mut progress = DesignProgress::solving(solve_plan(&mesh, &options)?);
     let result = tessellate_mesh(&mesh_path, &mesh, &options, &mut progress);
     // The report is printed whether or not the result is usable.
     let lines: &[String] = match &result {

@@ -76,6 +76,10 @@ const EXAMPLES: &[(&str, &[u8])] = &[
         "bell.obj",
         include_bytes!("../../examples/tessellation/bell.obj"),
     ),
+    (
+        "mask.obj",
+        include_bytes!("../../examples/tessellation/mask.obj"),
+    ),
 ];
 
 /// A loaded mesh.

@@ -10,7 +10,7 @@ use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessMesh,
     TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
-    tessellate_scheduled,
+    curvature_advice, tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -245,6 +245,11 @@ pub fn tessellate_outcome(
         solve_estimate(mesh.faces().len()),
         shrinks.len()
     ));
+    // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
+    let advice = curvature_advice(mesh).map(|a| a.describe()).unwrap_or_default();
+    for line in &advice {
+        progress.note(line.clone());
+    }
     let asked = options.shrink.is_some();
     stop_if_cancelled_early(progress)?;
     progress.busy("solving");
@@ -340,6 +345,7 @@ pub fn tessellate_outcome(
         }
         (problem, unfolded) => {
             let why = problem.or(unfolded.err().map(|e| e.to_string()));
+            lines.extend(advice);
             lines.push(format!("nothing written: {}", why.unwrap_or_default()));
             Err(lines)
         }
@@ -350,4 +356,298 @@ pub fn tessellate_outcome(
         tolerance: opts.solve.tolerance,
         design,
     })
+}
+
+/// One solve of a [`SolvePlan`]: the face shrink and whether on the re-triangulation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlannedSolve {
+    /// Face shrink.
+    pub shrink: f64,
+    /// On the near-regular re-triangulation rather than the input's own triangles.
+    pub remeshed: bool,
+}
+
+/// What a tessellation will try, in order, and what one solve is expected to cost: the
+/// schedule of [`tessellate_scheduled`] (which stops at the first usable result) with the
+/// up-front estimate of [`solve_estimate`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolvePlan {
+    /// The solves, in the order they are tried.
+    pub solves: Vec<PlannedSolve>,
+    /// Expected seconds of one solve, up front.
+    pub seconds_per_solve: f64,
+    /// Newton iteration cap of each solve.
+    pub max_iterations: usize,
+    /// Developability the solve stops at, radians.
+    pub tolerance: f64,
+}
+
+/// The plan `tessellate_outcome` follows for `mesh` with `options` (the re-triangulation
+/// first when the input has a face corner sharper than the vertex-angle limit, as
+/// [`Remesh::Auto`] decides).
+///
+/// # Errors
+/// As [`TessellationOptions::to_solver`].
+pub fn solve_plan(mesh: &PolyMesh, options: &TessellationOptions) -> Result<SolvePlan, SourceError> {
+    let opts = options.to_solver()?;
+    let shrinks = options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
+    let sharp = crate::design::tessellation::remesh::min_corner_angle(mesh)
+        < opts.solve.limits.min_vertex_angle;
+    let order: &[bool] = match options.remesh {
+        Remesh::Never => &[false],
+        Remesh::Only => &[true],
+        Remesh::Auto if sharp => &[true, false],
+        Remesh::Auto => &[false, true],
+    };
+    let faces = options.remesh_faces.unwrap_or(mesh.faces().len());
+    Ok(SolvePlan {
+        solves: order
+            .iter()
+            .flat_map(|&remeshed| {
+                shrinks.iter().map(move |&shrink| PlannedSolve { shrink, remeshed })
+            })
+            .collect(),
+        seconds_per_solve: solve_estimate(faces.max(mesh.faces().len())).seconds,
+        max_iterations: opts.solve.max_iterations,
+        tolerance: opts.solve.tolerance,
+    })
+}
+
+/// Iterations of the developability residual's recent history a [`SolveTracker`] reads its
+/// rate of decrease from.
+pub const RATE_WINDOW: usize = 5;
+
+/// Where a running tessellation stands, for a progress display: which solve of the
+/// [`SolvePlan`] runs (a new one is recognised by the iteration count starting again), its
+/// residual, and the time it has left.
+///
+/// The time left in the running solve is its observed seconds per iteration times the
+/// iterations left, read off the developability residual `r`: Newton–Raphson steps cut it
+/// by a roughly constant factor `q < 1` per iteration while far from the solution (the
+/// geometric mean over the last [`RATE_WINDOW`] iterations), so reaching the tolerance `τ`
+/// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations are seen
+/// the up-front estimate (minus the time spent) stands in. Times are passed in, so nothing
+/// here reads a clock. A solve that makes no iteration (refused before solving, or a
+/// re-triangulation that cannot be made) is not seen, so the solves after it are named one
+/// place early.
+#[derive(Clone, Debug)]
+pub struct SolveTracker {
+    plan: SolvePlan,
+    /// Index into `plan.solves` of the running solve.
+    solve: usize,
+    /// Seconds since the start when the running solve began.
+    started: f64,
+    /// Seconds since the start at the last iteration.
+    now: f64,
+    /// Iteration number of the last iteration (1-based; 0 before the first).
+    index: usize,
+    /// Developability residuals of the running solve, latest last (at most RATE_WINDOW + 1).
+    residuals: Vec<f64>,
+}
+
+impl SolveTracker {
+    /// A tracker at the start of `plan`.
+    pub fn new(plan: SolvePlan) -> SolveTracker {
+        SolveTracker {
+            plan,
+            solve: 0,
+            started: 0.0,
+            now: 0.0,
+            index: 0,
+            residuals: Vec::new(),
+        }
+    }
+
+    /// Hears one solver iteration, `seconds` after the tessellation started.
+    pub fn iteration(&mut self, it: &Iteration, seconds: f64) {
+        if it.index <= self.index {
+            // The iteration count started again: the next solve of the plan runs.
+            self.solve = (self.solve + 1).min(self.plan.solves.len().saturating_sub(1));
+            self.started = self.now;
+            self.residuals.clear();
+        }
+        self.index = it.index;
+        self.now = seconds;
+        self.residuals.push(it.residuals.developability);
+        if self.residuals.len() > RATE_WINDOW + 1 {
+            self.residuals.remove(0);
+        }
+    }
+
+    /// The running solve of the plan (0-based) and how many there are at most.
+    pub fn solve(&self) -> (usize, usize) {
+        (self.solve, self.plan.solves.len())
+    }
+
+    /// Seconds the running solve has left, see the type's docs.
+    pub fn seconds_left(&self) -> f64 {
+        let spent = self.now - self.started;
+        let cap_left = self.plan.max_iterations.saturating_sub(self.index) as f64;
+        if self.index < 2 || self.residuals.len() < 2 {
+            return (self.plan.seconds_per_solve - spent).max(0.0);
+        }
+        let per_iteration = spent / self.index as f64;
+        let (first, last) = (self.residuals[0], self.residuals[self.residuals.len() - 1]);
+        let steps = (self.residuals.len() - 1) as f64;
+        let tolerance = self.plan.tolerance.max(f64::MIN_POSITIVE);
+        let left = if last <= tolerance {
+            0.0
+        } else if first > last && last > 0.0 {
+            // ln(1/q) per iteration, from the geometric mean of the recent decrease.
+            let rate = (first / last).ln() / steps;
+            ((last / tolerance).ln() / rate).min(cap_left)
+        } else {
+            cap_left
+        };
+        per_iteration * left
+    }
+
+    /// One line for a progress bar: the solve of the plan, the residual, the time left.
+    pub fn status(&self) -> String {
+        let (k, n) = self.solve();
+        let solve = self.plan.solves.get(k);
+        let what = solve.map_or(String::new(), |s| {
+            format!(
+                "shrink {} on the {} ",
+                s.shrink,
+                if s.remeshed {
+                    "re-triangulation"
+                } else {
+                    "input's triangles"
+                }
+            )
+        });
+        let residual = self
+            .residuals
+            .last()
+            .map_or(String::new(), |r| format!(", developability {r:.1e} rad"));
+        format!(
+            "{what}(solve {} of at most {n}){residual}, about {} left in this solve",
+            k + 1,
+            seconds_text(self.seconds_left())
+        )
+    }
+}
+
+/// A duration for a progress line: "12 s", "3 min", "2 h".
+pub fn seconds_text(seconds: f64) -> String {
+    if seconds < 90.0 {
+        format!("{:.0} s", seconds.max(0.0))
+    } else if seconds < 5400.0 {
+        format!("{:.0} min", seconds / 60.0)
+    } else {
+        format!("{:.1} h", seconds / 3600.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::tessellation::Residuals;
+
+    fn plan() -> SolvePlan {
+        SolvePlan {
+            solves: vec![
+                PlannedSolve {
+                    shrink: 0.8,
+                    remeshed: false,
+                },
+                PlannedSolve {
+                    shrink: 0.7,
+                    remeshed: true,
+                },
+            ],
+            seconds_per_solve: 10.0,
+            max_iterations: 200,
+            tolerance: 1e-10,
+        }
+    }
+
+    fn it(index: usize, developability: f64) -> Iteration {
+        Iteration {
+            index,
+            residuals: Residuals {
+                developability,
+                ..Residuals::default()
+            },
+            active: [0; 8],
+            step: 1.0,
+            cg_iterations: 0,
+        }
+    }
+
+    /// A residual falling tenfold per iteration, one iteration a second: from 1e-2 it takes
+    /// 8 more iterations to reach 1e-10, so 8 s (closed form of the geometric decrease).
+    #[test]
+    fn time_left_follows_the_residual_decrease_and_the_iteration_rate() {
+        let mut t = SolveTracker::new(plan());
+        // Before two iterations the up-front estimate minus the time spent.
+        t.iteration(&it(1, 1.0), 1.0);
+        assert!((t.seconds_left() - 9.0).abs() < 1e-12);
+        for k in 2..=3 {
+            t.iteration(&it(k, 10f64.powi(1 - k as i32)), k as f64);
+        }
+        assert!((t.seconds_left() - 8.0).abs() < 1e-9, "{}", t.seconds_left());
+        // A residual that does not fall: the iterations up to the cap.
+        let mut flat = SolveTracker::new(plan());
+        for k in 1..=4 {
+            flat.iteration(&it(k, 0.5), 0.5 * k as f64);
+        }
+        assert!((flat.seconds_left() - 0.5 * 196.0).abs() < 1e-9);
+        // Reached: nothing left.
+        t.iteration(&it(4, 1e-12), 4.0);
+        assert_eq!(t.seconds_left(), 0.0);
+    }
+
+    /// The count starting again is the next solve of the plan, timed from its own start.
+    #[test]
+    fn a_new_solve_is_recognised_and_named() {
+        let mut t = SolveTracker::new(plan());
+        t.iteration(&it(1, 1.0), 1.0);
+        t.iteration(&it(2, 0.1), 2.0);
+        assert_eq!(t.solve(), (0, 2));
+        assert!(t.status().starts_with("shrink 0.8 on the input's triangles (solve 1 of at most 2)"));
+        t.iteration(&it(1, 1.0), 5.0);
+        assert_eq!(t.solve(), (1, 2));
+        assert!(t.status().contains("shrink 0.7 on the re-triangulation (solve 2 of at most 2)"));
+        // Three seconds into the second solve, up-front estimate 10 s.
+        assert!((t.seconds_left() - 7.0).abs() < 1e-12);
+        assert!(t.status().contains("developability 1.0e0 rad"), "{}", t.status());
+        assert!(t.status().ends_with("about 7 s left in this solve"), "{}", t.status());
+    }
+
+    #[test]
+    fn durations_read_in_seconds_minutes_or_hours() {
+        assert_eq!(seconds_text(12.4), "12 s");
+        assert_eq!(seconds_text(600.0), "10 min");
+        assert_eq!(seconds_text(7200.0), "2.0 h");
+    }
+
+    /// The plan follows the schedule: a sharp input is re-triangulated first.
+    #[test]
+    fn the_plan_is_the_schedule() {
+        let cap = crate::design::tessellation::spherical_cap(12, 3, 60.0, 100.0);
+        let p = solve_plan(&cap, &TessellationOptions::default()).unwrap();
+        assert_eq!(p.solves.len(), 2 * SHRINK_LADDER.len());
+        // The 12-valent pole's face corners are 30 deg minus the curvature: sharper than 30.
+        assert!(p.solves[0].remeshed && !p.solves[SHRINK_LADDER.len()].remeshed);
+        let flat = crate::design::tessellation::sample_surface(
+            crate::design::tessellation::SampleSurface::Saddle,
+            2,
+            20.0,
+        );
+        let one = TessellationOptions {
+            shrink: Some(0.5),
+            remesh: Remesh::Never,
+            ..TessellationOptions::default()
+        };
+        let p = solve_plan(&flat, &one).unwrap();
+        assert_eq!(
+            p.solves,
+            vec![PlannedSolve {
+                shrink: 0.5,
+                remeshed: false
+            }]
+        );
+    }
 }

@@ -27,6 +27,7 @@
 //! [`tessellate_scheduled`] as the default does; [`distance`] measures how far the folded
 //! form lies from the input surface.
 
+pub(crate) mod advice;
 pub(crate) mod boundary;
 pub(crate) mod constraints;
 pub(crate) mod diagnose;
@@ -50,6 +51,7 @@ pub(crate) mod vertex_penalty;
 
 use thiserror::Error;
 
+pub use advice::{CurvatureAdvice, curvature_advice};
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{SurfaceDistance, corner_distance};
@@ -62,7 +64,7 @@ pub use pipeline::{
     tessellate, tessellate_scheduled, tessellate_shrinking, tessellate_with_face_shrink,
 };
 pub use remesh::{RemeshReport, remesh};
-pub use samples::{SampleSurface, sample_surface, spherical_cap};
+pub use samples::{MASK_SIZE_MM, SampleSurface, face_mask, sample_surface, spherical_cap};
 pub use solver::{Iteration, SolveOptions, SolveReport, solve};
 pub use star::{
     InitialPattern, StarOptions, TuckLayout, max_star_points, star_tucks, star_tucks_shrunk,

@@ -80,23 +80,37 @@ pub fn sample_surface(surface: SampleSurface, rings: usize, edge: f64) -> PolyMe
 /// counter-clockwise seen from outside. Clamps: `n` to 3..=64, `rings` to 1..=128,
 /// `cap_deg` to (0, 180).
 pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyMesh {
-    let n = n.clamp(3, 64);
-    let rings = rings.clamp(1, 128);
     let cap = cap_deg.clamp(MIN_CAP_DEG, 179.0).to_radians();
-    let mut positions = vec![DVec3::ZERO];
-    // First index of ring k (ring 0 is the pole).
-    let mut start = vec![0usize];
-    for k in 1..=rings {
-        start.push(positions.len());
-        let phi = cap * k as f64 / rings as f64;
-        let count = n * k;
-        for i in 0..count {
-            let a = 2.0 * std::f64::consts::PI * i as f64 / count as f64;
-            positions.push(DVec3::new(
+    let (polar, faces) = polar_disk(n, rings);
+    let positions = polar
+        .iter()
+        .map(|&(rho, a)| {
+            let phi = cap * rho;
+            DVec3::new(
                 radius * phi.sin() * a.cos(),
                 radius * phi.sin() * a.sin(),
                 radius * (phi.cos() - 1.0),
-            ));
+            )
+        })
+        .collect();
+    PolyMesh::new(positions, faces).expect("a spherical cap is a valid mesh")
+}
+
+/// The connectivity of [`spherical_cap`] on the unit disk: per vertex its radius in [0, 1]
+/// (ring `k` of `rings` at `k / rings`) and its azimuth, radians; and the faces,
+/// counter-clockwise seen from +z. Clamps `n` to 3..=64 and `rings` to 1..=128.
+fn polar_disk(n: usize, rings: usize) -> (Vec<(f64, f64)>, Vec<Vec<u32>>) {
+    let n = n.clamp(3, 64);
+    let rings = rings.clamp(1, 128);
+    let mut polar = vec![(0.0, 0.0)];
+    // First index of ring k (ring 0 is the pole).
+    let mut start = vec![0usize];
+    for k in 1..=rings {
+        start.push(polar.len());
+        let count = n * k;
+        for i in 0..count {
+            let a = 2.0 * std::f64::consts::PI * i as f64 / count as f64;
+            polar.push((k as f64 / rings as f64, a));
         }
     }
     let at = |k: usize, i: usize| -> u32 {
@@ -123,7 +137,74 @@ pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyM
             }
         }
     }
-    PolyMesh::new(positions, faces).expect("a spherical cap is a valid mesh")
+    (polar, faces)
+}
+
+/// Half width, half height and depth of [`face_mask`]'s shell, mm: an adult face's front
+/// (about 150 × 190 mm; with the features 53 mm from the rim's plane to the nose tip).
+pub const MASK_SIZE_MM: [f64; 3] = [75.0, 95.0, 40.0];
+
+/// One raised (or sunken, negative height) feature of [`face_mask`]: a Gaussian bump at
+/// `(u, v)` in units of the half width and half height, with standard deviations `(su, sv)`
+/// in the same units and `height` in mm; mirrored about the vertical axis when `pair`.
+struct Feature {
+    u: f64,
+    v: f64,
+    su: f64,
+    sv: f64,
+    height: f64,
+    pair: bool,
+}
+
+/// The features of [`face_mask`]: nose ridge and tip, brows, eye sockets, cheeks, chin.
+const MASK_FEATURES: [Feature; 7] = [
+    // Nose bridge: a narrow ridge from between the eyes down to the tip.
+    Feature { u: 0.0, v: -0.08, su: 0.08, sv: 0.2, height: 8.0, pair: false },
+    // Nose tip.
+    Feature { u: 0.0, v: -0.3, su: 0.11, sv: 0.09, height: 11.0, pair: false },
+    // Brows.
+    Feature { u: 0.34, v: 0.3, su: 0.2, sv: 0.07, height: 5.0, pair: true },
+    // Eye sockets.
+    Feature { u: 0.34, v: 0.12, su: 0.12, sv: 0.09, height: -8.0, pair: true },
+    // Cheekbones.
+    Feature { u: 0.46, v: -0.22, su: 0.17, sv: 0.15, height: 6.0, pair: true },
+    // Lips.
+    Feature { u: 0.0, v: -0.56, su: 0.2, sv: 0.07, height: 3.0, pair: false },
+    // Chin.
+    Feature { u: 0.0, v: -0.82, su: 0.18, sv: 0.1, height: 6.0, pair: false },
+];
+
+/// A face-mask-like open surface (Tachi 2014 shows a mask among its examples), our own
+/// procedural model: an elliptic shell of half width, half height and depth [`MASK_SIZE_MM`]
+/// seen from +z (the face looks up the z axis, the top of the head towards +y), with a nose
+/// ridge and tip, brows, eye sockets, cheekbones, mouth area and chin as Gaussian bumps; no
+/// eye holes (a disk with one boundary). Triangulated as a modelling program fills a disk:
+/// the connectivity of [`spherical_cap`] with `n = 6` (every vertex valence 6), `6·rings²`
+/// faces, ring `k` on the ellipse of `k / rings` of the outline. The shell is the elliptic
+/// paraboloid `depth · (1 − r²)`, `r` the outline's normalized radius. `rings` is clamped to
+/// 1..=128.
+pub fn face_mask(rings: usize) -> PolyMesh {
+    let [a, b, depth] = MASK_SIZE_MM;
+    let (polar, faces) = polar_disk(6, rings);
+    let bump = |u: f64, v: f64, f: &Feature| {
+        let g = |u: f64| {
+            let (du, dv) = ((u - f.u) / f.su, (v - f.v) / f.sv);
+            f.height * (-0.5 * (du * du + dv * dv)).exp()
+        };
+        if f.pair { g(u) + g(-u) } else { g(u) }
+    };
+    let positions = polar
+        .iter()
+        .map(|&(r, angle)| {
+            let (u, v) = (r * angle.cos(), r * angle.sin());
+            let shell = depth * (1.0 - r * r);
+            // The features fade out towards the rim so the outline stays a plane curve.
+            let fade = 1.0 - r.powi(4);
+            let z = shell + fade * MASK_FEATURES.iter().map(|f| bump(u, v, f)).sum::<f64>();
+            DVec3::new(a * u, b * v, z)
+        })
+        .collect();
+    PolyMesh::new(positions, faces).expect("a face mask is a valid mesh")
 }
 
 #[cfg(test)]
