@@ -20,11 +20,14 @@
 //!   input's own triangles), to its result. These caps do not reach a usable result yet
 //!   (at 2,028 faces every shrink ends with face collisions or a stalled solve, about 330 s
 //!   in all on two cores), so the cases run only with `FOLDCAM_BENCH_LARGE=1` and time the
-//!   path whatever its outcome. With the same variable, one truncated-star solve of the
-//!   remeshed 2,028-face cap (2,022 faces, shrink 0.45): every limit met, but the folded
-//!   form's outer rings collide (Tachi 2014, Fig. 14: the tucks grow towards the boundary).
+//!   path whatever its outcome. With the same variable, group `tessellation_scale`: one
+//!   truncated-star solve (shrink 0.45, stainless limits) of each cap remeshed (2,022 and
+//!   10,086 faces): every limit met, but the folded forms' outer rings collide (Tachi 2014,
+//!   Fig. 14: the tucks grow towards the boundary).
 //!
-//! Run with `cargo bench --bench tessellation -- --quick`.
+//! Run with `cargo bench --bench tessellation -- --quick`; the scale group alone with
+//! `FOLDCAM_BENCH_LARGE=1 cargo bench --bench tessellation -- tessellation_scale` (the
+//! 10,086-face case takes ten solves of some minutes each).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use foldcam::design::tessellation::{
@@ -78,28 +81,37 @@ fn bench(c: &mut Criterion) {
             });
         }
     }
-    if std::env::var_os("FOLDCAM_BENCH_LARGE").is_some() {
-        // One solve of the remeshed 2,028-face cap with truncated stars at shrink 0.45: it
-        // meets every limit (about 60 iterations) but the folded form's outer rings collide.
-        let cap = spherical_cap(12, 13, 60.0, 100.0);
-        let (mesh, _) = remesh(&cap, cap.faces().len()).expect("remesh");
-        let mut opts = TessellateOptions::with_limits(Limits::from_degrees(165.0, 30.0));
-        opts.star.tuck.kind = TuckKind::Truncated;
-        opts.star.shrink = 0.45;
-        g.bench_function(
-            format!(
-                "cap_{}_faces_remeshed_truncated_shrink_0.45_one_solve",
-                mesh.faces().len()
-            ),
-            |b| {
-                b.iter(|| {
-                    let t = tessellate(&mesh, &opts, |_| {}).expect("valid options");
-                    (t.report.iterations, t.report.converged)
-                })
-            },
-        );
-    }
     g.finish();
+    if std::env::var_os("FOLDCAM_BENCH_LARGE").is_some() {
+        // The scale targets as one solve each: the remeshed 2,028-face cap (2,022
+        // faces, about 60 iterations) and 10,092-face cap (10,086 faces, about 100
+        // iterations) with truncated stars at shrink 0.45 and the stainless limits. Both meet
+        // every limit, but the folded forms' outer rings collide (Tachi 2014, Fig. 14: the
+        // tucks grow towards the boundary). Ten samples, the fewest criterion takes.
+        let mut g = c.benchmark_group("tessellation_scale");
+        g.sample_size(10);
+        for rings in [13, 29] {
+            let cap = spherical_cap(12, rings, 60.0, 100.0);
+            let (mesh, _) = remesh(&cap, cap.faces().len()).expect("remesh");
+            let mut opts = TessellateOptions::with_limits(Limits::from_degrees(165.0, 30.0));
+            opts.star.tuck.kind = TuckKind::Truncated;
+            opts.star.shrink = 0.45;
+            g.bench_function(
+                format!(
+                    "cap_{}_faces_remeshed_truncated_shrink_0.45_one_solve",
+                    mesh.faces().len()
+                ),
+                |b| {
+                    b.iter(|| {
+                        let t = tessellate(&mesh, &opts, |_| {}).expect("valid options");
+                        assert!(t.report.converged, "{}", t.report.summary());
+                        t.report.iterations
+                    })
+                },
+            );
+        }
+        g.finish();
+    }
 }
 
 criterion_group!(benches, bench);

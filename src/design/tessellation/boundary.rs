@@ -79,13 +79,19 @@ pub fn rows(
         if sum + PI >= hold * margin || !seen.insert((i, len)) {
             continue;
         }
+        // A run's gradient sums those of its vertices' angle sums (a map, not a search of
+        // the entries so far: runs can span hundreds of vertices).
         let mut entries: Blocks = Vec::new();
+        let mut slot: HashMap<u32, usize> = HashMap::new();
         for k in 0..len {
             let v = loop_vertices[(i + k) % loop_vertices.len()];
             for &(w, g) in angle_rows.get(&v).map_or(&[][..], |r| &r.1[..]) {
-                match entries.iter_mut().find(|(u, _)| *u == w) {
-                    Some((_, acc)) => *acc -= g,
-                    None => entries.push((w, -g)),
+                match slot.get(&w) {
+                    Some(&at) => entries[at].1 -= g,
+                    None => {
+                        slot.insert(w, entries.len());
+                        entries.push((w, -g));
+                    }
                 }
             }
         }

@@ -382,9 +382,12 @@ pub struct Residuals {
 
 /// Measures [`Residuals`] at `x` (the ground distance against `ground_z`).
 pub fn residuals(mesh: &TessMesh, x: &[DVec3], ground_z: Option<f64>) -> Residuals {
-    let defects = angle_defects(mesh, x);
-    let developability = defects.iter().fold(0.0f64, |m, d| m.max(d.abs()));
     let sums = angle_sums(mesh, x);
+    let developability = sums
+        .iter()
+        .zip(&mesh.interior)
+        .filter(|(_, inside)| **inside)
+        .fold(0.0f64, |m, (s, _)| m.max((2.0 * PI - s).abs()));
     let (illegal_creases, max_penalty) = vertex_penalty::measure(x, &mesh.fans);
     let mut r = Residuals {
         illegal_creases,

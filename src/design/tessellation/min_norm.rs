@@ -10,7 +10,7 @@ use std::cell::OnceCell;
 use faer::Side;
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::Llt;
-use faer::sparse::{SparseColMat, Triplet};
+use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 use glam::DVec3;
 
 use super::constraints::Row;
@@ -204,43 +204,64 @@ impl Preconditioner {
 }
 
 /// The sparse Cholesky factor of `C Cᵀ + shift·I`, `None` when it is not positive definite.
-/// The lower triangle is assembled row by row: row `r` is scattered over the vertices, and
-/// every earlier row sharing a vertex with it is dotted against the scatter once (long rows,
-/// such as eq. 2's boundary runs, would otherwise add one product per shared vertex).
+/// The lower triangle is assembled vertex by vertex: `C Cᵀ = Σ_v C_v C_vᵀ` over the 3-column
+/// blocks `C_v`, so a pair of rows costs one product per vertex they share (long rows, such
+/// as eq. 2's boundary runs, would otherwise cost their whole length per row they meet).
 fn factor(c: &Jacobian, shift: f64) -> Option<Llt<usize, f64>> {
     let m = c.rows();
-    let mut touching: Vec<Vec<u32>> = vec![Vec::new(); c.n];
+    // The blocks touching every vertex, by increasing row.
+    let mut start = vec![0usize; c.n + 1];
+    for &v in &c.vertices {
+        start[v as usize + 1] += 1;
+    }
+    for v in 0..c.n {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut by_vertex = vec![(0u32, DVec3::ZERO); c.vertices.len()];
     for r in 0..m {
-        for (v, _) in c.row(r) {
-            touching[v].push(r as u32);
+        for k in c.offsets[r]..c.offsets[r + 1] {
+            let v = c.vertices[k] as usize;
+            by_vertex[fill[v]] = (r as u32, c.blocks[k]);
+            fill[v] += 1;
         }
     }
-    let mut scatter = vec![DVec3::ZERO; c.n];
+    // Row r's lower entries (q ≤ r): every vertex of r, every earlier row at that vertex.
+    let mut acc = vec![0.0; m];
     let mut seen = vec![u32::MAX; m];
-    let mut met = Vec::new();
-    let mut entries: Vec<Triplet<usize, usize, f64>> = Vec::new();
+    let mut met: Vec<u32> = Vec::new();
+    // Row r's lower entries are column r of the upper triangle, stored directly.
+    let mut col_ptr = Vec::with_capacity(m + 1);
+    col_ptr.push(0usize);
+    let (mut row_idx, mut values) = (Vec::new(), Vec::new());
     for r in 0..m {
         met.clear();
-        for (v, b) in c.row(r) {
-            scatter[v] += b;
-            for &q in touching[v].iter().take_while(|&&q| q as usize <= r) {
+        for k in c.offsets[r]..c.offsets[r + 1] {
+            let (v, b) = (c.vertices[k] as usize, c.blocks[k]);
+            for &(q, bq) in &by_vertex[start[v]..start[v + 1]] {
+                if q as usize > r {
+                    break;
+                }
                 if seen[q as usize] != r as u32 {
                     seen[q as usize] = r as u32;
+                    acc[q as usize] = 0.0;
                     met.push(q);
                 }
+                acc[q as usize] += b.dot(bq);
             }
         }
+        met.sort_unstable();
         for &q in &met {
-            let dot: f64 = c.row(q as usize).map(|(v, b)| b.dot(scatter[v])).sum();
-            let value = if q as usize == r { dot + shift } else { dot };
-            entries.push(Triplet::new(r, q as usize, value));
+            let q = q as usize;
+            row_idx.push(q);
+            values.push(if q == r { acc[q] + shift } else { acc[q] });
         }
-        for (v, _) in c.row(r) {
-            scatter[v] = DVec3::ZERO;
-        }
+        col_ptr.push(row_idx.len());
     }
-    let a = SparseColMat::<usize, f64>::try_new_from_triplets(m, m, &entries).ok()?;
-    a.sp_cholesky(Side::Lower).ok()
+    let pattern = SymbolicSparseColMat::new_checked(m, m, col_ptr, None, row_idx);
+    SparseColMat::<usize, f64>::new(pattern, values)
+        .sp_cholesky(Side::Upper)
+        .ok()
 }
 
 #[cfg(test)]
