@@ -28,6 +28,7 @@
 //! form lies from the input surface.
 
 pub(crate) mod boundary;
+pub(crate) mod collision;
 pub(crate) mod constraints;
 pub(crate) mod diagnose;
 pub(crate) mod distance;
