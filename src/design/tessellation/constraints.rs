@@ -26,6 +26,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use super::boundary;
+use super::collision;
 use super::geometry::{corner_angle, fold_angle, relative_height};
 use super::model::{EdgeRole, TessMesh};
 use super::vertex_penalty;
@@ -48,6 +49,13 @@ pub struct Limits {
     pub ground_z: Option<f64>,
     /// Whether the vertex-adjacent penalty rows (eq. 5–7) are active (the paper: always).
     pub vertex_penalty: bool,
+    /// Collision rows ([`collision`]; beyond the paper, which leaves these to the user's
+    /// eye): a face vertex crossing a face it shares no vertex with, or coming closer to it
+    /// than `hold ·` this distance (mesh units, mm), is pushed to this distance in front of
+    /// it; 0 (the default) turns the rows off. Experimental: the rows do not enter the
+    /// convergence test, and on the spherical caps measured they stall the solve (see
+    /// [`collision`]).
+    pub collision_gap: f64,
 }
 
 impl Limits {
@@ -60,6 +68,7 @@ impl Limits {
             hold: 0.5,
             ground_z: None,
             vertex_penalty: true,
+            collision_gap: 0.0,
         }
     }
 }
@@ -91,6 +100,8 @@ pub enum Family {
     /// A flat diagonal (of a polygon face or a truncated star's n-gon) kept flat: eq. 3's
     /// form with ρ_limit = 0 as an equality.
     Flat,
+    /// A vertex crossing or approaching a face it shares no vertex with ([`collision`]).
+    Collision,
 }
 
 /// One constraint: its value and its Jacobian row as (vertex, ∂/∂x) blocks.
@@ -243,6 +254,16 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
             for c in vertex_penalty::illegal_creases(x, fan) {
                 out.extend(penalty_row(c));
             }
+        }
+    }
+    if limits.collision_gap > 0.0 {
+        let gap = limits.collision_gap;
+        for (value, entries) in collision::rows(x, &mesh.triangles, gap, limits.hold) {
+            out.push(Row {
+                family: Family::Collision,
+                value,
+                entries,
+            });
         }
     }
     let mut all: Vec<Row> = dev.into_iter().flatten().collect();

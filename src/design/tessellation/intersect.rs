@@ -238,6 +238,87 @@ mod tests {
         assert!(hinge.is_empty());
     }
 
+    /// Where segment `p`–`q` crosses the closed triangle `t`, by Möller and Trumbore's (1997)
+    /// ray–triangle test: independent of the plane-interval method under test.
+    fn pierce(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> Option<DVec3> {
+        let d = q - p;
+        let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
+        let h = d.cross(e2);
+        let det = e1.dot(h);
+        if det.abs() < 1e-15 {
+            return None;
+        }
+        let s = p - t[0];
+        let u = s.dot(h) / det;
+        let qv = s.cross(e1);
+        let v = d.dot(qv) / det;
+        let w = e2.dot(qv) / det;
+        ((0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0 && (0.0..=1.0).contains(&w))
+            .then(|| p + w * d)
+    }
+
+    /// Length of the segment two triangles share: the span of the points where an edge of
+    /// one pierces the other (two non-coplanar triangles meet in a segment whose ends lie on
+    /// their edges).
+    fn cut_length(a: &[DVec3; 3], b: &[DVec3; 3]) -> f64 {
+        let mut pts = Vec::new();
+        for (s, t) in [(a, b), (b, a)] {
+            for k in 0..3 {
+                pts.extend(pierce(s[k], s[(k + 1) % 3], t));
+            }
+        }
+        let mut best = 0.0f64;
+        for i in 0..pts.len() {
+            for j in i + 1..pts.len() {
+                best = best.max(pts[i].distance(pts[j]));
+            }
+        }
+        best
+    }
+
+    /// Random triangle pairs in a small box, some sharing a vertex: the verdict at tolerance
+    /// `tol` agrees with the independent segment length wherever that length is clearly
+    /// above or below `tol` (no false positives for pairs sharing a vertex either).
+    #[test]
+    fn crossings_agree_with_an_independent_segment_test() {
+        let mut rng = crate::test_rng::TestRng::new(20);
+        let mut point =
+            || DVec3::new(rng.unit(), rng.unit(), rng.unit()) * 10.0 - DVec3::splat(5.0);
+        let tol = 1e-3;
+        let (mut crossing, mut shared_crossing, mut apart) = (0, 0, 0);
+        for case in 0..4000 {
+            let a = [point(), point(), point()];
+            let mut b = [point(), point(), point()];
+            let share = case % 2 == 1;
+            if share {
+                b[0] = a[0];
+            }
+            let positions = [a[0], a[1], a[2], b[0], b[1], b[2]];
+            let tris = if share {
+                [[0, 1, 2], [0, 4, 5]]
+            } else {
+                [[0, 1, 2], [3, 4, 5]]
+            };
+            let found = !intersecting_triangles(&positions, &tris, tol)
+                .unwrap()
+                .is_empty();
+            let len = cut_length(&a, &b);
+            if len > 10.0 * tol {
+                assert!(found, "case {case}: cut {len} mm not found");
+                if share {
+                    shared_crossing += 1;
+                } else {
+                    crossing += 1;
+                }
+            } else if len < 0.1 * tol {
+                assert!(!found, "case {case}: cut {len} mm reported");
+                apart += 1;
+            }
+        }
+        // Every kind of case occurred.
+        assert!(crossing > 50 && shared_crossing > 50 && apart > 500);
+    }
+
     #[test]
     fn bad_input_is_refused() {
         assert!(intersecting_triangles(&T, &[[0, 1, 5]], 1e-6).is_err());

@@ -29,6 +29,7 @@
 
 pub(crate) mod advice;
 pub(crate) mod boundary;
+pub(crate) mod collision;
 pub(crate) mod constraints;
 pub(crate) mod diagnose;
 pub(crate) mod distance;

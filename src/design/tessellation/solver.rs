@@ -310,7 +310,7 @@ fn active_counts(rows: &[Row]) -> [usize; 8] {
             Family::VertexAngle => 3,
             Family::Ground => 4,
             Family::Boundary => 5,
-            Family::VertexPenalty => 6,
+            Family::VertexPenalty | Family::Collision => 6,
             Family::Flat => 7,
         }] += 1;
     }

@@ -1,0 +1,213 @@
+//! Where and when the folded form of a tessellated spherical cap passes through itself: the
+//! solve (Tachi 2014, §3.3) is run in chunks of iterations and after each chunk the
+//! intersecting face pairs are counted; at the end every pair is classified (shrunk input face
+//! or tuck, the input vertices it belongs to, whether they lie on the input boundary, how many
+//! input edges apart the two owners are) and re-checked by an independent segment–triangle
+//! test.
+//!
+//! `cargo run --release --example tessellation_collisions -- N RINGS DEG RADIUS MODE SHRINK REMESH_FACES [CHUNK]`
+//! MODE is star, truncated, twisted or twist; REMESH_FACES 0 keeps the input triangles.
+//! With COLLISION_GAP=MM the solve has collision rows keeping that gap; with GROUND set, the boundary is held on the plane of its lowest vertex (Tachi 2014, §6).
+
+use std::collections::{HashSet, VecDeque};
+use std::time::Instant;
+
+use foldcam::design::tessellation::{
+    Limits, SolveOptions, StarOptions, TessMesh, TuckKind, assign_folds, disk,
+    intersecting_triangles, max_star_points, remesh, solve, spherical_cap, star_tucks,
+};
+use glam::DVec3;
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let a: Vec<String> = std::env::args().skip(1).collect();
+    if a.len() < 7 {
+        return Err("usage: N RINGS DEG RADIUS MODE SHRINK REMESH_FACES [CHUNK]".into());
+    }
+    let mut mesh = spherical_cap(a[0].parse()?, a[1].parse()?, a[2].parse()?, a[3].parse()?);
+    let faces: usize = a[6].parse()?;
+    if faces > 0 {
+        let (m, r) = remesh(&mesh, faces)?;
+        println!("{}", r.describe());
+        mesh = m;
+    }
+    let chunk: usize = a.get(7).map_or(Ok(10), |c| c.parse())?;
+    let mut limits = Limits::from_degrees(165.0, 30.0);
+    let mut star = StarOptions::default();
+    star.tuck.kind = match a[4].as_str() {
+        "star" => TuckKind::Star,
+        "truncated" => TuckKind::Truncated,
+        "twisted" => TuckKind::Twisted,
+        "twist" => TuckKind::TwistFold,
+        m => return Err(format!("unknown mode {m}").into()),
+    };
+    star.shrink = a[5].parse()?;
+    star.max_star_points = Some(max_star_points(limits.min_vertex_angle + limits.margin));
+    let he = disk(&mesh)?;
+    let boundary: Vec<bool> = (0..mesh.positions().len())
+        .map(|v| he.is_boundary(v))
+        .collect();
+    let mut init = star_tucks(&he, &star)?;
+    assign_folds(&mut init.mesh);
+    let mut t = init.mesh.clone();
+    limits.collision_gap = std::env::var("COLLISION_GAP").map_or(Ok(0.0), |g| g.parse())?;
+    if std::env::var("GROUND").is_ok() {
+        limits.ground_z = t
+            .positions
+            .iter()
+            .zip(&t.interior)
+            .filter(|(_, inside)| !**inside)
+            .map(|(p, _)| p.z)
+            .reduce(f64::min);
+        println!("ground at z = {:?}", limits.ground_z);
+    }
+    let tol = 1e-3;
+    let count = |m: &TessMesh| intersecting_triangles(&m.positions, &m.triangles, tol).unwrap();
+    println!(
+        "initial pattern: {} triangles, {} intersecting pairs",
+        t.triangles.len(),
+        count(&t).len()
+    );
+    let start = Instant::now();
+    let mut done = 0;
+    loop {
+        let opts = SolveOptions {
+            limits,
+            max_iterations: chunk,
+            ..SolveOptions::default()
+        };
+        let r = solve(&mut t, &opts, |_| {})?;
+        done += r.iterations;
+        let pairs = count(&t);
+        println!(
+            "after {done:4} it ({:.1} s): dev {:.2e} fold {:.2} angle {:.2} boundary turn {:.1} deg, {} pairs ({} sharing no vertex){}",
+            start.elapsed().as_secs_f64(),
+            r.last.developability,
+            r.last.max_fold.to_degrees(),
+            r.last.min_vertex_angle.to_degrees(),
+            r.last.boundary_turn.to_degrees(),
+            pairs.len(),
+            pairs
+                .iter()
+                .filter(|&&(p, q)| !t.triangles[p].iter().any(|v| t.triangles[q].contains(v)))
+                .count(),
+            if r.converged { ", converged" } else { "" }
+        );
+        // A solve that stops short of its chunk without converging has stalled.
+        if r.converged || r.iterations < chunk || done >= 400 {
+            break;
+        }
+    }
+    let pairs = count(&t);
+    // Owners: a shrunk input face (all three vertices are face corners) names its three input
+    // vertices; a tuck triangle names the input vertex of its tuck vertex.
+    let owner = |tri: [u32; 3]| -> Vec<u32> {
+        if let Some(&v) = tri.iter().find(|&&v| v as usize >= t.corner_count) {
+            vec![t.input_vertex[v as usize]]
+        } else {
+            tri.iter().map(|&v| t.input_vertex[v as usize]).collect()
+        }
+    };
+    let mut neighbours = vec![Vec::new(); mesh.positions().len()];
+    for f in mesh.faces() {
+        for k in 0..f.len() {
+            let (p, q) = (f[k] as usize, f[(k + 1) % f.len()] as usize);
+            neighbours[p].push(q);
+            neighbours[q].push(p);
+        }
+    }
+    let hops = |from: &[u32], to: &[u32]| -> usize {
+        let goal: HashSet<usize> = to.iter().map(|&v| v as usize).collect();
+        let mut seen = vec![false; neighbours.len()];
+        let mut queue: VecDeque<(usize, usize)> = from.iter().map(|&v| (v as usize, 0)).collect();
+        while let Some((v, d)) = queue.pop_front() {
+            if goal.contains(&v) {
+                return d;
+            }
+            if std::mem::replace(&mut seen[v], true) {
+                continue;
+            }
+            queue.extend(neighbours[v].iter().map(|&w| (w, d + 1)));
+        }
+        usize::MAX
+    };
+    let x = &t.positions;
+    let mut kinds = std::collections::BTreeMap::new();
+    let mut confirmed = 0;
+    let mut longest = 0.0f64;
+    for &(p, q) in &pairs {
+        let (tp, tq) = (t.triangles[p], t.triangles[q]);
+        let (op, oq) = (owner(tp), owner(tq));
+        let kind = |o: &Vec<u32>| {
+            let edge = o.iter().any(|&v| boundary[v as usize]);
+            match (o.len(), edge) {
+                (1, false) => "tuck",
+                (1, true) => "boundary tuck",
+                (_, false) => "face",
+                (_, true) => "boundary face",
+            }
+        };
+        let shared = tp.iter().filter(|v| tq.contains(v)).count();
+        let mut names = [kind(&op), kind(&oq)];
+        names.sort();
+        let key = format!(
+            "{} / {}, {} input edges apart, sharing {} vertices",
+            names[0],
+            names[1],
+            hops(&op, &oq),
+            shared
+        );
+        *kinds.entry(key).or_insert(0) += 1;
+        let len = cut_length(&tp.map(|v| x[v as usize]), &tq.map(|v| x[v as usize]));
+        longest = longest.max(len);
+        if len > tol {
+            confirmed += 1;
+        }
+    }
+    println!(
+        "{} pairs at tolerance {tol} mm; the independent test confirms {confirmed} (longest cut {longest:.3} mm)",
+        pairs.len()
+    );
+    for (k, n) in &kinds {
+        println!("  {n:5} {k}");
+    }
+    Ok(())
+}
+
+/// Length of the segment where triangles `a` and `b` meet, found independently of the
+/// library: every edge of either triangle that pierces the other contributes its piercing
+/// point (Möller–Trumbore), and the segment spans those points.
+fn cut_length(a: &[DVec3; 3], b: &[DVec3; 3]) -> f64 {
+    let mut pts = Vec::new();
+    for (s, t) in [(a, b), (b, a)] {
+        for k in 0..3 {
+            if let Some(p) = pierce(s[k], s[(k + 1) % 3], t) {
+                pts.push(p);
+            }
+        }
+    }
+    let mut best = 0.0f64;
+    for i in 0..pts.len() {
+        for j in i + 1..pts.len() {
+            best = best.max(pts[i].distance(pts[j]));
+        }
+    }
+    best
+}
+
+/// Where segment `p`–`q` crosses triangle `t` (closed), if it does.
+fn pierce(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> Option<DVec3> {
+    let d = q - p;
+    let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
+    let h = d.cross(e2);
+    let det = e1.dot(h);
+    if det.abs() < 1e-15 {
+        return None;
+    }
+    let s = p - t[0];
+    let u = s.dot(h) / det;
+    let qv = s.cross(e1);
+    let v = d.dot(qv) / det;
+    let w = e2.dot(qv) / det;
+    let inside = (0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0;
+    (inside && (0.0..=1.0).contains(&w)).then(|| p + w * d)
+}
