@@ -88,7 +88,10 @@ fn mask_solves_within_stainless_limits_and_cuts_clean() {
     // The tucks sit behind the surface; the face corners stay within a few edge lengths'
     // tuck depth of it (edges are about 10 mm here).
     let d = corner_distance(&mesh, &t.mesh).expect("a surface");
-    eprintln!("mask: face corners {:.2} mm max, {:.2} mm mean from the input", d.max, d.mean);
+    eprintln!(
+        "mask: face corners {:.2} mm max, {:.2} mm mean from the input",
+        d.max, d.mean
+    );
     assert!(d.mean < 5.0 && d.max < 20.0, "{d:?}");
     let cp = &t.unfolded.as_ref().expect("unfolds").pattern;
     assert_cuts_clean_on("mask", cp, "linuxcnc-fiber", "stainless-0.5");

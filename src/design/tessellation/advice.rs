@@ -207,7 +207,11 @@ mod tests {
                 }
                 turning += PI - s;
             }
-            assert!((a.total + turning - 2.0 * PI).abs() < 1e-9, "{}", a.total + turning);
+            assert!(
+                (a.total + turning - 2.0 * PI).abs() < 1e-9,
+                "{}",
+                a.total + turning
+            );
         }
     }
 
@@ -233,7 +237,11 @@ mod tests {
             fine.rim_demand()
         );
         // The smooth 60° cap: κρ² = (1/R²)·2πR²(1 − cos φ)/π = 1, so 1/6.
-        assert!((fine.rim_demand() - 1.0 / 6.0).abs() < 0.03, "{}", fine.rim_demand());
+        assert!(
+            (fine.rim_demand() - 1.0 / 6.0).abs() < 0.03,
+            "{}",
+            fine.rim_demand()
+        );
         assert_eq!(coarse.faces_for(coarse.max_defect), 54);
         assert!(fine.total > 0.5 * PI && fine.total < PI, "{}", fine.total);
     }
