@@ -4,6 +4,7 @@
 //! surface, and a clean cut on the fiber laser through the simulated machine.
 
 #[path = "tessellation/checks.rs"]
+#[allow(dead_code)] // shared with tests/tessellation.rs, which uses all of it
 mod checks;
 #[path = "common/cuts_clean.rs"]
 mod cuts_clean;
