@@ -4,6 +4,7 @@
 //! surface, and a clean cut on the fiber laser through the simulated machine.
 
 #[path = "tessellation/checks.rs"]
+#[allow(dead_code)] // shared with tests/tessellation.rs, which uses all of it
 mod checks;
 #[path = "common/cuts_clean.rs"]
 mod cuts_clean;
@@ -26,23 +27,30 @@ fn mask_obj_is_the_procedural_model() {
     assert!(text.lines().next().unwrap().contains("foldcam's own"));
     let file = example("mask");
     let model = face_mask(8);
-    assert_eq!(file.faces(), model.faces());
     assert_eq!(file.faces().len(), 6 * 8 * 8);
-    for (a, b) in file.positions().iter().zip(model.positions()) {
-        assert!(a.distance(*b) < 1e-9, "{a} vs {b}");
+    assert_eq!(file.faces().len(), model.faces().len());
+    assert_eq!(file.positions().len(), model.positions().len());
+    // The reader numbers vertices by first use and keeps single precision (about 1e-5 mm
+    // here): compare the faces corner by corner, by position.
+    for (f, g) in file.faces().iter().zip(model.faces()) {
+        assert_eq!(f.len(), g.len());
+        for (&a, &b) in f.iter().zip(g) {
+            let (p, q) = (file.positions()[a as usize], model.positions()[b as usize]);
+            assert!(p.distance(q) < 1e-4, "{p} vs {q}");
+        }
     }
     let he = HalfEdgeMesh::new(&file, 1e-9).expect("manifold");
     disk(&file).expect("a disk");
     // An elliptic outline of 150 × 190 mm; the nose tip is the highest point, in front.
     let (lo, hi) = file.bounds();
-    assert!(((hi.x - lo.x) - 2.0 * MASK_SIZE_MM[0]).abs() < 1e-9);
-    assert!(((hi.y - lo.y) - 2.0 * MASK_SIZE_MM[1]).abs() < 1e-9);
+    assert!(((hi.x - lo.x) - 2.0 * MASK_SIZE_MM[0]).abs() < 1e-4);
+    assert!(((hi.y - lo.y) - 2.0 * MASK_SIZE_MM[1]).abs() < 1e-4);
     let top = file
         .positions()
         .iter()
         .max_by(|a, b| a.z.total_cmp(&b.z))
         .unwrap();
-    assert!(top.x.abs() < 1e-9 && top.y < 0.0, "{top}");
+    assert!(top.x.abs() < 1e-4 && top.y < 0.0, "{top}");
     for v in 0..file.positions().len() {
         if !he.is_boundary(v) {
             assert_eq!(he.fan(v).len(), 6, "vertex {v}");
@@ -81,7 +89,10 @@ fn mask_solves_within_stainless_limits_and_cuts_clean() {
     // The tucks sit behind the surface; the face corners stay within a few edge lengths'
     // tuck depth of it (edges are about 10 mm here).
     let d = corner_distance(&mesh, &t.mesh).expect("a surface");
-    eprintln!("mask: face corners {:.2} mm max, {:.2} mm mean from the input", d.max, d.mean);
+    eprintln!(
+        "mask: face corners {:.2} mm max, {:.2} mm mean from the input",
+        d.max, d.mean
+    );
     assert!(d.mean < 5.0 && d.max < 20.0, "{d:?}");
     let cp = &t.unfolded.as_ref().expect("unfolds").pattern;
     assert_cuts_clean_on("mask", cp, "linuxcnc-fiber", "stainless-0.5");

@@ -97,9 +97,9 @@ fn cut(
             d.max, d.mean
         )
     });
-    let remeshed = t
-        .remeshed
-        .map_or(String::new(), |r| format!(" (re-triangulated to {})", r.faces[1]));
+    let remeshed = t.remeshed.map_or(String::new(), |r| {
+        format!(" (re-triangulated to {})", r.faces[1])
+    });
     println!(
         "\n{name} (tessellation, Tachi 2014): {} faces{remeshed} -> {} triangles with {} tucks, \
          shrink {}, solved in {} iterations (developable to {:.0e} rad, folds <= {:.1} deg, \

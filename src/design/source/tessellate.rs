@@ -9,8 +9,8 @@ use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessMesh,
-    TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
-    curvature_advice, tessellate_scheduled,
+    TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded, curvature_advice,
+    tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -246,7 +246,9 @@ pub fn tessellate_outcome(
         shrinks.len()
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
-    let advice = curvature_advice(mesh).map(|a| a.describe()).unwrap_or_default();
+    let advice = curvature_advice(mesh)
+        .map(|a| a.describe())
+        .unwrap_or_default();
     for line in &advice {
         progress.note(line.clone());
     }
@@ -388,7 +390,10 @@ pub struct SolvePlan {
 ///
 /// # Errors
 /// As [`TessellationOptions::to_solver`].
-pub fn solve_plan(mesh: &PolyMesh, options: &TessellationOptions) -> Result<SolvePlan, SourceError> {
+pub fn solve_plan(
+    mesh: &PolyMesh,
+    options: &TessellationOptions,
+) -> Result<SolvePlan, SourceError> {
     let opts = options.to_solver()?;
     let shrinks = options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
     let sharp = crate::design::tessellation::remesh::min_corner_angle(mesh)
@@ -404,7 +409,9 @@ pub fn solve_plan(mesh: &PolyMesh, options: &TessellationOptions) -> Result<Solv
         solves: order
             .iter()
             .flat_map(|&remeshed| {
-                shrinks.iter().map(move |&shrink| PlannedSolve { shrink, remeshed })
+                shrinks
+                    .iter()
+                    .map(move |&shrink| PlannedSolve { shrink, remeshed })
             })
             .collect(),
         seconds_per_solve: solve_estimate(faces.max(mesh.faces().len())).seconds,
@@ -587,7 +594,11 @@ mod tests {
         for k in 2..=3 {
             t.iteration(&it(k, 10f64.powi(1 - k as i32)), k as f64);
         }
-        assert!((t.seconds_left() - 8.0).abs() < 1e-9, "{}", t.seconds_left());
+        assert!(
+            (t.seconds_left() - 8.0).abs() < 1e-9,
+            "{}",
+            t.seconds_left()
+        );
         // A residual that does not fall: the iterations up to the cap.
         let mut flat = SolveTracker::new(plan());
         for k in 1..=4 {
@@ -606,14 +617,28 @@ mod tests {
         t.iteration(&it(1, 1.0), 1.0);
         t.iteration(&it(2, 0.1), 2.0);
         assert_eq!(t.solve(), (0, 2));
-        assert!(t.status().starts_with("shrink 0.8 on the input's triangles (solve 1 of at most 2)"));
+        assert!(
+            t.status()
+                .starts_with("shrink 0.8 on the input's triangles (solve 1 of at most 2)")
+        );
         t.iteration(&it(1, 1.0), 5.0);
         assert_eq!(t.solve(), (1, 2));
-        assert!(t.status().contains("shrink 0.7 on the re-triangulation (solve 2 of at most 2)"));
+        assert!(
+            t.status()
+                .contains("shrink 0.7 on the re-triangulation (solve 2 of at most 2)")
+        );
         // Three seconds into the second solve, up-front estimate 10 s.
         assert!((t.seconds_left() - 7.0).abs() < 1e-12);
-        assert!(t.status().contains("developability 1.0e0 rad"), "{}", t.status());
-        assert!(t.status().ends_with("about 7 s left in this solve"), "{}", t.status());
+        assert!(
+            t.status().contains("developability 1.0e0 rad"),
+            "{}",
+            t.status()
+        );
+        assert!(
+            t.status().ends_with("about 7 s left in this solve"),
+            "{}",
+            t.status()
+        );
     }
 
     #[test]

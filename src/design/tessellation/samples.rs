@@ -156,22 +156,34 @@ struct Feature {
     pair: bool,
 }
 
+/// A [`Feature`] in one line: `(u, v, su, sv, height, pair)`.
+const fn feature(u: f64, v: f64, su: f64, sv: f64, height: f64, pair: bool) -> Feature {
+    Feature {
+        u,
+        v,
+        su,
+        sv,
+        height,
+        pair,
+    }
+}
+
 /// The features of [`face_mask`]: nose ridge and tip, brows, eye sockets, cheeks, chin.
 const MASK_FEATURES: [Feature; 7] = [
     // Nose bridge: a narrow ridge from between the eyes down to the tip.
-    Feature { u: 0.0, v: -0.08, su: 0.08, sv: 0.2, height: 8.0, pair: false },
+    feature(0.0, -0.08, 0.08, 0.2, 8.0, false),
     // Nose tip.
-    Feature { u: 0.0, v: -0.3, su: 0.11, sv: 0.09, height: 11.0, pair: false },
+    feature(0.0, -0.3, 0.11, 0.09, 11.0, false),
     // Brows.
-    Feature { u: 0.34, v: 0.3, su: 0.2, sv: 0.07, height: 5.0, pair: true },
+    feature(0.34, 0.3, 0.2, 0.07, 5.0, true),
     // Eye sockets.
-    Feature { u: 0.34, v: 0.12, su: 0.12, sv: 0.09, height: -8.0, pair: true },
+    feature(0.34, 0.12, 0.12, 0.09, -8.0, true),
     // Cheekbones.
-    Feature { u: 0.46, v: -0.22, su: 0.17, sv: 0.15, height: 6.0, pair: true },
+    feature(0.46, -0.22, 0.17, 0.15, 6.0, true),
     // Lips.
-    Feature { u: 0.0, v: -0.56, su: 0.2, sv: 0.07, height: 3.0, pair: false },
+    feature(0.0, -0.56, 0.2, 0.07, 3.0, false),
     // Chin.
-    Feature { u: 0.0, v: -0.82, su: 0.18, sv: 0.1, height: 6.0, pair: false },
+    feature(0.0, -0.82, 0.18, 0.1, 6.0, false),
 ];
 
 /// A face-mask-like open surface (Tachi 2014 shows a mask among its examples), our own
