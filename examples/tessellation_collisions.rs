@@ -7,6 +7,7 @@
 //!
 //! `cargo run --release --example tessellation_collisions -- N RINGS DEG RADIUS MODE SHRINK REMESH_FACES [CHUNK]`
 //! MODE is star, truncated, twisted or twist; REMESH_FACES 0 keeps the input triangles.
+//! With DUMP set, the pairs the independent test does not confirm are printed.
 //! With COLLISION_GAP=MM the solve has collision rows keeping that gap; with GROUND set, the boundary is held on the plane of its lowest vertex (Tachi 2014, §6).
 
 use std::collections::{HashSet, VecDeque};
@@ -161,6 +162,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         longest = longest.max(len);
         if len > tol {
             confirmed += 1;
+        } else if std::env::var("DUMP").is_ok() {
+            println!(
+                "unconfirmed {p} {tp:?} {:?} / {q} {tq:?} {:?}",
+                tp.map(|v| x[v as usize].to_array()),
+                tq.map(|v| x[v as usize].to_array())
+            );
         }
     }
     println!(
