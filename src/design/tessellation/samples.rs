@@ -84,8 +84,10 @@ pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyM
     let (polar, faces) = polar_disk(n, rings);
     let positions = polar
         .iter()
-        .map(|&(rho, a)| {
-            let phi = cap * rho;
+        .map(|&(k, a)| {
+            // `cap · k / rings` in this order: the caps' published figures were solved on
+            // exactly these positions, and the solves are sensitive to the last bit.
+            let phi = cap * k / rings.clamp(1, 128) as f64;
             DVec3::new(
                 radius * phi.sin() * a.cos(),
                 radius * phi.sin() * a.sin(),
@@ -96,8 +98,8 @@ pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyM
     PolyMesh::new(positions, faces).expect("a spherical cap is a valid mesh")
 }
 
-/// The connectivity of [`spherical_cap`] on the unit disk: per vertex its radius in [0, 1]
-/// (ring `k` of `rings` at `k / rings`) and its azimuth, radians; and the faces,
+/// The connectivity of [`spherical_cap`] on the disk: per vertex its ring number `k` (0 at the
+/// pole, `rings` on the rim; the radius is `k / rings`) and its azimuth, radians; and the faces,
 /// counter-clockwise seen from +z. Clamps `n` to 3..=64 and `rings` to 1..=128.
 fn polar_disk(n: usize, rings: usize) -> (Vec<(f64, f64)>, Vec<Vec<u32>>) {
     let n = n.clamp(3, 64);
@@ -110,7 +112,7 @@ fn polar_disk(n: usize, rings: usize) -> (Vec<(f64, f64)>, Vec<Vec<u32>>) {
         let count = n * k;
         for i in 0..count {
             let a = 2.0 * std::f64::consts::PI * i as f64 / count as f64;
-            polar.push((k as f64 / rings as f64, a));
+            polar.push((k as f64, a));
         }
     }
     let at = |k: usize, i: usize| -> u32 {
@@ -207,7 +209,8 @@ pub fn face_mask(rings: usize) -> PolyMesh {
     };
     let positions = polar
         .iter()
-        .map(|&(r, angle)| {
+        .map(|&(k, angle)| {
+            let r = k / rings.clamp(1, 128) as f64;
             let (u, v) = (r * angle.cos(), r * angle.sin());
             let shell = depth * (1.0 - r * r);
             // The features fade out towards the rim so the outline stays a plane curve.
