@@ -17,6 +17,7 @@ use foldcam::design::tessellation::{
     Limits, SolveOptions, StarOptions, TessMesh, TuckKind, assign_folds, disk,
     intersecting_triangles, max_star_points, remesh, solve, spherical_cap, star_tucks,
 };
+use foldcam::geom::segment_through_triangle;
 use glam::DVec3;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -187,7 +188,7 @@ fn cut_length(a: &[DVec3; 3], b: &[DVec3; 3]) -> f64 {
     let mut pts = Vec::new();
     for (s, t) in [(a, b), (b, a)] {
         for k in 0..3 {
-            if let Some(p) = pierce(s[k], s[(k + 1) % 3], t) {
+            if let Some(p) = segment_through_triangle(s[k], s[(k + 1) % 3], t) {
                 pts.push(p);
             }
         }
@@ -199,22 +200,4 @@ fn cut_length(a: &[DVec3; 3], b: &[DVec3; 3]) -> f64 {
         }
     }
     best
-}
-
-/// Where segment `p`–`q` crosses triangle `t` (closed), if it does.
-fn pierce(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> Option<DVec3> {
-    let d = q - p;
-    let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
-    let h = d.cross(e2);
-    let det = e1.dot(h);
-    if det.abs() < 1e-15 {
-        return None;
-    }
-    let s = p - t[0];
-    let u = s.dot(h) / det;
-    let qv = s.cross(e1);
-    let v = d.dot(qv) / det;
-    let w = e2.dot(qv) / det;
-    let inside = (0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0;
-    (inside && (0.0..=1.0).contains(&w)).then(|| p + w * d)
 }

@@ -7,7 +7,11 @@
 //! tolerance. Triangles in one plane (stacked layers of a flat fold) touch but do not cross
 //! and are not reported; nor are triangles that meet within the tolerance.
 
+use std::ops::ControlFlow;
+
 use glam::DVec3;
+
+use crate::geom::{Box3, overlapping_boxes, triangle_box};
 
 /// Pairs of triangles (indices, lower first) that pass through each other, at most `limit` of
 /// them, with `tolerance` in the unit of the positions.
@@ -18,35 +22,23 @@ pub fn crossing_triangles(
     limit: usize,
 ) -> Vec<(u32, u32)> {
     let corners = |t: usize| triangles[t].map(|v| positions[v as usize]);
-    let boxes: Vec<(DVec3, DVec3)> = (0..triangles.len())
-        .map(|t| {
-            let c = corners(t);
-            let lo = c[0].min(c[1]).min(c[2]) - DVec3::splat(tolerance);
-            let hi = c[0].max(c[1]).max(c[2]) + DVec3::splat(tolerance);
-            (lo, hi)
-        })
+    let boxes: Vec<Box3> = (0..triangles.len())
+        .map(|t| triangle_box(&corners(t), tolerance))
         .collect();
-    let mut order: Vec<usize> = (0..triangles.len()).collect();
-    order.sort_by(|&a, &b| boxes[a].0.x.total_cmp(&boxes[b].0.x));
     let mut found = Vec::new();
-    for (n, &a) in order.iter().enumerate() {
-        for &b in &order[n + 1..] {
-            if boxes[b].0.x > boxes[a].1.x {
-                break;
-            }
-            let overlap = boxes[a].0.cmple(boxes[b].1).all() && boxes[b].0.cmple(boxes[a].1).all();
-            if !overlap || triangles[a].iter().any(|v| triangles[b].contains(v)) {
-                continue;
-            }
-            let (ta, tb) = (corners(a), corners(b));
-            if pierces(&ta, &tb, tolerance) || pierces(&tb, &ta, tolerance) {
-                found.push((a.min(b) as u32, a.max(b) as u32));
-                if found.len() >= limit {
-                    return found;
-                }
+    overlapping_boxes(&boxes, |a, b| {
+        if triangles[a].iter().any(|v| triangles[b].contains(v)) {
+            return ControlFlow::Continue(());
+        }
+        let (ta, tb) = (corners(a), corners(b));
+        if pierces(&ta, &tb, tolerance) || pierces(&tb, &ta, tolerance) {
+            found.push((a.min(b) as u32, a.max(b) as u32));
+            if found.len() >= limit {
+                return ControlFlow::Break(());
             }
         }
-    }
+        ControlFlow::Continue(())
+    });
     found
 }
 

@@ -36,9 +36,12 @@
 //! between neighbouring tucks allows, so pushing them apart fights eq. 1. The rows are
 //! therefore off by default.
 
+use std::ops::ControlFlow;
+
 use glam::DVec3;
 
 use super::intersect::triangles_cross;
+use crate::geom::{Box3, overlapping_boxes, triangle_box};
 
 /// One collision row: its value and its Jacobian blocks.
 pub type Contact = (f64, Vec<(u32, DVec3)>);
@@ -46,30 +49,17 @@ pub type Contact = (f64, Vec<(u32, DVec3)>);
 /// Candidate pairs `(a, b)`, `a < b`, of triangles whose bounding boxes come within `gap`
 /// and that share no vertex, by a sweep along x.
 fn candidates(x: &[DVec3], triangles: &[[u32; 3]], gap: f64) -> Vec<(usize, usize)> {
-    let boxes: Vec<(DVec3, DVec3)> = triangles
+    let boxes: Vec<Box3> = triangles
         .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|v| x[v as usize]);
-            (a.min(b).min(c) - gap, a.max(b).max(c) + gap)
-        })
+        .map(|t| triangle_box(&t.map(|v| x[v as usize]), gap))
         .collect();
-    let mut order: Vec<usize> = (0..triangles.len()).collect();
-    order.sort_by(|&a, &b| boxes[a].0.x.total_cmp(&boxes[b].0.x));
     let mut out = Vec::new();
-    for (n, &a) in order.iter().enumerate() {
-        for &b in &order[n + 1..] {
-            if boxes[b].0.x > boxes[a].1.x {
-                break;
-            }
-            if (boxes[a].0.cmpgt(boxes[b].1) | boxes[b].0.cmpgt(boxes[a].1)).any() {
-                continue;
-            }
-            if triangles[a].iter().any(|v| triangles[b].contains(v)) {
-                continue;
-            }
+    overlapping_boxes(&boxes, |a, b| {
+        if !triangles[a].iter().any(|v| triangles[b].contains(v)) {
             out.push((a.min(b), a.max(b)));
         }
-    }
+        ControlFlow::Continue(())
+    });
     out
 }
 

@@ -18,10 +18,13 @@
 //! they meet along that edge or lie in one plane, never cross (eq. 3 keeps their fold inside
 //! (−180°, 180°)).
 
+use std::ops::ControlFlow;
+
 use glam::DVec3;
 
 use super::TessError;
 use crate::geom::tolerance::ROUNDOFF;
+use crate::geom::{Box3, overlapping_boxes, triangle_box};
 use crate::pattern::FoldedState;
 
 /// A vertex this close (mm) to the other triangle's plane lies on it when the cut is measured:
@@ -59,31 +62,18 @@ pub fn intersecting_triangles(
             "a vertex position is not finite".into(),
         ));
     }
-    let boxes: Vec<(DVec3, DVec3)> = tris
-        .iter()
-        .map(|t| (t[0].min(t[1]).min(t[2]), t[0].max(t[1]).max(t[2])))
-        .collect();
-    let mut order: Vec<usize> = (0..tris.len()).collect();
-    order.sort_by(|&a, &b| boxes[a].0.x.total_cmp(&boxes[b].0.x));
+    let boxes: Vec<Box3> = tris.iter().map(|t| triangle_box(t, 0.0)).collect();
     let mut out = Vec::new();
-    for (n, &a) in order.iter().enumerate() {
-        for &b in &order[n + 1..] {
-            if boxes[b].0.x > boxes[a].1.x {
-                break;
-            }
-            let apart = (boxes[a].0.cmpgt(boxes[b].1) | boxes[b].0.cmpgt(boxes[a].1)).any();
-            let shared = triangles[a]
-                .iter()
-                .filter(|v| triangles[b].contains(v))
-                .count();
-            if apart || shared >= 2 {
-                continue;
-            }
-            if triangles_cross(&tris[a], &tris[b], tolerance) {
-                out.push((a.min(b), a.max(b)));
-            }
+    overlapping_boxes(&boxes, |a, b| {
+        let shared = triangles[a]
+            .iter()
+            .filter(|v| triangles[b].contains(v))
+            .count();
+        if shared < 2 && triangles_cross(&tris[a], &tris[b], tolerance) {
+            out.push((a.min(b), a.max(b)));
         }
-    }
+        ControlFlow::Continue(())
+    });
     out.sort_unstable();
     Ok(out)
 }
@@ -173,6 +163,7 @@ fn cut(t: &[DVec3; 3], d: &[f64; 3], line: DVec3, tol: f64) -> Option<(f64, f64)
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::segment_through_triangle;
 
     const T: [DVec3; 3] = [
         DVec3::new(0.0, 0.0, 0.0),
@@ -249,25 +240,6 @@ mod tests {
         assert!(hinge.is_empty());
     }
 
-    /// Where segment `p`–`q` crosses the closed triangle `t`, by Möller and Trumbore's (1997)
-    /// ray–triangle test: independent of the plane-interval method under test.
-    fn pierce(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> Option<DVec3> {
-        let d = q - p;
-        let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
-        let h = d.cross(e2);
-        let det = e1.dot(h);
-        if det.abs() < 1e-15 {
-            return None;
-        }
-        let s = p - t[0];
-        let u = s.dot(h) / det;
-        let qv = s.cross(e1);
-        let v = d.dot(qv) / det;
-        let w = e2.dot(qv) / det;
-        ((0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0 && (0.0..=1.0).contains(&w))
-            .then(|| p + w * d)
-    }
-
     /// Length of the segment two triangles share: the span of the points where an edge of
     /// one pierces the other (two non-coplanar triangles meet in a segment whose ends lie on
     /// their edges).
@@ -275,7 +247,7 @@ mod tests {
         let mut pts = Vec::new();
         for (s, t) in [(a, b), (b, a)] {
             for k in 0..3 {
-                pts.extend(pierce(s[k], s[(k + 1) % 3], t));
+                pts.extend(segment_through_triangle(s[k], s[(k + 1) % 3], t));
             }
         }
         let mut best = 0.0f64;
