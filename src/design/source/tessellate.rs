@@ -238,12 +238,12 @@ pub fn tessellate_outcome(
         fold = limits.max_fold.to_degrees(),
         corner = limits.min_vertex_angle.to_degrees(),
     ));
-    let shrinks = options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
+    let schedule = schedule(options);
     progress.note(format!(
         "estimate: {} per solve, up to {} solve(s) (one per face shrink tried, twice if the \
          surface is re-triangulated)",
         solve_estimate(mesh.faces().len()),
-        shrinks.len()
+        schedule.shrinks.len()
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
     let advice = curvature_advice(mesh)
@@ -257,11 +257,6 @@ pub fn tessellate_outcome(
     progress.busy("solving");
     // Both callbacks speak through `progress`, one at a time.
     let shared = std::cell::RefCell::new(&mut *progress);
-    let schedule = Schedule {
-        shrinks,
-        remesh: options.remesh,
-        remesh_faces: options.remesh_faces,
-    };
     let run = || {
         tessellate_scheduled(
             mesh,
@@ -360,6 +355,16 @@ pub fn tessellate_outcome(
     })
 }
 
+/// The solver's schedule for `options`: the one shrink asked for, else the whole
+/// [`SHRINK_LADDER`]; the re-triangulation as asked.
+fn schedule(options: &TessellationOptions) -> Schedule {
+    Schedule {
+        shrinks: options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]),
+        remesh: options.remesh,
+        remesh_faces: options.remesh_faces,
+    }
+}
+
 /// One solve of a [`SolvePlan`]: the face shrink and whether on the re-triangulation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlannedSolve {
@@ -395,18 +400,12 @@ pub fn solve_plan(
     options: &TessellationOptions,
 ) -> Result<SolvePlan, SourceError> {
     let opts = options.to_solver()?;
-    let shrinks = options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]);
-    let sharp = crate::design::tessellation::remesh::min_corner_angle(mesh)
-        < opts.solve.limits.min_vertex_angle;
-    let order: &[bool] = match options.remesh {
-        Remesh::Never => &[false],
-        Remesh::Only => &[true],
-        Remesh::Auto if sharp => &[true, false],
-        Remesh::Auto => &[false, true],
-    };
+    let schedule = schedule(options);
     let faces = options.remesh_faces.unwrap_or(mesh.faces().len());
+    let shrinks = &schedule.shrinks;
     Ok(SolvePlan {
-        solves: order
+        solves: schedule
+            .remesh_order(mesh, &opts.solve.limits)
             .iter()
             .flat_map(|&remeshed| {
                 shrinks

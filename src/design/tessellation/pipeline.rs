@@ -178,6 +178,21 @@ pub struct Schedule {
     pub remesh_faces: Option<usize>,
 }
 
+impl Schedule {
+    /// Whether each pass of the schedule runs on the re-triangulation (`true`) or on the
+    /// input's own triangles, in order: [`Remesh::Auto`] re-triangulates first when `mesh`
+    /// has a face corner sharper than the vertex-angle limit of `limits`.
+    pub fn remesh_order(&self, mesh: &PolyMesh, limits: &Limits) -> &'static [bool] {
+        let sharp = min_corner_angle(mesh) < limits.min_vertex_angle;
+        match self.remesh {
+            Remesh::Never => &[false],
+            Remesh::Only => &[true],
+            Remesh::Auto if sharp => &[true, false],
+            Remesh::Auto => &[false, true],
+        }
+    }
+}
+
 /// The default schedule: every shrink of [`SHRINK_LADDER`], on the input's own triangles and
 /// on a near-regular re-triangulation of the same surface with as many faces
 /// ([`Remesh::Auto`]).
@@ -201,13 +216,7 @@ pub fn tessellate_scheduled(
     mut attempt: impl FnMut(f64, &Tessellation),
     mut progress: impl FnMut(&Iteration),
 ) -> Result<Tessellation, TessError> {
-    let sharp = min_corner_angle(mesh) < opts.solve.limits.min_vertex_angle;
-    let order: &[bool] = match schedule.remesh {
-        Remesh::Never => &[false],
-        Remesh::Only => &[true],
-        Remesh::Auto if sharp => &[true, false],
-        Remesh::Auto => &[false, true],
-    };
+    let order = schedule.remesh_order(mesh, &opts.solve.limits);
     let mut first: Option<Tessellation> = None;
     let mut failure = None;
     for &remeshed in order {
