@@ -21,9 +21,9 @@
 //!   (at 2,028 faces every shrink ends with face collisions or a stalled solve, about 330 s
 //!   in all on two cores), so the cases run only with `FOLDCAM_BENCH_LARGE=1` and time the
 //!   path whatever its outcome. With the same variable, group `tessellation_scale`: one
-//!   truncated-star solve (shrink 0.45, stainless limits) of each cap remeshed (2,022 and
-//!   10,086 faces): every limit met, but the folded forms' outer rings collide (Tachi 2014,
-//!   Fig. 14: the tucks grow towards the boundary).
+//!   truncated-star solve (shrink 0.45, stainless limits, the default dominant boundary rows
+//!   of `BoundaryRuns`) of each cap remeshed (2,022 and 10,086 faces): every limit met, but
+//!   the folded forms collide (Tachi 2014, Fig. 14: the tucks grow towards the boundary).
 //!
 //! Run with `cargo bench --bench tessellation -- --quick`; the scale group alone with
 //! `FOLDCAM_BENCH_LARGE=1 cargo bench --bench tessellation -- tessellation_scale` (the

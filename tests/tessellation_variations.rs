@@ -297,7 +297,14 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
         &example("saddle"),
         &opts,
         &SHRINK_LADDER,
-        |s, t| refused.push((s, t.intersections.len(), t.report.converged)),
+        |s, t| {
+            refused.push((
+                s,
+                t.intersections.len(),
+                t.report.converged,
+                t.report.limits.boundary_runs,
+            ))
+        },
         |_| {},
     )
     .unwrap();
@@ -305,6 +312,15 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
     assert_eq!(refused.first().map(|r| r.0), Some(0.8), "{refused:?}");
     assert!(refused[0].1 > 0 && refused[0].2, "{refused:?}");
     assert_eq!(t.initial.shrink, SHRINK_LADDER[refused.len()]);
+    // A converged but colliding solve is solved again with the stiffer outline before the
+    // shrink is given up: what `attempt` hears of such a shrink is that second solve.
+    assert!(
+        refused
+            .iter()
+            .filter(|r| r.2 && r.1 > 0)
+            .all(|r| r.3 == BoundaryRuns::EveryStart),
+        "{refused:?}"
+    );
     check_unfolded("saddle, truncated", &t);
 }
 

@@ -4,13 +4,21 @@
 //! becomes the equality `b = Σ τ_v + π − m = 0` for that step (m: the limits' margin).
 //!
 //! For every start vertex only the run with the smallest sum is checked (it dominates the
-//! others from that start), so at most one row per boundary vertex is added.
+//! others from that start), so at most one row per boundary vertex is added
+//! ([`BoundaryRuns::EveryStart`]). With [`BoundaryRuns::Dominant`], of the starts whose worst
+//! runs end at the same vertex only the one with the smallest sum becomes a row: with prefix
+//! sums `P`, a run `[i, e)` sums to `P_e − P_i`, so the start with the largest `P_i` implies
+//! every other start ending at `e`. Kept as equalities, the dominated runs also hold every
+//! turning angle between their starts at zero (their differences): a stiffer outline, and
+//! many long rows that make each step slow on large meshes (measurements at
+//! [`BoundaryRuns`]).
 
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use glam::DVec3;
 
+use super::constraints::BoundaryRuns;
 use super::model::TessMesh;
 
 /// A sparse gradient: (vertex, ∂/∂x) blocks.
@@ -68,15 +76,19 @@ pub fn rows(
     angle_rows: &AngleSums,
     margin: f64,
     hold: f64,
+    which: BoundaryRuns,
 ) -> Vec<(f64, Blocks)> {
     let turn: Vec<f64> = loop_vertices
         .iter()
         .map(|v| PI - angle_rows.get(v).map_or(0.0, |r| r.0))
         .collect();
     let mut out = Vec::new();
-    let mut seen = std::collections::HashSet::new();
-    for (i, len, sum) in worst_runs(&turn) {
-        if sum + PI >= hold * margin || !seen.insert((i, len)) {
+    let runs = match which {
+        BoundaryRuns::Dominant => dominant_runs(&turn),
+        BoundaryRuns::EveryStart => worst_runs(&turn),
+    };
+    for (i, len, sum) in runs {
+        if sum + PI >= hold * margin {
             continue;
         }
         // A run's gradient sums those of its vertices' angle sums (a map, not a search of
@@ -98,6 +110,23 @@ pub fn rows(
         out.push((sum + PI - margin, entries));
     }
     out
+}
+
+/// [`worst_runs`] with, of the runs ending at the same loop position, only the one with the
+/// smallest sum (the first start on ties): it implies the others (see the module docs).
+pub fn dominant_runs(turn: &[f64]) -> Vec<(usize, usize, f64)> {
+    let m = turn.len();
+    let runs = worst_runs(turn);
+    let mut best: Vec<Option<usize>> = vec![None; m];
+    for (k, &(i, len, sum)) in runs.iter().enumerate() {
+        let slot = &mut best[(i + len) % m];
+        if slot.is_none_or(|b| sum < runs[b].2) {
+            *slot = Some(k);
+        }
+    }
+    let mut keep: Vec<usize> = best.into_iter().flatten().collect();
+    keep.sort_unstable();
+    keep.into_iter().map(|k| runs[k]).collect()
 }
 
 /// Smallest `Σ τ + π` over all runs (eq. 2 holds when it is ≥ 0), from per-vertex angle sums.
@@ -132,5 +161,50 @@ mod tests {
             .map(|r| r.2)
             .fold(f64::INFINITY, f64::min);
         assert!((worst + 200f64.to_radians()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_kept_runs_imply_every_run_they_replace() {
+        // A zigzag outline with two deep inward bends: many starts' worst runs share an end.
+        let mut rng = crate::test_rng::TestRng::new(7);
+        let turn: Vec<f64> = (0..40)
+            .map(|k| {
+                let bend = if (10..16).contains(&k) || (25..29).contains(&k) {
+                    -0.9
+                } else {
+                    0.3
+                };
+                bend + 0.2 * (rng.unit() - 0.5)
+            })
+            .collect();
+        let all = worst_runs(&turn);
+        let kept = dominant_runs(&turn);
+        assert!(kept.len() < all.len(), "{} of {}", kept.len(), all.len());
+        let m = turn.len();
+        // Brute force over every run [i, i + len): whenever some kept run [j, e) ends where
+        // it does, the kept run's sum is at most its own, so a kept run at its limit implies
+        // it. Every end reached by some start's worst run keeps exactly one run.
+        let ends = |runs: &[(usize, usize, f64)]| -> Vec<usize> {
+            let mut e: Vec<usize> = runs.iter().map(|r| (r.0 + r.1) % m).collect();
+            e.sort_unstable();
+            e.dedup();
+            e
+        };
+        assert_eq!(ends(&all), ends(&kept));
+        assert_eq!(ends(&kept).len(), kept.len());
+        for i in 0..m {
+            let mut sum = 0.0;
+            for len in 1..m {
+                sum += turn[(i + len - 1) % m];
+                let e = (i + len) % m;
+                if let Some(k) = kept.iter().find(|r| (r.0 + r.1) % m == e) {
+                    // Only starts whose own worst run ends at e are replaced.
+                    let own = all[i];
+                    if (own.0 + own.1) % m == e {
+                        assert!(k.2 <= sum + 1e-12, "start {i} len {len}: {} > {sum}", k.2);
+                    }
+                }
+            }
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! The whole design in one call: mesh → star tucks → solve → unfold → face-intersection check.
 
-use super::constraints::{Limits, assign_folds};
+use super::constraints::{BoundaryRuns, Limits, assign_folds};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
@@ -127,8 +127,11 @@ pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 
 /// [`tessellate`] with each face shrink of `shrinks` in turn (overriding `opts.star.shrink`)
 /// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one
-/// before the next shrink is tried. Returns the first usable result, else the first one (the
-/// result of the shrink asked for first).
+/// before the next shrink is tried. A shrink whose solve converges with [`BoundaryRuns::Dominant`]
+/// rows but intersects itself is solved once more with [`BoundaryRuns::EveryStart`] (the
+/// stiffer outline; as one attempt: `attempt` hears the second result only, and `progress`
+/// counts the second solve's iterations on from the first's). Returns the first usable result,
+/// else the first one (the result of the shrink asked for first).
 /// This stands in for the paper's user, who avoids global face collisions (type 3, §3.2) by
 /// adjusting the design: a smaller shrink opens the tucks wider.
 pub fn tessellate_shrinking(
@@ -142,7 +145,22 @@ pub fn tessellate_shrinking(
     for &shrink in shrinks {
         let mut o = *opts;
         o.star.shrink = shrink;
-        let t = tessellate(mesh, &o, &mut progress)?;
+        let mut t = tessellate(mesh, &o, &mut progress)?;
+        if t.report.converged
+            && !t.intersections.is_empty()
+            && o.solve.limits.boundary_runs == BoundaryRuns::Dominant
+        {
+            // The same shrink again with the stiffer outline (see `BoundaryRuns`); its
+            // iterations continue the count, so progress displays see one solve per shrink.
+            o.solve.limits.boundary_runs = BoundaryRuns::EveryStart;
+            let before = t.report.iterations;
+            t = tessellate(mesh, &o, |it: &Iteration| {
+                progress(&Iteration {
+                    index: before + it.index,
+                    ..*it
+                })
+            })?;
+        }
         if t.problem().is_none() {
             return Ok(t);
         }
