@@ -220,7 +220,7 @@ fn solve_variation(name: &str, kind: TuckKind, shrink: f64, min_vertex_deg: f64)
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.tuck.kind = kind;
     opts.star.shrink = shrink;
-    let t = tessellate(&example(name), &opts, |_| {}).unwrap();
+    let t = tessellate(&example(name), &opts, keep_going).unwrap();
     let what = format!("{name}, {kind:?}");
     let r = &t.report;
     assert!(r.converged, "{what}: {}", r.summary());
@@ -297,8 +297,11 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
         &example("saddle"),
         &opts,
         &SHRINK_LADDER,
-        |s, t| refused.push((s, t.intersections.len(), t.report.converged)),
-        |_| {},
+        |s, t| {
+            refused.push((s, t.intersections.len(), t.report.converged));
+            std::ops::ControlFlow::Continue(())
+        },
+        keep_going,
     )
     .unwrap();
     assert!(t.problem().is_none(), "{:?}", t.problem());
