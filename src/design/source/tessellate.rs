@@ -428,9 +428,9 @@ pub const RATE_WINDOW: usize = 5;
 /// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations are seen
 /// the up-front estimate (minus the time spent) stands in. Times are passed in, so nothing
 /// here reads a clock. A solve that makes no iteration (refused before solving) is still
-/// counted; a re-triangulation that cannot be made skips its solves unheard (the schedule
-/// then goes on with the input's own triangles), so after one the solves are named as the
-/// plan's first ones.
+/// counted; a re-triangulation that cannot be made (tried first) skips its solves unheard,
+/// so the input's solves that follow are named as the re-triangulation's (same shrinks, the
+/// wrong triangles).
 #[derive(Clone, Debug)]
 pub struct SolveTracker {
     plan: SolvePlan,
