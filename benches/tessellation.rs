@@ -32,7 +32,8 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use foldcam::design::tessellation::{
     Limits, SampleSurface, TessellateOptions, TuckKind, assign_folds, default_schedule, disk,
-    remesh, sample_surface, solve, spherical_cap, star_tucks, tessellate, tessellate_scheduled,
+    keep_going, keep_trying, remesh, sample_surface, solve, spherical_cap, star_tucks, tessellate,
+    tessellate_scheduled,
 };
 
 fn bench(c: &mut Criterion) {
@@ -58,7 +59,7 @@ fn bench(c: &mut Criterion) {
                         let mut init = star_tucks(&he, &opts.star).expect("initial pattern");
                         assign_folds(&mut init.mesh);
                         let report =
-                            solve(&mut init.mesh, &opts.solve, |_| {}).expect("valid options");
+                            solve(&mut init.mesh, &opts.solve, keep_going).expect("valid options");
                         assert!(report.converged, "{name}: {}", report.summary());
                         report.iterations
                     })
@@ -73,9 +74,14 @@ fn bench(c: &mut Criterion) {
             let opts = TessellateOptions::with_limits(Limits::from_degrees(165.0, 30.0));
             g.bench_function(format!("cap_{faces}_faces_star_default_schedule"), |b| {
                 b.iter(|| {
-                    let t =
-                        tessellate_scheduled(&mesh, &opts, &default_schedule(), |_, _| {}, |_| {})
-                            .expect("valid options");
+                    let t = tessellate_scheduled(
+                        &mesh,
+                        &opts,
+                        &default_schedule(),
+                        keep_trying,
+                        keep_going,
+                    )
+                    .expect("valid options");
                     (t.report.iterations, t.problem().is_none())
                 })
             });
@@ -103,7 +109,7 @@ fn bench(c: &mut Criterion) {
                 ),
                 |b| {
                     b.iter(|| {
-                        let t = tessellate(&mesh, &opts, |_| {}).expect("valid options");
+                        let t = tessellate(&mesh, &opts, keep_going).expect("valid options");
                         assert!(t.report.converged, "{}", t.report.summary());
                         t.report.iterations
                     })

@@ -15,7 +15,7 @@ use std::time::Instant;
 
 use foldcam::design::tessellation::{
     Limits, SolveOptions, StarOptions, TessMesh, TuckKind, assign_folds, disk,
-    intersecting_triangles, max_star_points, remesh, solve, spherical_cap, star_tucks,
+    intersecting_triangles, keep_going, max_star_points, remesh, solve, spherical_cap, star_tucks,
 };
 use foldcam::geom::segment_through_triangle;
 use glam::DVec3;
@@ -77,7 +77,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             max_iterations: chunk,
             ..SolveOptions::default()
         };
-        let r = solve(&mut t, &opts, |_| {})?;
+        let r = solve(&mut t, &opts, keep_going)?;
         done += r.iterations;
         let pairs = count(&t);
         println!(

@@ -10,10 +10,11 @@
 use std::time::Instant;
 
 use foldcam::design::tessellation::{
-    Limits, TessellateOptions, TuckKind, corner_distance, default_schedule, spherical_cap,
-    tessellate_scheduled,
+    Limits, TessellateOptions, TuckKind, corner_distance, default_schedule, keep_going,
+    spherical_cap, tessellate_scheduled,
 };
 use foldcam::mesh::read_mesh;
+use std::ops::ControlFlow;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -71,8 +72,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             |_, t| {
                 all_iterations += t.report.iterations;
                 last_start = Instant::now();
+                ControlFlow::Continue(())
             },
-            |_| {},
+            keep_going,
         )?;
         let all = start.elapsed().as_secs_f64();
         let last = last_start.elapsed().as_secs_f64();

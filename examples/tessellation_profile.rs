@@ -54,6 +54,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             it.cg_iterations
         );
         last = Instant::now();
+        std::ops::ControlFlow::Continue(())
     };
     let t = match outer {
         None => tessellate(&mesh, &opts, progress)?,

@@ -301,9 +301,10 @@ export class TessellationView {
     const iterations = this.events.filter((e) => e.kind === 'iteration');
     const notes = this.events.filter((e) => e.kind === 'note').map((e) => e.text);
     const last = iterations[iterations.length - 1];
+    // The server's line is the one `foldcam tessellate`'s bar shows (solve of the schedule,
+    // residual, time left in this solve).
     this.$('tess-progress').textContent = last
-      ? `attempt ${last.attempt}, iteration ${last.index}: developability ${last.developability.toExponential(2)} rad, ` +
-        `max fold ${last.max_fold.toFixed(1)}°, min angle ${last.min_angle.toFixed(1)}°`
+      ? `${last.progress}; max fold ${last.max_fold.toFixed(1)}°, min angle ${last.min_angle.toFixed(1)}°`
       : `starting… (one solve ≈ ${state.estimate})`;
     this.$('tess-notes').replaceChildren(...notes.map((n) => { const li = document.createElement('li'); li.textContent = n; return li; }));
     document.body.dataset.tessIterations = String(iterations.length);

@@ -113,7 +113,15 @@ async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
         .parse()
         .unwrap();
     assert!(iterations > 0);
-    assert!(text(&c, "#tess-progress").await.contains("iteration"));
+    // The command's progress line: the iteration out of the cap, the solve of the schedule,
+    // the time left (none once converged).
+    let progress = text(&c, "#tess-progress").await;
+    assert!(progress.starts_with("iteration "), "{progress}");
+    assert!(progress.contains("(solve "), "{progress}");
+    assert!(
+        progress.contains("about 0 s left in this solve"),
+        "{progress}"
+    );
     assert_eq!(
         c.find_all(fantoccini::Locator::Css("#tess-plot polyline"))
             .await

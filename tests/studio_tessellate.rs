@@ -144,6 +144,49 @@ fn a_solve_streams_its_progress_and_saves_a_design_the_command_rebuilds() {
     // The folded form is within the material's limits at every crease and vertex: measured
     // here from the positions the page gets, not from the server's flags.
     let result = ok(get_json(&server, &format!("/api/tess/jobs/{job}/result")));
+
+    // Each iteration's progress line is the command's bar: the iteration out of the cap, the
+    // solve of the schedule with its shrink and triangles, the residual, the time left. The
+    // solve that made the design is read off the report: its shrink and whether remeshed.
+    let lines: Vec<&str> = result["lines"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l.as_str().unwrap())
+        .collect();
+    let shrink = lines[0]
+        .split(", ")
+        .find_map(|part| part.strip_prefix("shrink "))
+        .expect("the report names the shrink");
+    let triangles = if lines.iter().any(|l| l.contains("remeshed to")) {
+        "re-triangulation"
+    } else {
+        "input's triangles"
+    };
+    let cap = setup["defaults"]["max_iterations"].as_u64().unwrap();
+    let refused = notes.iter().filter(|n| n.starts_with("shrink ")).count() as u64;
+    for it in &iterations {
+        let text = it["progress"].as_str().unwrap();
+        assert!(
+            text.starts_with(&format!("iteration {}/{cap} ", it["index"])),
+            "{text}"
+        );
+        assert!(text.contains("left in this solve"), "{text}");
+        assert!(it["seconds_left"].as_f64().unwrap() >= 0.0, "{it}");
+    }
+    // The last solve is the one after every refused attempt (one note each).
+    assert_eq!(last["attempt"].as_u64(), Some(refused + 1), "{last}");
+    let solves = last["attempts"].as_u64().unwrap();
+    let text = last["progress"].as_str().unwrap();
+    assert!(
+        text.contains(&format!(
+            ": shrink {shrink} on the {triangles} (solve {} of at most {solves}), developability ",
+            refused + 1
+        )),
+        "{text}"
+    );
+    // Converged within the tolerance: nothing left (the geometric estimate's closed form).
+    assert!(text.ends_with("about 0 s left in this solve"), "{text}");
     assert_eq!(result["made"], true);
     assert_eq!(result["violations"], json!({"creases": 0, "vertices": 0}));
     let max_fold = steel["max_fold_angle"].as_f64().unwrap();
@@ -337,7 +380,12 @@ fn a_long_solve_is_cancelled_and_bad_options_are_refused() {
     }
     ok(server.post_json(&format!("/api/tess/jobs/{job}/cancel"), b""));
     let (state, events) = wait(&server, job);
-    assert_eq!(state["status"], "cancelled");
+    assert_eq!(state["status"], "cancelled", "{state}");
+    // Stopped after the running iteration, not at the end of the solve (minutes away, a few
+    // hundred iterations): a cancelled job carries no error.
+    assert!(state["error"].is_null(), "{state}");
+    let late = events.iter().filter(|e| e["kind"] == "iteration").count();
+    assert!(late < 10, "{late} iterations heard in all");
     let after = ok(get_json(&server, &format!("/api/tess/jobs/{job}")));
     assert_eq!(after["next"].as_u64(), Some(events.len() as u64));
     assert_eq!(server.get(&format!("/api/tess/jobs/{job}/result")).0, 409);

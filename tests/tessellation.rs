@@ -152,7 +152,7 @@ fn solved(name: &str) -> Tessellation {
     let t = tessellate(
         &example(name),
         &TessellateOptions::with_limits(limits),
-        |_| {},
+        keep_going,
     )
     .unwrap();
     let r = &t.report;
@@ -215,31 +215,31 @@ fn bad_input_is_refused_with_a_reason() {
     .unwrap();
     let opts = TessellateOptions::default();
     assert!(matches!(
-        tessellate(&tetra, &opts, |_| {}),
+        tessellate(&tetra, &opts, keep_going),
         Err(TessError::NotADisk(_))
     ));
     let mut shrink = opts;
     shrink.star.shrink = 0.0;
     assert!(matches!(
-        tessellate(&example("dome"), &shrink, |_| {}),
+        tessellate(&example("dome"), &shrink, keep_going),
         Err(TessError::BadParameter(_))
     ));
     shrink.star.shrink = f64::NAN;
     assert!(matches!(
-        tessellate(&example("dome"), &shrink, |_| {}),
+        tessellate(&example("dome"), &shrink, keep_going),
         Err(TessError::BadParameter(_))
     ));
     let mut checker = opts;
     checker.star.layout = TuckLayout::Checkerboard;
     let squares = square_tiling(3, 3, 10.0);
     assert!(matches!(
-        tessellate(&squares, &checker, |_| {}),
+        tessellate(&squares, &checker, keep_going),
         Err(TessError::BadParameter(_))
     ));
     let mut limits = opts;
     limits.solve.limits = Limits::from_degrees(200.0, 30.0);
     assert!(matches!(
-        tessellate(&example("dome"), &limits, |_| {}),
+        tessellate(&example("dome"), &limits, keep_going),
         Err(TessError::BadParameter(_))
     ));
 }
@@ -325,7 +325,7 @@ fn cli_writes_pattern_folded_form_and_previews() {
 fn bell_stands_on_the_ground() {
     let mut opts = TessellateOptions::with_limits(stainless_limits());
     opts.ground = true;
-    let t = tessellate(&example("bell"), &opts, |_| {}).unwrap();
+    let t = tessellate(&example("bell"), &opts, keep_going).unwrap();
     assert!(t.report.converged, "{}", t.report.summary());
     let z0 = t.report.limits.ground_z.expect("plane chosen");
     let on_ground = t
@@ -350,7 +350,7 @@ fn surface_fit_reduces_the_distance_and_keeps_the_constraints() {
         weight: 0.1,
         rounds: 10,
     });
-    let t = tessellate(&example("saddle"), &opts, |_| {}).unwrap();
+    let t = tessellate(&example("saddle"), &opts, keep_going).unwrap();
     let fit = t.fit.expect("fit ran after a converged solve");
     assert!(fit.accepted > 0 && fit.last < 0.9 * fit.initial, "{fit:?}");
     let r = residuals(&t.mesh, &t.mesh.positions, None);
@@ -371,7 +371,7 @@ fn digon_layout_solves_the_dome_with_relaxed_limits() {
     let limits = Limits::from_degrees(178.0, 15.0);
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.layout = TuckLayout::Digon;
-    let t = tessellate(&example("dome"), &opts, |_| {}).unwrap();
+    let t = tessellate(&example("dome"), &opts, keep_going).unwrap();
     assert_eq!(t.initial.layout, TuckLayout::Digon);
     assert!(t.report.converged, "{}", t.report.summary());
     let r = residuals(&t.mesh, &t.mesh.positions, None);
@@ -461,7 +461,7 @@ fn a_self_crossing_result_is_found_and_not_written() {
     let t = tessellate(
         &mesh,
         &TessellateOptions::with_limits(stainless_limits()),
-        |_| {},
+        keep_going,
     )
     .unwrap();
     assert!(t.report.converged, "{}", t.report.summary());

@@ -61,7 +61,7 @@ fn a_twelve_valent_pole_is_diagnosed_before_solving_and_truncated() {
     // tessellate() refuses it without solving.
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.max_star_points = Some(usize::MAX);
-    let t = tessellate(&mesh, &opts, |_| {}).expect("valid options");
+    let t = tessellate(&mesh, &opts, keep_going).expect("valid options");
     assert_eq!(t.report.iterations, 0);
     assert!(t.problem().expect("refused").contains("input vertex 0"));
 
@@ -109,7 +109,7 @@ fn solved_cap_scheduled(
     let limits = stainless_limits();
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.tuck.kind = kind;
-    let t = tessellate_scheduled(mesh, &opts, schedule, |_, _| {}, |_| {}).unwrap();
+    let t = tessellate_scheduled(mesh, &opts, schedule, keep_trying, keep_going).unwrap();
     let r = &t.report;
     assert!(t.problem().is_none(), "{name}: {}", t.summary());
     assert!(r.converged, "{name}: {}", r.summary());

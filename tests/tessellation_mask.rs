@@ -69,7 +69,7 @@ fn mask_solves_within_stainless_limits_and_cuts_clean() {
     let limits = stainless_limits();
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.shrink = 0.6;
-    let t = tessellate(&mesh, &opts, |_| {}).unwrap();
+    let t = tessellate(&mesh, &opts, keep_going).unwrap();
     let r = &t.report;
     eprintln!("mask: shrink {}, {}", t.initial.shrink, t.summary());
     assert!(t.problem().is_none(), "{:?}", t.problem());

@@ -220,7 +220,7 @@ fn solve_variation(name: &str, kind: TuckKind, shrink: f64, min_vertex_deg: f64)
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.tuck.kind = kind;
     opts.star.shrink = shrink;
-    let t = tessellate(&example(name), &opts, |_| {}).unwrap();
+    let t = tessellate(&example(name), &opts, keep_going).unwrap();
     let what = format!("{name}, {kind:?}");
     let r = &t.report;
     assert!(r.converged, "{what}: {}", r.summary());
@@ -303,9 +303,10 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
                 t.intersections.len(),
                 t.report.converged,
                 t.report.limits.boundary_runs,
-            ))
+            ));
+            std::ops::ControlFlow::Continue(())
         },
-        |_| {},
+        keep_going,
     )
     .unwrap();
     assert!(t.problem().is_none(), "{:?}", t.problem());

@@ -7,7 +7,7 @@ use std::path::Path;
 use anyhow::{Context, Result, anyhow, bail};
 use foldcam::design::tessellation::{
     Limits, TessellateOptions, Tessellation, TuckKind, corner_distance, default_schedule,
-    tessellate, tessellate_scheduled,
+    keep_going, keep_trying, tessellate, tessellate_scheduled,
 };
 use foldcam::formats::{self, write_atomic};
 use foldcam::machine::load_material;
@@ -34,7 +34,7 @@ pub fn dome(dir: &Path, width: u32) -> Result<()> {
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("dome.obj: {e}"))?;
     let mut opts = stainless()?;
     opts.star.tuck.kind = TuckKind::Truncated;
-    let t = tessellate(&mesh, &opts, |_| {}).map_err(|e| anyhow!("dome.obj: {e}"))?;
+    let t = tessellate(&mesh, &opts, keep_going).map_err(|e| anyhow!("dome.obj: {e}"))?;
     let view = View3d {
         azimuth_deg: 30.0,
         elevation_deg: 35.0,
@@ -53,7 +53,7 @@ pub fn mask(dir: &Path, width: u32) -> Result<()> {
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("mask.obj: {e}"))?;
     let mut schedule = default_schedule();
     schedule.shrinks.retain(|&s| s <= MASK_FIRST_SHRINK);
-    let t = tessellate_scheduled(&mesh, &stainless()?, &schedule, |_, _| {}, |_| {})
+    let t = tessellate_scheduled(&mesh, &stainless()?, &schedule, keep_trying, keep_going)
         .map_err(|e| anyhow!("mask.obj: {e}"))?;
     let view = View3d {
         azimuth_deg: 20.0,

@@ -99,6 +99,12 @@ impl foldcam::design::source::Progress for DesignProgress {
         }
     }
 
+    fn next_solve(&mut self) {
+        if let Some((tracker, Some(started))) = &mut self.tracker {
+            tracker.next_solve(started.elapsed().as_secs_f64());
+        }
+    }
+
     fn iteration(&mut self, it: &foldcam::design::tessellation::Iteration) {
         let line = foldcam::design::source::tessellate::iteration_line(it);
         match &self.bar {

@@ -12,7 +12,7 @@
 //! | `POST /api/tess/example/{name}` | a bundled example mesh, as `mesh` |
 //! | `POST /api/tess/mesh/{id}/solve` | starts a solve (JSON [`SolveRequest`]) on the blocking pool: the job's id |
 //! | `GET /api/tess/jobs/{job}[?since=K]` | the job's state and its progress events from the K-th on |
-//! | `POST /api/tess/jobs/{job}/cancel` | asks the solve to stop (before its next iteration) |
+//! | `POST /api/tess/jobs/{job}/cancel` | asks the solve to stop (after its running iteration) |
 //! | `GET /api/tess/jobs/{job}/result` | the folded form measured against the limits, the crease pattern, the report |
 //! | `GET /api/tess/jobs/{job}/design` | the design file (`NAME.tess.toml`) |
 //! | `GET /api/tess/jobs/{job}/mesh` | the mesh it names, as loaded |
@@ -26,6 +26,7 @@ use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
+use std::time::Instant;
 
 use axum::body::Bytes;
 use axum::extract::rejection::{BytesRejection, QueryRejection};
@@ -46,7 +47,8 @@ use crate::design::source::tess_design::{
 };
 use crate::design::source::tess_limits::limit_map;
 use crate::design::source::tessellate::{
-    TessellationOptions, TessellationOutcome, iteration_line, tessellate_outcome,
+    SolvePlan, SolveTracker, TessellationOptions, TessellationOutcome, iteration_line, solve_plan,
+    tessellate_outcome,
 };
 use crate::design::source::{DesignFile, Progress, SourceError};
 use crate::design::tessellation::Iteration;
@@ -112,8 +114,6 @@ struct JobState {
     dropped: usize,
     error: Option<String>,
     outcome: Option<Arc<TessellationOutcome>>,
-    /// Attempts begun (an iteration numbered 1 starts one).
-    attempts: usize,
 }
 
 /// One solve.
@@ -173,37 +173,66 @@ impl Job {
     }
 }
 
-/// Reports a solve's progress into its job.
-struct JobProgress(Arc<Job>);
+/// Reports a solve's progress into its job, with where the schedule stands and the time
+/// left as `foldcam tessellate`'s bar says it ([`SolveTracker`]).
+struct JobProgress {
+    job: Arc<Job>,
+    tracker: SolveTracker,
+    started: Instant,
+}
 
-impl Progress for JobProgress {
-    fn note(&mut self, line: String) {
-        self.0.push(json!({ "kind": "note", "text": line }));
+impl JobProgress {
+    fn new(job: Arc<Job>, plan: SolvePlan) -> JobProgress {
+        JobProgress {
+            job,
+            tracker: SolveTracker::new(plan),
+            started: Instant::now(),
+        }
     }
 
-    fn iteration(&mut self, it: &Iteration) {
-        let attempt = {
-            let mut s = self.0.state();
-            if it.index == 1 {
-                s.attempts += 1;
-            }
-            s.attempts.max(1)
-        };
+    /// The event of iteration `it`, heard `seconds` after the start.
+    fn iteration_event(&mut self, it: &Iteration, seconds: f64) -> Value {
+        self.tracker.iteration(it, seconds);
+        let (solve, solves) = self.tracker.solve();
         let r = &it.residuals;
-        self.0.push(json!({
+        json!({
             "kind": "iteration",
-            "attempt": attempt,
+            "attempt": solve + 1,
+            "attempts": solves,
             "index": it.index,
+            "max_iterations": self.tracker.max_iterations(),
             "developability": r.developability,
             "max_fold": r.max_fold.to_degrees(),
             "min_angle": r.min_vertex_angle.to_degrees(),
             "step": it.step,
+            "seconds_left": self.tracker.seconds_left(),
+            "progress": self.tracker.line(),
             "text": iteration_line(it),
-        }));
+        })
+    }
+}
+
+impl Progress for JobProgress {
+    fn note(&mut self, line: String) {
+        self.job.push(json!({ "kind": "note", "text": line }));
+    }
+
+    fn busy(&mut self, _what: &str) {
+        self.started = Instant::now();
+    }
+
+    fn next_solve(&mut self) {
+        self.tracker
+            .next_solve(self.started.elapsed().as_secs_f64());
+    }
+
+    fn iteration(&mut self, it: &Iteration) {
+        let event = self.iteration_event(it, self.started.elapsed().as_secs_f64());
+        self.job.push(event);
     }
 
     fn cancelled(&self) -> bool {
-        self.0.cancel.load(Ordering::Relaxed)
+        self.job.cancel.load(Ordering::Relaxed)
     }
 }
 
@@ -515,7 +544,6 @@ async fn solve(
             dropped: 0,
             error: None,
             outcome: None,
-            attempts: 0,
         }),
     });
     let job_id = tess.add_job(Arc::clone(&job));
@@ -526,9 +554,11 @@ async fn solve(
 
 /// Solves, recording progress and the end in the job.
 fn run_job(job: &Arc<Job>) {
-    let mut progress = JobProgress(Arc::clone(job));
     let name = PathBuf::from(&job.mesh.name);
-    let result = tessellate_outcome(&name, &job.mesh.mesh, &job.options, &mut progress);
+    let result = solve_plan(&job.mesh.mesh, &job.options).and_then(|plan| {
+        let mut progress = JobProgress::new(Arc::clone(job), plan);
+        tessellate_outcome(&name, &job.mesh.mesh, &job.options, &mut progress)
+    });
     let mut s = job.state();
     match result {
         Ok(outcome) => {

@@ -295,8 +295,12 @@ pub trait Progress {
     fn idle(&mut self) {}
     /// One iteration of the tessellation solver (Tachi 2014).
     fn iteration(&mut self, _it: &crate::design::tessellation::Iteration) {}
-    /// Whether the caller wants the build stopped: asked between solver iterations (the
-    /// tessellation then ends with [`SourceError::Cancelled`]); never by default.
+    /// A solve of the tessellation's schedule ended without a usable result (whether or not
+    /// it made any iteration): the next one of the schedule, if any, begins.
+    fn next_solve(&mut self) {}
+    /// Whether the caller wants the build stopped: asked after every solver iteration and
+    /// between solves (the tessellation then ends with [`SourceError::Cancelled`]); never by
+    /// default.
     fn cancelled(&self) -> bool {
         false
     }

@@ -3,14 +3,15 @@
 //! unfolded crease pattern with its folded form — what `foldcam tessellate` does before it
 //! writes anything.
 
+use std::ops::ControlFlow;
 use std::path::Path;
 
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
-    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessMesh,
-    TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded, curvature_advice,
-    tessellate_scheduled,
+    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessError,
+    TessMesh, TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
+    curvature_advice, tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -198,15 +199,13 @@ pub struct TessellationOutcome {
     pub design: Result<TessellationDesign, Vec<String>>,
 }
 
-/// Raised through the solver to stop it when [`Progress::cancelled`] says so, and caught in
-/// [`tessellate_outcome`]; the solver's callbacks have no other way out.
-struct Cancelled;
-
-/// Stops the solve when `progress` asks for it: unwinds with [`Cancelled`] (without the panic
-/// hook, so nothing is printed).
-fn stop_if_cancelled(progress: &dyn Progress) {
+/// [`ControlFlow::Break`] when `progress` asks to stop: the solver's callbacks then end the
+/// work with [`TessError::Cancelled`].
+fn go_on(progress: &dyn Progress) -> ControlFlow<()> {
     if progress.cancelled() {
-        std::panic::resume_unwind(Box::new(Cancelled));
+        ControlFlow::Break(())
+    } else {
+        ControlFlow::Continue(())
     }
 }
 
@@ -222,7 +221,7 @@ fn stop_if_cancelled_early(progress: &dyn Progress) -> Result<(), SourceError> {
 ///
 /// # Errors
 /// Bad options or a mesh the tucks cannot be built on; [`SourceError::Cancelled`] when
-/// `progress` asked to stop (checked before every solver iteration and between attempts).
+/// `progress` asked to stop (asked after every solver iteration and between solves).
 pub fn tessellate_outcome(
     name: &Path,
     mesh: &PolyMesh,
@@ -257,42 +256,36 @@ pub fn tessellate_outcome(
     progress.busy("solving");
     // Both callbacks speak through `progress`, one at a time.
     let shared = std::cell::RefCell::new(&mut *progress);
-    let run = || {
-        tessellate_scheduled(
-            mesh,
-            &opts,
-            &schedule,
-            |s: f64, t: &Tessellation| {
-                if !asked {
-                    let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
-                        "trying a smaller shrink"
-                    } else {
-                        "no shrink worked on these triangles"
-                    };
-                    shared.borrow_mut().note(format!(
-                        "shrink {s}: {}; {next}",
-                        t.problem().unwrap_or_default()
-                    ));
-                }
-                stop_if_cancelled(&**shared.borrow());
-            },
-            |it: &Iteration| {
-                shared.borrow_mut().iteration(it);
-                stop_if_cancelled(&**shared.borrow());
-            },
-        )
-    };
-    // Unwind safety: on cancellation everything the solve built is dropped unseen; `progress`
-    // only ever sees whole calls.
-    let t = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
-        Ok(t) => t,
-        Err(payload) if payload.is::<Cancelled>() => {
-            progress.idle();
-            return Err(SourceError::Cancelled);
-        }
-        Err(payload) => std::panic::resume_unwind(payload),
-    };
+    let t = tessellate_scheduled(
+        mesh,
+        &opts,
+        &schedule,
+        |s: f64, t: &Tessellation| {
+            let mut progress = shared.borrow_mut();
+            if !asked {
+                let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
+                    "trying a smaller shrink"
+                } else {
+                    "no shrink worked on these triangles"
+                };
+                progress.note(format!(
+                    "shrink {s}: {}; {next}",
+                    t.problem().unwrap_or_default()
+                ));
+            }
+            progress.next_solve();
+            go_on(&**progress)
+        },
+        |it: &Iteration| {
+            let mut progress = shared.borrow_mut();
+            progress.iteration(it);
+            go_on(&**progress)
+        },
+    );
     progress.idle();
+    if matches!(t, Err(TessError::Cancelled)) {
+        return Err(SourceError::Cancelled);
+    }
     let t = t.map_err(|e| SourceError::input(name, e))?;
     let mut lines = vec![
         format!(
@@ -424,7 +417,8 @@ pub fn solve_plan(
 pub const RATE_WINDOW: usize = 5;
 
 /// Where a running tessellation stands, for a progress display: which solve of the
-/// [`SolvePlan`] runs (a new one is recognised by the iteration count starting again), its
+/// [`SolvePlan`] runs (the next begins when [`SolveTracker::next_solve`] says the running one
+/// ended, as [`Progress::next_solve`] is told by the pipeline's `attempt` callback), its
 /// residual, and the time it has left.
 ///
 /// The time left in the running solve is its observed seconds per iteration times the
@@ -433,9 +427,10 @@ pub const RATE_WINDOW: usize = 5;
 /// geometric mean over the last [`RATE_WINDOW`] iterations), so reaching the tolerance `τ`
 /// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations are seen
 /// the up-front estimate (minus the time spent) stands in. Times are passed in, so nothing
-/// here reads a clock. A solve that makes no iteration (refused before solving, or a
-/// re-triangulation that cannot be made) is not seen, so the solves after it are named one
-/// place early.
+/// here reads a clock. A solve that makes no iteration (refused before solving) is still
+/// counted; a re-triangulation that cannot be made (tried first) skips its solves unheard,
+/// so the input's solves that follow are named as the re-triangulation's (same shrinks, the
+/// wrong triangles).
 #[derive(Clone, Debug)]
 pub struct SolveTracker {
     plan: SolvePlan,
@@ -464,14 +459,18 @@ impl SolveTracker {
         }
     }
 
+    /// Hears that the running solve ended, `seconds` after the tessellation started: the
+    /// next of the plan begins (the last one stays named when there is none).
+    pub fn next_solve(&mut self, seconds: f64) {
+        self.solve = (self.solve + 1).min(self.plan.solves.len().saturating_sub(1));
+        self.started = seconds;
+        self.now = seconds;
+        self.index = 0;
+        self.residuals.clear();
+    }
+
     /// Hears one solver iteration, `seconds` after the tessellation started.
     pub fn iteration(&mut self, it: &Iteration, seconds: f64) {
-        if it.index <= self.index {
-            // The iteration count started again: the next solve of the plan runs.
-            self.solve = (self.solve + 1).min(self.plan.solves.len().saturating_sub(1));
-            self.started = self.now;
-            self.residuals.clear();
-        }
         self.index = it.index;
         self.now = seconds;
         self.residuals.push(it.residuals.developability);
@@ -506,6 +505,23 @@ impl SolveTracker {
             cap_left
         };
         per_iteration * left
+    }
+
+    /// The whole progress line, as `foldcam tessellate`'s bar shows it: the iteration of the
+    /// running solve out of the cap, the time since the start, then [`SolveTracker::status`].
+    pub fn line(&self) -> String {
+        format!(
+            "iteration {}/{} {}: {}",
+            self.index,
+            self.plan.max_iterations,
+            seconds_text(self.now),
+            self.status()
+        )
+    }
+
+    /// The iteration cap of each solve.
+    pub fn max_iterations(&self) -> usize {
+        self.plan.max_iterations
     }
 
     /// One line for a progress bar: the solve of the plan, the residual, the time left.
@@ -609,7 +625,7 @@ mod tests {
         assert_eq!(t.seconds_left(), 0.0);
     }
 
-    /// The count starting again is the next solve of the plan, timed from its own start.
+    /// The next solve of the plan begins when told, timed from its own start.
     #[test]
     fn a_new_solve_is_recognised_and_named() {
         let mut t = SolveTracker::new(plan());
@@ -620,24 +636,88 @@ mod tests {
             t.status()
                 .starts_with("shrink 0.8 on the input's triangles (solve 1 of at most 2)")
         );
+        assert!(t.line().starts_with("iteration 2/200 2 s: shrink 0.8"));
+        t.next_solve(4.0);
         t.iteration(&it(1, 1.0), 5.0);
         assert_eq!(t.solve(), (1, 2));
         assert!(
             t.status()
                 .contains("shrink 0.7 on the re-triangulation (solve 2 of at most 2)")
         );
-        // Three seconds into the second solve, up-front estimate 10 s.
-        assert!((t.seconds_left() - 7.0).abs() < 1e-12);
+        // One second into the second solve, up-front estimate 10 s.
+        assert!((t.seconds_left() - 9.0).abs() < 1e-12);
         assert!(
             t.status().contains("developability 1.0e0 rad"),
             "{}",
             t.status()
         );
         assert!(
-            t.status().ends_with("about 7 s left in this solve"),
+            t.status().ends_with("about 9 s left in this solve"),
             "{}",
             t.status()
         );
+        // There is no third solve: the last stays named.
+        t.next_solve(6.0);
+        assert_eq!(t.solve(), (1, 2));
+    }
+
+    /// A solve that makes no iteration still counts. A nearly flat cap whose 12-valent pole,
+    /// made a 12-pointed star (the star-point cap off), has 24 crease angles of at most
+    /// 15 deg, under the 29.8 deg limit: refused before solving at every shrink on its own
+    /// triangles, which come first (their sharpest corner, about 29.9 deg, is above the
+    /// limit). Every iteration must carry the label of the solve the pipeline is in, counted
+    /// from the pipeline's own `attempt` calls.
+    #[test]
+    fn solves_without_iterations_are_counted() {
+        let cap = crate::design::tessellation::spherical_cap(12, 1, 10.0, 100.0);
+        let options = TessellationOptions {
+            min_vertex_angle_deg: 29.8,
+            remesh_faces: Some(48),
+            ..TessellationOptions::default()
+        };
+        let plan = solve_plan(&cap, &options).unwrap();
+        let input_solves = SHRINK_LADDER.len();
+        assert!(!plan.solves[0].remeshed && plan.solves[input_solves].remeshed);
+        let mut opts = options.to_solver().unwrap();
+        opts.star.max_star_points = Some(usize::MAX);
+        let tracker = std::cell::RefCell::new(SolveTracker::new(plan.clone()));
+        // Per attempt the pipeline reports: its shrink and its iterations.
+        let attempts = std::cell::RefCell::new(Vec::new());
+        let mut labelled = 0;
+        let t = tessellate_scheduled(
+            &cap,
+            &opts,
+            &schedule(&options),
+            |s, t: &Tessellation| {
+                attempts.borrow_mut().push((s, t.report.iterations));
+                tracker.borrow_mut().next_solve(0.0);
+                ControlFlow::Continue(())
+            },
+            |it: &Iteration| {
+                let mut tracker = tracker.borrow_mut();
+                tracker.iteration(it, 0.0);
+                assert_eq!(tracker.solve().0, attempts.borrow().len(), "{it:?}");
+                labelled += 1;
+                ControlFlow::Continue(())
+            },
+        )
+        .unwrap();
+        let attempts = attempts.into_inner();
+        // The scenario: the input's solves made no iteration, the re-triangulation's did.
+        assert!(attempts.len() >= input_solves, "{attempts:?}");
+        assert!(attempts[..input_solves].iter().all(|a| a.1 == 0));
+        assert!(labelled > 0 && t.remeshed.is_some() && t.problem().is_none());
+        // The plan names each refused attempt's shrink, and the usable one's.
+        for (k, a) in attempts.iter().enumerate() {
+            assert_eq!(plan.solves[k].shrink, a.0, "{attempts:?}");
+        }
+        let last = plan.solves[attempts.len()];
+        assert_eq!((last.shrink, last.remeshed), (t.initial.shrink, true));
+        assert!(tracker.borrow().status().starts_with(&format!(
+            "shrink {} on the re-triangulation (solve {} of",
+            t.initial.shrink,
+            attempts.len() + 1
+        )));
     }
 
     #[test]

@@ -71,9 +71,16 @@ impl Violation {
                 "{at}: not developable, angle sum off 360 deg by {:.2e} rad",
                 self.value
             ),
+            // What measurements support (see the curvature advice, `advice.rs`): a smaller
+            // shrink helped; finer faces did not (finer caps needed smaller shrinks, and a
+            // 96-face cap failed where 6-face caps with larger defects solved); fold angles
+            // do not change with the size of the sheet.
             Condition::FoldAngle => format!(
                 "{at}: fold of {:.1} deg beyond the limit {:.1} deg; a smaller face shrink \
-                 here, finer faces or a larger sheet would open the tuck",
+                 opens the tucks wider and is what has helped so far; finer faces did not \
+                 (finer meshes needed smaller shrinks), and a larger sheet folds to the same \
+                 angles; cutting the surface into smaller pieces may help (a guide: the solve \
+                 decides)",
                 deg(self.value),
                 deg(self.bound)
             ),
@@ -216,4 +223,33 @@ pub fn after_solving(
         })
     });
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fold-angle hint states the numbers in degrees and only the remedy measurements
+    /// support: a smaller shrink, not finer faces or a larger sheet.
+    #[test]
+    fn the_fold_angle_hint_names_only_what_has_helped() {
+        let v = Violation {
+            input_vertex: 7,
+            position: DVec3::new(1.0, -2.0, 3.0),
+            condition: Condition::FoldAngle,
+            value: 3.0,
+            bound: 165f64.to_radians(),
+        };
+        let text = v.describe();
+        // 3 rad = 171.887 deg.
+        assert!(
+            text.starts_with(
+                "input vertex 7 at (1.0, -2.0, 3.0): fold of 171.9 deg beyond the limit 165.0 deg;"
+            ),
+            "{text}"
+        );
+        assert!(text.contains("a smaller face shrink"), "{text}");
+        assert!(text.contains("finer faces did not"), "{text}");
+        assert!(!text.contains("would open"), "{text}");
+    }
 }

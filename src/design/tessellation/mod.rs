@@ -62,7 +62,8 @@ pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
     Remesh, SHRINK_LADDER, Schedule, TessellateOptions, Tessellation, default_schedule, disk,
-    tessellate, tessellate_scheduled, tessellate_shrinking, tessellate_with_face_shrink,
+    keep_going, keep_trying, tessellate, tessellate_scheduled, tessellate_shrinking,
+    tessellate_with_face_shrink,
 };
 pub use remesh::{RemeshReport, remesh};
 pub use samples::{MASK_SIZE_MM, SampleSurface, face_mask, sample_surface, spherical_cap};
@@ -91,4 +92,7 @@ pub enum TessError {
     /// The developed pattern overlaps itself.
     #[error("the unfolded pattern overlaps itself (triangles {0} and {1})")]
     Overlap(usize, usize),
+    /// A callback asked to stop (the solve was cancelled, not refused).
+    #[error("cancelled")]
+    Cancelled,
 }

@@ -1,4 +1,10 @@
 //! The whole design in one call: mesh → star tucks → solve → unfold → face-intersection check.
+//!
+//! The callbacks (`progress` per solver iteration, `attempt` per refused result) return
+//! [`ControlFlow`]: [`ControlFlow::Break`] stops the work at once with
+//! [`TessError::Cancelled`]; [`keep_going`] and [`keep_trying`] never stop it.
+
+use std::ops::ControlFlow;
 
 use super::constraints::{BoundaryRuns, Limits, assign_folds};
 use super::diagnose::{self, Violation};
@@ -122,15 +128,26 @@ impl Tessellation {
     }
 }
 
+/// A `progress` callback that only lets the solve go on.
+pub fn keep_going(_: &Iteration) -> ControlFlow<()> {
+    ControlFlow::Continue(())
+}
+
+/// An `attempt` callback that only lets the next attempt begin.
+pub fn keep_trying(_: f64, _: &Tessellation) -> ControlFlow<()> {
+    ControlFlow::Continue(())
+}
+
 /// The face shrinks [`tessellate_shrinking`] tries by default, largest first.
 pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 
 /// [`tessellate`] with each face shrink of `shrinks` in turn (overriding `opts.star.shrink`)
 /// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one
-/// before the next shrink is tried. A shrink whose solve converges with [`BoundaryRuns::Dominant`]
-/// rows but intersects itself is solved once more with [`BoundaryRuns::EveryStart`] (the
-/// stiffer outline; as one attempt: `attempt` hears the second result only, and `progress`
-/// counts the second solve's iterations on from the first's). Returns the first usable result,
+/// (its solve has ended) before the next shrink is tried. A shrink whose solve converges with
+/// [`BoundaryRuns::Dominant`] rows but intersects itself is solved once more with
+/// [`BoundaryRuns::EveryStart`] (the stiffer outline; as one attempt: `attempt` hears the
+/// second result only, and `progress` counts the second solve's iterations on from the
+/// first's). Returns the first usable result,
 /// else the first one (the result of the shrink asked for first).
 /// This stands in for the paper's user, who avoids global face collisions (type 3, §3.2) by
 /// adjusting the design: a smaller shrink opens the tucks wider.
@@ -138,8 +155,8 @@ pub fn tessellate_shrinking(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     shrinks: &[f64],
-    mut attempt: impl FnMut(f64, &Tessellation),
-    mut progress: impl FnMut(&Iteration),
+    mut attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
+    mut progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     let mut first = None;
     for &shrink in shrinks {
@@ -164,7 +181,9 @@ pub fn tessellate_shrinking(
         if t.problem().is_none() {
             return Ok(t);
         }
-        attempt(shrink, &t);
+        if attempt(shrink, &t).is_break() {
+            return Err(TessError::Cancelled);
+        }
         first.get_or_insert(t);
     }
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
@@ -231,8 +250,8 @@ pub fn tessellate_scheduled(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     schedule: &Schedule,
-    mut attempt: impl FnMut(f64, &Tessellation),
-    mut progress: impl FnMut(&Iteration),
+    mut attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
+    mut progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     let order = schedule.remesh_order(mesh, &opts.solve.limits);
     let mut first: Option<Tessellation> = None;
@@ -320,7 +339,7 @@ pub fn disk(mesh: &PolyMesh) -> Result<HalfEdgeMesh, TessError> {
 pub fn tessellate(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
-    progress: impl FnMut(&Iteration),
+    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     tessellate_shrunk(mesh, opts, None, progress)
 }
@@ -332,7 +351,7 @@ pub fn tessellate_with_face_shrink(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     face_shrink: &[f64],
-    progress: impl FnMut(&Iteration),
+    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     tessellate_shrunk(mesh, opts, Some(face_shrink), progress)
 }
@@ -341,7 +360,7 @@ fn tessellate_shrunk(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     face_shrink: Option<&[f64]>,
-    progress: impl FnMut(&Iteration),
+    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     let he = disk(mesh)?;
     let mut star = opts.star;

@@ -144,11 +144,13 @@ pub const FLAT_TOLERANCE: f64 = 1e-9;
 pub const GROUND_TOLERANCE: f64 = 1e-9;
 
 /// Solves the constraints for `mesh.positions` in place (§3.3), calling `progress` after every
-/// iteration. Errors only on bad options; not converging is reported, not an error.
+/// iteration; [`Break`](std::ops::ControlFlow::Break) from it stops the solve at once with
+/// [`TessError::Cancelled`] (`mesh` is then left as it was). Errors otherwise only on bad
+/// options; not converging is reported, not an error.
 pub fn solve(
     mesh: &mut TessMesh,
     opts: &SolveOptions,
-    mut progress: impl FnMut(&Iteration),
+    mut progress: impl FnMut(&Iteration) -> std::ops::ControlFlow<()>,
 ) -> Result<SolveReport, TessError> {
     let l = opts.limits;
     let valid = opts.tolerance > 0.0
@@ -225,13 +227,16 @@ pub fn solve(
         rows = trial_rows;
         merit = m;
         last = constraints::residuals(mesh, &x, l.ground_z);
-        progress(&Iteration {
+        let heard = progress(&Iteration {
             index: iterations,
             residuals: last,
             active: active_counts(&rows),
             step,
             cg_iterations,
         });
+        if heard.is_break() {
+            return Err(TessError::Cancelled);
+        }
     }
     mesh.positions = x;
     Ok(SolveReport {
