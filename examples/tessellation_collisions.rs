@@ -65,7 +65,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect();
     let mut init = star_tucks(&he, &star)?;
     if let Ok(spec) = std::env::var("TUCK_DEPTH") {
-        let ab: Vec<f64> = spec.split(',').map(|v| v.parse()).collect::<Result<_, _>>()?;
+        let ab: Vec<f64> = spec
+            .split(',')
+            .map(|v| v.parse())
+            .collect::<Result<_, _>>()?;
         let (inner, outer) = (ab[0], ab[1]);
         let x = mesh.positions();
         let cap_deg: f64 = a[2].parse()?;

@@ -64,11 +64,7 @@ impl CollisionSites {
             let depth = crossing_depth(&ta.map(|v| x[v as usize]), &tb.map(|v| x[v as usize]));
             deepest = deepest.max(depth);
             let owners: Vec<u32> = owners(mesh, ta).chain(owners(mesh, tb)).collect();
-            let outer = owners
-                .iter()
-                .map(|&v| ring[v as usize])
-                .min()
-                .unwrap_or(0);
+            let outer = owners.iter().map(|&v| ring[v as usize]).min().unwrap_or(0);
             if let Some(slot) = by_ring.get_mut(outer) {
                 *slot += 1;
             }
@@ -265,13 +261,22 @@ mod tests {
         assert_eq!(sites.by_ring, vec![1, 0, 0]);
         assert_eq!(sites.outer_third(), 1);
         assert!((sites.deepest - 0.3).abs() < 1e-12, "{}", sites.deepest);
-        let mut owners: Vec<(u32, usize)> =
-            sites.sites.iter().map(|s| (s.input_vertex, s.ring)).collect();
+        let mut owners: Vec<(u32, usize)> = sites
+            .sites
+            .iter()
+            .map(|s| (s.input_vertex, s.ring))
+            .collect();
         owners.sort_unstable();
         assert_eq!(owners, vec![(0, 2), (1, 1), (2, 1), (7, 0)]);
-        assert_eq!(sites.sites[0].position, cap.positions()[sites.sites[0].input_vertex as usize]);
+        assert_eq!(
+            sites.sites[0].position,
+            cap.positions()[sites.sites[0].input_vertex as usize]
+        );
         let text = sites.describe().join("\n");
-        assert!(text.contains("1 face pairs cross, the deepest by 0.30 mm"), "{text}");
+        assert!(
+            text.contains("1 face pairs cross, the deepest by 0.30 mm"),
+            "{text}"
+        );
         assert!(text.contains("edge: 0: 1"), "{text}");
     }
 }

@@ -56,8 +56,8 @@ use thiserror::Error;
 
 pub use advice::{CurvatureAdvice, curvature_advice};
 pub use collision_sites::{CollisionSite, CollisionSites};
-pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{SurfaceDistance, corner_distance};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
