@@ -9,6 +9,13 @@
 //! MODE is star, truncated, twisted or twist; REMESH_FACES 0 keeps the input triangles.
 //! With DUMP set, the pairs the independent test does not confirm are printed.
 //! With COLLISION_GAP=MM the solve has collision rows keeping that gap; with GROUND set, the boundary is held on the plane of its lowest vertex (Tachi 2014, §6).
+//! With FLIP set, every face is turned over first (the tucks then lie on the convex side).
+//! With TUCK_DEPTH=A,B every tuck's own vertices (key vertex or flat n-gon) are moved from
+//! their input vertex by A (at the pole) to B (at the rim) times their initial offset,
+//! quadratically in the polar angle.
+//! With COLLISION_AFTER=MM the solve runs without collision rows until it converges, then
+//! continues from that state with rows keeping that gap (a continuation, up to 400 iterations
+//! in all).
 
 use std::collections::{HashSet, VecDeque};
 use std::time::Instant;
@@ -26,6 +33,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err("usage: N RINGS DEG RADIUS MODE SHRINK REMESH_FACES [CHUNK]".into());
     }
     let mut mesh = spherical_cap(a[0].parse()?, a[1].parse()?, a[2].parse()?, a[3].parse()?);
+    if std::env::var("FLIP").is_ok() {
+        let faces: Vec<Vec<u32>> = mesh
+            .faces()
+            .iter()
+            .map(|f| f.iter().rev().copied().collect())
+            .collect();
+        mesh = foldcam::mesh::PolyMesh::new(mesh.positions().to_vec(), faces)?;
+    }
     let faces: usize = a[6].parse()?;
     if faces > 0 {
         let (m, r) = remesh(&mesh, faces)?;
@@ -49,6 +64,24 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .map(|v| he.is_boundary(v))
         .collect();
     let mut init = star_tucks(&he, &star)?;
+    if let Ok(spec) = std::env::var("TUCK_DEPTH") {
+        let ab: Vec<f64> = spec
+            .split(',')
+            .map(|v| v.parse())
+            .collect::<Result<_, _>>()?;
+        let (inner, outer) = (ab[0], ab[1]);
+        let x = mesh.positions();
+        let cap_deg: f64 = a[2].parse()?;
+        let radius: f64 = a[3].parse()?;
+        let m = &mut init.mesh;
+        for v in m.corner_count..m.positions.len() {
+            let iv = m.input_vertex[v] as usize;
+            let p = x[iv];
+            let u = (1.0 + p.z / radius).clamp(-1.0, 1.0).acos().to_degrees() / cap_deg;
+            let scale = inner + (outer - inner) * u * u;
+            m.positions[v] = p + scale * (m.positions[v] - p);
+        }
+    }
     assign_folds(&mut init.mesh);
     let mut t = init.mesh.clone();
     limits.collision_gap = std::env::var("COLLISION_GAP").map_or(Ok(0.0), |g| g.parse())?;
@@ -71,11 +104,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
     let start = Instant::now();
     let mut done = 0;
+    let after: Option<f64> = std::env::var("COLLISION_AFTER")
+        .ok()
+        .map(|g| g.parse())
+        .transpose()?;
+    let mut switched = false;
     loop {
+        // The collision rows do not enter the solver's convergence test: in the continuation
+        // it runs on (a tolerance nothing reaches) until the pairs are gone or it stalls.
         let opts = SolveOptions {
             limits,
             max_iterations: chunk,
-            ..SolveOptions::default()
+            tolerance: if switched { 1e-300 } else { 1e-12 },
         };
         let r = solve(&mut t, &opts, keep_going)?;
         done += r.iterations;
@@ -94,6 +134,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .count(),
             if r.converged { ", converged" } else { "" }
         );
+        if switched && pairs.is_empty() && r.last.developability <= 1e-12 {
+            println!("continuation: no pairs left, developability within 1e-12 rad");
+            break;
+        }
+        if r.converged
+            && !switched
+            && let Some(gap) = after
+            && !pairs.is_empty()
+        {
+            println!("converged without collision rows; continuing with a {gap} mm gap");
+            limits.collision_gap = gap;
+            switched = true;
+            continue;
+        }
         // A solve that stops short of its chunk without converging has stalled.
         if r.converged || r.iterations < chunk || done >= 400 {
             break;
@@ -178,6 +232,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for (k, n) in &kinds {
         println!("  {n:5} {k}");
     }
+    // Where the pairs are: the polar angle of the first owner's input vertex, 5 deg bins.
+    let radius: f64 = a[3].parse()?;
+    let polar = |v: u32| {
+        let p = mesh.positions()[v as usize];
+        (1.0 + p.z / radius).clamp(-1.0, 1.0).acos().to_degrees()
+    };
+    let mut bins = std::collections::BTreeMap::new();
+    for &(p, q) in &pairs {
+        let angle = owner(t.triangles[p])
+            .into_iter()
+            .chain(owner(t.triangles[q]))
+            .map(polar)
+            .fold(0.0, f64::max);
+        *bins.entry((angle / 5.0) as usize * 5).or_insert(0) += 1;
+    }
+    println!("pairs by polar angle of their outermost owner (deg: count): {bins:?}");
     Ok(())
 }
 

@@ -11,7 +11,7 @@ use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessError,
     TessMesh, TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
-    curvature_advice, tessellate_scheduled,
+    curvature_advice, rim_crowding, tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -251,6 +251,14 @@ pub fn tessellate_outcome(
     for line in &advice {
         progress.note(line.clone());
     }
+    // Up front, when the tucks near the edge are expected to run into each other.
+    if let Ok(crowding) = rim_crowding(mesh)
+        && crowding.crowded()
+    {
+        for line in crowding.describe() {
+            progress.note(line);
+        }
+    }
     let asked = options.shrink.is_some();
     stop_if_cancelled_early(progress)?;
     progress.busy("solving");
@@ -312,6 +320,17 @@ pub fn tessellate_outcome(
             lines.push(format!(
                 "  ... and {} more input vertices",
                 group.len() - UNMET_SHOWN
+            ));
+        }
+    }
+    if let Some(sites) = &t.collisions {
+        lines.extend(sites.describe());
+        lines.extend(t.crowding.describe());
+        if t.crowded_at_rim() {
+            lines.push(format!(
+                "stopped at shrink {}: every limit is met but the tucks near the edge collide, \
+                 which a smaller shrink did not fix on such meshes",
+                t.initial.shrink
             ));
         }
     }

@@ -30,7 +30,9 @@
 pub(crate) mod advice;
 pub(crate) mod boundary;
 pub(crate) mod collision;
+pub(crate) mod collision_sites;
 pub(crate) mod constraints;
+pub(crate) mod crowding;
 pub(crate) mod diagnose;
 pub(crate) mod distance;
 pub(crate) mod estimate;
@@ -53,7 +55,9 @@ pub(crate) mod vertex_penalty;
 use thiserror::Error;
 
 pub use advice::{CurvatureAdvice, curvature_advice};
+pub use collision_sites::{CollisionSite, CollisionSites};
 pub use constraints::{BoundaryRuns, Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{SurfaceDistance, corner_distance};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};

@@ -6,7 +6,9 @@
 
 use std::ops::ControlFlow;
 
+use super::collision_sites::CollisionSites;
 use super::constraints::{BoundaryRuns, Limits, assign_folds};
+use super::crowding::{RimCrowding, rim_crowding};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
@@ -72,6 +74,11 @@ pub struct Tessellation {
     pub intersections: Vec<(usize, usize)>,
     /// The tolerance they were found with, mm.
     pub intersection_tolerance: f64,
+    /// Where on the input mesh those pairs lie (`None` when there are none).
+    pub collisions: Option<CollisionSites>,
+    /// The input mesh's crowding index (Tachi 2014, Fig. 14: tucks running into each other
+    /// near the edge), see [`crowding`](super::crowding).
+    pub crowding: RimCrowding,
     /// Limits the initial pattern cannot meet whatever the solve does (then the solve is
     /// skipped), see [`diagnose::before_solving`].
     pub infeasible: Vec<Violation>,
@@ -105,6 +112,19 @@ impl Tessellation {
 }
 
 impl Tessellation {
+    /// Whether this is the crowding [`crowding`](super::crowding) predicts: the solve
+    /// converged within every limit, the input mesh is crowded, and most intersecting pairs
+    /// lie in the outer third of the surface. On the caps measured a smaller face shrink did
+    /// not remove such intersections, so the schedules stop at the first such result.
+    pub fn crowded_at_rim(&self) -> bool {
+        self.report.converged
+            && self.crowding.crowded()
+            && self
+                .collisions
+                .as_ref()
+                .is_some_and(|c| 2 * c.outer_third() > c.pairs)
+    }
+
     /// Why the result cannot be used (not converged, a self-intersecting folded form, an
     /// overlapping pattern), or `None` when it can.
     pub fn problem(&self) -> Option<String> {
@@ -119,8 +139,17 @@ impl Tessellation {
             return Some("the solver did not reach every condition".into());
         }
         if let Some((a, b)) = self.intersections.first() {
+            let sites = self.collisions.as_ref().map_or(String::new(), |c| {
+                format!(
+                    ", {} of them within {} input edges of the sheet's edge, the deepest \
+                     {:.2} mm",
+                    c.outer_third(),
+                    c.rings / 3,
+                    c.deepest
+                )
+            });
             return Some(format!(
-                "the folded form intersects itself ({} face pairs, first: faces {a} and {b})",
+                "the folded form intersects itself ({} face pairs, first: faces {a} and {b}{sites})",
                 self.intersections.len()
             ));
         }
@@ -147,8 +176,9 @@ pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 /// [`BoundaryRuns::Dominant`] rows but intersects itself is solved once more with
 /// [`BoundaryRuns::EveryStart`] (the stiffer outline; as one attempt: `attempt` hears the
 /// second result only, and `progress` counts the second solve's iterations on from the
-/// first's). Returns the first usable result,
-/// else the first one (the result of the shrink asked for first).
+/// first's). Returns the first usable result, else the first one (the result of the shrink
+/// asked for first); stops early at a result
+/// [`crowded at the rim`](Tessellation::crowded_at_rim) and returns that one.
 /// This stands in for the paper's user, who avoids global face collisions (type 3, §3.2) by
 /// adjusting the design: a smaller shrink opens the tucks wider.
 pub fn tessellate_shrinking(
@@ -178,7 +208,7 @@ pub fn tessellate_shrinking(
                 })
             })?;
         }
-        if t.problem().is_none() {
+        if t.problem().is_none() || t.crowded_at_rim() {
             return Ok(t);
         }
         if attempt(shrink, &t).is_break() {
@@ -244,7 +274,9 @@ pub fn default_schedule() -> Schedule {
 /// [`tessellate_shrinking`] over `schedule`: the shrinks on the input mesh and on its
 /// re-triangulation, in the order [`Schedule::remesh`] says, until a result has no
 /// [`Tessellation::problem`]. `attempt` hears every result that has one. Returns the first
-/// usable result, else the first result. A re-triangulation that fails (for instance on a
+/// usable result, else the first result; stops early, returning it, at a result
+/// [`crowded at the rim`](Tessellation::crowded_at_rim) (the other triangulation has the same
+/// surface and about the same edge length, so the same crowding). A re-triangulation that fails (for instance on a
 /// mesh too small for it) is skipped when the input is tried too, an error otherwise.
 pub fn tessellate_scheduled(
     mesh: &PolyMesh,
@@ -280,7 +312,7 @@ pub fn tessellate_scheduled(
         } else {
             tessellate_shrinking(mesh, opts, &schedule.shrinks, &mut attempt, &mut progress)?
         };
-        if t.problem().is_none() {
+        if t.problem().is_none() || t.crowded_at_rim() {
             return Ok(t);
         }
         first.get_or_insert(t);
@@ -414,6 +446,9 @@ fn tessellate_shrunk(
         &solved.triangles,
         opts.intersection_tolerance,
     )?;
+    let collisions =
+        (!intersections.is_empty()).then(|| CollisionSites::locate(&solved, &he, &intersections));
+    let crowding = rim_crowding(mesh)?;
     Ok(Tessellation {
         initial,
         mesh: solved,
@@ -422,6 +457,8 @@ fn tessellate_shrunk(
         unfolded,
         intersections,
         intersection_tolerance: opts.intersection_tolerance,
+        collisions,
+        crowding,
         infeasible,
         unmet,
         remeshed: None,
