@@ -53,7 +53,9 @@ pub(crate) mod vertex_penalty;
 use thiserror::Error;
 
 pub use advice::{CurvatureAdvice, curvature_advice};
-pub use constraints::{Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use constraints::{
+    Limits, Residuals, angle_defects, assign_folds, assign_free_folds, residuals,
+};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{SurfaceDistance, corner_distance};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};

@@ -1,6 +1,6 @@
 //! The whole design in one call: mesh → star tucks → solve → unfold → face-intersection check.
 
-use super::constraints::{Limits, assign_folds};
+use super::constraints::{Limits, assign_folds, assign_free_folds};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
@@ -371,6 +371,7 @@ fn tessellate_shrunk(
         }
         _ => None,
     };
+    assign_free_folds(&mut solved);
     let unfolded = unfold(&solved);
     let intersections = intersecting_triangles(
         &solved.positions,
