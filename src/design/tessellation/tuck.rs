@@ -45,8 +45,8 @@
 //! the re-triangulation's 450 faces and shrink 0.8: largest fold 166.5°, smallest crease
 //! angle 29.2° after 200 iterations, the default cap). Given more iterations at that
 //! attempt, one run converged after 470 (27 s) and another stalled after 291 (developability
-//! 1.2e-2 rad, largest fold 165.7°, smallest crease angle 29.0°, 51 face pairs crossing): the
-//! solve depends on the order the re-triangulation comes out in. `spherical_cap(6, 6, 1, 100)`
+//! 1.2e-2 rad, largest fold 165.7°, smallest crease angle 29.0°, 51 face pairs crossing); why
+//! two runs of the same attempt differ is not known. `spherical_cap(6, 6, 1, 100)`
 //! stalls too (after 132 iterations at 3.8e-2 rad of developability).
 
 use std::collections::HashMap;
