@@ -151,6 +151,33 @@ fn the_432_face_cap_with_a_twelve_valent_pole_tessellates_with_star_tucks() {
     assert_eq!(t.initial.truncated, vec![0]);
 }
 
+/// Twisted stars on a cap of five rings round a 6-valent pole (`spherical_cap(6, 5, 20, 300)`,
+/// 150 faces; the 300 mm radius keeps every crease long enough for a perforation dash on
+/// stainless) at shrink 0.8, on its own triangles: with each twist fold's direction read off
+/// the initial pattern the solve stalled (measured, release: not converged after 112
+/// iterations, largest fold 167.5°, smallest crease angle 26.9°); with the direction left to
+/// the solve it converges (158 iterations) within the stainless limits, checked as above,
+/// each twist fold ends a mountain or valley as it folds, and the pattern cuts clean on the
+/// fiber laser.
+#[test]
+#[ignore = "slow in debug: about two minutes"]
+fn twisted_stars_solve_a_five_ring_cap_and_cut_clean() {
+    let mesh = spherical_cap(6, 5, 20.0, 300.0);
+    assert_eq!(mesh.faces().len(), 150);
+    let t = solved_cap("cap 6/5 twisted", &mesh, TuckKind::Twisted, 300.0, &[0.8]);
+    let twist_folds: Vec<_> = t
+        .mesh
+        .edges
+        .iter()
+        .filter(|e| e.role == EdgeRole::TwistFold)
+        .collect();
+    assert_eq!(twist_folds.len(), 420);
+    // Each is a mountain or a valley now; `check_unfolded` has checked it folds that way.
+    assert!(twist_folds.iter().all(|e| e.assignment.is_fold()));
+    let cp = &t.unfolded.as_ref().expect("unfolds").pattern;
+    assert_cuts_clean_on("cap 6/5 twisted", cp, "linuxcnc-fiber", "stainless-0.5");
+}
+
 /// The small 12-valent cap goes through the fabrication pipeline on the fiber laser with
 /// 0.5 mm stainless steel without violations and with every crease covered.
 #[test]

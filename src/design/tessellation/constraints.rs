@@ -4,7 +4,9 @@
 //! - fold-angle range and limit, eq. 3 with §5's `ρ_limit = 180° − δ_fold`: with σ = +1 for a
 //!   valley and −1 for a mountain and ρ' = σρ, a fold beyond the limit gets
 //!   `f = 2 (sin(ρ'/2) − sin(ρ_target/2)) h_p h_q` and a fold of the wrong sign gets
-//!   `f = 2 (sin(ρ'/2) − sin(m/2)) h_p h_q` (eq. 4: h are relative heights, Fig. 7);
+//!   `f = 2 (sin(ρ'/2) − sin(m/2)) h_p h_q` (eq. 4: h are relative heights, Fig. 7); a crease
+//!   left free to fold either way (the twist folds, see [`assign_folds`]) gets the limit row
+//!   only;
 //! - vertex angles, §5: every angle θ between neighbouring creases ≥ δ_corner (a triangle
 //!   corner, or corners summed across flat diagonals: [`Sectors`](super::sectors::Sectors)), `θ − (δ_corner + m)` when
 //!   violated;
@@ -157,9 +159,11 @@ fn add(entries: &mut Vec<(u32, DVec3)>, v: u32, g: DVec3) {
 /// (the side the input faces' normals point to, with the key vertices behind): face rims,
 /// digons and key-to-corner creases are mountains, key-to-tip creases valleys, diagonals of
 /// polygon faces flat. These are the signs of the half-open initial pattern (s < 1), where the
-/// closed tucks of s = 1 leave them undecided (±180°). The creases the §2.2 variations add
-/// (n-gon rims, twist folds) take the sign of their fold in the initial pattern
-/// (`mesh.positions`), a valley when it is exactly flat.
+/// closed tucks of s = 1 leave them undecided (±180°). The n-gon rims of the §2.2 variations
+/// take the sign of their fold in the initial pattern (`mesh.positions`), a valley when it is
+/// exactly flat. Twist folds stay [`Assignment::Unassigned`]: the twist is a free parameter
+/// that changes during the solve (Tachi 2014, §2.2), so the solver bounds only their fold
+/// magnitude and [`assign_free_folds`] reads their direction off the solved form.
 pub fn assign_folds(mesh: &mut TessMesh) {
     for k in 0..mesh.edges.len() {
         let e = &mesh.edges[k];
@@ -170,7 +174,8 @@ pub fn assign_folds(mesh: &mut TessMesh) {
             EdgeRole::Diagonal => Assignment::Flat,
             EdgeRole::KeyTip => Assignment::Valley,
             EdgeRole::FaceRim | EdgeRole::Digon | EdgeRole::KeyCorner => Assignment::Mountain,
-            EdgeRole::TruncationRim | EdgeRole::TwistFold => {
+            EdgeRole::TwistFold => Assignment::Unassigned,
+            EdgeRole::TruncationRim => {
                 let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
                 if fold_angle(i, j, a, b).value >= 0.0 {
                     Assignment::Valley
@@ -181,6 +186,24 @@ pub fn assign_folds(mesh: &mut TessMesh) {
             EdgeRole::Boundary => Assignment::Boundary,
         };
         mesh.edges[k].assignment = assignment;
+    }
+}
+
+/// Mountain or valley, by the sign of its fold at `mesh.positions` (a valley when exactly
+/// flat), for every interior crease the solve left free ([`Assignment::Unassigned`]: the twist
+/// folds, see [`assign_folds`]). Call after solving, before unfolding.
+pub fn assign_free_folds(mesh: &mut TessMesh) {
+    for k in 0..mesh.edges.len() {
+        let e = &mesh.edges[k];
+        if !e.interior || e.assignment != Assignment::Unassigned {
+            continue;
+        }
+        let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
+        mesh.edges[k].assignment = if fold_angle(i, j, a, b).value >= 0.0 {
+            Assignment::Valley
+        } else {
+            Assignment::Mountain
+        };
     }
 }
 
@@ -250,6 +273,10 @@ pub fn rows(mesh: &TessMesh, x: &[DVec3], limits: &Limits) -> Vec<Row> {
             Assignment::Mountain => -1.0,
             Assignment::Flat => {
                 out.push(hinge_row(x, mesh.hinge(e), 1.0, 0.0, Family::Flat));
+                continue;
+            }
+            Assignment::Unassigned => {
+                out.extend(free_fold_row(x, mesh.hinge(e), limits));
                 continue;
             }
             _ => continue,
@@ -381,6 +408,23 @@ fn fold_row(x: &[DVec3], hinge: [u32; 4], sigma: f64, limits: &Limits) -> Option
         return None;
     };
     Some(hinge_row(x, hinge, sigma, target, family))
+}
+
+/// Eq. 3 for a crease free to fold either way ([`Assignment::Unassigned`], the twist folds):
+/// only the fold-angle limit, on the side it folds to now.
+fn free_fold_row(x: &[DVec3], hinge: [u32; 4], limits: &Limits) -> Option<Row> {
+    let [i, j, a, b] = hinge.map(|v| x[v as usize]);
+    let rho = fold_angle(i, j, a, b).value;
+    let sigma = if rho >= 0.0 { 1.0 } else { -1.0 };
+    (sigma * rho > limits.max_fold - limits.hold * limits.margin).then(|| {
+        hinge_row(
+            x,
+            hinge,
+            sigma,
+            limits.max_fold - limits.margin,
+            Family::FoldLimit,
+        )
+    })
 }
 
 /// Eq. 3–4: `f = 2 (sin(σρ/2) − sin(target/2)) h_p h_q` over `hinge = [i, j, a, b]`, with its

@@ -183,6 +183,8 @@ pub fn after_solving(
         let sigma = match e.assignment {
             Assignment::Valley => 1.0,
             Assignment::Mountain => -1.0,
+            // Free to fold either way (twist folds): only the limit applies.
+            Assignment::Unassigned => rho.signum(),
             _ => continue,
         };
         if rho.abs() > limits.max_fold {

@@ -56,7 +56,9 @@ use thiserror::Error;
 
 pub use advice::{CurvatureAdvice, curvature_advice};
 pub use collision_sites::{CollisionSite, CollisionSites};
-pub use constraints::{BoundaryRuns, Limits, Residuals, angle_defects, assign_folds, residuals};
+pub use constraints::{
+    BoundaryRuns, Limits, Residuals, angle_defects, assign_folds, assign_free_folds, residuals,
+};
 pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{SurfaceDistance, corner_distance};

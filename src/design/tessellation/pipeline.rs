@@ -7,7 +7,7 @@
 use std::ops::ControlFlow;
 
 use super::collision_sites::CollisionSites;
-use super::constraints::{BoundaryRuns, Limits, assign_folds};
+use super::constraints::{BoundaryRuns, Limits, assign_folds, assign_free_folds};
 use super::crowding::{RimCrowding, rim_crowding};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
@@ -440,6 +440,7 @@ fn tessellate_shrunk(
         }
         _ => None,
     };
+    assign_free_folds(&mut solved);
     let unfolded = unfold(&solved);
     let intersections = intersecting_triangles(
         &solved.positions,

@@ -23,25 +23,31 @@
 //!
 //! The solver moves every new vertex freely, so the truncation size and the twist are the
 //! free parameters the paper describes: they change during the solve to fit the curvature.
-//! The creases the variations add (n-gon rims and twist folds) take their mountain/valley from
-//! the initial geometry ([`EdgeRole::TruncationRim`], [`EdgeRole::TwistFold`]).
+//! The n-gon rims take their mountain/valley from the initial geometry
+//! ([`EdgeRole::TruncationRim`]); the twist folds ([`EdgeRole::TwistFold`]) are left free
+//! during the solve (only their fold magnitude is bounded) and take the direction they fold
+//! in the solved form, since the twist may turn either way and differently in each arm.
 //!
 //! Deviations, where the paper says nothing: a boundary vertex (an open chain of arms) is
 //! never truncated (its key vertex stays; a flat polygon would need an edge on the sheet
-//! boundary); a twisted tuck needs a non-zero twist, since its added creases are otherwise
-//! flat and have no mountain/valley.
+//! boundary); a twisted tuck needs a non-zero initial twist, since its added creases are
+//! otherwise flat.
 //!
-//! Known limit (measured, 0.5 mm stainless limits, release build): twisted stars in the
-//! checkerboard layout converge on small regular triangle meshes (the bundled dome, bell and
-//! saddle; `spherical_cap(6, 4, 60, 100)`, 37 interior tucks, in 97 iterations) but not on
-//! larger ones, however flat: `spherical_cap(6, 5, 20, 100)`, `spherical_cap(6, 6, 20, 100)`
-//! and `spherical_cap(6, 6, 1, 100)` stall at shrink 0.8 with the key–tip valleys near 166°
-//! and the face corners beside the twist folds under 30°, over a third of the twist folds folded
-//! against the sign read off the initial pattern, where twist folds converge (44 and 42
-//! iterations) and star tucks on the 20° cap (136). On the 20° cap a twist of 2° or 5°, the
-//! twist vertex at 0.3, 0.37 or 0.65 of the way to the tip, or the twist folds' signs
-//! flipped, did not help; on the 432-face cap re-triangulated, neither did a twist of 5°,
-//! 30° or −15°, a shrink of 0.4 to 0.8, or 918 faces instead of 450.
+//! Measured (0.5 mm stainless limits, release build, checkerboard layout, shrink 0.8): with
+//! each twist fold's direction fixed from the initial pattern, twisted stars stalled on
+//! `spherical_cap(6, 5, 20, 100)` (not converged after 300 iterations, 113 of its 420 twist
+//! folds then folded more than 0.5° against their sign, mostly both folds of one twist vertex
+//! together: the arm had turned the other way). With the direction free they converge there in 164 iterations
+//! and on `spherical_cap(6, 6, 20, 100)` in 177, but the solve unwinds most twists: the
+//! twist folds end at a median of 0.8° (90 % under 14°, largest 48°) on the five-ring cap.
+//! Known limit: the 432-face cap (`spherical_cap(12, 6, 60, 100)`) still fails with
+//! twisted stars by the default schedule (2,433 iterations over its 12 attempts, 166 s; at
+//! the re-triangulation's 450 faces and shrink 0.8: largest fold 166.5°, smallest crease
+//! angle 29.2° after 200 iterations, the default cap). Given more iterations at that
+//! attempt, one run converged after 470 (27 s) and another stalled after 291 (developability
+//! 1.2e-2 rad, largest fold 165.7°, smallest crease angle 29.0°, 51 face pairs crossing); why
+//! two runs of the same attempt differ is not known. `spherical_cap(6, 6, 1, 100)`
+//! stalls too (after 132 iterations at 3.8e-2 rad of developability).
 
 use std::collections::HashMap;
 

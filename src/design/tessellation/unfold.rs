@@ -56,6 +56,9 @@ pub fn unfold(mesh: &TessMesh) -> Result<Unfolded, TessError> {
             EdgeRole::Diagonal if rho.abs() < 0.5 => Assignment::Flat,
             EdgeRole::Diagonal if rho > 0.0 => Assignment::Valley,
             EdgeRole::Diagonal => Assignment::Mountain,
+            // Left free by the solve (twist folds): the way it folds.
+            _ if e.assignment == Assignment::Unassigned && rho >= 0.0 => Assignment::Valley,
+            _ if e.assignment == Assignment::Unassigned => Assignment::Mountain,
             _ => e.assignment,
         };
         edges.push(Edge::new(ids[0], ids[1], assignment).with_angle(rho.clamp(-180.0, 180.0)));
