@@ -69,9 +69,9 @@ pub struct Limits {
 ///
 /// | cap | rows | iterations | time | intersecting face pairs |
 /// |---|---|---|---|---|
-/// | 2,022 faces | dominant | 31–33 | 2.0 s | 231 |
+/// | 2,022 faces | dominant | 31–33 | 2.0–2.3 s | 231 |
 /// | 2,022 faces | every start | 59 | 5.8–6.4 s | 585 |
-/// | 10,086 faces | dominant | 68 | 80 s | 13,229 |
+/// | 10,086 faces | dominant | 68–71 | 56–80 s | 13,115–13,229 |
 /// | 10,086 faces | every start | 95–109 | 116–150 s | 4,407–5,766 |
 /// | 450 faces (shrink 0.5) | dominant | 16 | 0.5 s | 90 |
 /// | 450 faces (shrink 0.5) | every start | 16 | 0.2 s | 0 |
