@@ -127,12 +127,22 @@ fn a_solve_streams_its_progress_and_saves_a_design_the_command_rebuilds() {
         .filter(|e| e["kind"] == "note")
         .map(|e| e["text"].as_str().unwrap())
         .collect();
-    assert!(
-        notes.iter().any(|n| n.starts_with("estimate:")),
-        "{notes:?}"
-    );
+    // The estimate names as many solves as the page is told the plan has.
+    let estimate = notes
+        .iter()
+        .find(|n| n.starts_with("estimate:"))
+        .unwrap_or_else(|| panic!("{notes:?}"));
+    let planned: u64 = estimate
+        .split("up to ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("{estimate}"));
     let iterations: Vec<&Value> = events.iter().filter(|e| e["kind"] == "iteration").collect();
     assert!(!iterations.is_empty());
+    for it in &iterations {
+        assert_eq!(it["attempts"].as_u64(), Some(planned), "{estimate}: {it}");
+    }
     for pair in iterations.windows(2) {
         let (a, b) = (pair[0]["index"].as_u64(), pair[1]["index"].as_u64());
         let next_attempt = pair[1]["attempt"].as_u64() > pair[0]["attempt"].as_u64();

@@ -238,11 +238,13 @@ pub fn tessellate_outcome(
         corner = limits.min_vertex_angle.to_degrees(),
     ));
     let schedule = schedule(options);
+    let solves = solve_plan(mesh, options)?.solves.len();
     progress.note(format!(
-        "estimate: {} per solve, up to {} solve(s) (one per face shrink tried, twice if the \
-         surface is re-triangulated)",
+        "estimate: {} per solve, up to {solves} solve(s): {} face shrink(s) on {} \
+         triangulation(s), a colliding one solved once more with the stiffer outline",
         solve_estimate(mesh.faces().len()),
-        schedule.shrinks.len()
+        schedule.shrinks.len(),
+        solves / schedule.shrinks.len().max(1),
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
     let advice = curvature_advice(mesh)
