@@ -3,6 +3,7 @@
 //! and where the folded form's intersecting face pairs lie (how deep, how far from the axis).
 //! With `SHRINK_OUTER=S` the face shrink grows from SHRINK at the axis to S at the rim
 //! (quadratically in the distance from the axis) instead of being uniform.
+//! With `MAX_IT=N` the solve's iteration cap is N instead of the default.
 //!
 //! `cargo run --release --example tessellation_profile -- N RINGS DEG RADIUS MODE SHRINK [REMESH_FACES]`
 //! MODE is star, truncated, twisted or twist.
@@ -35,6 +36,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         m => return Err(format!("unknown mode {m}").into()),
     };
     opts.star.shrink = a[5].parse()?;
+    if let Some(cap) = std::env::var("MAX_IT").ok().and_then(|v| v.parse().ok()) {
+        opts.solve.max_iterations = cap;
+    }
     let start = Instant::now();
     let mut last = Instant::now();
     let outer: Option<f64> = std::env::var("SHRINK_OUTER")
