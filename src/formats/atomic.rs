@@ -182,6 +182,15 @@ impl OutputSet {
 mod tests {
     use super::*;
 
+    /// `remove_pending_temporaries` removes every pending temporary of the process, so the
+    /// tests that stage files take turns (the test harness runs them on parallel threads; a
+    /// removal during another test's commit made that commit fail).
+    static STAGING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+    fn take_turn() -> std::sync::MutexGuard<'static, ()> {
+        STAGING.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
     fn listing(dir: &Path) -> Vec<String> {
         let mut names: Vec<String> = std::fs::read_dir(dir)
             .unwrap()
@@ -193,6 +202,7 @@ mod tests {
 
     #[test]
     fn a_set_with_one_bad_target_writes_nothing() {
+        let _turn = take_turn();
         let dir = tempfile::tempdir().unwrap();
         let good = dir.path().join("a.fold");
         std::fs::write(&good, "OLD").unwrap();
@@ -208,6 +218,7 @@ mod tests {
 
     #[test]
     fn a_set_writes_every_file_and_leaves_no_temporary() {
+        let _turn = take_turn();
         let dir = tempfile::tempdir().unwrap();
         let mut set = OutputSet::new();
         set.add(dir.path().join("a.fold"), b"A".to_vec());
@@ -221,6 +232,7 @@ mod tests {
 
     #[test]
     fn pending_temporaries_are_removed_on_request() {
+        let _turn = take_turn();
         let dir = tempfile::tempdir().unwrap();
         let tmp = temporary_for(&dir.path().join("x.fold"), 0).unwrap();
         write_temporary(&tmp, b"partial").unwrap();
