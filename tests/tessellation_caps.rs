@@ -228,7 +228,7 @@ fn the_432_face_cap_tessellates_remeshed_with_truncated_stars_and_twist_folds() 
     let mesh = spherical_cap(12, 6, 60.0, 100.0);
     let schedule = default_schedule();
     assert_eq!(schedule.remesh, Remesh::Auto);
-    for (kind, shrink) in [(TuckKind::Truncated, 0.5), (TuckKind::TwistFold, 0.8)] {
+    for (kind, shrink) in [(TuckKind::Truncated, 0.5), (TuckKind::TwistFold, 0.7)] {
         assert!(schedule.shrinks.contains(&shrink));
         let only = Schedule {
             shrinks: vec![shrink],
