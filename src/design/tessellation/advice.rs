@@ -35,7 +35,7 @@ use glam::DVec3;
 
 use super::TessError;
 use super::pipeline::disk;
-use crate::mesh::PolyMesh;
+use crate::mesh::{HalfEdgeMesh, PolyMesh};
 
 /// The curvature of an input mesh, see the module docs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -137,7 +137,11 @@ pub const DEFECT_SEEN_SOLVED: f64 = 111.5 * PI / 180.0;
 /// # Errors
 /// When `mesh` is not an oriented manifold disk.
 pub fn curvature_advice(mesh: &PolyMesh) -> Result<CurvatureAdvice, TessError> {
-    let he = disk(mesh)?;
+    Ok(curvature_advice_of(mesh, &disk(mesh)?))
+}
+
+/// [`curvature_advice`] of `mesh` with its half-edge view `he` already built.
+pub(crate) fn curvature_advice_of(mesh: &PolyMesh, he: &HalfEdgeMesh) -> CurvatureAdvice {
     let x = mesh.positions();
     let mut sums = vec![0.0; x.len()];
     let mut areas = vec![0.0; x.len()];
@@ -178,7 +182,7 @@ pub fn curvature_advice(mesh: &PolyMesh) -> Result<CurvatureAdvice, TessError> {
             advice.max_at = x[v];
         }
     }
-    Ok(advice)
+    advice
 }
 
 #[cfg(test)]

@@ -6,10 +6,9 @@
 //! avoid each other, and cutting the surface (or taking a smaller piece of it) is the cure;
 //! these sites let a refusal say whether that is what happened.
 
-use std::collections::VecDeque;
-
 use glam::DVec3;
 
+use super::crowding::distances_from_boundary;
 use super::model::TessMesh;
 use crate::mesh::HalfEdgeMesh;
 
@@ -155,32 +154,19 @@ fn owners(mesh: &TessMesh, tri: [u32; 3]) -> impl Iterator<Item = u32> + '_ {
     list.into_iter()
 }
 
-/// Distance of every input vertex from the boundary, in edges (breadth-first from every
-/// boundary vertex); `usize::MAX` for a vertex no face uses.
+/// Distance of every input vertex from the boundary, in edges
+/// ([`distances_from_boundary`] with unit edges); `usize::MAX` for a vertex no face uses.
 pub fn rings_from_boundary(mesh: &HalfEdgeMesh) -> Vec<usize> {
-    let n = mesh.positions().len();
-    let mut ring = vec![usize::MAX; n];
-    let mut queue = VecDeque::new();
-    for (v, r) in ring.iter_mut().enumerate() {
-        if !mesh.fan(v).is_empty() && mesh.is_boundary(v) {
-            *r = 0;
-            queue.push_back(v);
-        }
-    }
-    let hes = mesh.half_edges();
-    while let Some(v) = queue.pop_front() {
-        for &h in mesh.fan(v) {
-            let e = hes[h as usize];
-            // The outgoing edge's end and the face's incoming edge's start.
-            for w in [e.to, hes[e.prev as usize].from] {
-                if ring[w as usize] == usize::MAX {
-                    ring[w as usize] = ring[v] + 1;
-                    queue.push_back(w as usize);
-                }
+    distances_from_boundary(mesh, |_, _| 1.0)
+        .into_iter()
+        .map(|d| {
+            if d.is_finite() {
+                d as usize
+            } else {
+                usize::MAX
             }
-        }
-    }
-    ring
+        })
+        .collect()
 }
 
 /// How deep triangles `a` and `b` cross, mm: for each, its reach through the other's plane

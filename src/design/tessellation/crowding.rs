@@ -47,9 +47,9 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use super::TessError;
-use super::advice::curvature_advice;
+use super::advice::curvature_advice_of;
 use super::pipeline::disk;
-use crate::mesh::PolyMesh;
+use crate::mesh::{HalfEdgeMesh, PolyMesh};
 
 /// The crowding index up to which the measured caps tessellated without intersections (see
 /// the module docs): the clean caps measure 6.1–9.5 (60°/6 rings 8.5, 41.5°/9 rings 8.6,
@@ -140,10 +140,13 @@ impl RimCrowding {
 /// # Errors
 /// When `mesh` is not an oriented manifold disk.
 pub fn rim_crowding(mesh: &PolyMesh) -> Result<RimCrowding, TessError> {
-    let he = disk(mesh)?;
-    let advice = curvature_advice(mesh)?;
+    Ok(rim_crowding_of(mesh, &disk(mesh)?))
+}
+
+/// [`rim_crowding`] of `mesh` with its half-edge view `he` already built.
+pub(crate) fn rim_crowding_of(mesh: &PolyMesh, he: &HalfEdgeMesh) -> RimCrowding {
+    let advice = curvature_advice_of(mesh, he);
     let x = mesh.positions();
-    let hes = he.half_edges();
     // The edge of an equilateral triangle of the mean triangle area: unlike the mean edge
     // length, the same for a modelling program's cap and its near-regular re-triangulation.
     let triangles: usize = mesh.faces().iter().map(|f| f.len() - 2).sum();
@@ -158,9 +161,27 @@ pub fn rim_crowding(mesh: &PolyMesh) -> Result<RimCrowding, TessError> {
     } else {
         f64::INFINITY
     };
-    // Dijkstra from every boundary vertex along the edges.
-    let n = x.len();
-    let mut dist = vec![f64::INFINITY; n];
+    let reach = distances_from_boundary(he, |v, w| x[v].distance(x[w]))
+        .into_iter()
+        .filter(|d| d.is_finite())
+        .fold(0.0, f64::max);
+    RimCrowding {
+        reach,
+        radius,
+        edge,
+        faces: mesh.faces().len(),
+    }
+}
+
+/// Shortest distance of every vertex from the sheet's edge along the mesh edges, each edge
+/// `(v, w)` costing `length(v, w)` (Dijkstra from every boundary vertex; a unit length counts
+/// edges); infinite for a vertex no face uses.
+pub(crate) fn distances_from_boundary(
+    he: &HalfEdgeMesh,
+    length: impl Fn(usize, usize) -> f64,
+) -> Vec<f64> {
+    let hes = he.half_edges();
+    let mut dist = vec![f64::INFINITY; he.positions().len()];
     let mut heap = BinaryHeap::new();
     for (v, d) in dist.iter_mut().enumerate() {
         if !he.fan(v).is_empty() && he.is_boundary(v) {
@@ -174,9 +195,10 @@ pub fn rim_crowding(mesh: &PolyMesh) -> Result<RimCrowding, TessError> {
         }
         for &h in he.fan(v) {
             let e = hes[h as usize];
+            // The outgoing edge's end and the face's incoming edge's start.
             for w in [e.to, hes[e.prev as usize].from] {
                 let w = w as usize;
-                let nd = d + x[v].distance(x[w]);
+                let nd = d + length(v, w);
                 if nd < dist[w] {
                     dist[w] = nd;
                     heap.push(Near(nd, w));
@@ -184,17 +206,7 @@ pub fn rim_crowding(mesh: &PolyMesh) -> Result<RimCrowding, TessError> {
             }
         }
     }
-    let reach = dist
-        .iter()
-        .copied()
-        .filter(|d| d.is_finite())
-        .fold(0.0, f64::max);
-    Ok(RimCrowding {
-        reach,
-        radius,
-        edge,
-        faces: mesh.faces().len(),
-    })
+    dist
 }
 
 /// A heap entry, nearest first.

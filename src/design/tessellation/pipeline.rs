@@ -8,7 +8,7 @@ use std::ops::ControlFlow;
 
 use super::collision_sites::CollisionSites;
 use super::constraints::{BoundaryRuns, Limits, assign_folds, assign_free_folds};
-use super::crowding::{RimCrowding, rim_crowding};
+use super::crowding::{RimCrowding, rim_crowding_of};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
@@ -449,7 +449,7 @@ fn tessellate_shrunk(
     )?;
     let collisions =
         (!intersections.is_empty()).then(|| CollisionSites::locate(&solved, &he, &intersections));
-    let crowding = rim_crowding(mesh)?;
+    let crowding = rim_crowding_of(mesh, &he);
     Ok(Tessellation {
         initial,
         mesh: solved,
