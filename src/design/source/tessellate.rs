@@ -428,7 +428,7 @@ pub fn solve_plan(
             })
             .collect(),
         seconds_per_solve: solve_estimate(faces.max(mesh.faces().len())).seconds,
-        max_iterations: opts.solve.max_iterations,
+        max_iterations: opts.solve_options().max_iterations,
         tolerance: opts.solve.tolerance,
     })
 }

@@ -25,6 +25,9 @@ pub(crate) struct Jacobian {
     /// The preconditioner and the Tikhonov ε, built at the first solve and reused by later
     /// solves with the same rows.
     preconditioner: OnceCell<(Preconditioner, f64)>,
+    /// The damping μ relative to the largest diagonal entry of `C Cᵀ` (0: the tiny
+    /// Tikhonov ε only), see [`Jacobian::damped`].
+    damping: f64,
 }
 
 impl Jacobian {
@@ -47,6 +50,22 @@ impl Jacobian {
             blocks,
             n,
             preconditioner: OnceCell::new(),
+            damping: 0.0,
+        }
+    }
+
+    /// The same rows with the Levenberg–Marquardt damping μ = `relative` × the largest
+    /// diagonal entry of `C Cᵀ` in place of the tiny ε: the step `Cᵀ (C Cᵀ + μI)⁻¹ g` then
+    /// turns from the minimum-norm Newton step (μ → 0) towards the steepest descent of
+    /// ½‖g‖² (μ → ∞), and stays short where rows are nearly dependent.
+    pub(crate) fn damped(&self, relative: f64) -> Self {
+        Jacobian {
+            offsets: self.offsets.clone(),
+            vertices: self.vertices.clone(),
+            blocks: self.blocks.clone(),
+            n: self.n,
+            preconditioner: OnceCell::new(),
+            damping: relative,
         }
     }
 
@@ -93,7 +112,7 @@ impl Jacobian {
 pub(crate) fn min_norm(c: &Jacobian, g: &[f64], eta: f64) -> (Vec<DVec3>, usize) {
     let (pre, eps) = c.preconditioner.get_or_init(|| {
         let (diag, eps) = diagonal(c);
-        (Preconditioner::new(c, &diag, eps), eps)
+        (Preconditioner::new(c, &diag, eps, c.damping > 0.0), eps)
     });
     preconditioned_cg(c, g, eta, *eps, pre)
 }
@@ -103,7 +122,7 @@ fn diagonal(c: &Jacobian) -> (Vec<f64>, f64) {
     let diag: Vec<f64> = (0..c.rows())
         .map(|r| c.row(r).map(|(_, b)| b.length_squared()).sum())
         .collect();
-    let eps = ROUNDOFF * diag.iter().fold(0.0f64, |a, &d| a.max(d)).max(TINY);
+    let eps = ROUNDOFF.max(c.damping) * diag.iter().fold(0.0f64, |a, &d| a.max(d)).max(TINY);
     (diag, eps)
 }
 
@@ -175,9 +194,9 @@ enum Preconditioner {
 impl Preconditioner {
     /// The Cholesky factor for systems of at least [`FACTOR_ROWS`] rows (shifted by 100ε
     /// so that near-redundant rows still factor), else or on failure the diagonal `diag + ε`.
-    fn new(c: &Jacobian, diag: &[f64], eps: f64) -> Self {
+    fn new(c: &Jacobian, diag: &[f64], eps: f64, damped: bool) -> Self {
         let factored = if c.rows() >= FACTOR_ROWS {
-            factor(c, 100.0 * eps)
+            factor(c, if damped { eps } else { 100.0 * eps })
         } else {
             None
         };

@@ -67,9 +67,9 @@ pub use geometry::{Graded, fold_angle};
 pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
-    Remesh, SHRINK_LADDER, Schedule, TessellateOptions, Tessellation, default_schedule, disk,
-    keep_going, keep_trying, tessellate, tessellate_scheduled, tessellate_shrinking,
-    tessellate_with_face_shrink,
+    Remesh, SHRINK_LADDER, Schedule, TWISTED_ITERATIONS, TessellateOptions, Tessellation,
+    default_schedule, disk, keep_going, keep_trying, tessellate, tessellate_scheduled,
+    tessellate_shrinking, tessellate_with_face_shrink,
 };
 pub use remesh::{RemeshReport, remesh};
 pub use samples::{MASK_SIZE_MM, SampleSurface, face_mask, sample_surface, spherical_cap};

@@ -220,7 +220,11 @@ fn disk_map(he: &HalfEdgeMesh, triangles: &[[u32; 3]]) -> Result<Vec<DVec2>, Tes
     }
     let mut entries = Vec::new();
     let mut rhs = vec![DVec2::ZERO; m];
-    for (&(i, j), &w) in &weights {
+    // In key order: the diagonal and right-hand sums then add up the same way on every run
+    // (a map's order would vary the result in its last bits, and the solve after it).
+    let mut weights: Vec<((u32, u32), f64)> = weights.into_iter().collect();
+    weights.sort_unstable_by_key(|&(k, _)| k);
+    for &((i, j), w) in &weights {
         let si = slot[i as usize];
         if si == usize::MAX {
             continue;

@@ -35,6 +35,11 @@ pub struct SolveOptions {
     pub tolerance: f64,
     /// Newton iteration cap.
     pub max_iterations: usize,
+    /// When no step descends (rough, exact, or with continuous entry of the inequalities),
+    /// try Levenberg–Marquardt steps `Cᵀ (C Cᵀ + μI)⁻¹ g` with growing damping μ before
+    /// giving up (beyond the paper; see the module docs). Off by default; the pipeline
+    /// turns it on for twisted stars.
+    pub damped_fallback: bool,
 }
 
 impl Default for SolveOptions {
@@ -43,6 +48,7 @@ impl Default for SolveOptions {
             limits: Limits::default(),
             tolerance: 1e-12,
             max_iterations: 200,
+            damped_fallback: false,
         }
     }
 }
@@ -213,6 +219,20 @@ pub fn solve(
                 f.merit = merit_of(&f.rows);
             }
         }
+        if found.is_none() && opts.damped_fallback {
+            // Levenberg–Marquardt: shorter steps that lean towards steepest descent, for
+            // nearly dependent active rows whose minimum-norm step is long and finds no
+            // descent within the line search's reach.
+            for &relative in &DAMPING {
+                let (dx, more) = min_norm(&c.damped(relative), &g, EXACT);
+                cg_iterations += more;
+                found = line_search(mesh, &l, &x, &dx, merit, cap);
+                if found.is_some() {
+                    smoothing = false;
+                    break;
+                }
+            }
+        }
         smoothed = found.is_some() && smoothing;
         let Some(Found {
             x: trial,
@@ -250,6 +270,10 @@ pub fn solve(
 
 /// The CG tolerance of an exact step.
 const EXACT: f64 = 1e-12;
+
+/// The Levenberg–Marquardt dampings of [`SolveOptions::damped_fallback`], relative to the
+/// largest diagonal entry of `C Cᵀ`, smallest first.
+const DAMPING: [f64; 5] = [1e-8, 1e-6, 1e-4, 1e-2, 1.0];
 
 /// An accepted Newton step.
 struct Found {
