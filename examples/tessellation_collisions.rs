@@ -116,6 +116,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             limits,
             max_iterations: chunk,
             tolerance: if switched { 1e-300 } else { 1e-12 },
+            ..SolveOptions::default()
         };
         let r = solve(&mut t, &opts, keep_going)?;
         done += r.iterations;

@@ -354,6 +354,47 @@ mod tests {
         assert!(diff < 1e-7, "{diff}");
     }
 
+    /// The damped step minimizes ‖C dx − g‖² + μ‖dx‖² (Levenberg 1944), so it solves the
+    /// normal equations `(CᵀC + μI) dx = Cᵀ g`, checked here on the other side of the
+    /// identity `Cᵀ (C Cᵀ + μI)⁻¹ = (CᵀC + μI)⁻¹ Cᵀ`; it shortens as μ grows and descends
+    /// ½‖g‖² (`gᵀ C dx > 0`). Both preconditioners.
+    #[test]
+    fn damped_steps_solve_the_levenberg_marquardt_normal_equations() {
+        for (m, n) in [(40, 100), (FACTOR_ROWS + 100, 1200)] {
+            let rows = rows(m, n);
+            let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
+            let c = Jacobian::new(&rows, n);
+            let largest = diagonal(&c).0.iter().fold(0.0f64, |a, &d| a.max(d));
+            let mut last = f64::INFINITY;
+            for relative in [1e-6, 1e-3, 1e-1, 1.0, 10.0] {
+                let damped = c.damped(relative);
+                let (dx, _) = min_norm(&damped, &g, 1e-12);
+                let mu = relative * largest;
+                let cdx = c.times_vec(&dx);
+                let miss: Vec<f64> = cdx.iter().zip(&g).map(|(a, b)| a - b).collect();
+                let mut normal = vec![DVec3::ZERO; n];
+                c.transpose_times(&miss, &mut normal);
+                let worst = normal
+                    .iter()
+                    .zip(&dx)
+                    .fold(0.0f64, |a, (r, d)| a.max((*r + mu * *d).length()));
+                let scale = dx.iter().fold(0.0f64, |a, d| a.max(d.length())) * largest;
+                assert!(
+                    worst < 1e-8 * scale.max(1.0),
+                    "{m} rows, μ {relative}: {worst:e}"
+                );
+                let length = dx.iter().map(|d| d.length_squared()).sum::<f64>().sqrt();
+                assert!(
+                    length < last,
+                    "{m} rows, μ {relative}: {length} after {last}"
+                );
+                last = length;
+                let descent: f64 = g.iter().zip(&cdx).map(|(a, b)| a * b).sum();
+                assert!(descent > 0.0, "{m} rows, μ {relative}: {descent}");
+            }
+        }
+    }
+
     #[test]
     fn small_systems_use_the_diagonal() {
         let rows = rows(40, 100);

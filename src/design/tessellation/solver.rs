@@ -14,7 +14,12 @@
 //! taken with every inequality entering the active set continuously ([`Limits::hold`] = 1):
 //! the hysteresis of the active set makes the merit jump where a row enters, which can block
 //! every step near the limits (the twisted saddle stalled so at 1e-4 rad); the next iteration
-//! returns to the hysteresis set, and two such steps never follow each other. Convergence:
+//! returns to the hysteresis set, and two such steps never follow each other. With
+//! [`SolveOptions::damped_fallback`], when that too finds no descent, Levenberg–Marquardt
+//! steps `Cᵀ (C Cᵀ + μI)⁻¹ g` are tried with μ growing from 1e-8 to 1 of the largest diagonal
+//! entry of `C Cᵀ` (Levenberg 1944, Marquardt 1963; a descent direction of ½‖g‖² for the
+//! rows active now, shorter than the minimum-norm step where rows are nearly dependent).
+//! Convergence:
 //! every interior vertex developable within [`SolveOptions::tolerance`] radians, every flat
 //! diagonal flat and every limit satisfied.
 

@@ -40,14 +40,16 @@
 //! together: the arm had turned the other way). With the direction free they converge there in 164 iterations
 //! and on `spherical_cap(6, 6, 20, 100)` in 177, but the solve unwinds most twists: the
 //! twist folds end at a median of 0.8° (90 % under 14°, largest 48°) on the five-ring cap.
-//! Known limit: the 432-face cap (`spherical_cap(12, 6, 60, 100)`) still fails with
-//! twisted stars by the default schedule (2,433 iterations over its 12 attempts, 166 s; at
-//! the re-triangulation's 450 faces and shrink 0.8: largest fold 166.5°, smallest crease
-//! angle 29.2° after 200 iterations, the default cap). Given more iterations at that
-//! attempt, one run converged after 470 (27 s) and another stalled after 291 (developability
-//! 1.2e-2 rad, largest fold 165.7°, smallest crease angle 29.0°, 51 face pairs crossing); why
-//! two runs of the same attempt differ is not known. `spherical_cap(6, 6, 1, 100)`
-//! stalls too (after 132 iterations at 3.8e-2 rad of developability).
+//! The 432-face cap (`spherical_cap(12, 6, 60, 100)`) stalled with twisted stars
+//! (re-triangulated to 450 faces, shrink 0.8: line search without descent after 188
+//! iterations at developability 1.2e-2 rad, largest fold 166.8°, smallest crease angle
+//! 29.6°, about 1,700 fold-limit and crease-angle rows active beside the 1,450
+//! developability rows; most accepted steps before it were under 1e-3 of the Newton step). With the
+//! Levenberg–Marquardt fallback ([`SolveOptions::damped_fallback`](super::SolveOptions::damped_fallback))
+//! and four times the iteration cap ([`TWISTED_ITERATIONS`](super::TWISTED_ITERATIONS)), which
+//! [`tessellate`](super::tessellate) gives twisted stars, it converges in 424 iterations
+//! (release, 20 s) within the 0.5 mm stainless limits. `spherical_cap(6, 6, 1, 100)` stalled
+//! too without them (after 132 iterations at 3.8e-2 rad of developability).
 
 use std::collections::HashMap;
 
