@@ -41,6 +41,7 @@ pub(crate) mod geometry;
 pub(crate) mod intersect;
 mod min_norm;
 pub(crate) mod model;
+pub(crate) mod passes;
 pub(crate) mod pipeline;
 pub(crate) mod remesh;
 pub mod rigid;
@@ -68,9 +69,10 @@ pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
 pub use pipeline::{
     Remesh, SHRINK_LADDER, Schedule, TessellateOptions, Tessellation, default_schedule, disk,
-    keep_going, keep_trying, tessellate, tessellate_scheduled, tessellate_shrinking,
-    tessellate_with_face_shrink,
+    keep_going, keep_trying, tessellate, tessellate_passes, tessellate_scheduled,
+    tessellate_shrinking, tessellate_with_face_shrink,
 };
+pub use passes::{Pass, Triangulation, scheduled_passes};
 pub use remesh::{RemeshReport, remesh};
 pub use samples::{MASK_SIZE_MM, SampleSurface, face_mask, sample_surface, spherical_cap};
 pub use solver::{Iteration, SolveOptions, SolveReport, solve};
