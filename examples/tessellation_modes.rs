@@ -5,6 +5,7 @@
 //!
 //! `cargo run --release --example tessellation_modes -- MESH.obj [MODE ...]`
 //! `cargo run --release --example tessellation_modes -- cap N RINGS DEGREES RADIUS [MODE ...]`
+//! `cargo run --release --example tessellation_modes -- dome|saddle|bell RINGS EDGE [MODE ...]`
 //! MODE is star, truncated, twisted or twist (all four by default). With `ATTEMPTS=1` each
 //! refused attempt is listed on stderr (shrink, iterations, time, convergence, pairs); with
 //! `OLD_SCHEDULE=1` a crowded input is not coarsened first.
@@ -12,8 +13,8 @@
 use std::time::Instant;
 
 use foldcam::design::tessellation::{
-    Limits, TessellateOptions, TuckKind, corner_distance, default_schedule,
-    spherical_cap, tessellate_scheduled,
+    Limits, SampleSurface, TessellateOptions, TuckKind, corner_distance, default_schedule,
+    sample_surface, spherical_cap, tessellate_scheduled,
 };
 use foldcam::mesh::read_mesh;
 use std::ops::ControlFlow;
@@ -28,10 +29,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let radius: f64 = args[4].parse()?;
             (spherical_cap(n, rings, deg, radius), &args[5..])
         }
+        Some(name @ ("dome" | "saddle" | "bell")) if args.len() >= 3 => {
+            let surface = match name {
+                "dome" => SampleSurface::Dome,
+                "saddle" => SampleSurface::Saddle,
+                _ => SampleSurface::Bell,
+            };
+            let rings: usize = args[1].parse()?;
+            let edge: f64 = args[2].parse()?;
+            (sample_surface(surface, rings, edge), &args[3..])
+        }
         Some(path) => (read_mesh(std::path::Path::new(path))?, &args[1..]),
         None => {
             return Err(
-                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS [MODE...]".into(),
+                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS|bell RINGS EDGE [MODE...]".into(),
             );
         }
     };
@@ -82,7 +93,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             &opts,
             &schedule,
             |s, t| {
-                all_iterations += counted.get();
+                all_iterations += counted.get().max(t.report.iterations);
                 if attempts {
                     eprintln!(
                         "  {kind} shrink {s} on {} faces: {} it ({} counted), {:.2} s, \
@@ -108,7 +119,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         )?;
         let all = start.elapsed().as_secs_f64();
         let last = last_start.elapsed().as_secs_f64();
-        all_iterations += counted.get();
+        all_iterations += counted.get().max(t.report.iterations);
         let d = corner_distance(&mesh, &t.mesh).ok_or("the input mesh has no area")?;
         let r = &t.report.last;
         println!(

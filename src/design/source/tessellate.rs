@@ -10,8 +10,8 @@ use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessError,
-    TessMesh, TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
-    Triangulation, curvature_advice, rim_crowding, scheduled_passes, tessellate_scheduled,
+    TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind, TuckLayout, TuckShape,
+    Unfolded, curvature_advice, rim_crowding, scheduled_passes, tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -769,7 +769,11 @@ mod tests {
         };
         let opts = options.to_solver().unwrap();
         let order = schedule(&options).remesh_order(&cap, &opts.solve.limits);
-        assert_eq!(order, [true, false], "the re-triangulation is scheduled first");
+        assert_eq!(
+            order,
+            [true, false],
+            "the re-triangulation is scheduled first"
+        );
         let plan = solve_plan(&cap, &options).unwrap();
         let tracker = std::cell::RefCell::new(SolveTracker::new(plan));
         // The label of every iteration of the running solve; checked when it ends.

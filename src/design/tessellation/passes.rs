@@ -147,7 +147,10 @@ mod tests {
         assert_eq!(faces, c.faces_for_limit());
         let built = passes[0].mesh.as_ref().unwrap();
         assert!(built.0.faces().len() < crowded.faces().len());
-        assert_eq!(built.1.faces, [crowded.faces().len(), built.0.faces().len()]);
+        assert_eq!(
+            built.1.faces,
+            [crowded.faces().len(), built.0.faces().len()]
+        );
         // The other passes follow as the schedule orders them (sharp pole: remeshed first).
         let rest: Vec<_> = passes[1..].iter().map(|p| p.triangulation).collect();
         assert_eq!(

@@ -250,6 +250,9 @@ pub enum Remesh {
     /// input has a face corner sharper than the vertex-angle limit (every face corner is an
     /// angle between two creases of the initial pattern, Tachi 2014 §2.1, so such a face
     /// must be distorted before the limit can hold), else the input's own triangles first.
+    /// Before both, when no face count is asked for and the input is crowded at the rim
+    /// ([`crowding`](super::crowding)), a coarser re-triangulation (see
+    /// [`passes`](super::passes)).
     #[default]
     Auto,
     /// The re-triangulation only.
@@ -284,7 +287,7 @@ impl Schedule {
 
 /// The default schedule: every shrink of [`SHRINK_LADDER`], on the input's own triangles and
 /// on a near-regular re-triangulation of the same surface with as many faces
-/// ([`Remesh::Auto`]).
+/// ([`Remesh::Auto`]; first on a coarser one when the input is crowded at the rim).
 pub fn default_schedule() -> Schedule {
     Schedule {
         shrinks: SHRINK_LADDER.to_vec(),
@@ -312,7 +315,15 @@ pub fn tessellate_scheduled(
     progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     let (passes, crowding) = scheduled_passes(mesh, &opts.solve.limits, schedule)?;
-    tessellate_passes(mesh, opts, &schedule.shrinks, &passes, &crowding, attempt, progress)
+    tessellate_passes(
+        mesh,
+        opts,
+        &schedule.shrinks,
+        &passes,
+        &crowding,
+        attempt,
+        progress,
+    )
 }
 
 /// [`tessellate_scheduled`] over passes already built by
@@ -334,8 +345,7 @@ pub fn tessellate_passes(
         let coarsened = matches!(pass.triangulation, Triangulation::Coarser { .. });
         let t = match &pass.mesh {
             Some((m, report)) => {
-                let mut t =
-                    tessellate_shrinking(m, opts, shrinks, &mut attempt, &mut progress)?;
+                let mut t = tessellate_shrinking(m, opts, shrinks, &mut attempt, &mut progress)?;
                 t.remeshed = Some(*report);
                 t.coarsened = coarsened.then_some(*crowding);
                 t
