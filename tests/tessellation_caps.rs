@@ -271,7 +271,6 @@ fn a_small_remeshed_twelve_valent_cap_tessellates_in_every_mode() {
 /// result says so. Twist folds there end clean at the first shrink (0.8, release build:
 /// 42 iterations, 0.7 s); every check of `solved_cap_scheduled` re-measures the result.
 #[test]
-#[ignore = "slow in debug: about half a minute"]
 fn a_cap_crowded_at_the_rim_is_solved_coarser_and_says_so() {
     let mesh = spherical_cap(12, 9, 60.0, 100.0);
     let input = rim_crowding(&mesh).unwrap();
