@@ -8,12 +8,13 @@
 //! `cargo run --release --example tessellation_modes -- dome|saddle|bell RINGS EDGE [MODE ...]`
 //! MODE is star, truncated, twisted or twist (all four by default). With `ATTEMPTS=1` each
 //! refused attempt is listed on stderr (shrink, iterations, time, convergence, pairs); with
-//! `OLD_SCHEDULE=1` a crowded input is not coarsened first.
+//! `OLD_SCHEDULE=1` a crowded input is not coarsened first; with `REMESH_FACES=N` only the
+//! re-triangulation with about N faces is solved.
 
 use std::time::Instant;
 
 use foldcam::design::tessellation::{
-    Limits, SampleSurface, TessellateOptions, TuckKind, corner_distance, default_schedule,
+    Limits, Remesh, SampleSurface, TessellateOptions, TuckKind, corner_distance, default_schedule,
     sample_surface, spherical_cap, tessellate_scheduled,
 };
 use foldcam::mesh::read_mesh;
@@ -87,6 +88,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let mut schedule = default_schedule();
         if std::env::var_os("OLD_SCHEDULE").is_some() {
             schedule.remesh_faces = Some(mesh.faces().len());
+        }
+        // REMESH_FACES=N: the re-triangulation with about N faces only (`--remesh N`).
+        if let Some(n) = std::env::var("REMESH_FACES")
+            .ok()
+            .and_then(|n| n.parse().ok())
+        {
+            schedule.remesh_faces = Some(n);
+            schedule.remesh = Remesh::Only;
         }
         let t = tessellate_scheduled(
             &mesh,
