@@ -5,13 +5,17 @@
 //!
 //! `cargo run --release --example tessellation_modes -- MESH.obj [MODE ...]`
 //! `cargo run --release --example tessellation_modes -- cap N RINGS DEGREES RADIUS [MODE ...]`
-//! MODE is star, truncated, twisted or twist (all four by default).
+//! `cargo run --release --example tessellation_modes -- dome|saddle|bell RINGS EDGE [MODE ...]`
+//! MODE is star, truncated, twisted or twist (all four by default). With `ATTEMPTS=1` each
+//! refused attempt is listed on stderr (shrink, iterations, time, convergence, pairs); with
+//! `OLD_SCHEDULE=1` a crowded input is not coarsened first; with `REMESH_FACES=N` only the
+//! re-triangulation with about N faces is solved.
 
 use std::time::Instant;
 
 use foldcam::design::tessellation::{
-    Limits, TessellateOptions, TuckKind, corner_distance, default_schedule, keep_going,
-    spherical_cap, tessellate_scheduled,
+    Limits, Remesh, SampleSurface, TessellateOptions, TuckKind, corner_distance, default_schedule,
+    sample_surface, spherical_cap, tessellate_scheduled,
 };
 use foldcam::mesh::read_mesh;
 use std::ops::ControlFlow;
@@ -26,10 +30,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let radius: f64 = args[4].parse()?;
             (spherical_cap(n, rings, deg, radius), &args[5..])
         }
+        Some(name @ ("dome" | "saddle" | "bell")) if args.len() >= 3 => {
+            let surface = match name {
+                "dome" => SampleSurface::Dome,
+                "saddle" => SampleSurface::Saddle,
+                _ => SampleSurface::Bell,
+            };
+            let rings: usize = args[1].parse()?;
+            let edge: f64 = args[2].parse()?;
+            (sample_surface(surface, rings, edge), &args[3..])
+        }
         Some(path) => (read_mesh(std::path::Path::new(path))?, &args[1..]),
         None => {
             return Err(
-                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS [MODE...]".into(),
+                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS|bell RINGS EDGE [MODE...]".into(),
             );
         }
     };
@@ -65,20 +79,56 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let start = Instant::now();
         let mut all_iterations = 0;
         let mut last_start = Instant::now();
+        // Iterations of the running attempt as `progress` counts them (a retry with the
+        // stiffer outline counts on from the first solve's).
+        let counted = std::cell::Cell::new(0);
+        let attempts = std::env::var_os("ATTEMPTS").is_some();
+        // OLD_SCHEDULE=1: the re-triangulation at the input's face count named explicitly,
+        // which leaves out the coarser one of a crowded input (the schedule before it).
+        let mut schedule = default_schedule();
+        if std::env::var_os("OLD_SCHEDULE").is_some() {
+            schedule.remesh_faces = Some(mesh.faces().len());
+        }
+        // REMESH_FACES=N: the re-triangulation with about N faces only (`--remesh N`).
+        if let Some(n) = std::env::var("REMESH_FACES")
+            .ok()
+            .and_then(|n| n.parse().ok())
+        {
+            schedule.remesh_faces = Some(n);
+            schedule.remesh = Remesh::Only;
+        }
         let t = tessellate_scheduled(
             &mesh,
             &opts,
-            &default_schedule(),
-            |_, t| {
-                all_iterations += t.report.iterations;
+            &schedule,
+            |s, t| {
+                all_iterations += counted.get().max(t.report.iterations);
+                if attempts {
+                    eprintln!(
+                        "  {kind} shrink {s} on {} faces: {} it ({} counted), {:.2} s, \
+                         converged {}, dev {:.2e}, pairs {}, crowded at rim {}",
+                        t.crowding.faces,
+                        t.report.iterations,
+                        counted.get(),
+                        last_start.elapsed().as_secs_f64(),
+                        t.report.converged,
+                        t.report.last.developability,
+                        t.intersections.len(),
+                        t.crowded_at_rim()
+                    );
+                }
+                counted.set(0);
                 last_start = Instant::now();
                 ControlFlow::Continue(())
             },
-            keep_going,
+            |it| {
+                counted.set(it.index);
+                ControlFlow::Continue(())
+            },
         )?;
         let all = start.elapsed().as_secs_f64();
         let last = last_start.elapsed().as_secs_f64();
-        all_iterations += t.report.iterations;
+        all_iterations += counted.get().max(t.report.iterations);
         let d = corner_distance(&mesh, &t.mesh).ok_or("the input mesh has no area")?;
         let r = &t.report.last;
         println!(
@@ -86,8 +136,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             t.problem().unwrap_or_else(|| "ok".into()),
             match &t.remeshed {
                 Some(r) => format!(
-                    "remeshed to {} faces, shrink {}",
-                    r.faces[1], t.initial.shrink
+                    "remeshed{} to {} faces, shrink {}",
+                    if t.coarsened.is_some() {
+                        " (coarser: rim crowding)"
+                    } else {
+                        ""
+                    },
+                    r.faces[1],
+                    t.initial.shrink
                 ),
                 None => format!("shrink {}", t.initial.shrink),
             },

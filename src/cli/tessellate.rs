@@ -108,7 +108,10 @@ pub struct Args {
     /// Re-triangulate the surface near-regularly (valence 6, no pole fans) before
     /// tessellating, with about FACES faces (default: as many as the input has). Without it
     /// both the input's own triangles and the re-triangulation are tried, the latter first
-    /// when the input has face corners sharper than the vertex-angle limit.
+    /// when the input has face corners sharper than the vertex-angle limit; before both, a
+    /// coarser re-triangulation when the rim crowding index predicts the tucks near the
+    /// sheet's edge to collide (Tachi 2014, Fig. 14; the report then names the new face
+    /// count and why).
     #[arg(long, value_name = "FACES", num_args = 0..=1, default_missing_value = "0")]
     pub remesh: Option<usize>,
     /// Newton iteration cap [default: 200].

@@ -10,8 +10,8 @@ use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessError,
-    TessMesh, TessellateOptions, Tessellation, TuckKind, TuckLayout, TuckShape, Unfolded,
-    curvature_advice, rim_crowding, tessellate_scheduled,
+    TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind, TuckLayout, TuckShape,
+    Unfolded, curvature_advice, rim_crowding, scheduled_passes, tessellate_scheduled,
 };
 use crate::mesh::PolyMesh;
 
@@ -260,6 +260,14 @@ pub fn tessellate_outcome(
         for line in crowding.describe() {
             progress.note(line);
         }
+        if schedule.remesh == Remesh::Auto && schedule.remesh_faces.is_none() {
+            progress.note(format!(
+                "rim crowding: solving a coarser re-triangulation (about {} faces) first; \
+                 the input's {} faces only if it gives no usable result",
+                crowding.faces_for_limit(),
+                mesh.faces().len()
+            ));
+        }
     }
     let asked = options.shrink.is_some();
     stop_if_cancelled_early(progress)?;
@@ -379,13 +387,13 @@ fn schedule(options: &TessellationOptions) -> Schedule {
     }
 }
 
-/// One solve of a [`SolvePlan`]: the face shrink and whether on the re-triangulation.
+/// One solve of a [`SolvePlan`]: the face shrink and the triangles it runs on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlannedSolve {
     /// Face shrink.
     pub shrink: f64,
-    /// On the near-regular re-triangulation rather than the input's own triangles.
-    pub remeshed: bool,
+    /// The input's own triangles or which re-triangulation.
+    pub triangulation: Triangulation,
 }
 
 /// What a tessellation will try, in order, and what one solve is expected to cost: the
@@ -403,9 +411,13 @@ pub struct SolvePlan {
     pub tolerance: f64,
 }
 
-/// The plan `tessellate_outcome` follows for `mesh` with `options` (the re-triangulation
-/// first when the input has a face corner sharper than the vertex-angle limit, as
-/// [`Remesh::Auto`] decides).
+/// The plan `tessellate_outcome` follows for `mesh` with `options`: the passes of
+/// [`scheduled_passes`] (a coarser re-triangulation first when the input is crowded at the
+/// rim; the re-triangulation first when the input has a face corner sharper than the
+/// vertex-angle limit, as [`Remesh::Auto`] decides; a re-triangulation that cannot be built
+/// left out, as the pipeline leaves it out), each with every shrink. Builds the
+/// re-triangulations to know which can be built (a few milliseconds per thousand faces).
+/// On a mesh the pipeline will refuse (not a disk) the plan is the input's shrinks.
 ///
 /// # Errors
 /// As [`TessellationOptions::to_solver`].
@@ -415,16 +427,19 @@ pub fn solve_plan(
 ) -> Result<SolvePlan, SourceError> {
     let opts = options.to_solver()?;
     let schedule = schedule(options);
+    let passes = scheduled_passes(mesh, &opts.solve.limits, &schedule)
+        .map(|(passes, _)| passes.iter().map(|p| p.triangulation).collect())
+        .unwrap_or_else(|_| vec![Triangulation::Input]);
     let faces = options.remesh_faces.unwrap_or(mesh.faces().len());
     let shrinks = &schedule.shrinks;
     Ok(SolvePlan {
-        solves: schedule
-            .remesh_order(mesh, &opts.solve.limits)
+        solves: passes
             .iter()
-            .flat_map(|&remeshed| {
-                shrinks
-                    .iter()
-                    .map(move |&shrink| PlannedSolve { shrink, remeshed })
+            .flat_map(|&triangulation| {
+                shrinks.iter().map(move |&shrink| PlannedSolve {
+                    shrink,
+                    triangulation,
+                })
             })
             .collect(),
         seconds_per_solve: solve_estimate(faces.max(mesh.faces().len())).seconds,
@@ -449,9 +464,7 @@ pub const RATE_WINDOW: usize = 5;
 /// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations are seen
 /// the up-front estimate (minus the time spent) stands in. Times are passed in, so nothing
 /// here reads a clock. A solve that makes no iteration (refused before solving) is still
-/// counted; a re-triangulation that cannot be made (tried first) skips its solves unheard,
-/// so the input's solves that follow are named as the re-triangulation's (same shrinks, the
-/// wrong triangles).
+/// counted; a re-triangulation that cannot be built is not in the plan (see [`solve_plan`]).
 #[derive(Clone, Debug)]
 pub struct SolveTracker {
     plan: SolvePlan,
@@ -550,15 +563,7 @@ impl SolveTracker {
         let (k, n) = self.solve();
         let solve = self.plan.solves.get(k);
         let what = solve.map_or(String::new(), |s| {
-            format!(
-                "shrink {} on the {} ",
-                s.shrink,
-                if s.remeshed {
-                    "re-triangulation"
-                } else {
-                    "input's triangles"
-                }
-            )
+            format!("shrink {} on {} ", s.shrink, s.triangulation.describe())
         });
         let residual = self
             .residuals
@@ -593,11 +598,11 @@ mod tests {
             solves: vec![
                 PlannedSolve {
                     shrink: 0.8,
-                    remeshed: false,
+                    triangulation: Triangulation::Input,
                 },
                 PlannedSolve {
                     shrink: 0.7,
-                    remeshed: true,
+                    triangulation: Triangulation::Remeshed { faces: 100 },
                 },
             ],
             seconds_per_solve: 10.0,
@@ -698,7 +703,11 @@ mod tests {
         };
         let plan = solve_plan(&cap, &options).unwrap();
         let input_solves = SHRINK_LADDER.len();
-        assert!(!plan.solves[0].remeshed && plan.solves[input_solves].remeshed);
+        assert_eq!(plan.solves[0].triangulation, Triangulation::Input);
+        assert_eq!(
+            plan.solves[input_solves].triangulation,
+            Triangulation::Remeshed { faces: 48 }
+        );
         let mut opts = options.to_solver().unwrap();
         opts.star.max_star_points = Some(usize::MAX);
         let tracker = std::cell::RefCell::new(SolveTracker::new(plan.clone()));
@@ -733,12 +742,70 @@ mod tests {
             assert_eq!(plan.solves[k].shrink, a.0, "{attempts:?}");
         }
         let last = plan.solves[attempts.len()];
-        assert_eq!((last.shrink, last.remeshed), (t.initial.shrink, true));
+        assert_eq!(
+            (last.shrink, last.triangulation),
+            (t.initial.shrink, Triangulation::Remeshed { faces: 48 })
+        );
         assert!(tracker.borrow().status().starts_with(&format!(
             "shrink {} on the re-triangulation (solve {} of",
             t.initial.shrink,
             attempts.len() + 1
         )));
+    }
+
+    /// A re-triangulation that cannot be built is not in the plan, so every iteration of the
+    /// input's solves that follow is labelled with the input's triangles and its shrink. The
+    /// 48-face cap's 12-valent pole has face corners sharper than 30 deg (the re-triangulation
+    /// is scheduled first), and 23 faces are fewer than a re-triangulation accepts (it
+    /// cannot be built). Each iteration's label is checked against the shrink the pipeline
+    /// itself reports for that solve when it ends.
+    #[test]
+    fn a_re_triangulation_that_cannot_be_built_does_not_shift_the_labels() {
+        let cap = crate::design::tessellation::spherical_cap(12, 2, 30.0, 100.0);
+        let options = TessellationOptions {
+            remesh_faces: Some(crate::design::tessellation::remesh::MIN_FACES - 1),
+            max_iterations: 20,
+            ..TessellationOptions::default()
+        };
+        let opts = options.to_solver().unwrap();
+        let order = schedule(&options).remesh_order(&cap, &opts.solve.limits);
+        assert_eq!(
+            order,
+            [true, false],
+            "the re-triangulation is scheduled first"
+        );
+        let plan = solve_plan(&cap, &options).unwrap();
+        let tracker = std::cell::RefCell::new(SolveTracker::new(plan));
+        // The label of every iteration of the running solve; checked when it ends.
+        let labels = std::cell::RefCell::new(Vec::new());
+        let labelled = std::cell::Cell::new(0);
+        let check = |shrink: f64, labels: &mut Vec<String>| {
+            let want = format!("shrink {shrink} on the input's triangles (solve ");
+            for l in labels.drain(..) {
+                assert!(l.starts_with(&want), "{l}");
+            }
+        };
+        let t = tessellate_scheduled(
+            &cap,
+            &opts,
+            &schedule(&options),
+            |s, _: &Tessellation| {
+                check(s, &mut labels.borrow_mut());
+                tracker.borrow_mut().next_solve(0.0);
+                ControlFlow::Continue(())
+            },
+            |it: &Iteration| {
+                let mut tracker = tracker.borrow_mut();
+                tracker.iteration(it, 0.0);
+                labels.borrow_mut().push(tracker.status());
+                labelled.set(labelled.get() + 1);
+                ControlFlow::Continue(())
+            },
+        )
+        .unwrap();
+        assert!(t.remeshed.is_none());
+        check(t.initial.shrink, &mut labels.borrow_mut());
+        assert!(labelled.get() > 0, "no iteration to label");
     }
 
     #[test]
@@ -755,7 +822,11 @@ mod tests {
         let p = solve_plan(&cap, &TessellationOptions::default()).unwrap();
         assert_eq!(p.solves.len(), 2 * SHRINK_LADDER.len());
         // The 12-valent pole's face corners are 30 deg minus the curvature: sharper than 30.
-        assert!(p.solves[0].remeshed && !p.solves[SHRINK_LADDER.len()].remeshed);
+        assert_ne!(p.solves[0].triangulation, Triangulation::Input);
+        assert_eq!(
+            p.solves[SHRINK_LADDER.len()].triangulation,
+            Triangulation::Input
+        );
         let flat = crate::design::tessellation::sample_surface(
             crate::design::tessellation::SampleSurface::Saddle,
             2,
@@ -771,7 +842,7 @@ mod tests {
             p.solves,
             vec![PlannedSolve {
                 shrink: 0.5,
-                remeshed: false
+                triangulation: Triangulation::Input
             }]
         );
     }

@@ -24,8 +24,9 @@
 //! Meshes whose own triangles make the limits unreachable (a modelling program's sphere: a
 //! 12-valent pole, face corners sharper than the crease-angle limit) are re-triangulated
 //! near-regularly ([`remesh`], Floater's (2003) mean-value map onto a disk), by
-//! [`tessellate_scheduled`] as the default does; [`distance`] measures how far the folded
-//! form lies from the input surface.
+//! [`tessellate_scheduled`] as the default does (on a coarser re-triangulation first when the
+//! input is crowded at the rim, [`crowding`], [`passes`]); [`distance`] measures how far the
+//! folded form lies from the input surface.
 
 pub(crate) mod advice;
 pub(crate) mod boundary;
@@ -41,6 +42,7 @@ pub(crate) mod geometry;
 pub(crate) mod intersect;
 mod min_norm;
 pub(crate) mod model;
+pub(crate) mod passes;
 pub(crate) mod pipeline;
 pub(crate) mod remesh;
 pub mod rigid;
@@ -66,10 +68,11 @@ pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use geometry::{Graded, fold_angle};
 pub use intersect::{folded_intersections, intersecting_triangles};
 pub use model::{EdgeRole, TessEdge, TessMesh};
+pub use passes::{Pass, Triangulation, scheduled_passes};
 pub use pipeline::{
     Remesh, SHRINK_LADDER, Schedule, TWISTED_ITERATIONS, TessellateOptions, Tessellation,
-    default_schedule, disk, keep_going, keep_trying, tessellate, tessellate_scheduled,
-    tessellate_shrinking, tessellate_with_face_shrink,
+    default_schedule, disk, keep_going, keep_trying, tessellate, tessellate_passes,
+    tessellate_scheduled, tessellate_shrinking, tessellate_with_face_shrink,
 };
 pub use remesh::{RemeshReport, remesh};
 pub use samples::{MASK_SIZE_MM, SampleSurface, face_mask, sample_surface, spherical_cap};

@@ -8,11 +8,12 @@ use std::ops::ControlFlow;
 
 use super::collision_sites::CollisionSites;
 use super::constraints::{BoundaryRuns, Limits, assign_folds, assign_free_folds};
-use super::crowding::{RimCrowding, rim_crowding_of};
+use super::crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding_of};
 use super::diagnose::{self, Violation};
 use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
-use super::remesh::{RemeshReport, min_corner_angle, remesh};
+use super::passes::{Pass, Triangulation, scheduled_passes};
+use super::remesh::{RemeshReport, min_corner_angle};
 use super::solver::{Iteration, SolveOptions, SolveReport, solve};
 use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks_shrunk};
 use super::tuck::TuckKind;
@@ -109,6 +110,9 @@ pub struct Tessellation {
     /// When the input was re-triangulated before tessellating ([`Remesh`]), what changed;
     /// the input vertices named in `infeasible` and `unmet` are then the new mesh's.
     pub remeshed: Option<RemeshReport>,
+    /// When that re-triangulation has fewer faces than the input because the input's rim
+    /// crowding index is over the limit ([`Triangulation::Coarser`]): the input's crowding.
+    pub coarsened: Option<RimCrowding>,
 }
 
 impl Tessellation {
@@ -121,9 +125,12 @@ impl Tessellation {
                 self.intersections.len()
             ),
         };
-        let remeshed = self
+        let mut remeshed = self
             .remeshed
             .map_or(String::new(), |r| format!("{}\n", r.describe()));
+        if let (Some(c), Some(r)) = (self.coarsened, self.remeshed) {
+            remeshed = format!("{}\n{remeshed}", Self::coarsened_line(&c, &r));
+        }
         format!(
             "{remeshed}{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
             self.report.summary(),
@@ -133,6 +140,21 @@ impl Tessellation {
 }
 
 impl Tessellation {
+    /// Why the face count changed, for the user: the input's crowding index over the limit.
+    fn coarsened_line(c: &RimCrowding, r: &RemeshReport) -> String {
+        format!(
+            "face count changed from {} to {}: the input's rim crowding index {:.1} is over \
+             the {CROWDING_LIMIT:.1} above which the tucks near the edge of the measured caps \
+             collided (Tachi 2014, Fig. 14), so a coarser re-triangulation was solved first \
+             (about {} faces, as --remesh {} asks)",
+            r.faces[0],
+            r.faces[1],
+            c.index(),
+            c.faces_for_limit(),
+            c.faces_for_limit()
+        )
+    }
+
     /// Whether this is the crowding [`crowding`](super::crowding) predicts: the solve
     /// converged within every limit, the input mesh is crowded, and most intersecting pairs
     /// lie in the outer third of the surface. On the caps measured a smaller face shrink did
@@ -249,6 +271,9 @@ pub enum Remesh {
     /// input has a face corner sharper than the vertex-angle limit (every face corner is an
     /// angle between two creases of the initial pattern, Tachi 2014 §2.1, so such a face
     /// must be distorted before the limit can hold), else the input's own triangles first.
+    /// Before both, when no face count is asked for and the input is crowded at the rim
+    /// ([`crowding`](super::crowding)), a coarser re-triangulation (see
+    /// [`passes`](super::passes)).
     #[default]
     Auto,
     /// The re-triangulation only.
@@ -283,7 +308,7 @@ impl Schedule {
 
 /// The default schedule: every shrink of [`SHRINK_LADDER`], on the input's own triangles and
 /// on a near-regular re-triangulation of the same surface with as many faces
-/// ([`Remesh::Auto`]).
+/// ([`Remesh::Auto`]; first on a coarser one when the input is crowded at the rim).
 pub fn default_schedule() -> Schedule {
     Schedule {
         shrinks: SHRINK_LADDER.to_vec(),
@@ -292,57 +317,77 @@ pub fn default_schedule() -> Schedule {
     }
 }
 
-/// [`tessellate_shrinking`] over `schedule`: the shrinks on the input mesh and on its
-/// re-triangulation, in the order [`Schedule::remesh`] says, until a result has no
-/// [`Tessellation::problem`]. `attempt` hears every result that has one. Returns the first
-/// usable result, else the first result; stops early, returning it, at a result
-/// [`crowded at the rim`](Tessellation::crowded_at_rim) (the other triangulation has the same
-/// surface and about the same edge length, so the same crowding). A re-triangulation that fails (for instance on a
-/// mesh too small for it) is skipped when the input is tried too, an error otherwise.
+/// [`tessellate_shrinking`] over `schedule`: the shrinks on each of its
+/// [`passes`](super::passes::scheduled_passes) in turn (a coarser re-triangulation first when
+/// the input is crowded at the rim, then the input mesh and its re-triangulation in the
+/// order [`Schedule::remesh`] says) until a result has no [`Tessellation::problem`].
+/// `attempt` hears every result that has one. Returns the first usable result; else the
+/// first result at the input's face count (the coarser pass's when there is none); stops
+/// early, returning it, at a result [`crowded at the rim`](Tessellation::crowded_at_rim) on
+/// a pass at the input's face count (the other triangulation has the same surface and about
+/// the same edge length, so the same crowding). A re-triangulation that cannot be built (for
+/// instance on a mesh too small for it) is left out when another pass remains, an error
+/// otherwise.
 pub fn tessellate_scheduled(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     schedule: &Schedule,
+    attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
+    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
+) -> Result<Tessellation, TessError> {
+    let (passes, crowding) = scheduled_passes(mesh, &opts.solve.limits, schedule)?;
+    tessellate_passes(
+        mesh,
+        opts,
+        &schedule.shrinks,
+        &passes,
+        &crowding,
+        attempt,
+        progress,
+    )
+}
+
+/// [`tessellate_scheduled`] over passes already built by
+/// [`scheduled_passes`](super::passes::scheduled_passes) (with the input's `crowding` it
+/// returned), so that a caller that shows the plan builds each re-triangulation once.
+pub fn tessellate_passes(
+    mesh: &PolyMesh,
+    opts: &TessellateOptions,
+    shrinks: &[f64],
+    passes: &[Pass],
+    crowding: &RimCrowding,
     mut attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
     mut progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
-    let order = schedule.remesh_order(mesh, &opts.solve.limits);
     let mut first: Option<Tessellation> = None;
-    let mut failure = None;
-    for &remeshed in order {
+    let mut coarser: Option<Tessellation> = None;
+    for pass in passes {
         // tessellate_shrinking tells `attempt` about every failed shrink.
-        let t = if remeshed {
-            let faces = schedule.remesh_faces.unwrap_or(mesh.faces().len());
-            match remesh(mesh, faces) {
-                Ok((m, report)) => {
-                    let mut t = tessellate_shrinking(
-                        &m,
-                        opts,
-                        &schedule.shrinks,
-                        &mut attempt,
-                        &mut progress,
-                    )?;
-                    t.remeshed = Some(report);
-                    t
-                }
-                Err(e) => {
-                    failure = Some(e);
-                    continue;
-                }
+        let coarsened = matches!(pass.triangulation, Triangulation::Coarser { .. });
+        let t = match &pass.mesh {
+            Some((m, report)) => {
+                let mut t = tessellate_shrinking(m, opts, shrinks, &mut attempt, &mut progress)?;
+                t.remeshed = Some(*report);
+                t.coarsened = coarsened.then_some(*crowding);
+                t
             }
-        } else {
-            tessellate_shrinking(mesh, opts, &schedule.shrinks, &mut attempt, &mut progress)?
+            None => tessellate_shrinking(mesh, opts, shrinks, &mut attempt, &mut progress)?,
         };
-        if t.problem().is_none() || t.crowded_at_rim() {
+        if t.problem().is_none() {
+            return Ok(t);
+        }
+        if coarsened {
+            coarser.get_or_insert(t);
+            continue;
+        }
+        if t.crowded_at_rim() {
             return Ok(t);
         }
         first.get_or_insert(t);
     }
-    match (first, failure) {
-        (Some(t), _) => Ok(t),
-        (None, Some(e)) => Err(e),
-        (None, None) => Err(TessError::BadParameter("nothing to try".into())),
-    }
+    first
+        .or(coarser)
+        .ok_or_else(|| TessError::BadParameter("nothing to try".into()))
 }
 
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler
@@ -484,6 +529,7 @@ fn tessellate_shrunk(
         infeasible,
         unmet,
         remeshed: None,
+        coarsened: None,
     })
 }
 
