@@ -217,7 +217,9 @@ pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 /// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one
 /// (its solve has ended) before the next shrink is tried. A shrink whose solve converges with
 /// [`BoundaryRuns::Dominant`] rows but intersects itself is solved once more with
-/// [`BoundaryRuns::EveryStart`] (the stiffer outline; as one attempt: `attempt` hears the
+/// [`BoundaryRuns::EveryStart`] when a boundary row entered the first solve
+/// ([`SolveReport::boundary_rows`]; else the second would repeat it to the bit). That is the
+/// stiffer outline, as one attempt: `attempt` hears the
 /// second result only, and `progress` counts the second solve's iterations on from the
 /// first's). Returns the first usable result, else the first one (the result of the shrink
 /// asked for first); stops early at a result
@@ -239,9 +241,12 @@ pub fn tessellate_shrinking(
         if t.report.converged
             && !t.intersections.is_empty()
             && o.solve.limits.boundary_runs == BoundaryRuns::Dominant
+            && t.report.boundary_rows
         {
             // The same shrink again with the stiffer outline (see `BoundaryRuns`); its
             // iterations continue the count, so progress displays see one solve per shrink.
+            // Not when no boundary row ever entered: that solve would be the same one
+            // (`SolveReport::boundary_rows`).
             o.solve.limits.boundary_runs = BoundaryRuns::EveryStart;
             let before = t.report.iterations;
             t = tessellate(mesh, &o, |it: &Iteration| {

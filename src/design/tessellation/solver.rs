@@ -23,6 +23,8 @@
 //! every interior vertex developable within [`SolveOptions::tolerance`] radians, every flat
 //! diagonal flat and every limit satisfied.
 
+use std::cell::Cell;
+
 use glam::DVec3;
 
 use super::TessError;
@@ -87,6 +89,11 @@ pub struct SolveReport {
     pub last: Residuals,
     /// The limits solved for.
     pub limits: Limits,
+    /// Whether a boundary row (Tachi 2014, eq. 2) was among any rows the solve evaluated,
+    /// at an iterate or a trial step. When none was, the solve is the same to the bit with
+    /// either [`BoundaryRuns`](super::BoundaryRuns) form: a violated run implies a violated
+    /// dominant run, so both forms have no boundary row at exactly the same points.
+    pub boundary_rows: bool,
 }
 
 impl SolveReport {
@@ -185,7 +192,11 @@ pub fn solve(
     let mut last = initial;
     let mut iterations = 0;
     let mut x = mesh.positions.clone();
-    let mut rows = constraints::rows(mesh, &x, &l);
+    let eval = RowsAt {
+        mesh,
+        boundary: Cell::new(false),
+    };
+    let mut rows = eval.rows(&x, &l);
     let mut merit = merit_of(&rows);
     let cap = 0.1 * mean_edge(mesh, &x);
     let mut smoothed = false;
@@ -199,25 +210,25 @@ pub fn solve(
         let eta = norm.clamp(EXACT, 1e-3);
         let c = Jacobian::new(&rows, x.len());
         let (dx, mut cg_iterations) = min_norm(&c, &g, eta);
-        let mut found = line_search(mesh, &l, &x, &dx, merit, cap);
+        let mut found = line_search(&eval, &l, &x, &dx, merit, cap);
         let mut smoothing = false;
         if found.is_none() && eta > EXACT {
             let (dx, more) = min_norm(&c, &g, EXACT);
             cg_iterations += more;
-            found = line_search(mesh, &l, &x, &dx, merit, cap);
+            found = line_search(&eval, &l, &x, &dx, merit, cap);
         }
         if found.is_none() && l.hold < 1.0 && !smoothed {
             // The active set's hysteresis makes the merit jump where a row enters it; step
             // with every row entering continuously (at its target), not twice in a row.
             smoothing = true;
             let smooth = Limits { hold: 1.0, ..l };
-            let rows = constraints::rows(mesh, &x, &smooth);
+            let rows = eval.rows(&x, &smooth);
             let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
             let c = Jacobian::new(&rows, x.len());
             let (dx, more) = min_norm(&c, &g, EXACT);
             cg_iterations += more;
-            found = line_search(mesh, &smooth, &x, &dx, merit_of(&rows), cap).map(|f| Found {
-                rows: constraints::rows(mesh, &f.x, &l),
+            found = line_search(&eval, &smooth, &x, &dx, merit_of(&rows), cap).map(|f| Found {
+                rows: eval.rows(&f.x, &l),
                 ..f
             });
             if let Some(f) = found.as_mut() {
@@ -231,7 +242,7 @@ pub fn solve(
             for &relative in &DAMPING {
                 let (dx, more) = min_norm(&c.damped(relative), &g, EXACT);
                 cg_iterations += more;
-                found = line_search(mesh, &l, &x, &dx, merit, cap);
+                found = line_search(&eval, &l, &x, &dx, merit, cap);
                 if found.is_some() {
                     smoothing = false;
                     break;
@@ -263,6 +274,7 @@ pub fn solve(
             return Err(TessError::Cancelled);
         }
     }
+    let boundary_rows = eval.boundary.get();
     mesh.positions = x;
     Ok(SolveReport {
         converged: satisfied(&last, opts),
@@ -270,6 +282,7 @@ pub fn solve(
         initial,
         last,
         limits: l,
+        boundary_rows,
     })
 }
 
@@ -279,6 +292,23 @@ const EXACT: f64 = 1e-12;
 /// The Levenberg–Marquardt dampings of [`SolveOptions::damped_fallback`], relative to the
 /// largest diagonal entry of `C Cᵀ`, smallest first.
 const DAMPING: [f64; 5] = [1e-8, 1e-6, 1e-4, 1e-2, 1.0];
+
+/// The rows of a mesh's conditions at given positions, noting whether a boundary row was
+/// ever among them ([`SolveReport::boundary_rows`]).
+struct RowsAt<'a> {
+    mesh: &'a TessMesh,
+    boundary: Cell<bool>,
+}
+
+impl RowsAt<'_> {
+    fn rows(&self, x: &[DVec3], limits: &Limits) -> Vec<Row> {
+        let rows = constraints::rows(self.mesh, x, limits);
+        if rows.iter().any(|r| r.family == Family::Boundary) {
+            self.boundary.set(true);
+        }
+        rows
+    }
+}
 
 /// An accepted Newton step.
 struct Found {
@@ -291,7 +321,7 @@ struct Found {
 /// The step `−α dx`, with α by backtracking from the longest step that moves no vertex
 /// farther than `cap`; `None` without descent of the merit.
 fn line_search(
-    mesh: &TessMesh,
+    eval: &RowsAt,
     limits: &Limits,
     x: &[DVec3],
     dx: &[DVec3],
@@ -306,7 +336,7 @@ fn line_search(
     };
     while step > 1e-6 {
         let trial: Vec<DVec3> = x.iter().zip(dx).map(|(p, d)| *p - step * *d).collect();
-        let trial_rows = constraints::rows(mesh, &trial, limits);
+        let trial_rows = eval.rows(&trial, limits);
         let m = merit_of(&trial_rows);
         if m < merit || m == 0.0 {
             return Some(Found {
