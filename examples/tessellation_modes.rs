@@ -43,7 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Some(path) => (read_mesh(std::path::Path::new(path))?, &args[1..]),
         None => {
             return Err(
-                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS|bell RINGS EDGE [MODE...]".into(),
+                "usage: tessellation_modes MESH.obj|cap N RINGS DEG RADIUS|dome|saddle|bell RINGS EDGE [MODE...]".into(),
             );
         }
     };

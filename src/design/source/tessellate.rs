@@ -11,7 +11,7 @@ use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessError,
     TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind, TuckLayout, TuckShape,
-    Unfolded, curvature_advice, rim_crowding, scheduled_passes, tessellate_scheduled,
+    Unfolded, curvature_advice, scheduled_passes, tessellate_passes,
 };
 use crate::mesh::PolyMesh;
 
@@ -238,13 +238,16 @@ pub fn tessellate_outcome(
         corner = limits.min_vertex_angle.to_degrees(),
     ));
     let schedule = schedule(options);
-    let solves = solve_plan(mesh, options)?.solves.len();
+    // Every triangulation the schedule solves on, built once for the notes and the solves.
+    let (passes, crowding) =
+        scheduled_passes(mesh, &limits, &schedule).map_err(|e| SourceError::input(name, e))?;
     progress.note(format!(
-        "estimate: {} per solve, up to {solves} solve(s): {} face shrink(s) on {} \
+        "estimate: {} per solve, up to {} solve(s): {} face shrink(s) on {} \
          triangulation(s), a colliding one solved once more with the stiffer outline",
         solve_estimate(mesh.faces().len()),
+        passes.len() * schedule.shrinks.len(),
         schedule.shrinks.len(),
-        solves / schedule.shrinks.len().max(1),
+        passes.len(),
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
     let advice = curvature_advice(mesh)
@@ -254,17 +257,14 @@ pub fn tessellate_outcome(
         progress.note(line.clone());
     }
     // Up front, when the tucks near the edge are expected to run into each other.
-    if let Ok(crowding) = rim_crowding(mesh)
-        && crowding.crowded()
-    {
+    if crowding.crowded() {
         for line in crowding.describe() {
             progress.note(line);
         }
-        if schedule.remesh == Remesh::Auto && schedule.remesh_faces.is_none() {
+        if let Triangulation::Coarser { faces } = passes[0].triangulation {
             progress.note(format!(
-                "rim crowding: solving a coarser re-triangulation (about {} faces) first; \
+                "rim crowding: solving a coarser re-triangulation (about {faces} faces) first; \
                  the input's {} faces only if it gives no usable result",
-                crowding.faces_for_limit(),
                 mesh.faces().len()
             ));
         }
@@ -274,10 +274,12 @@ pub fn tessellate_outcome(
     progress.busy("solving");
     // Both callbacks speak through `progress`, one at a time.
     let shared = std::cell::RefCell::new(&mut *progress);
-    let t = tessellate_scheduled(
+    let t = tessellate_passes(
         mesh,
         &opts,
-        &schedule,
+        &schedule.shrinks,
+        &passes,
+        &crowding,
         |s: f64, t: &Tessellation| {
             let mut progress = shared.borrow_mut();
             if !asked {
@@ -397,7 +399,7 @@ pub struct PlannedSolve {
 }
 
 /// What a tessellation will try, in order, and what one solve is expected to cost: the
-/// schedule of [`tessellate_scheduled`] (which stops at the first usable result) with the
+/// schedule of [`tessellate_scheduled`](crate::design::tessellation::tessellate_scheduled) (which stops at the first usable result) with the
 /// up-front estimate of [`solve_estimate`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct SolvePlan {
@@ -591,7 +593,7 @@ pub fn seconds_text(seconds: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::design::tessellation::Residuals;
+    use crate::design::tessellation::{Residuals, tessellate_scheduled};
 
     fn plan() -> SolvePlan {
         SolvePlan {

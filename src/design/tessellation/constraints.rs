@@ -30,7 +30,7 @@ use glam::DVec3;
 use super::boundary;
 use super::collision;
 use super::geometry::{corner_angle, fold_angle, relative_height};
-use super::model::{EdgeRole, TessMesh};
+use super::model::{EdgeRole, TessEdge, TessMesh};
 use super::vertex_penalty;
 use crate::pattern::Assignment;
 
@@ -175,14 +175,7 @@ pub fn assign_folds(mesh: &mut TessMesh) {
             EdgeRole::KeyTip => Assignment::Valley,
             EdgeRole::FaceRim | EdgeRole::Digon | EdgeRole::KeyCorner => Assignment::Mountain,
             EdgeRole::TwistFold => Assignment::Unassigned,
-            EdgeRole::TruncationRim => {
-                let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
-                if fold_angle(i, j, a, b).value >= 0.0 {
-                    Assignment::Valley
-                } else {
-                    Assignment::Mountain
-                }
-            }
+            EdgeRole::TruncationRim => folds_now(mesh, e),
             EdgeRole::Boundary => Assignment::Boundary,
         };
         mesh.edges[k].assignment = assignment;
@@ -198,12 +191,18 @@ pub fn assign_free_folds(mesh: &mut TessMesh) {
         if !e.interior || e.assignment != Assignment::Unassigned {
             continue;
         }
-        let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
-        mesh.edges[k].assignment = if fold_angle(i, j, a, b).value >= 0.0 {
-            Assignment::Valley
-        } else {
-            Assignment::Mountain
-        };
+        mesh.edges[k].assignment = folds_now(mesh, e);
+    }
+}
+
+/// Valley or mountain by the sign of the crease's fold at `mesh.positions` (a valley when
+/// exactly flat).
+fn folds_now(mesh: &TessMesh, e: &TessEdge) -> Assignment {
+    let [i, j, a, b] = mesh.hinge(e).map(|v| mesh.positions[v as usize]);
+    if fold_angle(i, j, a, b).value >= 0.0 {
+        Assignment::Valley
+    } else {
+        Assignment::Mountain
     }
 }
 

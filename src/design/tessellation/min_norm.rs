@@ -25,9 +25,6 @@ pub(crate) struct Jacobian {
     /// The preconditioner and the Tikhonov ε, built at the first solve and reused by later
     /// solves with the same rows.
     preconditioner: OnceCell<(Preconditioner, f64)>,
-    /// The damping μ relative to the largest diagonal entry of `C Cᵀ` (0: the tiny
-    /// Tikhonov ε only), see [`Jacobian::damped`].
-    damping: f64,
 }
 
 impl Jacobian {
@@ -50,22 +47,6 @@ impl Jacobian {
             blocks,
             n,
             preconditioner: OnceCell::new(),
-            damping: 0.0,
-        }
-    }
-
-    /// The same rows with the Levenberg–Marquardt damping μ = `relative` × the largest
-    /// diagonal entry of `C Cᵀ` in place of the tiny ε: the step `Cᵀ (C Cᵀ + μI)⁻¹ g` then
-    /// turns from the minimum-norm Newton step (μ → 0) towards the steepest descent of
-    /// ½‖g‖² (μ → ∞), and stays short where rows are nearly dependent.
-    pub(crate) fn damped(&self, relative: f64) -> Self {
-        Jacobian {
-            offsets: self.offsets.clone(),
-            vertices: self.vertices.clone(),
-            blocks: self.blocks.clone(),
-            n: self.n,
-            preconditioner: OnceCell::new(),
-            damping: relative,
         }
     }
 
@@ -111,18 +92,35 @@ impl Jacobian {
 /// CG iteration count.
 pub(crate) fn min_norm(c: &Jacobian, g: &[f64], eta: f64) -> (Vec<DVec3>, usize) {
     let (pre, eps) = c.preconditioner.get_or_init(|| {
-        let (diag, eps) = diagonal(c);
-        (Preconditioner::new(c, &diag, eps, c.damping > 0.0), eps)
+        let (diag, eps) = diagonal(c, ROUNDOFF);
+        (Preconditioner::new(c, &diag, eps, 100.0 * eps), eps)
     });
     preconditioned_cg(c, g, eta, *eps, pre)
 }
 
-/// The diagonal of `C Cᵀ` and the Tikhonov ε (1e-12 of its largest entry).
-fn diagonal(c: &Jacobian) -> (Vec<f64>, f64) {
+/// The Levenberg–Marquardt step `Cᵀ (C Cᵀ + μI)⁻¹ g` (Levenberg 1944, Marquardt 1963), μ =
+/// `relative` × the largest diagonal entry of `C Cᵀ` in place of [`min_norm`]'s tiny ε: it
+/// turns from the minimum-norm Newton step (μ → 0) towards the steepest descent of ½‖g‖²
+/// (μ → ∞), and stays short where rows are nearly dependent. Its preconditioner is built for
+/// this μ and not kept. Returns the step and the CG iteration count.
+pub(crate) fn damped_min_norm(
+    c: &Jacobian,
+    g: &[f64],
+    relative: f64,
+    eta: f64,
+) -> (Vec<DVec3>, usize) {
+    let (diag, mu) = diagonal(c, relative.max(ROUNDOFF));
+    let pre = Preconditioner::new(c, &diag, mu, mu);
+    preconditioned_cg(c, g, eta, mu, &pre)
+}
+
+/// The diagonal of `C Cᵀ` and the shift `relative` × its largest entry (the Tikhonov ε of
+/// [`min_norm`] with [`ROUNDOFF`]).
+fn diagonal(c: &Jacobian, relative: f64) -> (Vec<f64>, f64) {
     let diag: Vec<f64> = (0..c.rows())
         .map(|r| c.row(r).map(|(_, b)| b.length_squared()).sum())
         .collect();
-    let eps = ROUNDOFF.max(c.damping) * diag.iter().fold(0.0f64, |a, &d| a.max(d)).max(TINY);
+    let eps = relative * diag.iter().fold(0.0f64, |a, &d| a.max(d)).max(TINY);
     (diag, eps)
 }
 
@@ -192,11 +190,12 @@ enum Preconditioner {
 }
 
 impl Preconditioner {
-    /// The Cholesky factor for systems of at least [`FACTOR_ROWS`] rows (shifted by 100ε
-    /// so that near-redundant rows still factor), else or on failure the diagonal `diag + ε`.
-    fn new(c: &Jacobian, diag: &[f64], eps: f64, damped: bool) -> Self {
+    /// The Cholesky factor of `C Cᵀ + shift·I` for systems of at least [`FACTOR_ROWS`] rows
+    /// ([`min_norm`] shifts by 100ε so that near-redundant rows still factor), else or on
+    /// failure the diagonal `diag + ε`.
+    fn new(c: &Jacobian, diag: &[f64], eps: f64, shift: f64) -> Self {
         let factored = if c.rows() >= FACTOR_ROWS {
-            factor(c, if damped { eps } else { 100.0 * eps })
+            factor(c, shift)
         } else {
             None
         };
@@ -343,7 +342,7 @@ mod tests {
         assert!(iterations <= 5, "{iterations}");
         let residual = max_residual(&c, &dx, &g);
         assert!(residual < 1e-8, "{residual}");
-        let (diag, eps) = diagonal(&c);
+        let (diag, eps) = diagonal(&c, ROUNDOFF);
         let jacobi = Preconditioner::Jacobi(diag.iter().map(|d| d + eps).collect());
         let (reference, slow) = preconditioned_cg(&c, &g, 1e-12, eps, &jacobi);
         assert!(slow > 10 * iterations, "{slow} vs {iterations}");
@@ -364,11 +363,13 @@ mod tests {
             let rows = rows(m, n);
             let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
             let c = Jacobian::new(&rows, n);
-            let largest = diagonal(&c).0.iter().fold(0.0f64, |a, &d| a.max(d));
+            let largest = diagonal(&c, ROUNDOFF)
+                .0
+                .iter()
+                .fold(0.0f64, |a, &d| a.max(d));
             let mut last = f64::INFINITY;
             for relative in [1e-6, 1e-3, 1e-1, 1.0, 10.0] {
-                let damped = c.damped(relative);
-                let (dx, _) = min_norm(&damped, &g, 1e-12);
+                let (dx, _) = damped_min_norm(&c, &g, relative, 1e-12);
                 let mu = relative * largest;
                 let cdx = c.times_vec(&dx);
                 let miss: Vec<f64> = cdx.iter().zip(&g).map(|(a, b)| a - b).collect();

@@ -15,7 +15,7 @@
 //! lattice's, up to one lattice row inside the old one ([`RemeshReport::area_kept`] says how
 //! much of the surface is covered).
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
@@ -192,8 +192,10 @@ fn disk_map(he: &HalfEdgeMesh, triangles: &[[u32; 3]]) -> Result<Vec<DVec2>, Tes
         run += x[lp[k] as usize].distance(x[lp[(k + 1) % lp.len()] as usize]);
     }
     // Mean-value weights w_ij = (tan(α/2) + tan(β/2)) / |x_j − x_i|, α and β the angles at i
-    // of the two triangles on edge ij, gathered triangle by triangle.
-    let mut weights: HashMap<(u32, u32), f64> = HashMap::new();
+    // of the two triangles on edge ij, gathered triangle by triangle. In key order, so the
+    // diagonal and right-hand sums below add up the same way on every run (a hash map's
+    // order would vary the result in its last bits, and the solve after it).
+    let mut weights: BTreeMap<(u32, u32), f64> = BTreeMap::new();
     for t in triangles {
         for k in 0..3 {
             let (i, j, l) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
@@ -220,11 +222,7 @@ fn disk_map(he: &HalfEdgeMesh, triangles: &[[u32; 3]]) -> Result<Vec<DVec2>, Tes
     }
     let mut entries = Vec::new();
     let mut rhs = vec![DVec2::ZERO; m];
-    // In key order: the diagonal and right-hand sums then add up the same way on every run
-    // (a map's order would vary the result in its last bits, and the solve after it).
-    let mut weights: Vec<((u32, u32), f64)> = weights.into_iter().collect();
-    weights.sort_unstable_by_key(|&(k, _)| k);
-    for &((i, j), w) in &weights {
+    for (&(i, j), &w) in &weights {
         let si = slot[i as usize];
         if si == usize::MAX {
             continue;

@@ -29,7 +29,7 @@ use glam::DVec3;
 
 use super::TessError;
 use super::constraints::{self, Family, Limits, Residuals, Row};
-use super::min_norm::{Jacobian, min_norm};
+use super::min_norm::{Jacobian, damped_min_norm, min_norm};
 use super::model::TessMesh;
 use super::vertex_penalty;
 
@@ -240,7 +240,7 @@ pub fn solve(
             // nearly dependent active rows whose minimum-norm step is long and finds no
             // descent within the line search's reach.
             for &relative in &DAMPING {
-                let (dx, more) = min_norm(&c.damped(relative), &g, EXACT);
+                let (dx, more) = damped_min_norm(&c, &g, relative, EXACT);
                 cg_iterations += more;
                 found = line_search(&eval, &l, &x, &dx, merit, cap);
                 if found.is_some() {
