@@ -240,6 +240,16 @@ pub const TOLERANCE: Limit = Limit {
 };
 /// Line-end snapping distance of drawings: `--snap` (0 turns it off).
 pub const SNAP: Limit = mm("--snap", "", 0.0, 1000.0);
+/// A fixed Kawasaki tolerance: `--kawasaki-tolerance`, the studio's layer-order field. Above
+/// zero, since floating-point rounding alone leaves errors of about 1e-11°; an error of tens of
+/// degrees is no rounding, and 90° would accept any vertex.
+pub const KAWASAKI_TOLERANCE: Limit = Limit {
+    option: "--kawasaki-tolerance",
+    key: "",
+    min: 1e-6,
+    max: 45.0,
+    unit: "degrees",
+};
 
 /// Largest merge tolerance as a share of the pattern's bounding-box diagonal: beyond it the
 /// cleaner merges whole creases into points.

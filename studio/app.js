@@ -112,9 +112,21 @@ async function runCheck() {
   showFindings(await call(`/api/docs/${state.doc.id}/check`));
 }
 
+/** The Kawasaki tolerance query of the layer-order calls: empty fits it to the drawing. */
+function toleranceQuery() {
+  const t = $('kawasaki-tolerance').value.trim();
+  return t ? `kawasaki_tolerance=${encodeURIComponent(t)}` : '';
+}
+
 async function runLayers() {
   $('layers-result').textContent = 'solving…';
-  const result = await call(`/api/docs/${state.doc.id}/layers`);
+  let result;
+  try {
+    result = await call(`/api/docs/${state.doc.id}/layers?${toleranceQuery()}`);
+  } catch (e) {
+    $('layers-result').textContent = '';
+    throw e;
+  }
   $('layers-result').textContent = result.text;
   showFindings(result.check);
 }
@@ -122,7 +134,9 @@ async function runLayers() {
 function showFindings(report) {
   state.findings = report.findings;
   const status = $('check-status');
-  status.textContent = report.findings.length ? `${report.findings.length} finding(s)` : 'passed';
+  const warnings = (report.warnings || []).length;
+  const passed = warnings ? `passed, ${warnings} Kawasaki error(s) within the drawing's precision` : 'passed';
+  status.textContent = report.findings.length ? `${report.findings.length} finding(s)` : passed;
   status.className = report.findings.length ? 'fail' : 'pass';
   $('findings').replaceChildren(...report.findings.map((f, k) => {
     const li = document.createElement('li');

@@ -39,7 +39,9 @@ export class FlatView {
     this.label.textContent = 'folding flat…';
     const k = Math.max(0, Math.floor(Number(this.stateInput.value) || 0));
     try {
-      this.view = await call(`/api/docs/${id}/flat?state=${k}`);
+      const t = document.getElementById('kawasaki-tolerance')?.value.trim();
+      const tolerance = t ? `&kawasaki_tolerance=${encodeURIComponent(t)}` : '';
+      this.view = await call(`/api/docs/${id}/flat?state=${k}${tolerance}`);
     } catch (e) {
       this.label.textContent = e.message;
       this.svg.replaceChildren();

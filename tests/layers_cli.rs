@@ -123,3 +123,119 @@ fn unsatisfiable_pattern_exits_one_and_names_faces() {
     assert_eq!(out.status.code(), Some(1));
     assert!(!out_path.exists());
 }
+
+/// Flat-Folder's grid 002 (16 states) turned by 17°, 100 units wide, every coordinate
+/// rounded to 0.01, written as FOLD into `dir`.
+fn rounded_grid(dir: &std::path::Path) -> String {
+    let mut cp = foldcam::formats::load(grid("002_brown_2x2_D1.fold").as_ref())
+        .expect("grid")
+        .pattern;
+    let turn = glam::DMat2::from_angle(17f64.to_radians());
+    for p in &mut cp.vertices {
+        *p = (turn * *p * 10_000.0).round() / 100.0;
+    }
+    let path = dir.join("rounded.fold");
+    foldcam::formats::save(&path, &cp, None).expect("written");
+    path.to_str().expect("utf-8").to_string()
+}
+
+#[test]
+fn rounding_is_a_warning_beside_the_count_and_a_broken_vertex_is_refused() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let rounded = rounded_grid(dir.path());
+    // The local check alone fails on the rounding …
+    let out = foldcam(&["check", &rounded]);
+    assert_eq!(out.status.code(), Some(1));
+    // … the layer check counts the states and lists the rounding as warnings: exit 0.
+    let out = foldcam(&["check", &rounded, "--layers", "--json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(v["layers"]["states"], "16");
+    let warnings = v["warnings"].as_array().expect("warnings");
+    assert!(!warnings.is_empty());
+    assert!(warnings.iter().all(|w| w["kind"] == "kawasaki"));
+    assert_eq!(
+        v["layers"]["rounding"].as_u64(),
+        Some(warnings.len() as u64)
+    );
+    assert_eq!(v["layers"]["kawasaki_tolerance"], "fitted");
+    let text =
+        String::from_utf8_lossy(&foldcam(&["check", &rounded, "--layers"]).stdout).into_owned();
+    assert!(text.contains("PASS with"), "{text}");
+    // A fixed tolerance below the rounding refuses it, naming the vertex; one above passes
+    // without warnings.
+    let out = foldcam(&[
+        "check",
+        &rounded,
+        "--layers",
+        "--kawasaki-tolerance",
+        "0.0001",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        text.contains("not locally flat-foldable: kawasaki at v"),
+        "{text}"
+    );
+    let out = foldcam(&[
+        "check",
+        &rounded,
+        "--layers",
+        "--kawasaki-tolerance",
+        "1",
+        "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert!(v.get("warnings").is_none());
+    // fold-flat folds it too, saying so on standard error.
+    let folded = dir.path().join("folded.fold");
+    let out = foldcam(&["fold-flat", &rounded, "-o", folded.to_str().expect("utf-8")]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("within the drawing's precision"));
+    assert!(folded.exists());
+    // A vertex off by 5° is refused by name, and fold-flat writes nothing.
+    let broken =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/patterns/broken-vertex.fold");
+    let b = broken.to_str().expect("utf-8");
+    let out = foldcam(&["check", b, "--layers"]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(text.contains("kawasaki at v0"), "{text}");
+    assert!(text.contains("5.0000°"), "{text}");
+    let not_written = dir.path().join("broken.fold");
+    let out = foldcam(&["fold-flat", b, "-o", not_written.to_str().expect("utf-8")]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("kawasaki at v0"));
+    assert!(!not_written.exists());
+}
+
+#[test]
+fn a_kawasaki_tolerance_of_zero_or_ninety_degrees_is_refused() {
+    let p = grid("002_brown_2x2_D1.fold");
+    for bad in ["0", "90", "nan", "x"] {
+        for command in ["check", "fold-flat"] {
+            let mut args = vec![command, p.as_str(), "--kawasaki-tolerance", bad];
+            if command == "fold-flat" {
+                args.extend(["-o", "/nonexistent/never.fold"]);
+            }
+            let out = foldcam(&args);
+            assert_eq!(out.status.code(), Some(2), "{command} {bad}");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(
+                err.contains("--kawasaki-tolerance") && err.contains("to 45 degrees"),
+                "{command} {bad}: {err}"
+            );
+        }
+    }
+}

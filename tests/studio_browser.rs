@@ -132,24 +132,33 @@ async fn the_studio_works_in_a_real_browser() {
         "{info}"
     );
     // The layer order, as `foldcam check --layers` prints it.
-    c.find(Locator::Css("#layers-btn"))
-        .await
-        .unwrap()
-        .click()
-        .await
-        .unwrap();
-    wait_until(
-        &c,
-        "return document.getElementById('layers-result').textContent.startsWith('layer order')",
-        "the layer order",
-    )
-    .await;
+    click(&c, "#layers-btn").await;
+    let layer_line =
+        "return document.getElementById('layers-result').textContent.startsWith('layer order')";
+    wait_until(&c, layer_line, "the layer order").await;
     let cli = foldcam(&["check", "miura.fold", "--layers"], dir.path());
     let cli = String::from_utf8_lossy(&cli.stdout);
     let expected = cli
         .lines()
         .find(|l| l.starts_with("layer order"))
         .expect("a layer line");
+    assert_eq!(text(&c, "#layers-result").await, expected);
+    // The Kawasaki tolerance beside the button goes with the request: out of range, the
+    // server's message shows and the result line is cleared; emptied, it fits the drawing again.
+    let field = c.find(Locator::Css("#kawasaki-tolerance")).await.unwrap();
+    field.send_keys("90").await.unwrap();
+    click(&c, "#layers-btn").await;
+    wait_until(
+        &c,
+        "const e = document.getElementById('error'); \
+         return !e.hidden && e.textContent.includes('45 degrees')",
+        "the tolerance refused",
+    )
+    .await;
+    assert_eq!(text(&c, "#layers-result").await, "");
+    field.clear().await.unwrap();
+    click(&c, "#layers-btn").await;
+    wait_until(&c, layer_line, "the layer order again").await;
     assert_eq!(text(&c, "#layers-result").await, expected);
     keep_screenshot(&c, "studio-pattern.png").await;
 

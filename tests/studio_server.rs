@@ -781,3 +781,57 @@ fn plan_options_and_uploaded_profiles_give_foldcam_cuts_file() {
     let (status, reply) = server.post_json("/api/profiles/machine?name=huge.toml", huge.as_bytes());
     assert_eq!(status, 413, "{reply}");
 }
+
+#[test]
+fn the_layer_order_takes_the_kawasaki_tolerance_of_the_check_panel() {
+    // Flat-Folder's grid 002 turned by 17° and rounded to 0.01 of 100 units: the fitted tolerance (empty field) folds it and lists
+    // the rounding as warnings, as `check --layers` does; a fixed 0.0001° refuses it, naming a
+    // vertex, in the layer check and the flat-folded view alike; nonsense is refused with the
+    // range.
+    let dir = tempfile::tempdir().unwrap();
+    let grid = repo_file("tests/data/flat-folder/002_brown_2x2_D1.fold");
+    let mut cp = foldcam::formats::load(std::path::Path::new(&grid))
+        .unwrap()
+        .pattern;
+    let turn = glam::DMat2::from_angle(17f64.to_radians());
+    for p in &mut cp.vertices {
+        *p = (turn * *p * 10_000.0).round() / 100.0;
+    }
+    let path = dir.path().join("rounded.fold");
+    foldcam::formats::save(&path, &cp, None).unwrap();
+    let server = Server::start(&[], dir.path());
+    let (status, opened) = server.post_json(
+        "/api/upload?name=rounded.fold",
+        &std::fs::read(&path).unwrap(),
+    );
+    assert_eq!(status, 200, "{opened}");
+    let id = opened["id"].as_u64().unwrap();
+    for query in ["", "?kawasaki_tolerance=", "?kawasaki_tolerance=%20"] {
+        let (status, body) = server.get(&format!("/api/docs/{id}/layers{query}"));
+        assert_eq!(status, 200, "{query}: {}", String::from_utf8_lossy(&body));
+        let v: Value = serde_json::from_slice(&body).unwrap();
+        assert_eq!(v["layers"]["states"], "16", "{query}");
+        assert!(!v["check"]["warnings"].as_array().unwrap().is_empty());
+        assert_eq!(v["check"]["findings"].as_array().unwrap().len(), 0);
+        assert!(v["text"].as_str().unwrap().contains("within the tolerance"));
+    }
+    let (status, body) = server.get(&format!("/api/docs/{id}/layers?kawasaki_tolerance=0.0001"));
+    assert_eq!(status, 200);
+    let v: Value = serde_json::from_slice(&body).unwrap();
+    assert!(v["layers"]["states"].is_null(), "{v}");
+    assert!(v["text"].as_str().unwrap().contains("kawasaki at v"), "{v}");
+    let (status, body) = server.get(&format!("/api/docs/{id}/flat?kawasaki_tolerance=0.0001"));
+    assert_eq!(status, 422, "{}", String::from_utf8_lossy(&body));
+    assert!(String::from_utf8_lossy(&body).contains("kawasaki at v"));
+    let (status, _) = server.get(&format!("/api/docs/{id}/flat"));
+    assert_eq!(status, 200);
+    for bad in ["0", "90", "abc"] {
+        let (status, body) = server.get(&format!("/api/docs/{id}/layers?kawasaki_tolerance={bad}"));
+        assert_eq!(status, 422, "{bad}");
+        let text = String::from_utf8_lossy(&body);
+        assert!(
+            text.contains("45 degrees") && text.contains("fit it to the drawing"),
+            "{bad}: {text}"
+        );
+    }
+}

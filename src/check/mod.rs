@@ -216,6 +216,10 @@ impl Finding {
 pub struct CheckReport {
     /// Every failure, sorted by kind, then from the worst to the least bad.
     pub findings: Vec<Finding>,
+    /// Faults that do not fail the check: Kawasaki errors the layer solver accepted as the
+    /// drawing's rounding ([`layers::check_layers`]); empty after the local checks alone.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<Finding>,
     /// Counts and extremes of the whole pattern.
     pub summary: CheckSummary,
     /// The options the checks ran with.
@@ -310,6 +314,7 @@ pub fn check_with_frame(
     };
     CheckReport {
         findings,
+        warnings: Vec::new(),
         summary,
         options: opts.clone(),
         runs,

@@ -146,6 +146,21 @@ impl CheckReport {
                 let _ = writeln!(out, "  … and {rest} more {} findings", kind.name());
             }
         }
+        for (i, f) in self
+            .warnings
+            .iter()
+            .enumerate()
+            .take(TEXT_FINDINGS_PER_KIND)
+        {
+            let _ = writeln!(out, "warning {}", finding_line(i + 1, f));
+        }
+        if self.warnings.len() > TEXT_FINDINGS_PER_KIND {
+            let _ = writeln!(
+                out,
+                "  … and {} more warnings",
+                self.warnings.len() - TEXT_FINDINGS_PER_KIND
+            );
+        }
         out.push_str(&self.verdict());
         out.push('\n');
         out
@@ -217,7 +232,10 @@ impl CheckReport {
 
     fn verdict(&self) -> String {
         if self.passed() {
-            return "PASS".to_string();
+            return match self.warnings.len() {
+                0 => "PASS".to_string(),
+                n => format!("PASS with {n} warning(s)"),
+            };
         }
         let counts: Vec<String> = FindingKind::ALL
             .iter()

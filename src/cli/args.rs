@@ -74,9 +74,12 @@ pub struct CheckArgs {
     /// Shortest allowed edge, in the pattern's unit (mm unless unitless).
     #[arg(long, value_name = "LEN", value_parser = positive)]
     pub min_edge: Option<f64>,
-    /// Tolerance of Kawasaki's alternating angle sum, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 0.01, value_parser = degrees)]
-    pub kawasaki_tolerance: f64,
+    /// Tolerance of Kawasaki's alternating angle sum, degrees [default: 0.01; with --layers,
+    /// fitted to the drawing: an error is the drawing's rounding when closing the vertex moves
+    /// the end of its shortest crease by at most 1/300 of the pattern's shortest edge, and is
+    /// listed as a warning beside the state count].
+    #[arg(long, value_name = "DEG", value_parser = |s: &str| foldcam::limits::KAWASAKI_TOLERANCE.parse(s))]
+    pub kawasaki_tolerance: Option<f64>,
     /// Skip Kawasaki and Maekawa (for patterns not meant to fold flat).
     #[arg(long)]
     pub no_flat_foldability: bool,
@@ -101,6 +104,9 @@ impl CheckArgs {
     pub fn layer_options(&self) -> foldcam::check::layers::LayerOptions {
         foldcam::check::layers::LayerOptions {
             max_states: Some(self.max_states.max(1)),
+            kawasaki: foldcam::check::layers::KawasakiTolerance::from_degrees(
+                self.kawasaki_tolerance,
+            ),
             ..Default::default()
         }
     }
@@ -109,7 +115,9 @@ impl CheckArgs {
     pub fn options(&self) -> CheckOptions {
         CheckOptions {
             flat_foldability: !self.no_flat_foldability,
-            kawasaki_tolerance_deg: self.kawasaki_tolerance,
+            kawasaki_tolerance_deg: self
+                .kawasaki_tolerance
+                .unwrap_or(CheckOptions::default().kawasaki_tolerance_deg),
             min_vertex_angle_deg: self.min_vertex_angle,
             max_fold_angle_deg: self.max_fold_angle,
             min_edge_length: self.min_edge,

@@ -91,13 +91,15 @@ pub struct FabArgs {
     /// Least uncut material between two cuts (the web), mm.
     #[arg(long, value_name = "MM", value_parser = |s: &str| limits::MIN_WEB.parse(s))]
     pub min_web: Option<f64>,
-    /// Uncut clearance kept around every vertex at least, mm.
+    /// Uncut material kept around every vertex at least, mm: from the vertex to the burnt
+    /// edge of the nearest dash (the kerf is taken into account unless --no-kerf-offset).
     #[arg(long, value_name = "MM", value_parser = |s: &str| limits::CLEARANCE.parse(s))]
     pub clearance: Option<f64>,
     /// Kerf width, mm (default from the material).
     #[arg(long, value_name = "MM", value_parser = |s: &str| limits::KERF.parse(s))]
     pub kerf: Option<f64>,
-    /// Do not offset contours by half the kerf.
+    /// Do not compensate the kerf: contours on the drawn lines, perforation bridges and vertex
+    /// clearances measured on the beam's centre line.
     #[arg(long)]
     pub no_kerf_offset: bool,
     /// Mountains from the front, valleys from the back: two jobs, the second mirrored, with

@@ -3,13 +3,11 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
-use foldcam::check::layers::{LayerOptions, LayerSolver};
-use foldcam::check::{CheckOptions, FindingKind, check};
+use foldcam::check::layers::{KawasakiTolerance, LayerOptions, LayerSolver, local_faults, refusal};
 use foldcam::formats::{self, write_atomic};
 use foldcam::render::render_top_view_png;
 
 use super::Outcome;
-use super::args::positive;
 use super::input;
 
 /// Fold a crease pattern flat and write the folded state.
@@ -49,9 +47,11 @@ pub struct Args {
     /// Stop counting each component at N states (states beyond are not reachable).
     #[arg(long, value_name = "N", default_value_t = 1_000_000)]
     pub max_states: u64,
-    /// Kawasaki tolerance of the local check run first, degrees.
-    #[arg(long, value_name = "DEG", default_value_t = 0.01, value_parser = positive)]
-    pub kawasaki_tolerance: f64,
+    /// Kawasaki tolerance of the local check run first, degrees [default: fitted to the
+    /// drawing: an error is rounding when closing the vertex moves the end of its shortest
+    /// crease by at most 1/300 of the pattern's shortest edge].
+    #[arg(long, value_name = "DEG", value_parser = |s: &str| foldcam::limits::KAWASAKI_TOLERANCE.parse(s))]
+    pub kawasaki_tolerance: Option<f64>,
 }
 
 /// Folds and writes.
@@ -65,31 +65,29 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, true)?;
     let cp = &imported.pattern;
-    let local = check(
-        cp,
-        &CheckOptions {
-            kawasaki_tolerance_deg: args.kawasaki_tolerance,
-            ..CheckOptions::default()
-        },
-    );
-    if let Some(f) = local
-        .findings
-        .iter()
-        .find(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa))
-    {
+    let options = LayerOptions {
+        max_states: Some(args.max_states.max(1)),
+        kawasaki: KawasakiTolerance::from_degrees(args.kawasaki_tolerance),
+        ..LayerOptions::default()
+    };
+    let faults = local_faults(cp, options.kawasaki);
+    if let Some(f) = faults.first_refusal() {
         eprintln!(
-            "foldcam: {}: not locally flat-foldable ({} at {}: {}); nothing written",
+            "foldcam: {}: {}; nothing written",
             args.input.display(),
-            f.kind.name(),
-            f.vertex.map_or_else(|| "-".into(), |v| v.to_string()),
-            f.message
+            refusal(f)
         );
         return Ok(Outcome::CheckFailed);
     }
-    let options = LayerOptions {
-        max_states: Some(args.max_states.max(1)),
-        ..LayerOptions::default()
-    };
+    if !faults.rounding.is_empty() {
+        eprintln!(
+            "foldcam: warning: {}: folded with {} Kawasaki error(s) within the drawing's \
+             precision (largest {:.4}°; --kawasaki-tolerance sets a fixed one)",
+            args.input.display(),
+            faults.rounding.len(),
+            faults.rounding.iter().map(|f| f.value).fold(0.0, f64::max)
+        );
+    }
     let solver = LayerSolver::new(cp, &options)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
     let report = solver.report();

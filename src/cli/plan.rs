@@ -47,6 +47,15 @@ pub fn summary(p: &FabPlan) -> String {
     } else {
         0.0
     };
+    if let Some(share) = st.perforated_share() {
+        let _ = writeln!(
+            s,
+            "  perforated {:>12.1} mm of dashes along {:.1} mm of crease ({:.0}%)",
+            st.perforated_mm,
+            st.crease_mm,
+            100.0 * share
+        );
+    }
     let _ = writeln!(s, "  pierces    {:>12}", st.pierces);
     let _ = writeln!(
         s,

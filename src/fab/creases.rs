@@ -5,14 +5,18 @@
 //! that passes through a vertex only where that vertex *joins* its two chosen edges; the
 //! caller says which vertices join:
 //!
-//! - perforated creases ([`crease_joins`]): the vertex has degree 2 in the whole pattern, both
-//!   edges have the same assignment and operation, and the crease turns there by at most
-//!   [`CHAIN_MAX_TURN_DEG`]. A polyline or a flattened curve between two *real* vertices
-//!   (another line meets, or the crease turns sharper than that) is one crease: its dashes
-//!   run along the whole chain, and vertex clearances sit only at its real ends. Anywhere
-//!   another line meets, the crease ends, because that is where a clearance is needed;
-//! - scores, marks and pen lines ([`polyline_joins`]): degree 2 in the whole pattern and the
-//!   same assignment and operation, at any angle — a drawn polyline is burnt in one stroke;
+//! - perforated creases ([`crease_joins`]): no line that weakens the sheet (a cut, score,
+//!   perforation or the outline, see [`weakening_degrees`]) other than the two edges meets at
+//!   the vertex, both edges have the same assignment and operation, and the crease turns
+//!   there by at most [`CHAIN_MAX_TURN_DEG`]. A polyline or a flattened curve between two
+//!   *real* vertices (another weakening line meets, or the crease turns sharper than that) is
+//!   one crease: its dashes run along the whole chain, and vertex clearances sit only at its
+//!   real ends. Lines the plan leaves alone or only draws (Origami Simulator's facet lines,
+//!   marks) neither end a crease nor need a clearance: a curved crease drawn as a polyline
+//!   between triangulated facets stays one crease;
+//! - scores, marks and pen lines ([`polyline_joins`]): no other line the plan machines meets
+//!   at the vertex ([`machined_degrees`]) and both edges have the same assignment and
+//!   operation, at any angle — a drawn polyline is burnt in one stroke;
 //! - slits: any vertex where exactly two slit edges meet.
 //!
 //! Cost O(V + E). A chain whose walk returns to its start is `closed` (its first vertex is
@@ -20,6 +24,8 @@
 
 use glam::DVec2;
 
+use super::Operation;
+use super::operations::is_continuous_weakening;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
 
 /// Largest sine of the turn between two edges that still continue one straight crease:
@@ -193,7 +199,8 @@ pub fn straight_through(cp: &CreasePattern, v: VertexId, a: EdgeId, b: EdgeId) -
     scale > 0.0 && da.dot(db) < 0.0 && da.perp_dot(db).abs() <= COLLINEAR_SINE * scale
 }
 
-/// The joining rule of score, mark and pen polylines (see the module docs).
+/// The joining rule of score, mark and pen polylines (see the module docs); `degree` counts
+/// the lines that matter at each vertex ([`machined_degrees`] or [`weakening_degrees`]).
 pub fn polyline_joins(
     cp: &CreasePattern,
     degree: &[usize],
@@ -226,7 +233,8 @@ pub fn turns_at_most(
     (std::f64::consts::PI - between).to_degrees() <= max_turn_deg
 }
 
-/// The joining rule of perforated creases (see the module docs).
+/// The joining rule of perforated creases (see the module docs); `degree` is
+/// [`weakening_degrees`].
 pub fn crease_joins(
     cp: &CreasePattern,
     degree: &[usize],
@@ -238,14 +246,33 @@ pub fn crease_joins(
         && (straight_through(cp, v, a, b) || turns_at_most(cp, v, a, b, CHAIN_MAX_TURN_DEG))
 }
 
-/// Number of edges at every vertex of `cp`.
-pub fn degrees(cp: &CreasePattern) -> Vec<usize> {
+/// Number of edges for which `include` holds at every vertex of `cp`.
+pub fn degrees_where(cp: &CreasePattern, include: impl Fn(EdgeId) -> bool) -> Vec<usize> {
     let mut d = vec![0; cp.vertices.len()];
-    for e in &cp.edges {
-        d[e.vertices[0].index()] += 1;
-        d[e.vertices[1].index()] += 1;
+    for e in cp.edge_ids().filter(|&e| include(e)) {
+        let [a, b] = cp.edges[e.index()].vertices;
+        d[a.index()] += 1;
+        d[b.index()] += 1;
     }
     d
+}
+
+/// Number of lines at every vertex that the plan machines (any operation in `ops`, indexed by
+/// [`EdgeId::index`]) or that are the sheet's outline: skipped lines (facet lines mapped to
+/// no operation) are not counted.
+pub fn machined_degrees(cp: &CreasePattern, ops: &[Option<Operation>]) -> Vec<usize> {
+    degrees_where(cp, |e| {
+        ops[e.index()].is_some() || cp.edges[e.index()].assignment.is_boundary_like()
+    })
+}
+
+/// Number of lines at every vertex that weaken the sheet: cut, scored or perforated lines
+/// and the outline. Marks, pen lines and skipped lines leave the material whole, so a
+/// perforated crease runs on through a vertex where only such lines meet it.
+pub fn weakening_degrees(cp: &CreasePattern, ops: &[Option<Operation>]) -> Vec<usize> {
+    degrees_where(cp, |e| {
+        is_continuous_weakening(cp, ops, e) || ops[e.index()] == Some(Operation::Perforate)
+    })
 }
 
 #[cfg(test)]
@@ -264,7 +291,7 @@ mod tests {
         cp.add_edge(v[1], v[2], Assignment::Mountain);
         cp.add_edge(v[2], v[3], Assignment::Mountain);
         cp.add_edge(v[2], v[4], Assignment::Valley);
-        let deg = degrees(&cp);
+        let deg = degrees_where(&cp, |_| true);
         let chains = chain_edges(
             &cp,
             |e| cp.edges[e.index()].assignment == Assignment::Mountain,
@@ -291,7 +318,7 @@ mod tests {
         for w in v.windows(2) {
             cp.add_edge(w[0], w[1], Assignment::Valley);
         }
-        let deg = degrees(&cp);
+        let deg = degrees_where(&cp, |_| true);
         let chains = chain_edges(&cp, |_| true, |v, a, b| crease_joins(&cp, &deg, v, a, b));
         let mut lens: Vec<usize> = chains.iter().map(|c| c.edges.len()).collect();
         lens.sort();

@@ -111,6 +111,19 @@ pub struct PlanStats {
     pub naive_travel_mm: f64,
     /// Estimated job time, seconds (all jobs).
     pub time_s: f64,
+    /// Length of the creases the mapping perforates, mm (0 when none is).
+    pub crease_mm: f64,
+    /// Length of their perforation dashes (toolpaths, each once), mm.
+    pub perforated_mm: f64,
+}
+
+impl PlanStats {
+    /// The share of the perforated creases' length that their dashes cut (toolpath length,
+    /// so a little less than the burnt length with kerf compensation), or `None` when the plan
+    /// perforates nothing.
+    pub fn perforated_share(&self) -> Option<f64> {
+        (self.crease_mm > 0.0).then(|| self.perforated_mm / self.crease_mm)
+    }
 }
 
 /// The fabrication plan.
@@ -183,7 +196,9 @@ pub struct PlanOptions {
     pub perforation: crate::machine::Perforation,
     /// Kerf width, mm (closed contours are offset by half of it).
     pub kerf_mm: f64,
-    /// Offset closed contours by half the kerf (outward for outer contours, inward for holes).
+    /// Compensate the kerf: offset closed contours by half of it (outward for outer contours,
+    /// inward for holes) and measure perforation bridges and vertex clearances between the
+    /// kerf's edges ([`PlanOptions::toolpath_perforation`]).
     pub kerf_offset: bool,
     /// Mountains from the front, valleys from the back (second job mirrored), with
     /// registration marks.
@@ -223,6 +238,17 @@ impl PlanOptions {
 }
 
 impl PlanOptions {
+    /// The perforation in toolpath terms: with kerf compensation, bridges and vertex
+    /// clearances measured between the kerf's edges ([`crate::machine::Perforation::for_kerf`]);
+    /// without it, on the beam's centre line.
+    pub fn toolpath_perforation(&self) -> crate::machine::Perforation {
+        if self.kerf_offset {
+            self.perforation.for_kerf(self.kerf_mm)
+        } else {
+            self.perforation
+        }
+    }
+
     /// Checks every number against [`crate::limits`] (the ranges the material profiles
     /// accept) and the perforation's lengths against each other, so that no option given on
     /// the command line or by a library caller reaches the planner out of range.
@@ -332,7 +358,10 @@ pub enum FabError {
         operations: String,
     },
     /// No edge maps to an operation.
-    #[error("nothing to do: no edge of the pattern maps to an operation")]
+    #[error(
+        "nothing to do: no edge of the pattern maps to an operation (the material skips its \
+         lines; --mountain, --valley, --flat or --boundary choose an operation for them)"
+    )]
     NothingToDo,
     /// A plan option is out of range.
     #[error("--{option} {message}")]

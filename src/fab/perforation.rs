@@ -39,8 +39,11 @@
 //!   At a boundary vertex this keeps dashes off the outline (kerf offset only moves the outer
 //!   cut further away).
 //!
-//! Every line at the vertex is checked, not only the neighbours, and `c ≥ vertex_clearance`.
-//! Lines that neither cut nor score (marks, pen lines, skipped edges) are ignored.
+//! Every line at the vertex is checked, not only the neighbours, and `c ≥ vertex_clearance`,
+//! measured in toolpath terms: with kerf compensation the vertex clearance grows by `kerf/2`
+//! ([`crate::machine::Perforation::for_kerf`]), so the metal between the vertex and the dash's
+//! burnt end is the clearance asked. Lines that neither cut nor score (marks, pen lines,
+//! skipped edges) are ignored, and do not end a crease either (see [`super::creases`]).
 //!
 //! Limits: only lines sharing a vertex are considered; two parallel creases closer than `W`
 //! without a common vertex are not detected. Ends where the angle is so small that `c`

@@ -19,7 +19,7 @@ use glam::{DAffine2, DVec2};
 
 use super::placement::{bounds_of, place_with, transform_paths, union};
 use super::sides::{mirror, registration_marks, split};
-use super::stats::plan_stats;
+use super::stats::{perforated_crease_mm, plan_stats};
 use super::{FabError, FabPlan, Job, PlanOptions, Side, Toolpath, geometry, order};
 use crate::check::{CheckOptions, FindingKind, check};
 use crate::machine::{Bed, MachineProfile, Material};
@@ -63,7 +63,22 @@ pub fn plan(
     let mut plan = plan_toolpaths(cp, paths, machine, material, opts)?;
     plan.warnings.extend(opts.notes.iter().cloned());
     plan.warnings.extend(remarks);
+    plan.warnings.extend(facets_only_warning(cp, opts));
     Ok(plan)
+}
+
+/// A warning for a pattern whose only lines besides its outline are facet (F) lines that the
+/// plan skips: the sheet is cut out but nothing on it is folded or weakened.
+fn facets_only_warning(cp: &CreasePattern, opts: &PlanOptions) -> Option<String> {
+    let counts = crate::check::AssignmentCounts::of(cp);
+    let creases = counts.mountain + counts.valley + counts.unassigned;
+    (creases == 0 && counts.flat > 0 && opts.mapping.flat.is_none()).then(|| {
+        format!(
+            "the pattern has no creases, only {} facet (flat) line(s), which the plan skips: only \
+             the outline is cut (--flat mark or --flat score machines them)",
+            counts.flat
+        )
+    })
 }
 
 /// Plans given toolpaths of `cp` (pattern coordinates, mm, as [`geometry::toolpaths`] makes
@@ -96,7 +111,8 @@ pub fn plan_toolpaths(
         mapping: opts.mapping,
         overrides: Vec::new(),
     };
-    plan.stats = plan_stats(&plan, naive, machine);
+    let crease_mm = perforated_crease_mm(cp, &opts.mapping);
+    plan.stats = plan_stats(&plan, naive, crease_mm, machine);
     Ok(plan)
 }
 

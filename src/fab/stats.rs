@@ -17,9 +17,11 @@
 
 use glam::DVec2;
 
+use super::operations::operation_for;
 use super::order::travel_mm;
 use super::{FabPlan, Operation, PlanStats, Toolpath};
-use crate::machine::MachineProfile;
+use crate::machine::{MachineProfile, OperationMapping};
+use crate::pattern::CreasePattern;
 
 /// Length of a polyline, mm.
 pub fn stroke_length(stroke: &[DVec2]) -> f64 {
@@ -59,10 +61,40 @@ pub fn pierces(plan: &FabPlan, machine: &MachineProfile) -> usize {
         .sum()
 }
 
+/// Length of the edges of `cp` that `mapping` perforates, mm: the crease length a perforation
+/// plan should weaken.
+pub fn perforated_crease_mm(cp: &CreasePattern, mapping: &OperationMapping) -> f64 {
+    cp.edge_ids()
+        .filter(|&e| {
+            operation_for(cp.edges[e.index()].assignment, mapping) == Some(Operation::Perforate)
+        })
+        .map(|e| cp.edge_length(e))
+        .sum()
+}
+
+/// Length of the perforation dashes of `plan` (toolpath length, each dash once), mm.
+pub fn dash_length(plan: &FabPlan) -> f64 {
+    plan.jobs
+        .iter()
+        .flat_map(|j| &j.paths)
+        .filter(|p| p.op == Operation::Perforate)
+        .flat_map(|p| &p.strokes)
+        .map(|s| stroke_length(s))
+        .sum()
+}
+
 /// The totals of `plan` on `machine`; `naive_travel_mm` is the travel of the unoptimised
-/// order.
-pub fn plan_stats(plan: &FabPlan, naive_travel_mm: f64, machine: &MachineProfile) -> PlanStats {
+/// order, `crease_mm` the length of the creases the plan perforates
+/// ([`perforated_crease_mm`]).
+pub fn plan_stats(
+    plan: &FabPlan,
+    naive_travel_mm: f64,
+    crease_mm: f64,
+    machine: &MachineProfile,
+) -> PlanStats {
     PlanStats {
+        crease_mm,
+        perforated_mm: dash_length(plan),
         length_mm: burn_lengths(plan, machine),
         pierces: pierces(plan, machine),
         travel_mm: plan

@@ -362,7 +362,12 @@ pub fn test_grid(
             },
         })
         .collect();
-    plan.stats = plan_stats(&plan, plan.stats.naive_travel_mm, machine);
+    plan.stats = plan_stats(
+        &plan,
+        plan.stats.naive_travel_mm,
+        plan.stats.crease_mm,
+        machine,
+    );
     plan.warnings.extend(plan_opts.notes.iter().cloned());
     plan.warnings.extend(warnings);
     if !super::operations::can_mark(machine, material) {

@@ -123,8 +123,9 @@ impl Perforation {
     /// both ends of its toolpath, so for the material to keep the asked bridges (and webs)
     /// the toolpath dashes are one kerf shorter and the bridges one kerf longer, the period
     /// unchanged; the dash keeps at least a tenth of its length (a kerf wider than that
-    /// leaves shorter bridges, as the beam allows no better). Vertex clearances are measured
-    /// where the lines meet and stay as they are.
+    /// leaves shorter bridges, as the beam allows no better). The vertex clearance grows by
+    /// half the kerf, so the metal left between a vertex and the nearest dash's burnt end is
+    /// the clearance asked.
     pub fn for_kerf(&self, kerf_mm: f64) -> Perforation {
         let kerf = if kerf_mm.is_finite() {
             kerf_mm.max(0.0)
@@ -138,7 +139,7 @@ impl Perforation {
             min_dash_mm: (self.min_dash_mm - shrink)
                 .max(self.min_dash_mm.min(self.cut_mm - shrink) * MIN_TOOLPATH_DASH_SHARE),
             min_web_mm: self.min_web_mm + shrink,
-            vertex_clearance_mm: self.vertex_clearance_mm,
+            vertex_clearance_mm: self.vertex_clearance_mm + kerf / 2.0,
         }
     }
 }

@@ -48,7 +48,7 @@ use super::flat::{FlatView, flat_view};
 use super::machine_api;
 use super::settings::UploadedProfiles;
 use crate::check::fold3d::{FoldOptions, fold};
-use crate::check::layers::{LayerOptions, check_layers};
+use crate::check::layers::{KawasakiTolerance, LayerOptions, check_layers};
 use crate::check::{CheckOptions, check_with_frame};
 use crate::design::source::MeshUse;
 use crate::pattern::Assignment;
@@ -507,13 +507,52 @@ async fn check(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<Js
     .await
 }
 
-async fn layers(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<Json<Value>> {
+/// The Kawasaki tolerance of the layer-order check and the flat-folded view: absent or
+/// empty for the tolerance fitted to the drawing, else degrees (as `--kawasaki-tolerance`).
+#[derive(Deserialize)]
+struct ToleranceQuery {
+    kawasaki_tolerance: Option<String>,
+}
+
+impl ToleranceQuery {
+    fn tolerance(&self) -> Result<KawasakiTolerance, ApiError> {
+        let text = self.kawasaki_tolerance.as_deref().map(str::trim);
+        match text {
+            None | Some("") => Ok(KawasakiTolerance::Fitted),
+            Some(t) => crate::limits::KAWASAKI_TOLERANCE
+                .parse(t)
+                .map(KawasakiTolerance::Degrees)
+                .map_err(|e| {
+                    ApiError::input(format!(
+                        "Kawasaki tolerance: {e} (or leave the field empty to fit it to the \
+                         drawing)"
+                    ))
+                }),
+        }
+    }
+}
+
+async fn layers(
+    State(s): State<Arc<Studio>>,
+    PathId(id): PathId,
+    query: Result<Query<ToleranceQuery>, QueryRejection>,
+) -> ApiResult<Json<Value>> {
+    let Query(q) = query?;
+    let kawasaki = q.tolerance()?;
     let doc = s.get(id)?;
     blocking(move || {
         let c = doc.cleaned(false).map_err(ApiError::input)?;
-        let mut report = check_with_frame(&c.pattern, c.folded.as_ref(), &CheckOptions::default());
+        let check_options = CheckOptions {
+            kawasaki_tolerance_deg: match kawasaki {
+                KawasakiTolerance::Degrees(d) => d,
+                KawasakiTolerance::Fitted => CheckOptions::default().kawasaki_tolerance_deg,
+            },
+            ..CheckOptions::default()
+        };
+        let mut report = check_with_frame(&c.pattern, c.folded.as_ref(), &check_options);
         let options = LayerOptions {
             max_states: Some(LAYER_MAX_STATES),
+            kawasaki,
             ..LayerOptions::default()
         };
         let outcome = check_layers(&c.pattern, &mut report, &options)
@@ -528,6 +567,7 @@ async fn layers(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
 #[derive(Deserialize)]
 struct FlatQuery {
     state: Option<u64>,
+    kawasaki_tolerance: Option<String>,
 }
 
 async fn flat(
@@ -536,9 +576,13 @@ async fn flat(
     query: Result<Query<FlatQuery>, QueryRejection>,
 ) -> ApiResult<Json<FlatView>> {
     let Query(q) = query?;
+    let kawasaki = ToleranceQuery {
+        kawasaki_tolerance: q.kawasaki_tolerance.clone(),
+    }
+    .tolerance()?;
     let doc = s.get(id)?;
     blocking(move || {
-        flat_view(&doc, q.state.unwrap_or(0))
+        flat_view(&doc, q.state.unwrap_or(0), kawasaki)
             .map(Json)
             .map_err(ApiError::input)
     })

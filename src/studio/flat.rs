@@ -6,8 +6,7 @@
 use serde::Serialize;
 
 use super::document::Document;
-use crate::check::layers::{LayerOptions, LayerSolver};
-use crate::check::{CheckOptions, FindingKind, check};
+use crate::check::layers::{KawasakiTolerance, LayerOptions, LayerSolver, local_faults, refusal};
 use crate::render::top_view::{cell_colour, deepest_layers};
 
 /// The layer solver's state cap per component, as `foldcam fold-flat`'s default
@@ -55,26 +54,22 @@ fn hex(c: [u8; 3]) -> String {
 /// Folds `doc` flat and returns state `state`, as `foldcam fold-flat DOC --state STATE`.
 ///
 /// # Errors
-/// The messages `foldcam fold-flat` prints: a pattern that is not locally flat-foldable, one
-/// without a layer order, or a state number past the count.
-pub fn flat_view(doc: &Document, state: u64) -> Result<FlatView, String> {
+/// The messages `foldcam fold-flat` prints: a pattern that is not locally flat-foldable
+/// within the `kawasaki` tolerance, one without a layer order, or a state number past the
+/// count.
+pub fn flat_view(
+    doc: &Document,
+    state: u64,
+    kawasaki: KawasakiTolerance,
+) -> Result<FlatView, String> {
     let name = &doc.name;
     let cp = doc.cleaned(true)?.pattern;
-    let local = check(&cp, &CheckOptions::default());
-    if let Some(f) = local
-        .findings
-        .iter()
-        .find(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa))
-    {
-        return Err(format!(
-            "{name}: not locally flat-foldable ({} at {}: {})",
-            f.kind.name(),
-            f.vertex.map_or_else(|| "-".into(), |v| v.to_string()),
-            f.message
-        ));
+    if let Some(f) = local_faults(&cp, kawasaki).first_refusal() {
+        return Err(format!("{name}: {}", refusal(f)));
     }
     let options = LayerOptions {
         max_states: Some(MAX_STATES),
+        kawasaki,
         ..LayerOptions::default()
     };
     let solver = LayerSolver::new(&cp, &options).map_err(|e| format!("{name}: {e}"))?;

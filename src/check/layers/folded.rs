@@ -173,7 +173,40 @@ impl FoldedFaces {
     }
 }
 
-/// Breadth-first placement from the lowest face of each piece.
+/// A face waiting to be placed: reached across a crease `length` long, `depth` creases from
+/// its piece's fixed face. Ordered so that the heap pops the shallowest first and, among
+/// equally deep ones, the one reached across the longest crease.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Reach {
+    depth: u32,
+    length: f64,
+    face: u32,
+    transform: DAffine2,
+    flipped: bool,
+}
+
+impl Eq for Reach {}
+
+impl PartialOrd for Reach {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Reach {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        other
+            .depth
+            .cmp(&self.depth)
+            .then(self.length.total_cmp(&other.length))
+            .then(other.face.cmp(&self.face))
+    }
+}
+
+/// Places every face from the lowest face of each piece, over a spanning tree of the faces
+/// that crosses as few creases as it can and, among those, the longest (as Flat-Folder's
+/// folding does): a drawn line's direction carries the rounding of its ends divided by its
+/// length, and every reflection passes that error on, so long creases place faces best.
 fn place(
     cp: &CreasePattern,
     faces: &[crate::pattern::Face],
@@ -181,17 +214,24 @@ fn place(
     edge_faces: &[[Option<u32>; 2]],
 ) -> Vec<(DAffine2, bool)> {
     let mut placed: Vec<Option<(DAffine2, bool)>> = vec![None; faces.len()];
-    let mut queue = std::collections::VecDeque::new();
+    let mut heap = std::collections::BinaryHeap::new();
     for start in 0..faces.len() {
         if placed[start].is_some() {
             continue;
         }
-        placed[start] = Some((DAffine2::IDENTITY, false));
-        queue.push_back(start);
-        while let Some(f) = queue.pop_front() {
-            let Some((t, flipped)) = placed[f] else {
+        heap.push(Reach {
+            depth: 0,
+            length: f64::INFINITY,
+            face: start as u32,
+            transform: DAffine2::IDENTITY,
+            flipped: false,
+        });
+        while let Some(r) = heap.pop() {
+            let f = r.face as usize;
+            if placed[f].is_some() {
                 continue;
-            };
+            }
+            placed[f] = Some((r.transform, r.flipped));
             let face = &faces[f];
             for ring in std::iter::once(&face.outer).chain(&face.holes) {
                 for (a, b) in ring_pairs(ring) {
@@ -210,16 +250,21 @@ fn place(
                     if placed[g as usize].is_some() {
                         continue;
                     }
-                    let next = match edge.assignment {
+                    let (pa, pb) = cp.segment(crate::pattern::EdgeId(e));
+                    let (transform, flipped) = match edge.assignment {
                         Assignment::Boundary | Assignment::Cut => continue,
-                        Assignment::Flat | Assignment::Join => (t, flipped),
+                        Assignment::Flat | Assignment::Join => (r.transform, r.flipped),
                         Assignment::Mountain | Assignment::Valley | Assignment::Unassigned => {
-                            let (pa, pb) = cp.segment(crate::pattern::EdgeId(e));
-                            (t * reflection(pa, pb), !flipped)
+                            (r.transform * reflection(pa, pb), !r.flipped)
                         }
                     };
-                    placed[g as usize] = Some(next);
-                    queue.push_back(g as usize);
+                    heap.push(Reach {
+                        depth: r.depth + 1,
+                        length: pa.distance(pb),
+                        face: g,
+                        transform,
+                        flipped,
+                    });
                 }
             }
         }

@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::rounding::{KawasakiTolerance, local_faults};
 use super::{LayerError, LayerOptions, LayerReport, LayerSolver};
 use crate::check::{CheckReport, Finding, FindingKind, Quantity};
 use crate::pattern::CreasePattern;
@@ -24,6 +25,10 @@ pub struct LayerCheck {
     /// The findings the outcome adds to the check (listed in the report's findings too).
     #[serde(skip)]
     pub findings: Vec<Finding>,
+    /// The Kawasaki tolerance the local faults were sorted with.
+    pub kawasaki_tolerance: KawasakiTolerance,
+    /// Kawasaki errors accepted as the drawing's rounding (listed in the check's warnings).
+    pub rounding: usize,
 }
 
 impl LayerCheck {
@@ -40,6 +45,14 @@ impl LayerCheck {
         }
         if let Some(e) = &self.error {
             let _ = writeln!(out, "layer order: {e}");
+        }
+        if self.rounding > 0 {
+            let _ = writeln!(
+                out,
+                "layer order: folded with {} Kawasaki error(s) within the tolerance ({}), listed \
+                 as warnings",
+                self.rounding, self.kawasaki_tolerance
+            );
         }
         if let Some(r) = &self.report {
             let c = &r.constraints;
@@ -67,9 +80,13 @@ impl LayerCheck {
     }
 }
 
-/// Runs the layer solver on `cp` unless `local` (the local checks of the same pattern) found
-/// a Kawasaki or Maekawa fault, and appends its findings to `local`. Errors only for input it
-/// cannot judge: no faces, or a problem beyond the size limits.
+/// Runs the layer solver on `cp` unless a local fault stops it, and appends its findings to
+/// `local` (the local checks of the same pattern). Kawasaki errors within the tolerance of
+/// `opts.kawasaki` ([`super::rounding`]: by default fitted to the drawing's precision) do not
+/// stop it: they move from `local`'s findings to its warnings, reported beside the state count.
+/// A Maekawa failure, an odd-degree vertex or a Kawasaki error beyond the tolerance stops it,
+/// naming the vertex. Errors only for input it cannot judge: no faces, or a problem beyond the
+/// size limits.
 pub fn check_layers(
     cp: &CreasePattern,
     local: &mut CheckReport,
@@ -80,19 +97,16 @@ pub fn check_layers(
         skipped: None,
         error: None,
         findings: Vec::new(),
+        kawasaki_tolerance: opts.kawasaki,
+        rounding: 0,
     };
-    let first_local = local
-        .findings
-        .iter()
-        .find(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa));
-    if let Some(f) = first_local {
-        out.skipped = Some(format!(
-            "the pattern is not locally flat-foldable ({} fails first, at {})",
-            f.kind.name(),
-            f.vertex.map_or_else(|| "-".to_string(), |v| v.to_string())
-        ));
+    let faults = local_faults(cp, opts.kawasaki);
+    if let Some(f) = faults.first_refusal() {
+        out.skipped = Some(refusal(f));
         return Ok(out);
     }
+    out.rounding = faults.rounding.len();
+    accept_rounding(local, faults.rounding);
     match LayerSolver::new(cp, opts) {
         Ok(solver) => {
             let report = solver.into_report();
@@ -125,6 +139,30 @@ pub fn check_layers(
     }
     local.findings.extend(out.findings.iter().cloned());
     Ok(out)
+}
+
+/// Why the layer solver did not run: the local fault that stops it, with its vertex.
+pub fn refusal(f: &Finding) -> String {
+    format!(
+        "the pattern is not locally flat-foldable: {} at {}: {}",
+        f.kind.name(),
+        f.vertex.map_or_else(|| "-".to_string(), |v| v.to_string()),
+        f.message
+    )
+}
+
+/// Moves the Kawasaki findings of `local` at the vertices of `rounding` to its warnings
+/// (taking `rounding`'s version, which carries the fitted limit), and adds those `local`
+/// did not list (its tolerance may be larger than the noise floor).
+fn accept_rounding(local: &mut CheckReport, rounding: Vec<Finding>) {
+    if rounding.is_empty() {
+        return;
+    }
+    let vertices: std::collections::HashSet<_> = rounding.iter().filter_map(|f| f.vertex).collect();
+    local.findings.retain(|f| {
+        !(f.kind == FindingKind::Kawasaki && f.vertex.is_some_and(|v| vertices.contains(&v)))
+    });
+    local.warnings.extend(rounding);
 }
 
 fn finding(position: glam::DVec2, message: String, hint: &str) -> Finding {
