@@ -144,6 +144,35 @@ fn linuxcnc_perforations_run_on_synchronised_outputs_without_spindle_words() {
         .filter(|l| l.starts_with("M67E0Q") && *l != "M67E0Q0")
         .count();
     assert_eq!(on, strokes);
+    // No rapid between two burns of one pass of a toolpath: LinuxCNC would stop at both ends.
+    // A G0 leads only to a toolpath or a pass; the dashes are linked by G1 at the travel feed.
+    let passes: usize = p.jobs[0]
+        .paths
+        .iter()
+        .map(|t| p.settings.get(t.op).passes as usize)
+        .sum();
+    let rapids = lines.iter().filter(|l| l.starts_with("G0")).count();
+    assert!(rapids <= passes, "{rapids} rapids for {passes} passes");
+    assert!(lines.contains(&"G64P0.01".to_string()));
+    let links = lines.iter().filter(|l| l.ends_with("F30000")).count();
+    assert!(links > strokes / 2, "{links} links for {strokes} burns");
+    // The same job with a G0 between dashes (as foldcam wrote it before) stops at every
+    // switch: the simulated machine times it as LinuxCNC 2.9 ran it, about twice as long.
+    // (Every link sets F30000 and the burn after it sets its own feed again.)
+    let old: String = texts[0]
+        .lines()
+        .map(|l| match l.strip_suffix(" F30000") {
+            Some(link) if l.starts_with("G1") => link.replacen("G1", "G0", 1) + "\n",
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let old_run = sim::run(&old, &analog).expect("readable");
+    assert!(old_run.is_clean(), "{:?}", old_run.violations.first());
+    assert!(
+        old_run.time_s > 1.5 * analog_s,
+        "{} vs {analog_s}",
+        old_run.time_s
+    );
     // The same job switched through the spindle stops at every dash: the simulated machine
     // must take markedly longer (LinuxCNC 2.9 measured +43% on a Miura-ori).
     let spindle = MachineProfile {

@@ -4,7 +4,8 @@
 //!
 //! The job is walked in the writer's order: the arming (pen up and its delay on a plotter),
 //! the profile's preamble, then per toolpath and pass every stroke — a rapid to its start
-//! unless the tool is already there, the tool switched on, the burns at the operation's feed
+//! unless the tool is already there (inside a pass on a LinuxCNC laser, a feed move at the
+//! travel feed: [`MachineProfile::links_burns_with_feed_moves`]), the tool switched on, the burns at the operation's feed
 //! (capped at the machine's maximum), the tool switched off — with, between operations, the
 //! air assist switched and a plotter's pen-change pause; then the postamble. What switching
 //! costs comes from the profile ([`MachineProfile::switch_cost`]): pens stop and wait their
@@ -38,6 +39,8 @@ pub fn job_time(
     let cost = machine.switch_cost();
     let pen = machine.pen_tool();
     let same = machine.resolution_mm / 2.0;
+    let links = machine.links_burns_with_feed_moves();
+    let link_feed = machine.travel_feed_mm_min.min(machine.max_feed_mm_min);
     // Arming: the laser at zero (a stop) or the pen up with its delay.
     clock.switch(pen, &machine.pen_up, cost.dwell_s, true);
     clock.lines(&machine.preamble);
@@ -64,9 +67,11 @@ pub fn job_time(
         }
         let s = settings(path);
         for _ in 0..s.passes {
-            for stroke in &strokes {
+            for (i, stroke) in strokes.iter().enumerate() {
                 if clock.timeline.at().distance(stroke[0]) > same {
-                    clock.go(stroke[0], true, 0.0);
+                    // Inside a pass, a LinuxCNC laser links the burns with feed moves.
+                    let link = i > 0 && links;
+                    clock.go(stroke[0], !link, link_feed);
                 }
                 clock.switch(pen, &machine.pen_down, cost.dwell_s, cost.stops);
                 for &p in &stroke[1..] {

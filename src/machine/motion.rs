@@ -22,6 +22,12 @@
 //!   previous entry. GRBL plans over a finite buffer; we plan over the whole list, which is what
 //!   the buffer converges to when the stream keeps it full.
 //!
+//! - **Rapid ↔ feed switches** (LinuxCNC only): LinuxCNC's trajectory planner cannot blend a
+//!   rapid (`G0`) into a feed move (`G1`) or back (`tpCheckCanonType` in `tp.c` sets the
+//!   previous segment's end to an exact stop), so on a LinuxCNC machine the junction between a
+//!   rapid and a feed move is a stop ([`Kinematics::stops_between_rapid_and_feed`]). GRBL and
+//!   Marlin plan rapids and feed moves alike.
+//!
 //! Not modelled: per-axis acceleration and speed limits (one `a` for every direction), jerk,
 //! step timing, GRBL's minimum junction speed (0 by default), and the stops a controller makes
 //! when its buffer starves. Zero-length moves are skipped; they do not break a junction.
@@ -54,16 +60,27 @@ pub struct Kinematics {
     pub max_feed_mm_min: f64,
     /// Rapid feed, mm/min.
     pub travel_feed_mm_min: f64,
+    /// The machine comes to rest between a rapid and a feed move (LinuxCNC, see the module
+    /// docs).
+    pub stops_between_rapid_and_feed: bool,
 }
 
 impl Kinematics {
-    /// The kinematics of a machine profile.
+    /// The kinematics of a machine profile. A LinuxCNC machine's corners deviate by its
+    /// `G64 P` tolerance (`blend_tolerance_mm`) when it has one: a blend arc that leaves the
+    /// corner by at most P is the junction-deviation circle of δ = P.
     pub fn of(machine: &MachineProfile) -> Self {
+        let linuxcnc = machine.dialect == super::Dialect::LinuxCnc;
+        let deviation = match machine.control.blend_tolerance_mm {
+            Some(p) if linuxcnc => p,
+            _ => machine.junction_deviation_mm,
+        };
         Kinematics {
             accel_mm_s2: machine.acceleration_mm_s2,
-            junction_deviation_mm: machine.junction_deviation_mm,
+            junction_deviation_mm: deviation,
             max_feed_mm_min: machine.max_feed_mm_min,
             travel_feed_mm_min: machine.travel_feed_mm_min,
+            stops_between_rapid_and_feed: linuxcnc,
         }
     }
 
@@ -133,6 +150,7 @@ pub fn trapezoid_time(length: f64, v_entry: f64, v_exit: f64, v_nominal: f64, ac
 #[derive(Clone, Copy, Debug)]
 struct Block {
     length: f64,
+    rapid: bool,
     dir: DVec2,
     nominal: f64,
     /// Highest entry speed the junction allows.
@@ -182,12 +200,14 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
         let dir = delta / length;
         let max_entry = match out.last() {
             None => 0.0,
+            Some(prev) if kin.stops_between_rapid_and_feed && prev.rapid != m.rapid => 0.0,
             Some(prev) => junction_speed(prev.dir, dir, kin.accel_mm_s2, kin.junction_deviation_mm)
                 .min(prev.nominal)
                 .min(nominal),
         };
         out.push(Block {
             length,
+            rapid: m.rapid,
             dir,
             nominal,
             max_entry,
