@@ -2,7 +2,8 @@
 //! simulated machine uses ([`crate::machine::motion`]) over the program the G-code writer
 //! makes of the job.
 //!
-//! The job is walked in the writer's order: the arming (pen up and its delay on a plotter),
+//! The job is walked in the writer's order, on its coordinates (rounded to the machine's
+//! resolution, repeated points dropped): the arming (pen up and its delay on a plotter),
 //! the profile's preamble, then per toolpath and pass every stroke — a rapid to its start
 //! unless the tool is already there (inside a pass on a LinuxCNC laser, a feed move at the
 //! travel feed: [`MachineProfile::links_burns_with_feed_moves`]), the tool switched on, the burns at the operation's feed
@@ -47,10 +48,11 @@ pub fn job_time(
     let mut group: Option<Operation> = None;
     let mut air = false;
     for path in &job.paths {
-        let strokes: Vec<&Vec<DVec2>> = path
+        let strokes: Vec<Vec<DVec2>> = path
             .strokes
             .iter()
-            .filter(|s| s.windows(2).any(|w| w[0].distance(w[1]) > same))
+            .map(|s| as_written(s, machine))
+            .filter(|s| s.len() >= 2)
             .collect();
         if strokes.is_empty() {
             continue;
@@ -85,6 +87,17 @@ pub fn job_time(
     clock.lines(&machine.postamble);
     clock.stop();
     clock.seconds
+}
+
+/// `stroke` as the writer writes it: each point rounded to the machine's resolution, repeated
+/// points dropped (so the estimate sees the short and slightly turned pieces the machine reads).
+fn as_written(stroke: &[DVec2], machine: &MachineProfile) -> Vec<DVec2> {
+    let mut out: Vec<DVec2> = stroke
+        .iter()
+        .map(|p| DVec2::new(machine.round_mm(p.x), machine.round_mm(p.y)))
+        .collect();
+    out.dedup();
+    out
 }
 
 /// A timeline with the seconds of its finished runs and dwells.
