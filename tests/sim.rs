@@ -155,6 +155,20 @@ fn linuxcnc_stops_between_rapid_and_feed_moves() {
 }
 
 #[test]
+fn grbl_waits_its_step_idle_delay_at_every_stop_after_motion() {
+    // GRBL holds the motors $1 ms each time its moves come to rest (stepper.c, st_go_idle):
+    // once after each run of moves, not at a dwell that follows no motion.
+    let mut m = laser(Dialect::Grbl);
+    m.control.step_idle_delay_s = 0.025;
+    let text = "G4 P0.5\nG1 X10 F1800\nG4 P0\nG4 P0\nG1 X20\nM2";
+    let run_s = 2.0 * rest_to_rest(10.0, 30.0, 1000.0);
+    let r = run(text, &m);
+    assert!(close(r.time_s, 0.5 + run_s + 2.0 * 0.025), "{}", r.time_s);
+    m.control.step_idle_delay_s = 0.0;
+    assert!(close(run(text, &m).time_s, 0.5 + run_s));
+}
+
+#[test]
 fn each_violation_is_found_on_its_line() {
     let grbl = laser(Dialect::Grbl);
     let cases: [(&str, ViolationKind, usize); 9] = [

@@ -83,6 +83,10 @@ pub struct MachineControl {
     /// LinuxCNC: the path tolerance of `G64 P<tolerance>`, mm (how far a blended corner may
     /// leave the programmed path), written after the arming line; `None` writes no `G64`.
     pub blend_tolerance_mm: Option<f64>,
+    /// GRBL's step idle delay (`$1`), s: each time motion comes to rest with nothing queued
+    /// (before a spindle or pen word, a dwell, a pause), GRBL holds the steppers this long
+    /// (`st_go_idle` in `stepper.c`) before it runs the next line. 0 when not set.
+    pub step_idle_delay_s: f64,
 }
 
 impl Default for MachineControl {
@@ -93,6 +97,7 @@ impl Default for MachineControl {
             air_assist: None,
             pen_change: vec!["M0".to_string()],
             blend_tolerance_mm: None,
+            step_idle_delay_s: 0.0,
         }
     }
 }

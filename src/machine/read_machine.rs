@@ -11,6 +11,7 @@
 //! | `acceleration_mm_s2` | 1 – 100 000 mm/s² |
 //! | `junction_deviation_mm` | 0 – 1 mm |
 //! | `blend_tolerance_mm` (LinuxCNC lasers) | 0.0001 – 1 mm |
+//! | `step_idle_delay_ms` (GRBL, plotter) | 0 – 255 ms (255: no wait) |
 //! | `resolution_mm` | 0.00001 – 0.1 mm |
 //! | `power.min` < `power.max` | 0 – 1 000 000 (`S` units) |
 //! | `pen.delay_s` | 0 – 10 s |
@@ -196,7 +197,7 @@ const MAX_OUTPUT_NUMBER: i64 = 63;
 const BLEND_TOLERANCE_MM: (f64, f64) = (0.0001, 1.0);
 
 /// The optional shop-floor keys: `laser_output`, `output_number` and `blend_tolerance_mm`
-/// (LinuxCNC lasers only),
+/// (LinuxCNC lasers only), `step_idle_delay_ms` (GRBL's `$1`),
 /// `air_assist` (`M7` or `M8`) with `air_assist_operations`, `pen_change` (plotters).
 fn read_control(
     f: &mut Fields,
@@ -215,6 +216,15 @@ fn read_control(
     }
     if f.has("output_number") {
         control.output_number = f.integer("output_number", 0, MAX_OUTPUT_NUMBER)? as u32;
+    }
+    if f.has("step_idle_delay_ms") {
+        if !matches!(dialect, Dialect::Grbl | Dialect::Plotter) {
+            let message = "applies only to dialect \"grbl\" or \"plotter\" (GRBL's $1)";
+            return Err(f.error("step_idle_delay_ms", message));
+        }
+        // GRBL's $1 is 0-255 ms; 255 keeps the steppers enabled and does not wait.
+        let ms = f.integer("step_idle_delay_ms", 0, 255)?;
+        control.step_idle_delay_s = if ms == 255 { 0.0 } else { ms as f64 / 1000.0 };
     }
     if f.has("blend_tolerance_mm") {
         let (lo, hi) = BLEND_TOLERANCE_MM;
