@@ -194,14 +194,19 @@ fn linuxcnc_runs_the_miura_and_bird_base_within_five_percent_of_plan() {
         planned_s[i].2 += t;
     }
     for (name, plan_s, lcnc_s) in planned_s {
-        eprintln!("{name}: LinuxCNC {lcnc_s:.2} s, plan {plan_s:.2} s");
-        let diff = (lcnc_s - plan_s).abs() / lcnc_s;
-        assert!(
-            diff <= LINUXCNC_TOLERANCE,
-            "{name}: LinuxCNC {lcnc_s:.2} s, plan {plan_s:.2} s ({:.1}%)",
-            100.0 * diff
-        );
+        assert_close(name, "LinuxCNC", lcnc_s, plan_s, LINUXCNC_TOLERANCE);
     }
+}
+
+/// Prints the controller's time against `plan`'s and fails beyond `tolerance` (relative).
+fn assert_close(what: &str, controller: &str, seconds: f64, plan_s: f64, tolerance: f64) {
+    eprintln!("{what}: {controller} {seconds:.2} s, plan {plan_s:.2} s");
+    let diff = (seconds - plan_s).abs() / seconds;
+    assert!(
+        diff <= tolerance,
+        "{what}: {controller} {seconds:.2} s, plan {plan_s:.2} s ({:.1}%)",
+        100.0 * diff
+    );
 }
 
 /// Largest relative difference between GRBL's planner and `plan` (issue 35).
@@ -245,13 +250,7 @@ fn grbl_seconds(text: &str, machine: &str) -> f64 {
 
 fn assert_close_to_grbl(what: &str, plan_s: f64, text: &str, machine: &str) {
     let grbl_s = grbl_seconds(text, machine);
-    eprintln!("{what}: GRBL {grbl_s:.2} s, plan {plan_s:.2} s");
-    let diff = (grbl_s - plan_s).abs() / grbl_s;
-    assert!(
-        diff <= GRBL_TOLERANCE,
-        "{what}: GRBL {grbl_s:.2} s, plan {plan_s:.2} s ({:.1}%)",
-        100.0 * diff
-    );
+    assert_close(what, "GRBL", grbl_s, plan_s, GRBL_TOLERANCE);
 }
 
 #[test]
@@ -260,15 +259,13 @@ fn grbl_runs_the_plotter_test_grid_within_two_percent_of_plan() {
     // The calibration grid on the pen plotter: 184 separate strokes, each stopped for the pen
     // (GRBL's step idle delay at every stop). (On grbl-diode it runs 270.27 s against 270.06 s
     // planned; left out to keep CI short.)
-    for (machine, material) in [("grbl-pen-plotter", "card-300gsm")] {
-        let m = load_machine(machine).expect("shipped");
-        let x = load_material(material).expect("shipped");
-        let opts = foldcam::fab::testgrid::TestGridOptions::around(&x, &m);
-        let grid = foldcam::fab::testgrid::test_grid(&m, &x, &opts).expect("grid");
-        let (text, _) = written(&grid.plan, 0, &m);
-        let what = format!("test grid on {machine}");
-        assert_close_to_grbl(&what, grid.plan.stats.time_s, &text, machine);
-    }
+    let m = load_machine("grbl-pen-plotter").expect("shipped");
+    let x = load_material("card-300gsm").expect("shipped");
+    let opts = foldcam::fab::testgrid::TestGridOptions::around(&x, &m);
+    let grid = foldcam::fab::testgrid::test_grid(&m, &x, &opts).expect("grid");
+    let (text, _) = written(&grid.plan, 0, &m);
+    let (what, plan_s) = ("test grid on grbl-pen-plotter", grid.plan.stats.time_s);
+    assert_close_to_grbl(what, plan_s, &text, "grbl-pen-plotter");
 }
 
 #[test]
@@ -280,6 +277,11 @@ fn grbl_runs_a_miura_ori_within_two_percent_of_plan() {
         let m = load_machine(machine).expect("shipped");
         let p = planned(&cp, &m, "card-300gsm");
         let (text, _) = written(&p, 0, &m);
-        assert_close_to_grbl(&format!("Miura-ori on {machine}"), p.stats.time_s, &text, machine);
+        assert_close_to_grbl(
+            &format!("Miura-ori on {machine}"),
+            p.stats.time_s,
+            &text,
+            machine,
+        );
     }
 }

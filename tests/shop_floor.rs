@@ -5,15 +5,15 @@
 use std::path::PathBuf;
 
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
+use foldcam::fab::Operation;
 use foldcam::fab::{FabPlan, PlanOptions, plan};
 use foldcam::machine::{
     LaserOutput, MachineProfile, Material, load_machine, load_material, shipped_machines,
 };
-use foldcam::fab::Operation;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
-use glam::DVec2;
 use foldcam::post;
 use foldcam::sim;
+use glam::DVec2;
 
 /// Largest relative difference between plan's time and the simulated machine's.
 const TIME_TOLERANCE: f64 = 0.02;

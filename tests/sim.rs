@@ -151,7 +151,12 @@ fn linuxcnc_stops_between_rapid_and_feed_moves() {
     let linked_text = text.replace("G0 X20\nG1 X30", "G1 X20 F6000\nG1 X30 F1800");
     let linked = run(&linked_text, &laser(Dialect::LinuxCnc));
     assert!(linked.time_s < stops - 0.05, "{} vs {stops}", linked.time_s);
-    assert!(close(linked.time_s, grbl.time_s), "{} vs {}", linked.time_s, grbl.time_s);
+    assert!(
+        close(linked.time_s, grbl.time_s),
+        "{} vs {}",
+        linked.time_s,
+        grbl.time_s
+    );
 }
 
 #[test]

@@ -67,7 +67,8 @@ pub fn merge_short_sides(ring: &[DVec2], min_len: f64, tolerance: f64) -> Vec<DV
         let mut i = 0;
         while i < n {
             let j = (i + 1) % n;
-            let untouched = !removed[i] && !removed[j] && merged[i].is_none() && merged[j].is_none();
+            let untouched =
+                !removed[i] && !removed[j] && merged[i].is_none() && merged[j].is_none();
             let before = pts[(i + n - 1) % n];
             let after = pts[(j + 1) % n];
             let point = untouched
@@ -150,7 +151,13 @@ mod tests {
         let bevel = |len: f64| {
             let c = DVec2::new(10.0, 0.0) + DVec2::from_angle(turn) * len / 2.0;
             let b = DVec2::new(10.0, 0.0) - DVec2::X * len / 2.0;
-            vec![DVec2::ZERO, b, c, c + DVec2::from_angle(turn) * 10.0, DVec2::new(0.0, 10.0)]
+            vec![
+                DVec2::ZERO,
+                b,
+                c,
+                c + DVec2::from_angle(turn) * 10.0,
+                DVec2::new(0.0, 10.0),
+            ]
         };
         assert_eq!(merge_short_sides(&bevel(0.005), 0.001, 0.0005).len(), 4);
         assert_eq!(merge_short_sides(&bevel(0.3), 0.001, 0.0005).len(), 5);

@@ -104,7 +104,10 @@ impl Kinematics {
             travel_feed_mm_min: machine.travel_feed_mm_min,
             stops_between_rapid_and_feed: linuxcnc,
             stop_delay_s: machine.control.step_idle_delay_s,
-            per_axis: matches!(machine.dialect, super::Dialect::Grbl | super::Dialect::Plotter),
+            per_axis: matches!(
+                machine.dialect,
+                super::Dialect::Grbl | super::Dialect::Plotter
+            ),
         }
     }
 
