@@ -337,14 +337,15 @@ fn kerf_tabs_lead_in_and_order_options_change_the_cut() {
     // Without the offset the cut is the outline itself.
     let (plain, pierces, travel) = plan_of(&["--no-kerf-offset"]);
     assert!((len(&plain, "cut") - 400.0).abs() < 1e-6);
-    // Offset by half the kerf with round corners: the outline grows by π × kerf (round joins
-    // are drawn as chords, so a little less).
+    // Offset by half the kerf with round corners: the outline grows by π × kerf. Round joins
+    // are drawn as chords, and chords whose neighbours meet within half the machine's
+    // resolution become that corner (no bevel the machine cannot draw), so within 2%.
     for kerf in [0.4, 1.0] {
         let (k, _, _) = plan_of(&["--kerf", &kerf.to_string()]);
         let grown = len(&k, "cut") - 400.0;
         let full = std::f64::consts::PI * kerf;
         assert!(
-            grown <= full + 1e-9 && grown > 0.99 * full,
+            grown <= 1.02 * full && grown > 0.99 * full,
             "kerf {kerf}: +{grown}"
         );
     }

@@ -155,12 +155,15 @@ proptest! {
         points in prop::collection::vec((0.0..300.0f64, 0.0..300.0f64, 60.0..9000.0f64), 1..30)
     ) {
         let m = machine();
+        let kin = Kinematics::of(&m);
         let moves: Vec<Move> = points.iter().map(|&(x, y, f)| feed(x, y, f)).collect();
         let t = job_time(DVec2::ZERO, &moves, &m);
         let mut at = DVec2::ZERO;
         let (mut floor, mut ceiling) = (0.0, 0.0);
         for mv in &moves {
-            floor += at.distance(mv.to) / (mv.feed_mm_min.min(6000.0) / 60.0);
+            // GRBL limits each axis: a diagonal may run faster than the maximum feed.
+            let most = 6000.0 * kin.axis_scale((mv.to - at).normalize_or_zero());
+            floor += at.distance(mv.to) / (mv.feed_mm_min.min(most) / 60.0);
             ceiling += job_time(at, std::slice::from_ref(mv), &m);
             at = mv.to;
         }
@@ -168,4 +171,24 @@ proptest! {
         prop_assert!(t >= floor * (1.0 - 1e-12), "{} < {}", t, floor);
         prop_assert!(t <= ceiling * (1.0 + 1e-12) + 1e-12, "{} > {}", t, ceiling);
     }
+}
+
+#[test]
+fn grbl_limits_each_axis_so_diagonals_run_faster() {
+    // GRBL (planner.c, limit_value_by_axis_maximum): along (1, 1)/√2 each axis carries 1/√2
+    // of the motion, so the path may accelerate at √2·a and run at √2 times the maximum
+    // feed. 42.43 mm at F9000 on a 6000 mm/min, 1000 mm/s² machine: v = 141.4 mm/s,
+    // a = 1414 mm/s², t = L/v + v/a = 0.3 + 0.1 s. LinuxCNC limits the path: v = 100 mm/s,
+    // a = 1000 mm/s², t = 0.4243 + 0.1 s.
+    let grbl = machine();
+    let diagonal = [feed(30.0, 30.0, 9000.0)];
+    assert!(close(job_time(DVec2::ZERO, &diagonal, &grbl), 0.4));
+    let along_x = [feed(30.0, 0.0, 9000.0)];
+    assert!(close(job_time(DVec2::ZERO, &along_x, &grbl), 0.4));
+    let lcnc = MachineProfile {
+        dialect: Dialect::LinuxCnc,
+        ..machine()
+    };
+    let t = job_time(DVec2::ZERO, &diagonal, &lcnc);
+    assert!(close(t, 1800f64.sqrt() / 100.0 + 0.1), "{t}");
 }

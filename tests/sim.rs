@@ -126,6 +126,53 @@ fn sim_time_is_the_planner_time_plus_dwells() {
     );
 }
 
+/// Seconds to run `length` mm from rest to rest at `v` mm/s with acceleration `a` (closed form:
+/// a trapezoid, or a triangle when `v` is not reached).
+fn rest_to_rest(length: f64, v: f64, a: f64) -> f64 {
+    if v * v / a <= length {
+        length / v + v / a
+    } else {
+        2.0 * (length / a).sqrt()
+    }
+}
+
+#[test]
+fn linuxcnc_stops_between_rapid_and_feed_moves() {
+    // Three collinear 10 mm moves, the middle one a rapid: LinuxCNC cannot blend a rapid into
+    // a feed move (tp.c, tpCheckCanonType), so each is run from rest to rest. GRBL blends them
+    // (a straight continuation), so it is faster; so is LinuxCNC when the middle move is a G1.
+    let text = "G1 X10 F1800\nG0 X20\nG1 X30\nM2";
+    let (a, feed, rapid) = (1000.0, 30.0, 100.0);
+    let lcnc = run(text, &laser(Dialect::LinuxCnc));
+    let stops = 2.0 * rest_to_rest(10.0, feed, a) + rest_to_rest(10.0, rapid, a);
+    assert!(close(lcnc.time_s, stops), "{} vs {stops}", lcnc.time_s);
+    let grbl = run(text, &laser(Dialect::Grbl));
+    assert!(grbl.time_s < stops - 0.05, "{} vs {stops}", grbl.time_s);
+    let linked_text = text.replace("G0 X20\nG1 X30", "G1 X20 F6000\nG1 X30 F1800");
+    let linked = run(&linked_text, &laser(Dialect::LinuxCnc));
+    assert!(linked.time_s < stops - 0.05, "{} vs {stops}", linked.time_s);
+    assert!(
+        close(linked.time_s, grbl.time_s),
+        "{} vs {}",
+        linked.time_s,
+        grbl.time_s
+    );
+}
+
+#[test]
+fn grbl_waits_its_step_idle_delay_at_every_stop_after_motion() {
+    // GRBL holds the motors $1 ms each time its moves come to rest (stepper.c, st_go_idle):
+    // once after each run of moves, not at a dwell that follows no motion.
+    let mut m = laser(Dialect::Grbl);
+    m.control.step_idle_delay_s = 0.025;
+    let text = "G4 P0.5\nG1 X10 F1800\nG4 P0\nG4 P0\nG1 X20\nM2";
+    let run_s = 2.0 * rest_to_rest(10.0, 30.0, 1000.0);
+    let r = run(text, &m);
+    assert!(close(r.time_s, 0.5 + run_s + 2.0 * 0.025), "{}", r.time_s);
+    m.control.step_idle_delay_s = 0.0;
+    assert!(close(run(text, &m).time_s, 0.5 + run_s));
+}
+
 #[test]
 fn each_violation_is_found_on_its_line() {
     let grbl = laser(Dialect::Grbl);

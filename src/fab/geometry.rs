@@ -4,7 +4,9 @@
 //! 1. [`operations`](super::operations): the operation of every edge from the mapping;
 //! 2. [`contours`](super::contours): edges cut through become closed contours (outer
 //!    boundaries and holes, nested) and open slits;
-//! 3. [`kerf`](super::kerf): closed contours are offset by `kerf/2` toward the scrap;
+//! 3. [`kerf`](super::kerf): closed contours are offset by `kerf/2` toward the scrap, without
+//!    sides shorter than the machine's resolution and without bevels within half of it (a
+//!    short round join becomes the corner of its neighbours: [`merge_short_sides`]);
 //! 4. [`tabs`](super::tabs): holding tabs split outer contours, lead-ins start every closed
 //!    ring from the scrap side;
 //! 5. [`lines`](super::lines): perforated creases become dashes laid out per crease with
@@ -28,7 +30,7 @@ use super::lines::{LineContext, edge_names, line_toolpaths};
 use super::operations::edge_operations;
 use super::tabs::{add_lead_in, merge_straight_runs, split_at_tabs, start_on_longest_side};
 use super::{ContourRole, FabError, Operation, PlanOptions, Toolpath};
-use crate::geom::polygon::signed_area;
+use crate::geom::polygon::{merge_short_sides, signed_area};
 use crate::pattern::CreasePattern;
 use crate::pattern::vertex_fan::VertexFans;
 
@@ -175,6 +177,7 @@ fn kerf_rings(
     }
     rings
         .into_iter()
+        .map(|r| merge_short_sides(&r, opts.resolution_mm, opts.resolution_mm / 2.0))
         .map(|r| {
             let pocket = signed_area(r.iter().copied()) < 0.0;
             (r, hole != pocket)

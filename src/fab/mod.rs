@@ -200,6 +200,9 @@ pub struct PlanOptions {
     /// inward for holes) and measure perforation bridges and vertex clearances between the
     /// kerf's edges ([`PlanOptions::toolpath_perforation`]).
     pub kerf_offset: bool,
+    /// The machine's coordinate resolution, mm: kerf-offset contours keep no side shorter
+    /// than this (set by [`PlanOptions::adapt_to_machine`]; 0.001 from the material alone).
+    pub resolution_mm: f64,
     /// Mountains from the front, valleys from the back (second job mirrored), with
     /// registration marks.
     pub two_sided: bool,
@@ -217,6 +220,9 @@ pub struct PlanOptions {
     pub placement: placement::Placement,
 }
 
+/// [`PlanOptions::resolution_mm`] before a machine is known, mm.
+pub const DEFAULT_RESOLUTION_MM: f64 = 0.001;
+
 impl PlanOptions {
     /// The material's defaults: its mapping, perforation and kerf, one side, no tabs or
     /// lead-ins, 5 mm margin, optimised order.
@@ -226,6 +232,7 @@ impl PlanOptions {
             perforation: material.perforation,
             kerf_mm: material.kerf_mm,
             kerf_offset: true,
+            resolution_mm: DEFAULT_RESOLUTION_MM,
             two_sided: false,
             tabs: None,
             lead_in_mm: None,
@@ -267,7 +274,7 @@ impl PlanOptions {
         Ok(())
     }
 
-    /// Fits the operation mapping to `machine`. A pen plotter draws what a laser would burn:
+    /// Fits the operation mapping to `machine` and takes its resolution. A pen plotter draws what a laser would burn:
     /// scores and cuts become plots, marks stay marks (a second pen), perforations stay
     /// perforations (drawn as dashes); when mountains and valleys would share one operation,
     /// valleys become marks so they come out as a layer of their own (separate SVG layers, a
@@ -279,6 +286,7 @@ impl PlanOptions {
         machine: &crate::machine::MachineProfile,
     ) -> Result<(), FabError> {
         let plotter = machine.kind == crate::machine::MachineKind::Plotter;
+        self.resolution_mm = machine.resolution_mm;
         let m = &mut self.mapping;
         let mut changed: Vec<String> = Vec::new();
         let mut unsupported: Vec<&'static str> = Vec::new();

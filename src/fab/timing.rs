@@ -2,9 +2,11 @@
 //! simulated machine uses ([`crate::machine::motion`]) over the program the G-code writer
 //! makes of the job.
 //!
-//! The job is walked in the writer's order: the arming (pen up and its delay on a plotter),
+//! The job is walked in the writer's order, on its coordinates (rounded to the machine's
+//! resolution, repeated points dropped): the arming (pen up and its delay on a plotter),
 //! the profile's preamble, then per toolpath and pass every stroke — a rapid to its start
-//! unless the tool is already there, the tool switched on, the burns at the operation's feed
+//! unless the tool is already there (inside a pass on a LinuxCNC laser, a feed move at the
+//! travel feed: [`MachineProfile::links_burns_with_feed_moves`]), the tool switched on, the burns at the operation's feed
 //! (capped at the machine's maximum), the tool switched off — with, between operations, the
 //! air assist switched and a plotter's pen-change pause; then the postamble. What switching
 //! costs comes from the profile ([`MachineProfile::switch_cost`]): pens stop and wait their
@@ -38,16 +40,19 @@ pub fn job_time(
     let cost = machine.switch_cost();
     let pen = machine.pen_tool();
     let same = machine.resolution_mm / 2.0;
+    let links = machine.links_burns_with_feed_moves();
+    let link_feed = machine.travel_feed_mm_min.min(machine.max_feed_mm_min);
     // Arming: the laser at zero (a stop) or the pen up with its delay.
     clock.switch(pen, &machine.pen_up, cost.dwell_s, true);
     clock.lines(&machine.preamble);
     let mut group: Option<Operation> = None;
     let mut air = false;
     for path in &job.paths {
-        let strokes: Vec<&Vec<DVec2>> = path
+        let strokes: Vec<Vec<DVec2>> = path
             .strokes
             .iter()
-            .filter(|s| s.windows(2).any(|w| w[0].distance(w[1]) > same))
+            .map(|s| as_written(s, machine))
+            .filter(|s| s.len() >= 2)
             .collect();
         if strokes.is_empty() {
             continue;
@@ -64,9 +69,11 @@ pub fn job_time(
         }
         let s = settings(path);
         for _ in 0..s.passes {
-            for stroke in &strokes {
+            for (i, stroke) in strokes.iter().enumerate() {
                 if clock.timeline.at().distance(stroke[0]) > same {
-                    clock.go(stroke[0], true, 0.0);
+                    // Inside a pass, a LinuxCNC laser links the burns with feed moves.
+                    let link = i > 0 && links;
+                    clock.go(stroke[0], !link, link_feed);
                 }
                 clock.switch(pen, &machine.pen_down, cost.dwell_s, cost.stops);
                 for &p in &stroke[1..] {
@@ -80,6 +87,17 @@ pub fn job_time(
     clock.lines(&machine.postamble);
     clock.stop();
     clock.seconds
+}
+
+/// `stroke` as the writer writes it: each point rounded to the machine's resolution, repeated
+/// points dropped (so the estimate sees the short and slightly turned pieces the machine reads).
+fn as_written(stroke: &[DVec2], machine: &MachineProfile) -> Vec<DVec2> {
+    let mut out: Vec<DVec2> = stroke
+        .iter()
+        .map(|p| DVec2::new(machine.round_mm(p.x), machine.round_mm(p.y)))
+        .collect();
+    out.dedup();
+    out
 }
 
 /// A timeline with the seconds of its finished runs and dwells.

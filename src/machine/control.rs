@@ -80,6 +80,13 @@ pub struct MachineControl {
     /// Plotters: the lines written between layers (a pen change), by default `M0` (pause
     /// until the operator resumes).
     pub pen_change: Vec<String>,
+    /// LinuxCNC: the path tolerance of `G64 P<tolerance>`, mm (how far a blended corner may
+    /// leave the programmed path), written after the arming line; `None` writes no `G64`.
+    pub blend_tolerance_mm: Option<f64>,
+    /// GRBL's step idle delay (`$1`), s: each time motion comes to rest with nothing queued
+    /// (before a spindle or pen word, a dwell, a pause), GRBL holds the steppers this long
+    /// (`st_go_idle` in `stepper.c`) before it runs the next line. 0 when not set.
+    pub step_idle_delay_s: f64,
 }
 
 impl Default for MachineControl {
@@ -89,6 +96,8 @@ impl Default for MachineControl {
             output_number: 0,
             air_assist: None,
             pen_change: vec!["M0".to_string()],
+            blend_tolerance_mm: None,
+            step_idle_delay_s: 0.0,
         }
     }
 }
@@ -123,6 +132,19 @@ impl MachineProfile {
             stops,
             dwell_s: 0.0,
         }
+    }
+
+    /// True when the travel between two burns of one run (the dashes of a perforation, the
+    /// strokes of one chain, within a pass) is written as a feed move (`G1` at the travel feed,
+    /// the beam off) rather than a rapid: LinuxCNC lasers on a synchronised output. LinuxCNC's
+    /// trajectory planner cannot blend a rapid into a feed move (an exact stop at every
+    /// `G0`↔`G1` switch, see [`crate::machine::motion::Kinematics::stops_between_rapid_and_feed`]),
+    /// so a `G0` between two dashes would stop twice; `G1` blends. A spindle-switched beam stops
+    /// at every switch anyway and keeps `G0`.
+    pub fn links_burns_with_feed_moves(&self) -> bool {
+        self.kind == MachineKind::Laser
+            && self.dialect == Dialect::LinuxCnc
+            && !self.switch_cost().stops
     }
 
     /// True when air assist is on during `op` (never without air assist in the profile).

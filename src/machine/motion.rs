@@ -22,7 +22,28 @@
 //!   previous entry. GRBL plans over a finite buffer; we plan over the whole list, which is what
 //!   the buffer converges to when the stream keeps it full.
 //!
-//! Not modelled: per-axis acceleration and speed limits (one `a` for every direction), jerk,
+//! - **Rapid ↔ feed switches** (LinuxCNC only): LinuxCNC's trajectory planner cannot blend a
+//!   rapid (`G0`) into a feed move (`G1`) or back (`tpCheckCanonType` in `tp.c` sets the
+//!   previous segment's end to an exact stop), so on a LinuxCNC machine the junction between a
+//!   rapid and a feed move is a stop ([`Kinematics::stops_between_rapid_and_feed`]). GRBL and
+//!   Marlin plan rapids and feed moves alike.
+//!
+//! - **Stops.** When the moves come to rest with nothing queued (a spindle or pen word, a
+//!   dwell, a pause waits for that), GRBL's stepper goes idle and holds the motors for its step
+//!   idle delay `$1` (25 ms by default) before the next line runs (`st_go_idle` in
+//!   `stepper.c`): [`Kinematics::stop_delay_s`], counted once per run of moves that ends at a
+//!   stop. GRBL 1.1h's own planner and stepper run 100 stop-to-stop 1 mm moves in 11.44 s with
+//!   `$1=25` and in 8.97 s with `$1=255` (the trapezoids alone: 8.94 s).
+//!
+//! - **Limits per axis** (GRBL and GRBL-style plotters, [`Kinematics::per_axis`]): GRBL
+//!   limits each axis, not the path (`limit_value_by_axis_maximum` in `planner.c`): a move
+//!   along unit vector u accelerates at `a / max(|uₓ|, |u_y|)` and runs at up to the maximum
+//!   (or rapid) feed times the same factor, and a corner's acceleration is scaled the same way
+//!   along the change of direction. A diagonal gets up to √2 times an axis's limits. Profiles
+//!   give one acceleration and one maximum feed for both axes.
+//!
+//! Not modelled: per-axis limits on Marlin (no controller to check against here) and limits
+//! that differ between X and Y, jerk,
 //! step timing, GRBL's minimum junction speed (0 by default), and the stops a controller makes
 //! when its buffer starves. Zero-length moves are skipped; they do not break a junction.
 //! When the acceleration is not a positive finite number, moves run at constant speed.
@@ -54,30 +75,68 @@ pub struct Kinematics {
     pub max_feed_mm_min: f64,
     /// Rapid feed, mm/min.
     pub travel_feed_mm_min: f64,
+    /// The machine comes to rest between a rapid and a feed move (LinuxCNC, see the module
+    /// docs).
+    pub stops_between_rapid_and_feed: bool,
+    /// Seconds the controller waits each time its moves come to rest (GRBL's step idle delay
+    /// `$1`, see the module docs).
+    pub stop_delay_s: f64,
+    /// The acceleration and the speeds are limits per axis (GRBL: a move, or a junction,
+    /// along a diagonal gets more than along an axis; see the module docs), rather than
+    /// along the path.
+    pub per_axis: bool,
 }
 
 impl Kinematics {
-    /// The kinematics of a machine profile.
+    /// The kinematics of a machine profile. A LinuxCNC machine's corners deviate by its
+    /// `G64 P` tolerance (`blend_tolerance_mm`) when it has one: a blend arc that leaves the
+    /// corner by at most P is the junction-deviation circle of δ = P.
     pub fn of(machine: &MachineProfile) -> Self {
+        let linuxcnc = machine.dialect == super::Dialect::LinuxCnc;
+        let deviation = match machine.control.blend_tolerance_mm {
+            Some(p) if linuxcnc => p,
+            _ => machine.junction_deviation_mm,
+        };
         Kinematics {
             accel_mm_s2: machine.acceleration_mm_s2,
-            junction_deviation_mm: machine.junction_deviation_mm,
+            junction_deviation_mm: deviation,
             max_feed_mm_min: machine.max_feed_mm_min,
             travel_feed_mm_min: machine.travel_feed_mm_min,
+            stops_between_rapid_and_feed: linuxcnc,
+            stop_delay_s: machine.control.step_idle_delay_s,
+            per_axis: matches!(
+                machine.dialect,
+                super::Dialect::Grbl | super::Dialect::Plotter
+            ),
         }
     }
 
-    /// The cruise speed of a move, mm/s (0 when the feed is not a positive number).
-    pub fn nominal_speed(&self, m: &Move) -> f64 {
+    /// The cruise speed of a move along unit direction `dir`, mm/s (0 when the feed is not a
+    /// positive number). With limits per axis the maximum and rapid feeds grow along a
+    /// diagonal ([`Kinematics::axis_scale`]).
+    pub fn nominal_speed(&self, m: &Move, dir: DVec2) -> f64 {
+        let scale = self.axis_scale(dir);
         let feed = if m.rapid {
-            self.travel_feed_mm_min
+            self.travel_feed_mm_min * scale
         } else {
-            m.feed_mm_min.min(self.max_feed_mm_min)
+            m.feed_mm_min.min(self.max_feed_mm_min * scale)
         };
         if feed.is_finite() && feed > 0.0 {
             feed / 60.0
         } else {
             0.0
+        }
+    }
+
+    /// How much more than an axis's limit the path may take along unit vector `u`: with
+    /// limits per axis (the same on X and Y), `1 / max(|uₓ|, |u_y|)` (√2 on a diagonal; GRBL's
+    /// `limit_value_by_axis_maximum`), else 1.
+    pub fn axis_scale(&self, u: DVec2) -> f64 {
+        let largest = u.x.abs().max(u.y.abs());
+        if self.per_axis && largest > 0.0 && largest.is_finite() {
+            1.0 / largest
+        } else {
+            1.0
         }
     }
 
@@ -133,6 +192,9 @@ pub fn trapezoid_time(length: f64, v_entry: f64, v_exit: f64, v_nominal: f64, ac
 #[derive(Clone, Copy, Debug)]
 struct Block {
     length: f64,
+    rapid: bool,
+    /// Acceleration along the move, mm/s².
+    accel: f64,
     dir: DVec2,
     nominal: f64,
     /// Highest entry speed the junction allows.
@@ -146,12 +208,12 @@ struct Block {
 /// without a positive feed take 0 s.
 pub fn move_times(start: DVec2, moves: &[Move], kin: &Kinematics) -> Vec<f64> {
     let (blocks, index) = blocks(start, moves, kin);
-    let entries = plan_entries(&blocks, kin.accel_mm_s2);
+    let entries = plan_entries(&blocks, kin.has_acceleration());
     let mut times = vec![0.0; moves.len()];
     for (i, b) in blocks.iter().enumerate() {
         let exit = entries.get(i + 1).copied().unwrap_or(0.0);
         times[index[i]] = if kin.has_acceleration() {
-            trapezoid_time(b.length, entries[i], exit, b.nominal, kin.accel_mm_s2)
+            trapezoid_time(b.length, entries[i], exit, b.nominal, b.accel)
         } else {
             b.length / b.nominal
         };
@@ -174,20 +236,28 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
     for (i, m) in moves.iter().enumerate() {
         let delta = m.to - at;
         let length = delta.length();
-        let nominal = kin.nominal_speed(m);
+        let dir = delta / length;
+        let nominal = kin.nominal_speed(m, dir);
         if !(length.is_finite() && length > 0.0 && nominal > 0.0) {
             at = if m.to.is_finite() { m.to } else { at };
             continue;
         }
-        let dir = delta / length;
         let max_entry = match out.last() {
             None => 0.0,
-            Some(prev) => junction_speed(prev.dir, dir, kin.accel_mm_s2, kin.junction_deviation_mm)
-                .min(prev.nominal)
-                .min(nominal),
+            Some(prev) if kin.stops_between_rapid_and_feed && prev.rapid != m.rapid => 0.0,
+            Some(prev) => {
+                // The corner's centripetal acceleration points along the change of direction.
+                let turn = (dir - prev.dir).normalize_or_zero();
+                let accel = kin.accel_mm_s2 * kin.axis_scale(turn);
+                junction_speed(prev.dir, dir, accel, kin.junction_deviation_mm)
+                    .min(prev.nominal)
+                    .min(nominal)
+            }
         };
         out.push(Block {
             length,
+            rapid: m.rapid,
+            accel: kin.accel_mm_s2 * kin.axis_scale(dir),
             dir,
             nominal,
             max_entry,
@@ -200,24 +270,24 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
 }
 
 /// Entry speeds after the backward (can stop in time) and forward (can get there) passes.
-fn plan_entries(blocks: &[Block], accel: f64) -> Vec<f64> {
+fn plan_entries(blocks: &[Block], accelerates: bool) -> Vec<f64> {
     let mut b: Vec<Block> = blocks.to_vec();
-    if !(accel.is_finite() && accel > 0.0) {
+    if !accelerates {
         return b.iter().map(|x| x.max_entry).collect();
     }
     let mut next_entry = 0.0_f64;
     for blk in b.iter_mut().rev() {
         blk.entry = blk
             .max_entry
-            .min((next_entry * next_entry + 2.0 * accel * blk.length).sqrt());
+            .min((next_entry * next_entry + 2.0 * blk.accel * blk.length).sqrt());
         next_entry = blk.entry;
     }
-    let mut prev: Option<(f64, f64)> = None; // (entry, length) of the previous block
+    let mut prev: Option<(f64, f64, f64)> = None; // (entry, length, accel) of the previous block
     for blk in b.iter_mut() {
-        if let Some((e, l)) = prev {
-            blk.entry = blk.entry.min((e * e + 2.0 * accel * l).sqrt());
+        if let Some((e, l, a)) = prev {
+            blk.entry = blk.entry.min((e * e + 2.0 * a * l).sqrt());
         }
-        prev = Some((blk.entry, blk.length));
+        prev = Some((blk.entry, blk.length, blk.accel));
     }
     b.iter().map(|x| x.entry).collect()
 }
@@ -267,9 +337,13 @@ impl Timeline {
         }
     }
 
-    /// Brings the machine to rest; returns the seconds of the run since the last stop.
+    /// Brings the machine to rest; returns the seconds of the run since the last stop, with the
+    /// controller's stop delay when there was a run (see [`Kinematics::stop_delay_s`]).
     pub fn stop(&mut self) -> f64 {
-        let t = self.time_run() + self.banked_s;
+        let mut t = self.time_run() + self.banked_s;
+        if t > 0.0 {
+            t += self.kin.stop_delay_s;
+        }
         self.banked_s = 0.0;
         t
     }

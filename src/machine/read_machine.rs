@@ -10,6 +10,8 @@
 //! | `max_feed_mm_min` | 1 – 1 000 000 mm/min; `travel_feed_mm_min` at most that |
 //! | `acceleration_mm_s2` | 1 – 100 000 mm/s² |
 //! | `junction_deviation_mm` | 0 – 1 mm |
+//! | `blend_tolerance_mm` (LinuxCNC lasers) | 0.0001 – 1 mm |
+//! | `step_idle_delay_ms` (GRBL, plotter) | 0 – 255 ms (255: no wait) |
 //! | `resolution_mm` | 0.00001 – 0.1 mm |
 //! | `power.min` < `power.max` | 0 – 1 000 000 (`S` units) |
 //! | `pen.delay_s` | 0 – 10 s |
@@ -190,7 +192,12 @@ fn read_pen(f: &mut Fields, required: bool) -> Result<Pen, ProfileError> {
 /// Highest LinuxCNC motion I/O number (`num_dio`/`num_aio` go up to 64).
 const MAX_OUTPUT_NUMBER: i64 = 63;
 
-/// The optional shop-floor keys: `laser_output` and `output_number` (LinuxCNC lasers only),
+/// Accepted `blend_tolerance_mm` (LinuxCNC's `G64 P`), mm: above zero (`G64 P0` would let
+/// LinuxCNC blend without any tolerance) and at most 1 mm, as `junction_deviation_mm`.
+const BLEND_TOLERANCE_MM: (f64, f64) = (0.0001, 1.0);
+
+/// The optional shop-floor keys: `laser_output`, `output_number` and `blend_tolerance_mm`
+/// (LinuxCNC lasers only), `step_idle_delay_ms` (GRBL's `$1`),
 /// `air_assist` (`M7` or `M8`) with `air_assist_operations`, `pen_change` (plotters).
 fn read_control(
     f: &mut Fields,
@@ -199,7 +206,7 @@ fn read_control(
 ) -> Result<MachineControl, ProfileError> {
     let mut control = MachineControl::default();
     let linuxcnc_laser = kind == MachineKind::Laser && dialect == Dialect::LinuxCnc;
-    for key in ["laser_output", "output_number"] {
+    for key in ["laser_output", "output_number", "blend_tolerance_mm"] {
         if f.has(key) && !linuxcnc_laser {
             return Err(f.error(key, "applies only to a laser with dialect \"linuxcnc\""));
         }
@@ -209,6 +216,19 @@ fn read_control(
     }
     if f.has("output_number") {
         control.output_number = f.integer("output_number", 0, MAX_OUTPUT_NUMBER)? as u32;
+    }
+    if f.has("step_idle_delay_ms") {
+        if !matches!(dialect, Dialect::Grbl | Dialect::Plotter) {
+            let message = "applies only to dialect \"grbl\" or \"plotter\" (GRBL's $1)";
+            return Err(f.error("step_idle_delay_ms", message));
+        }
+        // GRBL's $1 is 0-255 ms; 255 keeps the steppers enabled and does not wait.
+        let ms = f.integer("step_idle_delay_ms", 0, 255)?;
+        control.step_idle_delay_s = if ms == 255 { 0.0 } else { ms as f64 / 1000.0 };
+    }
+    if f.has("blend_tolerance_mm") {
+        let (lo, hi) = BLEND_TOLERANCE_MM;
+        control.blend_tolerance_mm = Some(f.number("blend_tolerance_mm", lo, hi, "mm")?);
     }
     let air = f.opt_choice("air_assist", &["M7", "M8"])?;
     let ops = f.lines("air_assist_operations")?;

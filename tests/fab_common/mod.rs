@@ -26,6 +26,7 @@ pub fn options() -> PlanOptions {
         },
         kerf_mm: 0.2,
         kerf_offset: false,
+        resolution_mm: 0.001,
         two_sided: false,
         tabs: None,
         lead_in_mm: None,

@@ -77,9 +77,16 @@ fn stats_match_lengths_pierces_travel_and_time_computed_by_hand() {
         s.travel_mm
     );
     let a = 100.0;
-    let time = rest_to_rest(to_score, 100.0, a)
+    // GRBL limits each axis: a travel along unit vector u runs and accelerates
+    // 1 / max(|uₓ|, |u_y|) times faster (√2 on the diagonal to the score).
+    let axis = |v: DVec2| {
+        let u = v.normalize();
+        1.0 / u.x.abs().max(u.y.abs())
+    };
+    let (k_score, k_cut) = (axis(DVec2::new(10.0, 10.0)), axis(l[2] - cut_start));
+    let time = rest_to_rest(to_score, 100.0 * k_score, a * k_score)
         + 2.0 * rest_to_rest(30.0, 10.0, a)
-        + rest_to_rest(to_cut, 100.0, a)
+        + rest_to_rest(to_cut, 100.0 * k_cut, a * k_cut)
         + 8.0 * rest_to_rest(50.0, 5.0, a);
     // By the numbers: 0.7521 + 2 × 3.1 + travel + 8 × 10.05 s.
     assert!((s.time_s - time).abs() < 1e-9, "{} vs {time}", s.time_s);

@@ -1,22 +1,34 @@
 //! LinuxCNC (rs274ngc): the beam switched through the spindle (`M3 S…`/`M5`, an exact stop
 //! at every switch) or through motion-synchronised outputs (`M62`/`M63 P<n>` digital,
 //! `M67 E<n> Q<power>` analog) that change at the start of the next move without stopping.
-//! Parenthesised comments.
+//! Parenthesised comments. The profile's `blend_tolerance_mm` is written as `G64 P<mm>` after
+//! the arming line (blending: LinuxCNC joins moves without stopping, leaving the path by at
+//! most that much at a corner).
 
+use super::super::number::fixed;
 use super::{Flavour, one_line};
 use crate::machine::LaserOutput;
 
+/// Decimals of the printed `G64 P` tolerance (down to the 0.0001 mm profiles accept).
+const TOLERANCE_DECIMALS: usize = 4;
+
 /// A LinuxCNC laser.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LinuxCncLaser {
     output: LaserOutput,
     number: u32,
+    blend_tolerance_mm: Option<f64>,
 }
 
 impl LinuxCncLaser {
-    /// A laser switched by `output` number `number` (`P` or `E`; unused for the spindle).
-    pub fn new(output: LaserOutput, number: u32) -> Self {
-        LinuxCncLaser { output, number }
+    /// A laser switched by `output` number `number` (`P` or `E`; unused for the spindle),
+    /// blending within `blend_tolerance_mm` (`G64 P`) when given.
+    pub fn new(output: LaserOutput, number: u32, blend_tolerance_mm: Option<f64>) -> Self {
+        LinuxCncLaser {
+            output,
+            number,
+            blend_tolerance_mm,
+        }
     }
 }
 
@@ -50,7 +62,11 @@ impl Flavour for LinuxCncLaser {
         self.output != LaserOutput::Digital
     }
     fn start(&self) -> Vec<String> {
-        vec![self.off_now()]
+        let mut lines = vec![self.off_now()];
+        if let Some(p) = self.blend_tolerance_mm {
+            lines.push(format!("G64 P{}", fixed(p, TOLERANCE_DECIMALS)));
+        }
+        lines
     }
     fn tool_on(&self, s: &str) -> Vec<String> {
         let n = self.number;

@@ -25,7 +25,10 @@ impl MarlinLaser {
 
 impl Flavour for MarlinLaser {
     fn expectation(&self) -> Option<&'static str> {
-        Some("expects Marlin with LASER_FEATURE, LASER_POWER_INLINE and LASER_MOVE_POWER")
+        Some(
+            "expects Marlin with LASER_FEATURE: 2.1 reads M3 I as continuous inline power; \
+             2.0.x also needs LASER_POWER_INLINE and LASER_MOVE_POWER",
+        )
     }
     fn uses_power(&self) -> bool {
         self.inline.uses_power()

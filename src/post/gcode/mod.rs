@@ -8,7 +8,8 @@
 //! with the air-assist word when it changes (`M7`/`M8`/`M9`, see
 //! [`crate::machine::MachineControl`]) and, on a plotter, the pen-change lines (`M0`) between
 //! groups; the toolpaths, the tool made safe, air off, the postamble without the lines already
-//! written, and the dialect's program end, once. Travel is `G0`, burns are `G1`.
+//! written, and the dialect's program end, once. Travel is `G0` (on LinuxCNC, inside a pass,
+//! `G1` at the travel feed: see below), burns are `G1`.
 //!
 //! **Numbers.** Coordinates are rounded to the machine's `resolution_mm` and printed exactly
 //! (see `number`): no float noise, no `-0`, no exponents. Moves that round to zero length are
@@ -43,6 +44,12 @@
 //!   start of the next move, without stopping. The immediate `M65`/`M68` turn the output off
 //!   at the start and the end. Comments use parentheses; `M2` ends the program; no `%`
 //!   framing. `M3` is used for both laser modes (`M4` is reverse rotation on LinuxCNC).
+//!   LinuxCNC's planner cannot blend a rapid into a feed move (an exact stop at every
+//!   `G0`↔`G1` switch), so on a synchronised output the travel between two burns of one pass
+//!   of a toolpath (the dashes of a perforation, the strokes of one chain) is
+//!   `G1 … F<travel feed>` with the beam off, and `G0` only leads to a toolpath or a pass
+//!   ([`crate::machine::MachineProfile::links_burns_with_feed_moves`]); the profile's
+//!   `blend_tolerance_mm` is written as `G64 P<mm>` after the arming line.
 //! - Pen plotters ([`plotter`]), chosen by the `Plotter` dialect or by a machine that is not a
 //!   laser: the profile's `pen_up` lines before every travel (and at the start and end), its
 //!   `pen_down` lines before every stroke, each followed by `G4 P<pen delay>` in the profile's
@@ -166,6 +173,7 @@ pub fn flavour(machine: &MachineProfile) -> Result<Box<dyn Flavour>, PostError> 
         (Dialect::LinuxCnc, false) => Box::new(linuxcnc::LinuxCncLaser::new(
             machine.control.laser_output,
             machine.control.output_number,
+            machine.control.blend_tolerance_mm,
         )),
     })
 }

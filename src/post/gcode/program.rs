@@ -40,6 +40,9 @@ struct Program<'a> {
     travel_feed: String,
     /// Air assist is on.
     air: bool,
+    /// The feed of the moves linking two burns of one pass (`G1` with the tool off), when the
+    /// machine links them so ([`MachineProfile::links_burns_with_feed_moves`]).
+    link_feed: Option<String>,
 }
 
 /// Feed written on travel moves when the dialect shares `G0`'s feed with `G1`.
@@ -73,6 +76,9 @@ impl<'a> Program<'a> {
                 String::new()
             },
             air: false,
+            link_feed: machine
+                .links_burns_with_feed_moves()
+                .then(|| travel_feed(machine)),
         }
     }
 }
@@ -211,7 +217,10 @@ impl Program<'_> {
             *group = Some(path.op);
         }
         for _ in 0..burn.passes {
-            for stroke in &strokes {
+            for (i, stroke) in strokes.iter().enumerate() {
+                if i > 0 && self.at != Some(stroke[0]) {
+                    self.link(stroke[0]);
+                }
                 self.stroke(stroke, burn);
             }
         }
@@ -249,6 +258,21 @@ impl Program<'_> {
         self.at = points.last().copied();
         self.lines.extend(self.flavour.tool_off());
         self.burned += 1;
+    }
+
+    /// A tool-off feed move at the travel feed to `to`, between two burns of one pass, where
+    /// the machine links burns so; elsewhere nothing (the next stroke travels there).
+    fn link(&mut self, to: (i64, i64)) {
+        let Some(feed) = self.link_feed.clone() else {
+            return;
+        };
+        let mut line = format!("G1 {}", self.xy(to));
+        if self.feed.as_deref() != Some(feed.as_str()) {
+            line = format!("{line} F{feed}");
+            self.feed = Some(feed);
+        }
+        self.lines.push(line);
+        self.at = Some(to);
     }
 
     /// A tool-off move to `to`.
