@@ -5,12 +5,12 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use foldcam::check::layers::{LayerOptions, LayerSolver};
 use foldcam::check::{CheckOptions, FindingKind, check};
-use foldcam::formats::{self, write_atomic};
+use foldcam::formats;
 use foldcam::render::render_top_view_png;
 
 use super::Outcome;
 use super::args::positive;
-use super::input;
+use super::{input, outputs};
 
 /// Fold a crease pattern flat and write the folded state.
 #[derive(clap::Args)]
@@ -52,16 +52,21 @@ pub struct Args {
     /// Kawasaki tolerance of the local check run first, degrees.
     #[arg(long, value_name = "DEG", default_value_t = 0.01, value_parser = positive)]
     pub kawasaki_tolerance: f64,
+    /// Stop the layer-order search after this many seconds (exit 2, naming the limit;
+    /// nothing written).
+    #[arg(long, value_name = "SECONDS", value_parser = super::args::time_limit)]
+    pub time_limit: Option<f64>,
 }
 
 /// Folds and writes.
 pub fn run(args: Args) -> Result<Outcome> {
-    if formats::Format::from_path(&args.output) != Some(formats::Format::Fold) {
-        bail!(
-            "{}: the folded state is written as FOLD: use a .fold name",
-            args.output.display()
-        );
+    let output = outputs::target(&args.output)?;
+    let png_path = outputs::optional(args.png.as_ref())?;
+    outputs::require_extension(&output, "fold", "the folded state")?;
+    if let Some(p) = &png_path {
+        outputs::require_extension(p, "png", "the picture")?;
     }
+    outputs::check(&[Some(&output), png_path.as_ref()], &[&args.input])?;
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, true)?;
     let cp = &imported.pattern;
@@ -77,7 +82,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         .iter()
         .find(|f| matches!(f.kind, FindingKind::Kawasaki | FindingKind::Maekawa))
     {
-        eprintln!(
+        errln!(
             "foldcam: {}: not locally flat-foldable ({} at {}: {}); nothing written",
             args.input.display(),
             f.kind.name(),
@@ -88,13 +93,14 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     let options = LayerOptions {
         max_states: Some(args.max_states.max(1)),
+        time_limit: args.time_limit.map(std::time::Duration::from_secs_f64),
         ..LayerOptions::default()
     };
     let solver = LayerSolver::new(cp, &options)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
     let report = solver.report();
     if let Some(c) = &report.contradiction {
-        eprintln!(
+        errln!(
             "foldcam: {}: {}; nothing written",
             args.input.display(),
             c.message
@@ -116,7 +122,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         );
     };
     // The top view searches the state again: only when a picture is asked for.
-    let png = match &args.png {
+    let png = match &png_path {
         Some(_) => {
             let view = solver.top_view(k).ok_or_else(|| {
                 anyhow::anyhow!("{}: no top view of state {k}", args.input.display())
@@ -128,12 +134,13 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
         None => None,
     };
-    input::save(&args.output, cp, Some(&folded))?;
-    if let (Some(path), Some(bytes)) = (&args.png, png) {
-        write_atomic(path, &bytes).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-        note!("foldcam: wrote {}", path.display());
+    let mut staged = formats::OutputSet::new();
+    outputs::stage(&mut staged, &output, cp, Some(&folded))?;
+    if let (Some(path), Some(bytes)) = (&png_path, png) {
+        staged.add(path, bytes);
     }
-    eprintln!(
+    outputs::commit(staged, &[&args.input])?;
+    errln!(
         "foldcam: {}: state {} of {}{}",
         args.input.display(),
         args.state,

@@ -75,6 +75,9 @@ pub fn flat_view(doc: &Document, state: u64) -> Result<FlatView, String> {
     }
     let options = LayerOptions {
         max_states: Some(MAX_STATES),
+        time_limit: Some(std::time::Duration::from_secs(
+            crate::limits::STUDIO_LAYER_SECONDS,
+        )),
         ..LayerOptions::default()
     };
     let solver = LayerSolver::new(&cp, &options).map_err(|e| format!("{name}: {e}"))?;
