@@ -286,17 +286,7 @@ fn transitivity(
         .map(|(_, faces)| faces.as_slice())
         .filter(|faces| seen.insert(faces))
         .collect();
-    // Every three faces of one stack are a constraint of their own: the deepest stack alone
-    // says when the limit will be passed, before any is written out.
-    let deepest = cells.iter().map(|c| c.len() as u128).max().unwrap_or(0);
-    let least = deepest * deepest.saturating_sub(1) * deepest.saturating_sub(2) / 6;
-    if least > MAX_TRIPLES as u128 {
-        return Err(LayerError::TooLarge {
-            what: "transitivity constraints at least (from its deepest stack of layers alone)",
-            count: usize::try_from(least).unwrap_or(usize::MAX),
-            limit: MAX_TRIPLES,
-        });
-    }
+    check_stack(cells.iter().map(|c| c.len()).max().unwrap_or(0))?;
     let (face_cells, n_faces) = face_cells(&cells);
     // The variables of each face's pairs with higher faces are one run of `pairs`: where each
     // run starts, and the variable of `(a, c)` for every `c` of the current face `a`.
@@ -385,6 +375,22 @@ fn transitivity(
     }
     sys.counts[Kind::Transitivity as usize] = found.len();
     sys.triples = found;
+    Ok(())
+}
+
+/// Refuses a stack of `layers` faces over one place whose transitivity constraints alone
+/// (every three of its faces) pass [`MAX_TRIPLES`]: the limit would be passed, and this is
+/// known before any constraint is written out (or, from the folded form, before the overlay).
+pub fn check_stack(layers: usize) -> Result<(), LayerError> {
+    let k = layers as u128;
+    let least = k * k.saturating_sub(1) * k.saturating_sub(2) / 6;
+    if least > MAX_TRIPLES as u128 {
+        return Err(LayerError::TooLarge {
+            what: "transitivity constraints at least (from its deepest stack of layers alone)",
+            count: usize::try_from(least).unwrap_or(usize::MAX),
+            limit: MAX_TRIPLES,
+        });
+    }
     Ok(())
 }
 

@@ -275,6 +275,7 @@ impl LayerSolver {
         };
         let deadline = Deadline::after(opts.time_limit);
         let folded = folded::fold_faces(cp, vertex_agreement(cp).max(tol))?;
+        constraints::check_stack(folded.deepest_stack_at_least(tol))?;
         let (arr, _) = cells::arrange_by(cp, &folded, tol, &deadline)?;
         let sys = constraints::build(cp, &folded, &arr, &deadline)?;
         let mut solver = LayerSolver {
