@@ -83,6 +83,18 @@ fn stderr(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// `args` followed by the machine and material every cutting test here uses.
+fn on_machine<'a>(args: &[&'a str]) -> Vec<&'a str> {
+    [args, &["-m", "grbl-diode", "-x", "card-300gsm"][..]].concat()
+}
+
+/// A temporary folder holding a generated Miura-ori, `m.fold`.
+fn folder_with_miura() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().expect("temp dir");
+    run_ok(&["generate", "miura", "-o", "m.fold"], dir.path());
+    dir
+}
+
 fn run_ok(args: &[&str], dir: &std::path::Path) {
     let o = foldcam(args, dir);
     assert!(o.status.success(), "{args:?}: {}", stderr(&o));
@@ -90,24 +102,19 @@ fn run_ok(args: &[&str], dir: &std::path::Path) {
 
 #[test]
 fn a_full_disk_on_standard_output_is_an_error_not_a_panic() {
-    let dir = tempfile::tempdir().expect("temp dir");
-    run_ok(&["generate", "miura", "-o", "m.fold"], dir.path());
-    let machine = ["-m", "grbl-diode", "-x", "card-300gsm"];
-    run_ok(
-        &[&["cut", "m.fold", "-o", "j.gcode"][..], &machine[..]].concat(),
-        dir.path(),
-    );
+    let dir = folder_with_miura();
+    run_ok(&on_machine(&["cut", "m.fold", "-o", "j.gcode"]), dir.path());
     let house = bin::repo_file("examples/popup/house.voxel.txt");
     let script = bin::repo_file("examples/folding/bird-base.toml");
     let runs: Vec<Vec<&str>> = vec![
         vec!["check", "m.fold"],
         vec!["check", "--json", "m.fold"],
-        [&["plan", "m.fold"][..], &machine[..]].concat(),
+        on_machine(&["plan", "m.fold"]),
         vec!["list", "machines"],
         vec!["simulate", "j.gcode", "-m", "grbl-diode"],
         vec!["fold", &script, "-o", "b.fold"],
         vec!["popup", "voxel", &house, "-o", "h.fold"],
-        [&["cut", "m.fold", "-o", "k.gcode"][..], &machine[..]].concat(),
+        on_machine(&["cut", "m.fold", "-o", "k.gcode"]),
     ];
     for args in runs {
         let o = to_full_device(&args, dir.path());
@@ -154,22 +161,11 @@ fn an_output_that_is_a_folder_leaves_every_other_output_as_it_was() {
         );
     }
     // A two-sided job whose back is a folder keeps its front.
-    let dir = tempfile::tempdir().expect("temp dir");
-    run_ok(&["generate", "miura", "-o", "m.fold"], dir.path());
+    let dir = folder_with_miura();
     std::fs::write(dir.path().join("job.front.gcode"), "OLD").expect("write");
     std::fs::create_dir(dir.path().join("job.back.gcode")).expect("folder");
     let o = foldcam(
-        &[
-            "cut",
-            "m.fold",
-            "-m",
-            "grbl-diode",
-            "-x",
-            "card-300gsm",
-            "--two-sided",
-            "-o",
-            "job.gcode",
-        ],
+        &on_machine(&["cut", "m.fold", "--two-sided", "-o", "job.gcode"]),
         dir.path(),
     );
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
@@ -180,8 +176,7 @@ fn an_output_that_is_a_folder_leaves_every_other_output_as_it_was() {
 
 #[test]
 fn two_outputs_of_one_name_are_refused_before_the_work() {
-    let dir = tempfile::tempdir().expect("temp dir");
-    run_ok(&["generate", "miura", "-o", "m.fold"], dir.path());
+    let dir = folder_with_miura();
     let vase = bin::repo_file("examples/papercraft/vase.craft.toml");
     for (args, culprit) in [
         (
@@ -203,8 +198,7 @@ fn two_outputs_of_one_name_are_refused_before_the_work() {
 
 #[test]
 fn a_dash_is_standard_output_for_every_command_that_writes() {
-    let dir = tempfile::tempdir().expect("temp dir");
-    run_ok(&["generate", "miura", "-o", "m.fold"], dir.path());
+    let dir = folder_with_miura();
     let script = bin::repo_file("examples/folding/bird-base.toml");
     for (args, starts) in [
         (
@@ -279,52 +273,24 @@ fn patterns_without_a_sheet_are_refused_not_passed() {
 
 #[test]
 fn a_piece_smaller_than_the_kerf_and_a_dash_below_the_limit_are_refused_alike() {
-    let dir = tempfile::tempdir().expect("temp dir");
-    run_ok(&["generate", "miura", "-o", "m.fold"], dir.path());
-    let m = ["-m", "grbl-diode", "-x", "card-300gsm"];
-    let cut = foldcam(
-        &[
-            &["cut", "m.fold", "--size", "1e-9", "-o", "j.gcode"][..],
-            &m[..],
-        ]
-        .concat(),
-        dir.path(),
-    );
-    let grid = foldcam(
-        &[
-            &["testgrid", "--crease", "1e-9", "-o", "g.gcode"][..],
-            &m[..],
-        ]
-        .concat(),
-        dir.path(),
-    );
-    for o in [&cut, &grid] {
-        assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
-        assert!(stderr(o).contains("smaller than the kerf"), "{}", stderr(o));
-    }
-    let cut = foldcam(
-        &[
-            &["cut", "m.fold", "--dash", "1e-300", "-o", "j.gcode"][..],
-            &m[..],
-        ]
-        .concat(),
-        dir.path(),
-    );
-    let grid = foldcam(
-        &[
-            &["testgrid", "--dash", "1e-300", "-o", "g.gcode"][..],
-            &m[..],
-        ]
-        .concat(),
-        dir.path(),
-    );
-    for o in [&cut, &grid] {
-        assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
-        assert!(
-            stderr(o).contains("expected a number from 0.01 to 1000 mm"),
-            "{}",
-            stderr(o)
-        );
+    let dir = folder_with_miura();
+    // (cut's option, testgrid's option, the value, what both say)
+    for (cut_option, grid_option, value, said) in [
+        ("--size", "--crease", "1e-9", "smaller than the kerf"),
+        (
+            "--dash",
+            "--dash",
+            "1e-300",
+            "expected a number from 0.01 to 1000 mm",
+        ),
+    ] {
+        let cut = on_machine(&["cut", "m.fold", cut_option, value, "-o", "j.gcode"]);
+        let grid = on_machine(&["testgrid", grid_option, value, "-o", "g.gcode"]);
+        for args in [cut, grid] {
+            let o = foldcam(&args, dir.path());
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+            assert!(stderr(&o).contains(said), "{args:?}: {}", stderr(&o));
+        }
     }
     assert_eq!(bin::listing(dir.path()), vec!["m.fold"]);
 }

@@ -365,6 +365,15 @@ mod tests {
         STAGING.lock().unwrap_or_else(|e| e.into_inner())
     }
 
+    /// A set of `files` (name in `dir`, contents).
+    fn set_of(dir: &Path, files: &[(&str, &str)]) -> OutputSet {
+        let mut set = OutputSet::new();
+        for (name, bytes) in files {
+            set.add(dir.join(name), bytes.as_bytes().to_vec());
+        }
+        set
+    }
+
     fn listing(dir: &Path) -> Vec<String> {
         let mut names: Vec<String> = std::fs::read_dir(dir)
             .unwrap()
@@ -380,9 +389,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let good = dir.path().join("a.fold");
         std::fs::write(&good, "OLD").unwrap();
-        let mut set = OutputSet::new();
-        set.add(&good, b"NEW".to_vec());
-        set.add(dir.path().join("no/such/b.png"), b"PNG".to_vec());
+        let set = set_of(dir.path(), &[("a.fold", "NEW"), ("no/such/b.png", "PNG")]);
         let err = set.commit().unwrap_err();
         assert!(err.path.ends_with("no/such/b.png"), "{err}");
         assert_eq!(std::fs::read_to_string(&good).unwrap(), "OLD");
@@ -395,9 +402,7 @@ mod tests {
         let _turn = take_turn();
         let dir = tempfile::tempdir().unwrap();
         std::fs::write(dir.path().join("b.png"), "OLD").unwrap();
-        let mut set = OutputSet::new();
-        set.add(dir.path().join("a.fold"), b"A".to_vec());
-        set.add(dir.path().join("b.png"), b"B".to_vec());
+        let set = set_of(dir.path(), &[("a.fold", "A"), ("b.png", "B")]);
         assert_eq!(set.paths().count(), 2);
         set.commit().unwrap();
         assert_eq!(listing(dir.path()), vec!["a.fold", "b.png"]);
@@ -410,10 +415,10 @@ mod tests {
         let _turn = take_turn();
         let dir = tempfile::tempdir().unwrap();
         std::fs::write(dir.path().join("a.fold"), "OLD").unwrap();
-        let mut set = OutputSet::new();
-        set.add(dir.path().join("a.fold"), b"A".to_vec());
-        set.add(dir.path().join("x/../b.png"), b"B".to_vec());
-        set.add(dir.path().join("./a.fold"), b"PNG".to_vec());
+        let set = set_of(
+            dir.path(),
+            &[("a.fold", "A"), ("x/../b.png", "B"), ("./a.fold", "PNG")],
+        );
         std::fs::create_dir(dir.path().join("x")).unwrap();
         let err = set.commit().unwrap_err();
         assert!(err.to_string().contains("two outputs"), "{err}");
@@ -430,9 +435,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         std::fs::write(dir.path().join("keep.fold"), "OLD").unwrap();
         std::fs::create_dir(dir.path().join("d.png")).unwrap();
-        let mut set = OutputSet::new();
-        set.add(dir.path().join("keep.fold"), b"NEW".to_vec());
-        set.add(dir.path().join("d.png"), b"PNG".to_vec());
+        let set = set_of(dir.path(), &[("keep.fold", "NEW"), ("d.png", "PNG")]);
         let err = set.commit().unwrap_err();
         assert!(err.path.ends_with("d.png"), "{err}");
         assert!(err.to_string().contains("is a folder"), "{err}");
