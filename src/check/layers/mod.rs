@@ -74,8 +74,8 @@ pub struct LayerOptions {
     pub max_states: Option<u64>,
     /// Smallest merge distance relative to the bounding-box diagonal.
     pub relative_tolerance: f64,
-    /// Stop with [`LayerError::TimeLimit`] when building the constraints and counting take
-    /// longer than this; `None` has no limit.
+    /// Stop with [`LayerError::TimeLimit`] when arranging the folded layers, building the
+    /// constraints and counting take longer than this; `None` has no limit.
     pub time_limit: Option<std::time::Duration>,
 }
 
