@@ -92,15 +92,25 @@ impl Limit {
 
     /// The option and the key, for messages about either (`--dash (perforation.cut_mm)`).
     pub fn name(&self) -> String {
-        match (self.option.is_empty(), self.key.is_empty()) {
-            (false, false) => format!("{} ({})", self.option, self.key),
-            (false, true) => self.option.to_string(),
-            _ => self.key.to_string(),
-        }
+        setting_name(self.option, self.key)
+    }
+}
+
+/// `OPTION (KEY)`, or whichever of the two there is.
+fn setting_name(option: &str, key: &str) -> String {
+    match (option.is_empty(), key.is_empty()) {
+        (false, false) => format!("{option} ({key})"),
+        (false, true) => option.to_string(),
+        _ => key.to_string(),
     }
 }
 
 impl CountLimit {
+    /// The option and the key, for messages about either (`--remesh (remesh_faces)`).
+    pub fn name(&self) -> String {
+        setting_name(self.option, self.key)
+    }
+
     /// "a whole number from MIN to MAX UNIT".
     pub fn expected(&self) -> String {
         format!(
@@ -224,6 +234,54 @@ pub const RESOLUTION: CountLimit = CountLimit {
     max: 4000,
     unit: "cells",
 };
+/// Most entity copies the DXF reader places through block inserts, all inserts of a drawing
+/// together and nested arrays multiplied (a 300 × 300 array of a block holding a 300 × 300
+/// array is 8.1e9 copies, each under the per-array cap): a copy costs its entities, a copy of
+/// an empty block one. As many as the most segments read.
+pub const MAX_BLOCK_COPIES: u64 = 10_000_000;
+
+/// Faces of a re-triangulation (`tessellate --remesh`, `remesh_faces` in a `.tess.toml`, the
+/// studio's tessellation): at most 50,000, about 2 GB for one solve at the solver's measured
+/// 38 kB per face (`design::tessellation::estimate`); at least the 24 a disk needs.
+pub const REMESH_FACES: CountLimit = CountLimit {
+    option: "--remesh",
+    key: "remesh_faces",
+    min: 24,
+    max: 50_000,
+    unit: "faces",
+};
+
+/// Most transitivity constraints of the layer-order solver (three faces of one stack): 80
+/// million, about 48 bytes each with the solver's rows (`check::layers`); Imai's Shrimp v2
+/// has 67.5 million. A pattern whose deepest stack alone passes it is refused at once.
+pub const MAX_LAYER_TRIPLES: usize = 80_000_000;
+
+/// Longest the studio's layer-order searches run, seconds: a request never holds a worker
+/// longer (the command line has `--time-limit`, without a default).
+pub const STUDIO_LAYER_SECONDS: u64 = 60;
+
+/// Most cells of a voxel pop-up card along any axis (`popup voxel`, the studio's editor).
+pub const VOXEL_CELLS_PER_AXIS: usize = 20_000;
+
+/// Most cells of a voxel card's crease pattern, `nx × (ny + nz)`, on the command line: the
+/// conversion needs about 28 bytes per cell (`design::popup::voxel::estimate`), the crease
+/// pattern of a card with a step in every cell up to 3 kB.
+pub const VOXEL_PATTERN_CELLS: usize = 50_000_000;
+
+/// Most pattern cells of a voxel card in the studio, whose every reply carries the card and
+/// its faults: a million, at most [`STUDIO_BYTES_PER_PATTERN_CELL`] each (1 GB), so that two
+/// such cards fit in [`STUDIO_MEMORY_BYTES`] at once.
+pub const STUDIO_VOXEL_PATTERN_CELLS: usize = 1_000_000;
+
+/// Memory of a voxel card in the studio per pattern cell, bytes: measured 830 on a 400³ card
+/// with a step in every other column (the debug build, 277 MB), rounded up.
+pub const STUDIO_BYTES_PER_PATTERN_CELL: u64 = 1_000;
+
+/// Memory the studio lets its large requests (voxel cards, tessellation solves) hold at once,
+/// bytes, by their estimates: a request that would pass it is refused before it allocates
+/// (and may be sent again when others are done).
+pub const STUDIO_MEMORY_BYTES: u64 = 2_000_000_000;
+
 /// The smallest merge tolerance, in the pattern's units: the least `--tolerance` accepts and the
 /// floor of every tolerance computed from a pattern's size (an empty or one-point pattern has
 /// none). Positive, so that "closer than the tolerance" never means "equal".

@@ -406,17 +406,19 @@ fn an_absurd_scale_is_refused_without_output() {
 }
 
 #[test]
-fn piles_of_identical_lines_clean_quickly_to_one_edge() {
-    // 5,000 copies of one line (the crossing search would be cubic without deduplication).
+fn piles_of_identical_lines_clean_quickly_to_one_edge_each() {
+    // 5,000 copies of one line (the crossing search would be cubic without deduplication),
+    // and one line across it so that the pattern has a sheet (lines on one line are refused).
     let dir = tempfile::tempdir().expect("temp dir");
-    let pile: String = (0..5000).map(|_| "2 0 0 100 0\n").collect();
+    let mut pile: String = (0..5000).map(|_| "2 0 0 100 0\n").collect();
+    pile.push_str("1 0 0 0 100\n");
     std::fs::write(dir.path().join("pile.cp"), pile).expect("write");
     let o = foldcam(&["convert", "pile.cp", "one.fold"], dir.path());
     assert!(o.status.success(), "{}", text(&o.stderr));
     let cp = foldcam::formats::load(&dir.path().join("one.fold"))
         .expect("loads")
         .pattern;
-    assert_eq!(cp.edges.len(), 1);
+    assert_eq!(cp.edges.len(), 2);
 }
 
 #[test]

@@ -382,3 +382,44 @@ fn faces_beyond_the_closed_card_are_marked_and_the_command_warns_as_far() {
         reach(&warning, "the card reaches ")
     );
 }
+
+/// The issue's three requests that aborted the server: three 4000³ cards at once and a
+/// re-triangulation to 10⁸ faces are refused before they allocate, with the limit named, and
+/// the server goes on serving.
+#[test]
+fn requests_beyond_memory_are_refused_and_the_server_survives() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let server = Server::start(&[], dir.path());
+    let big = br#"{"nx": 4000, "ny": 4000, "nz": 4000, "cell_mm": 1}"#;
+    let replies: Vec<(u16, Value)> = std::thread::scope(|s| {
+        let asks: Vec<_> = (0..3)
+            .map(|_| s.spawn(|| server.post_json("/api/voxel/new", big)))
+            .collect();
+        asks.into_iter().map(|a| a.join().expect("reply")).collect()
+    });
+    for (status, body) in &replies {
+        assert_eq!(*status, 422, "{body}");
+        let error = body["error"].as_str().expect("an error");
+        assert!(
+            error.contains("32000000 cells") && error.contains("1000000"),
+            "{error}"
+        );
+    }
+    let dome = server.post_json("/api/tess/example/dome.obj", b"");
+    let dome = ok(dome)["id"].as_u64().expect("mesh id");
+    let (status, body) = server.post_json(
+        &format!("/api/tess/mesh/{dome}/solve"),
+        br#"{"remesh": "only", "remesh_faces": 100000000}"#,
+    );
+    assert_eq!(status, 422, "{body}");
+    assert!(
+        body["error"].as_str().unwrap_or("").contains("50000"),
+        "{body}"
+    );
+    // Still serving: a small card is made.
+    let small = ok(server.post_json(
+        "/api/voxel/new",
+        br#"{"nx": 6, "ny": 4, "nz": 4, "cell_mm": 5}"#,
+    ));
+    assert_eq!(small["nx"].as_u64(), Some(6));
+}

@@ -53,7 +53,7 @@ impl ScaleArgs {
             *p *= scaled.factor;
         }
         if scaled.dropped_frames {
-            eprintln!(
+            errln!(
                 "foldcam: warning: other frames (file_frames) were dropped: they are not rescaled"
             );
         }
@@ -97,6 +97,21 @@ pub struct CheckArgs {
         default_value_t = 1_000_000
     )]
     pub max_states: u64,
+    /// With --layers: stop the layer-order search after this many seconds (exit 2, naming
+    /// the limit) instead of running as long as it takes.
+    #[arg(long, value_name = "SECONDS", requires = "layers", value_parser = time_limit)]
+    pub time_limit: Option<f64>,
+}
+
+/// Parses a time limit in seconds: a number greater than 0, at most a day.
+pub fn time_limit(s: &str) -> Result<f64, String> {
+    positive(s).and_then(|v| {
+        if v <= 86_400.0 {
+            Ok(v)
+        } else {
+            Err(format!("{s} must be at most 86400 seconds (a day)"))
+        }
+    })
 }
 
 impl CheckArgs {
@@ -107,6 +122,7 @@ impl CheckArgs {
             kawasaki: foldcam::check::layers::KawasakiTolerance::from_degrees(
                 self.kawasaki_tolerance,
             ),
+            time_limit: self.time_limit.map(std::time::Duration::from_secs_f64),
             ..Default::default()
         }
     }

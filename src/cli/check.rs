@@ -68,13 +68,13 @@ pub fn run(args: Args) -> Result<Outcome> {
             );
         }
         let text = serde_json::to_string_pretty(&value).context("encoding the report")?;
-        println!("{text}");
+        outln!("{text}");
     } else {
-        println!("{}", args.input.display());
+        outln!("{}", args.input.display());
         if let Some(l) = &layers {
-            print!("{}", l.to_text());
+            out!("{}", l.to_text());
         }
-        print!("{}", report.to_text(input::unit_label(cp.units)));
+        out!("{}", report.to_text(input::unit_label(cp.units)));
     }
     Ok(if report.passed() {
         Outcome::Done

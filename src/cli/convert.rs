@@ -7,7 +7,7 @@ use foldcam::formats;
 
 use super::Outcome;
 use super::args::ScaleArgs;
-use super::input;
+use super::{input, outputs};
 
 /// Convert between FOLD, SVG and ORIPA .cp (and read DXF).
 #[derive(clap::Args)]
@@ -34,7 +34,8 @@ pub struct Args {
 
 /// Runs the conversion.
 pub fn run(args: Args) -> Result<Outcome> {
-    let output = super::pipe::output(&args.output)?;
+    let output = outputs::target(&args.output)?;
+    outputs::check(&[Some(&output)], &[&args.input])?;
     formats::Format::from_path(&output)
         .filter(|f| f.writable())
         .ok_or_else(|| {
@@ -50,14 +51,13 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     args.scale
         .apply(&mut imported.pattern, imported.folded.as_mut())?;
-    // Refuses an output that names the input, like every other command.
-    let mut outputs = formats::OutputSet::new();
-    input::stage(
-        &mut outputs,
+    let mut staged = formats::OutputSet::new();
+    outputs::stage(
+        &mut staged,
         &output,
         &imported.pattern,
         imported.folded.as_ref(),
     )?;
-    input::commit(outputs, &[&args.input])?;
+    outputs::commit(staged, &[&args.input])?;
     Ok(Outcome::Done)
 }

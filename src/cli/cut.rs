@@ -61,29 +61,33 @@ fn frame_power(s: &str) -> Result<f64, String> {
 
 /// Plans and writes the job files (or their frames).
 pub fn run(args: Args) -> Result<Outcome> {
-    let output = super::pipe::output(&args.output)?;
+    let output = super::outputs::target(&args.output)?;
+    let input = args.request.input.as_path();
+    super::outputs::check(&[Some(&output)], &[input])?;
     let l = args.request.load()?;
     let job = Job::plan_with(&l.pattern, &l.machine, &l.material, l.options)
         .with_context(|| args.request.input.display().to_string())?;
     if args.frame {
-        write_frames(
-            &output,
-            &job.plan,
-            job.machine,
-            args.frame_power.unwrap_or(0.0),
-        )?;
+        let power = args.frame_power.unwrap_or(0.0);
+        write_frames(&output, &job.plan, job.machine, power, input)?;
         return Ok(Outcome::Done);
     }
     let mut outputs = OutputSet::new();
     stage_job(&mut outputs, &output, &job, args.r12, args.dasharray)?;
-    super::input::commit(outputs, &[&args.request.input])?;
+    super::outputs::commit(outputs, &[input])?;
     out!("{}", super::plan::summary(&job.plan));
     Ok(Outcome::Done)
 }
 
 /// Writes one framing job per job of the plan (G-code, read back by the simulated machine
 /// first), and says what each traces.
-fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64) -> Result<()> {
+fn write_frames(
+    output: &Path,
+    p: &FabPlan,
+    machine: &MachineProfile,
+    power: f64,
+    input: &Path,
+) -> Result<()> {
     if job_format(output, false, false)? != JobFormat::Gcode {
         bail!(
             "{}: --frame writes G-code (.gcode, .nc, .ngc); LightBurn and other job software \
@@ -98,7 +102,7 @@ fn write_frames(output: &Path, p: &FabPlan, machine: &MachineProfile, power: f64
         check_gcode(&text, machine).with_context(|| path.display().to_string())?;
         outputs.add(path, text);
     }
-    super::input::commit(outputs, &[])?;
+    super::outputs::commit(outputs, &[input])?;
     for job in &p.jobs {
         if let Some((lo, hi)) = foldcam::fab::bounds(job) {
             let how = if power > 0.0 && !machine.pen_tool() {
@@ -130,7 +134,7 @@ pub fn job_format(output: &Path, r12: bool, dasharray: bool) -> Result<JobFormat
         );
     };
     if dasharray && !matches!(format, JobFormat::Svg { .. }) {
-        eprintln!("warning: --dasharray applies to SVG output only: ignored");
+        errln!("warning: --dasharray applies to SVG output only: ignored");
     }
     Ok(format.with_choices(r12, dasharray))
 }
@@ -148,7 +152,7 @@ pub fn stage_job(
 
 /// Renders every job of the plan as `output`'s extension says (G-code first read back by
 /// the simulated machine: a violation stops the run) and adds the files to `outputs`,
-/// written all together or not at all by [`super::input::commit`].
+/// written all together or not at all by [`super::outputs::commit`].
 pub fn stage_plan(
     outputs: &mut OutputSet,
     output: &Path,
@@ -171,7 +175,7 @@ pub fn stage_plan(
         .flat_map(|j| &j.paths)
         .any(|t| t.op == Operation::Perforate);
     if format == (JobFormat::Svg { dasharray: true }) && !perforates {
-        eprintln!("warning: --dasharray: the plan has no perforation to draw dashed");
+        errln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
     for (job, path) in p.jobs.iter().zip(job_paths(output, p)) {
         let bytes =
@@ -191,7 +195,7 @@ pub fn write_plan(
 ) -> Result<()> {
     let mut outputs = OutputSet::new();
     stage_plan(&mut outputs, output, p, machine, r12, dasharray)?;
-    super::input::commit(outputs, &[])?;
+    super::outputs::commit(outputs, &[])?;
     out!("{}", super::plan::summary(p));
     Ok(())
 }

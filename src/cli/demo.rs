@@ -52,6 +52,7 @@ pub struct Args {
 
 /// Runs the demo.
 pub fn run(args: Args) -> Result<Outcome> {
+    super::outputs::no_stdout(&args.out, "the demo's folder of results")?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create the folder", args.out.display()))?;
     let start = Instant::now();
@@ -72,9 +73,13 @@ pub fn run(args: Args) -> Result<Outcome> {
         let stem = name.rsplit_once('.').map_or(*name, |(s, _)| s);
         cases.push((stem.to_string(), imported.pattern));
     }
-    println!(
+    outln!(
         "{:<22} {:>6} {:>6}  {:<9} {:<28} preview",
-        "pattern", "verts", "edges", "check", "round trips (fold svg cp)"
+        "pattern",
+        "verts",
+        "edges",
+        "check",
+        "round trips (fold svg cp)"
     );
     let mut failures = Vec::new();
     for (name, cp) in &cases {
@@ -96,7 +101,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         } else {
             format!("{} faults", report.findings.len())
         };
-        println!(
+        outln!(
             "{:<22} {:>6} {:>6}  {:<9} {:<28} {}",
             name,
             cp.vertices.len(),
@@ -109,7 +114,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             failures.push(name.clone());
         }
     }
-    println!(
+    outln!(
         "\n{} patterns in {:.2} s; files in {}/ (broken-vertex is meant to fail its check)",
         cases.len(),
         start.elapsed().as_secs_f64(),
@@ -225,9 +230,14 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
         ("square-twist", "linuxcnc-fiber", "stainless-0.5", "ngc"),
         ("yoshimura", "grbl-pen-plotter", "paper-160gsm", "gcode"),
     ];
-    println!(
+    outln!(
         "\n{:<14} {:<17} {:<15} {:>9} {:>8} {:>9}  sim / coverage",
-        "pattern", "machine", "material", "burn mm", "pierces", "time"
+        "pattern",
+        "machine",
+        "material",
+        "burn mm",
+        "pierces",
+        "time"
     );
     for (name, machine_name, material_name, ext) in jobs {
         let Some((_, cp)) = cases.iter().find(|(n, _)| n == name) else {
@@ -250,15 +260,21 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
         } else {
             format!("{} violations / {edges_off} edges off", run.violation_count)
         };
-        println!(
+        outln!(
             "{:<14} {:<17} {:<15} {:>9.0} {:>8} {:>8.0}s  {}",
-            name, machine_name, material_name, run.burn_length_mm, run.pierces, run.time_s, verdict
+            name,
+            machine_name,
+            material_name,
+            run.burn_length_mm,
+            run.pierces,
+            run.time_s,
+            verdict
         );
         if !clean {
             bail!("{name} on {machine_name}: the simulated machine found problems");
         }
     }
-    println!(
+    outln!(
         "machine jobs and toolpath previews are in {}/",
         dir.display()
     );
@@ -282,7 +298,7 @@ fn popup_card(dir: &Path, width: u32) -> Result<()> {
     let (mut building, report) = card_from_depths(&field, 2.0, &ConvertOptions::default())
         .map_err(|e| anyhow::anyhow!("building.obj: {e}"))?;
     building.set_margin_mm(10.0)?;
-    println!(
+    outln!(
         "building.obj: {} faces seen from the front; filling under overhangs added {} voxels, {} rows became windows, {} thin tops left out",
         mesh.faces().len(),
         report.added_cells,
@@ -324,7 +340,7 @@ fn show_card(
     )
     .context("gcode")?;
     let clean = job.clean;
-    println!(
+    outln!(
         "\n{name} (voxel pop-up, Mitani, Suzuki & Uno 2003): {} × {} × {} voxels, pops up; {} creases and cuts; \
          grbl-diode/card-300gsm job {}; {name}.png and .gif show it standing and opening",
         card.nx(),

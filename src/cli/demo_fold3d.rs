@@ -51,7 +51,7 @@ pub fn miura(dir: &Path, width: u32) -> Result<()> {
         write_atomic(&path, &bytes).with_context(|| path.display().to_string())?;
     }
     let r = &f.report;
-    println!(
+    outln!(
         "\n{name}: miura-ori.svg read back and folded to {PERCENT}% in 3D ({} triangles, {} \
          steps, {:.2} s): largest bar strain {:.3}%, largest fold-angle error {:.1} deg, faces \
          {}; {name}.png and {name}.gif show it",

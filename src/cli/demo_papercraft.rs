@@ -39,7 +39,7 @@ pub fn vase(dir: &Path, width: u32) -> Result<()> {
         clean &= job.clean;
     }
     let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
-    println!(
+    outln!(
         "\npapercraft-vase (paper craft, Ōgaki 2016): {} gores with {tabs} glue tabs on {} A4 sheet(s), packed \
          on their shapes; {machine}/{material} cut {}; papercraft-vase-1.png shows the sheet",
         made.parts.len(),

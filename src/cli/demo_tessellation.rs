@@ -100,7 +100,7 @@ fn cut(
     let remeshed = t.remeshed.map_or(String::new(), |r| {
         format!(" (re-triangulated to {})", r.faces[1])
     });
-    println!(
+    outln!(
         "\n{name} (tessellation, Tachi 2014): {} faces{remeshed} -> {} triangles with {} tucks, \
          shrink {}, solved in {} iterations (developable to {:.0e} rad, folds <= {:.1} deg, \
          creases >= {:.1} deg apart){distance}; linuxcnc-fiber/stainless-0.5 perforation {}; \

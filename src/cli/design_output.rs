@@ -37,7 +37,13 @@ pub struct DesignOutput {
 }
 
 impl DesignOutput {
-    /// Stages `cp` as a pattern file at `path`, or as a machine job when --machine is given.
+    /// `-o` as a target ([`super::outputs::target`]: `-` is standard output).
+    pub fn target(&self) -> Result<PathBuf> {
+        super::outputs::target(&self.output)
+    }
+
+    /// Stages `cp` as a pattern file at `path` (`-`: standard output), or as a machine job
+    /// when --machine is given.
     pub fn stage_at(
         &self,
         outputs: &mut OutputSet,
@@ -45,8 +51,9 @@ impl DesignOutput {
         cp: &CreasePattern,
         folded: Option<&FoldedState>,
     ) -> Result<()> {
+        let path = &super::outputs::target(path)?;
         let Some(machine) = &self.machine else {
-            return super::input::stage(outputs, path, cp, folded);
+            return super::outputs::stage(outputs, path, cp, folded);
         };
         let Some(material) = &self.material else {
             bail!("--machine needs --material");
@@ -55,7 +62,7 @@ impl DesignOutput {
         let job = Job::plan_with(cp, &machine, &material, options)
             .with_context(|| path.display().to_string())?;
         super::cut::stage_job(outputs, path, &job, self.r12, self.dasharray)?;
-        print!("{}", super::plan::summary(&job.plan));
+        out!("{}", super::plan::summary(&job.plan));
         Ok(())
     }
 
@@ -80,7 +87,7 @@ pub fn built<T>(
         Ok(t) => Ok(Ok(t)),
         Err(foldcam::design::source::SourceError::NotMade { lines }) => {
             for line in lines {
-                println!("{line}");
+                outln!("{line}");
             }
             Ok(Err(super::Outcome::CheckFailed))
         }

@@ -246,7 +246,7 @@ impl PlanRequest {
         let (machine, material, options) = self.profiles.resolve(&self.fab)?;
         let pattern = load_pattern(&self.input, &self.frame, &self.scale)?;
         if let Some(w) = foldcam::check::layers::flat_fold_warning(&pattern) {
-            eprintln!("foldcam: warning: {}: {w}", self.input.display());
+            errln!("foldcam: warning: {}: {w}", self.input.display());
         }
         Ok(Loaded {
             machine,

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, anyhow};
 use foldcam::design::folding::{display_states, sheet_size, step_captions};
 use foldcam::design::source::{DesignFile, read_design_file, script};
-use foldcam::formats::OutputSet;
 use foldcam::formats::fold::write_string_frames;
+use foldcam::formats::{Format, OutputSet};
 use foldcam::render::{View3d, render_gif, step_sheet_png};
 
 use super::Outcome;
@@ -49,6 +49,13 @@ pub struct Args {
 /// Runs `foldcam fold`.
 pub fn run(args: Args) -> Result<Outcome> {
     let name = args.script.display().to_string();
+    let output = args.out.target()?;
+    let png = super::outputs::optional(args.png.as_ref())?;
+    let gif = super::outputs::optional(args.gif.as_ref())?;
+    super::outputs::check(
+        &[Some(&output), png.as_ref(), gif.as_ref()],
+        &[&args.script],
+    )?;
     let bytes = read_design_file(&args.script)?;
     let file = DesignFile {
         name: &args.script,
@@ -64,32 +71,32 @@ pub fn run(args: Args) -> Result<Outcome> {
     let shown = display_states(folding, sheet_size(folding) * 0.004);
     // Every output is made first and written together: a failure leaves all files as they were.
     let mut outputs = OutputSet::new();
-    if args.out.machine.is_some() {
+    if args.out.machine.is_some() || Format::from_path(&output) != Some(Format::Fold) {
         args.out.stage(&mut outputs, &design.sheet.pattern, None)?;
     } else {
         // The crease pattern with one folded frame per step.
         outputs.add(
-            &args.out.output,
+            &output,
             write_string_frames(&design.sheet.pattern, &design.states).into_bytes(),
         );
     }
-    if let Some(png) = &args.png {
+    if let Some(png) = &png {
         check_picture_size(shown.len(), view.width, "step sheet")?;
         let bytes = step_sheet_png(&shown, &step_captions(folding), &view)
             .with_context(|| png.display().to_string())?;
-        super::input::stage_image(&mut outputs, png, bytes, "png")?;
+        super::outputs::stage_image(&mut outputs, png, bytes, "png")?;
     }
-    if let Some(gif) = &args.gif {
+    if let Some(gif) = &gif {
         check_picture_size(shown.len(), view.width, "animation")?;
         let bytes =
             render_gif(&shown, &view, 700).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
-        super::input::stage_image(&mut outputs, gif, bytes, "gif")?;
+        super::outputs::stage_image(&mut outputs, gif, bytes, "gif")?;
     }
-    super::input::commit(outputs, &[&args.script])?;
+    super::outputs::commit(outputs, &[&args.script])?;
     for p in &design.warnings {
-        eprintln!("foldcam: {name}: warning: {p}");
+        errln!("foldcam: {name}: warning: {p}");
     }
-    println!(
+    outln!(
         "{} written to {}",
         design.summary,
         args.out.output.display()

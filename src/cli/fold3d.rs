@@ -1,18 +1,18 @@
 //! `foldcam fold3d PATTERN -o folded.fold`: fold any pattern in 3D with the compliant
 //! bar-and-hinge simulation (Ghassaei, Demaine & Gershenfeld 2018).
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Duration;
 
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, anyhow};
 use foldcam::check::fold3d::{Fold, FoldOptions, Stop, fold};
+use foldcam::formats::OutputSet;
 use foldcam::formats::fold::write_string;
-use foldcam::formats::write_atomic;
 use foldcam::render::heat_color;
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
-use super::input;
+use super::{input, outputs};
 
 /// Strain drawn red by `--strain` at least (the scale tops at the largest strain above it).
 const STRAIN_SCALE_MIN: f64 = 0.01;
@@ -38,7 +38,8 @@ const GIF_FRAMES: usize = 30;
                   Prints the largest strain and where it is, the largest fold-angle error and \
                   whether faces pass through each other (the simulation has no contact).\n\n\
                   Exit status: 0 settled, 1 stopped by the step or time cap before settling \
-                  (the files are still written), 2 bad input (nothing is written).",
+                  (the files are still written) or diverged (nothing is written), 2 bad input \
+                  (nothing is written).",
     after_help = "Examples:\n  foldcam generate miura -o miura.fold && foldcam fold3d miura.fold -o folded.fold --percent 90 --png folded.png\n  \
                   foldcam fold3d bird.cp -o bird3d.fold --percent 50 --gif bird.gif\n  \
                   foldcam fold3d tess.svg -o tess3d.fold --png tess3d.png --strain --steps 50000"
@@ -83,28 +84,19 @@ fn percent(s: &str) -> Result<f64, String> {
     }
 }
 
-fn require_extension(path: &Path, ext: &str, what: &str) -> Result<()> {
-    if !path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case(ext))
-    {
-        bail!(
-            "{}: {what} is written as .{ext}: use a .{ext} name",
-            path.display()
-        );
-    }
-    Ok(())
-}
-
 /// Runs `foldcam fold3d`.
 pub fn run(args: Args) -> Result<Outcome> {
-    require_extension(&args.output, "fold", "the folded form")?;
-    if let Some(p) = &args.png {
-        require_extension(p, "png", "the picture")?;
+    let output = outputs::target(&args.output)?;
+    let png = outputs::optional(args.png.as_ref())?;
+    let gif = outputs::optional(args.gif.as_ref())?;
+    outputs::require_extension(&output, "fold", "the folded form")?;
+    if let Some(p) = &png {
+        outputs::require_extension(p, "png", "the picture")?;
     }
-    if let Some(g) = &args.gif {
-        require_extension(g, "gif", "the animation")?;
+    if let Some(g) = &gif {
+        outputs::require_extension(g, "gif", "the animation")?;
     }
+    outputs::check(&[Some(&output), png.as_ref(), gif.as_ref()], &[&args.input])?;
     let name = args.input.display().to_string();
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, true)?;
@@ -113,23 +105,29 @@ pub fn run(args: Args) -> Result<Outcome> {
         percent: args.percent,
         max_steps: usize::try_from(args.steps).unwrap_or(usize::MAX),
         max_time: Duration::from_secs_f64(args.time_limit.min(1e6)),
-        frames: if args.gif.is_some() { GIF_FRAMES } else { 0 },
+        frames: if gif.is_some() { GIF_FRAMES } else { 0 },
         ..FoldOptions::default()
     };
     let bar = super::progress::spinner("folding");
     let result = fold(cp, &opts);
     bar.finish_and_clear();
     let result = result.map_err(|e| anyhow!("{name}: {e}"))?;
-    let mut outputs = vec![(
-        args.output.clone(),
-        write_string(cp, Some(&result.folded)).into_bytes(),
-    )];
+    if result.report.stop == Stop::Diverged {
+        print_report(&name, &result, input::unit_label(cp.units));
+        errln!(
+            "foldcam: {name}: the simulation diverged (its positions grew without bound): \
+             nothing written; a sheet this small or stiff may need a lower --percent"
+        );
+        return Ok(Outcome::CheckFailed);
+    }
+    let mut staged = OutputSet::new();
+    staged.add(&output, write_string(cp, Some(&result.folded)).into_bytes());
     let view = View3d {
         azimuth_deg: 30.0,
         elevation_deg: 35.0,
         ..View3d::with_width(args.width)
     };
-    if let Some(png) = &args.png {
+    if let Some(png) = &png {
         let mut v = view.clone();
         if args.strain {
             let r = &result.report;
@@ -138,19 +136,16 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
         let bytes =
             render_folded_png(&result.folded, &v).map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        outputs.push((png.clone(), bytes));
+        staged.add(png, bytes);
     }
-    if let Some(gif) = &args.gif {
+    if let Some(gif) = &gif {
         let mut states = vec![result.state_at(&result.model.rest)];
         states.extend(result.frames.iter().map(|x| result.state_at(x)));
         let bytes =
             render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
-        outputs.push((gif.clone(), bytes));
+        staged.add(gif, bytes);
     }
-    for (path, bytes) in &outputs {
-        write_atomic(path, bytes).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-        note!("foldcam: wrote {}", path.display());
-    }
+    outputs::commit(staged, &[&args.input])?;
     print_report(&name, &result, input::unit_label(cp.units));
     Ok(match result.report.stop {
         Stop::Settled => Outcome::Done,
@@ -167,10 +162,14 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
         Stop::TimeCap => "NOT settled: the time cap ran out".to_string(),
         Stop::Diverged => "NOT settled: the simulation diverged (last finite state kept)".into(),
     };
-    println!(
+    outln!(
         "{name}: folded to {}% with {} triangles in {} steps ({:.2} s), {stop}; residual force \
          {:.1e} EA",
-        r.percent, r.triangles, r.steps, r.seconds, r.residual
+        r.percent,
+        r.triangles,
+        r.steps,
+        r.seconds,
+        r.residual
     );
     let at = r
         .max_strain_at
@@ -183,9 +182,9 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
             )
         })
         .unwrap_or_default();
-    println!("  largest bar strain {:.3}%{at}", 100.0 * r.max_strain);
+    outln!("  largest bar strain {:.3}%{at}", 100.0 * r.max_strain);
     if r.max_strain > STRAIN_WARNING {
-        println!(
+        outln!(
             "  warning: the sheet stretches more than {:.0}% to fold: the pattern is not \
              foldable to these angles without bending its faces (strain concentrates around the \
              face named above)",
@@ -193,25 +192,25 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
         );
     }
     match r.max_angle_error_edge {
-        Some(e) => println!(
+        Some(e) => outln!(
             "  largest fold-angle error {:.2} deg at edge {} (target {:.1} deg, reached {:.1} deg)",
             r.max_angle_error_deg,
             e.index(),
             r.targets[e.index()].unwrap_or(0.0),
             r.fold_angles[e.index()].unwrap_or(0.0)
         ),
-        None => println!("  no crease with a target"),
+        None => outln!("  no crease with a target"),
     }
     if !r.wrong_sign.is_empty() {
-        println!(
+        outln!(
             "  {} crease(s) folded against their assignment (first: edge {})",
             r.wrong_sign.len(),
             r.wrong_sign[0].index()
         );
     }
     match r.crossing_faces.first() {
-        None => println!("  no faces pass through each other"),
-        Some((a, b)) => println!(
+        None => outln!("  no faces pass through each other"),
+        Some((a, b)) => outln!(
             "  faces pass through each other: {} pair(s), e.g. faces {} and {}",
             r.crossing_faces.len(),
             a.index(),

@@ -4,11 +4,11 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use foldcam::check::layers::{KawasakiTolerance, LayerOptions, LayerSolver, local_faults, refusal};
-use foldcam::formats::{self, write_atomic};
+use foldcam::formats;
 use foldcam::render::render_top_view_png;
 
 use super::Outcome;
-use super::input;
+use super::{input, outputs};
 
 /// Fold a crease pattern flat and write the folded state.
 #[derive(clap::Args)]
@@ -52,27 +52,33 @@ pub struct Args {
     /// crease by at most 1/300 of the pattern's shortest edge].
     #[arg(long, value_name = "DEG", value_parser = |s: &str| foldcam::limits::KAWASAKI_TOLERANCE.parse(s))]
     pub kawasaki_tolerance: Option<f64>,
+    /// Stop the layer-order search after this many seconds (exit 2, naming the limit;
+    /// nothing written).
+    #[arg(long, value_name = "SECONDS", value_parser = super::args::time_limit)]
+    pub time_limit: Option<f64>,
 }
 
 /// Folds and writes.
 pub fn run(args: Args) -> Result<Outcome> {
-    if formats::Format::from_path(&args.output) != Some(formats::Format::Fold) {
-        bail!(
-            "{}: the folded state is written as FOLD: use a .fold name",
-            args.output.display()
-        );
+    let output = outputs::target(&args.output)?;
+    let png_path = outputs::optional(args.png.as_ref())?;
+    outputs::require_extension(&output, "fold", "the folded state")?;
+    if let Some(p) = &png_path {
+        outputs::require_extension(p, "png", "the picture")?;
     }
+    outputs::check(&[Some(&output), png_path.as_ref()], &[&args.input])?;
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, true)?;
     let cp = &imported.pattern;
     let options = LayerOptions {
         max_states: Some(args.max_states.max(1)),
         kawasaki: KawasakiTolerance::from_degrees(args.kawasaki_tolerance),
+        time_limit: args.time_limit.map(std::time::Duration::from_secs_f64),
         ..LayerOptions::default()
     };
     let faults = local_faults(cp, options.kawasaki);
     if let Some(f) = faults.first_refusal() {
-        eprintln!(
+        errln!(
             "foldcam: {}: {}; nothing written",
             args.input.display(),
             refusal(f)
@@ -80,7 +86,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         return Ok(Outcome::CheckFailed);
     }
     if !faults.rounding.is_empty() {
-        eprintln!(
+        errln!(
             "foldcam: warning: {}: folded with {} Kawasaki error(s) within the drawing's \
              precision (largest {:.4}°; --kawasaki-tolerance sets a fixed one)",
             args.input.display(),
@@ -92,7 +98,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
     let report = solver.report();
     if let Some(c) = &report.contradiction {
-        eprintln!(
+        errln!(
             "foldcam: {}: {}; nothing written",
             args.input.display(),
             c.message
@@ -114,7 +120,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         );
     };
     // The top view searches the state again: only when a picture is asked for.
-    let png = match &args.png {
+    let png = match &png_path {
         Some(_) => {
             let view = solver.top_view(k).ok_or_else(|| {
                 anyhow::anyhow!("{}: no top view of state {k}", args.input.display())
@@ -126,12 +132,13 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
         None => None,
     };
-    input::save(&args.output, cp, Some(&folded))?;
-    if let (Some(path), Some(bytes)) = (&args.png, png) {
-        write_atomic(path, &bytes).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-        note!("foldcam: wrote {}", path.display());
+    let mut staged = formats::OutputSet::new();
+    outputs::stage(&mut staged, &output, cp, Some(&folded))?;
+    if let (Some(path), Some(bytes)) = (&png_path, png) {
+        staged.add(path, bytes);
     }
-    eprintln!(
+    outputs::commit(staged, &[&args.input])?;
+    errln!(
         "foldcam: {}: state {} of {}{}",
         args.input.display(),
         args.state,

@@ -104,14 +104,17 @@ pub fn build(args: &Args) -> Result<CreasePattern> {
 
 /// Generates and writes the pattern.
 pub fn run(args: Args) -> Result<Outcome> {
+    super::outputs::check(&[Some(args.out.target()?)], &[])?;
     let mut cp = build(&args)?;
     foldcam::design::classic::set_fold_angles(&mut cp, args.fold_angle);
-    if args.out.machine.is_none() {
-        super::input::save(&args.out.output, &cp, None)?;
-    } else {
-        let mut outputs = foldcam::formats::OutputSet::new();
-        args.out.stage(&mut outputs, &cp, None)?;
-        super::input::commit(outputs, &[])?;
-    }
+    let mut outputs = foldcam::formats::OutputSet::new();
+    args.out.stage(&mut outputs, &cp, None)?;
+    super::outputs::commit(outputs, &[])?;
+    note!(
+        "foldcam: {}: {} vertices, {} edges",
+        args.out.output.display(),
+        cp.vertices.len(),
+        cp.edges.len()
+    );
     Ok(Outcome::Done)
 }

@@ -4,9 +4,7 @@ use std::path::Path;
 
 use anyhow::{Result, bail};
 use foldcam::formats::{self, Imported};
-use foldcam::pattern::{
-    CreasePattern, FoldedState, PlanarizeOptions, PlanarizeReport, Units, planarize,
-};
+use foldcam::pattern::{PlanarizeOptions, PlanarizeReport, Units, planarize};
 
 /// Choosing a frame of a FOLD file, and how drawings (SVG, DXF) are read.
 #[derive(clap::Args, Clone, Debug, Default)]
@@ -52,8 +50,9 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
             path.display()
         );
     }
+    refuse_degenerate(path, &imported.pattern)?;
     for w in &imported.warnings {
-        eprintln!("foldcam: warning: {}: {w}", path.display());
+        errln!("foldcam: warning: {}: {w}", path.display());
     }
     for n in &imported.notes {
         note!("foldcam: {}: {n}", path.display());
@@ -90,7 +89,7 @@ pub fn clean(
     let report = planarize(&mut imported.pattern, &options)
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
     if report.assignment_conflicts > 0 {
-        eprintln!(
+        errln!(
             "foldcam: warning: {}: {} mountain and valley lines lie on top of each other; the \
              first of each pair was kept",
             path.display(),
@@ -98,12 +97,13 @@ pub fn clean(
         );
     }
     if !report.unchanged() && imported.folded.take().is_some() {
-        eprintln!(
+        errln!(
             "foldcam: warning: {}: the folded state was dropped: it does not match the cleaned \
              pattern",
             path.display()
         );
     }
+    refuse_degenerate(path, &imported.pattern)?;
     if !report.unchanged() {
         note!(
             "foldcam: {}: cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, \
@@ -119,83 +119,16 @@ pub fn clean(
     Ok(report)
 }
 
-/// Writes the pattern (and folded state) and says so on stderr.
-pub fn save(path: &Path, cp: &CreasePattern, folded: Option<&FoldedState>) -> Result<()> {
-    formats::save(path, cp, folded)?;
-    note!(
-        "foldcam: wrote {} ({} vertices, {} edges)",
-        path.display(),
-        cp.vertices.len(),
-        cp.edges.len()
-    );
-    Ok(())
-}
-
-/// Adds a pattern file (format from its extension) to `outputs`, written by [`commit`].
-pub fn stage(
-    outputs: &mut formats::OutputSet,
-    path: &Path,
-    cp: &CreasePattern,
-    folded: Option<&FoldedState>,
-) -> Result<()> {
-    outputs.add(path, formats::encode(path, cp, folded)?);
-    Ok(())
-}
-
-/// Adds an image to `outputs`, refusing a file name whose extension is not `ext` (so PNG data
-/// never lands in `x.jpg`).
-pub fn stage_image(
-    outputs: &mut formats::OutputSet,
-    path: &Path,
-    bytes: Vec<u8>,
-    ext: &str,
-) -> Result<()> {
-    let matches = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case(ext));
-    if !matches {
-        anyhow::bail!(
-            "{}: this output is a {} image: name it with the .{ext} extension",
-            path.display(),
-            ext.to_ascii_uppercase()
-        );
+/// Refuses a pattern without a sheet (see [`foldcam::pattern::Degenerate`]): nothing to
+/// check, fold, cut or convert.
+fn refuse_degenerate(path: &Path, cp: &foldcam::pattern::CreasePattern) -> Result<()> {
+    match cp.degeneracy() {
+        Some(why) => bail!(
+            "{}: {why}: nothing to check, fold, cut or convert",
+            path.display()
+        ),
+        None => Ok(()),
     }
-    outputs.add(path, bytes);
-    Ok(())
-}
-
-/// Writes every staged output, or none of them when one fails; refuses an output that is one
-/// of `inputs` (it would be overwritten before it is read again). Names each file written.
-pub fn commit(outputs: formats::OutputSet, inputs: &[&Path]) -> Result<()> {
-    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => false,
-    };
-    for out in outputs.paths() {
-        if let Some(input) = inputs.iter().find(|i| same(out, i)) {
-            anyhow::bail!(
-                "{}: the output would overwrite the input {}: choose another name",
-                out.display(),
-                input.display()
-            );
-        }
-    }
-    let mut outputs = outputs;
-    let stdout = outputs
-        .paths()
-        .find(|p| super::pipe::is_stdout(p))
-        .map(Path::to_path_buf);
-    let piped = stdout.and_then(|p| outputs.take(&p));
-    let written: Vec<std::path::PathBuf> = outputs.paths().map(Path::to_path_buf).collect();
-    outputs.commit()?;
-    for path in written {
-        note!("foldcam: wrote {}", path.display());
-    }
-    if let Some(bytes) = piped {
-        super::pipe::write_stdout(&bytes)?;
-    }
-    Ok(())
 }
 
 /// The unit label of a pattern for messages.

@@ -37,7 +37,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let entries = profile_catalogue(kind)?;
     let width = entries.iter().map(|e| e.name.len()).max().unwrap_or(0);
     for e in entries {
-        println!("{:width$}  {}  [{}]", e.name, e.description, e.source);
+        outln!("{:width$}  {}  [{}]", e.name, e.description, e.source);
     }
     Ok(Outcome::Done)
 }

@@ -1,6 +1,8 @@
 //! Command-line front end: argument parsing and one file per subcommand. Each subcommand
 //! returns an [`Outcome`] or an error; [`run`] prints errors as `foldcam: <file>: <problem>` and
-//! maps them to exit codes (0 done, 1 a check failed, 2 bad usage or input).
+//! maps them to exit codes (0 done, 1 a check failed, 2 bad usage or input, or results that
+//! could not be written to standard output). Every line goes through [`say`]'s writer; every
+//! file through [`outputs`].
 
 #[macro_use]
 mod say;
@@ -20,6 +22,7 @@ mod fold_flat;
 mod generate;
 mod input;
 mod list;
+mod outputs;
 mod papercraft;
 mod pipe;
 mod plan;
@@ -132,7 +135,7 @@ pub fn run() -> ExitCode {
     // A run stopped by Ctrl-C or SIGTERM leaves no temporary files behind and writes nothing.
     let _ = ctrlc::set_handler(|| {
         foldcam::formats::remove_pending_temporaries();
-        eprintln!("foldcam: interrupted; nothing more was written");
+        errln!("foldcam: interrupted; nothing more was written");
         std::process::exit(130);
     });
     let cli = Cli::parse();
@@ -161,16 +164,23 @@ pub fn run() -> ExitCode {
         Command::Man(a) => shell::man(a, Cli::command()),
     };
     if say::verbose() {
-        eprintln!("foldcam: took {:.2} s", started.elapsed().as_secs_f64());
+        errln!("foldcam: took {:.2} s", started.elapsed().as_secs_f64());
     }
+    // Results that did not reach standard output make the run fail, whatever the command said.
+    let result = match (result, say::finish()) {
+        (Ok(_), Err(e)) => Err(anyhow::anyhow!(
+            "standard output: {e}: the results were not all written"
+        )),
+        (result, _) => result,
+    };
     match result {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
         Ok(Outcome::CheckFailed) => ExitCode::from(1),
         Err(e) => {
-            eprintln!("foldcam: {}", message(&e));
+            errln!("foldcam: {}", message(&e));
             if say::verbose() {
                 for (i, cause) in e.chain().enumerate() {
-                    eprintln!("  cause {i}: {cause}");
+                    errln!("  cause {i}: {cause}");
                 }
             }
             ExitCode::from(2)

@@ -66,9 +66,10 @@ fn job_options(
     if args.out.fab.flat.is_none() {
         o.mapping.flat = label_operation(&m, &x);
         if o.mapping.flat.is_none() {
-            eprintln!(
+            errln!(
                 "foldcam: {} cannot mark {} (its mark power is 0): edge numbers left out",
-                m.name, x.name
+                m.name,
+                x.name
             );
         }
     }
@@ -95,6 +96,12 @@ fn sheet_path(path: &Path, sheet: usize) -> PathBuf {
 pub fn run(args: Args) -> Result<Outcome> {
     let path = &args.design;
     let err = |e: &dyn std::fmt::Display| anyhow!("{}: {e}", path.display());
+    let output = args.out.target()?;
+    let svg = super::outputs::optional(args.svg.as_ref())?;
+    let png = super::outputs::optional(args.png.as_ref())?;
+    let job = super::outputs::optional(args.job.as_ref())?;
+    let given = [Some(&output), svg.as_ref(), png.as_ref(), job.as_ref()];
+    super::outputs::check(&given, &[path])?;
     let bytes = read_design_file(path)?;
     let parsed = craft::parse(&DesignFile {
         name: path,
@@ -109,8 +116,13 @@ pub fn run(args: Args) -> Result<Outcome> {
         (Some(machine), Some(material)) => Some(job_options(&args, machine, material)?),
         _ => None,
     };
+    if made.made.sheets.len() > 1 {
+        for p in given.iter().flatten() {
+            super::outputs::no_stdout(p, "a design of several sheets")?;
+        }
+    }
     // The jobs go to --job, or to -o when there is no --job.
-    let job_path = args.job.as_ref().unwrap_or(&args.out.output);
+    let job_path = job.as_ref().unwrap_or(&output);
     let mut outputs = OutputSet::new();
     let mut plans = Vec::new();
     for (s, cp) in made.made.sheets.iter().enumerate() {
@@ -121,31 +133,31 @@ pub fn run(args: Args) -> Result<Outcome> {
             super::cut::stage_plan(&mut outputs, &sheet, &p, m, r12, dashes)?;
             plans.push(p);
         }
-        if profiles.is_none() || args.job.is_some() {
-            super::input::stage(&mut outputs, &sheet_path(&args.out.output, s), cp, None)?;
+        if profiles.is_none() || job.is_some() {
+            super::outputs::stage(&mut outputs, &sheet_path(&output, s), cp, None)?;
         }
-        if let Some(svg) = &args.svg {
-            super::input::stage(&mut outputs, &sheet_path(svg, s), cp, None)?;
+        if let Some(svg) = &svg {
+            super::outputs::stage(&mut outputs, &sheet_path(svg, s), cp, None)?;
         }
-        if let Some(png) = &args.png {
+        if let Some(png) = &png {
             let options = PreviewOptions {
                 width: args.width,
                 dark_flat: true,
                 ..PreviewOptions::default()
             };
             let bytes = preview_png(cp, &options, &[]).map_err(|e| err(&e))?;
-            super::input::stage_image(&mut outputs, &sheet_path(png, s), bytes, "png")?;
+            super::outputs::stage_image(&mut outputs, &sheet_path(png, s), bytes, "png")?;
         }
     }
-    super::input::commit(outputs, &[&args.design])?;
+    super::outputs::commit(outputs, &[&args.design])?;
     for p in &plans {
-        print!("{}", super::plan::summary(p));
+        out!("{}", super::plan::summary(p));
     }
     for line in &made.late_notes {
-        eprintln!("foldcam: {line}");
+        errln!("foldcam: {line}");
     }
     for line in &made.summary {
-        println!("{line}");
+        outln!("{line}");
     }
     Ok(Outcome::Done)
 }

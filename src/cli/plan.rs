@@ -24,9 +24,9 @@ pub struct Args {
 pub fn run(args: Args) -> Result<Outcome> {
     let (_, p) = args.request.plan()?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&p.stats)?);
+        outln!("{}", serde_json::to_string_pretty(&p.stats)?);
     } else {
-        print!("{}", summary(&p));
+        out!("{}", summary(&p));
     }
     Ok(Outcome::Done)
 }

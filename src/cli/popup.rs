@@ -78,6 +78,14 @@ pub fn run(command: Command) -> Result<Outcome> {
 }
 
 fn voxel(args: VoxelArgs) -> Result<Outcome> {
+    let output = args.out.target()?;
+    let png = super::outputs::optional(args.png.as_ref())?;
+    let gif = super::outputs::optional(args.gif.as_ref())?;
+    let voxels = super::outputs::optional(args.save_voxels.as_ref())?;
+    super::outputs::check(
+        &[Some(&output), png.as_ref(), gif.as_ref(), voxels.as_ref()],
+        &[&args.input],
+    )?;
     let bytes = read_design_file(&args.input)?;
     let file = DesignFile {
         name: &args.input,
@@ -97,18 +105,18 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     let mut outputs = OutputSet::new();
     card_previews(
         &mut outputs,
-        args.png.as_ref(),
-        args.gif.as_ref(),
+        png.as_ref(),
+        gif.as_ref(),
         args.width,
         |angle| design.fold_at(angle),
     )?;
-    if let Some(path) = &args.save_voxels {
+    if let Some(path) = &voxels {
         outputs.add(path, format_voxel_card(&design.card).into_bytes());
     }
     args.out.stage(&mut outputs, &design.pattern, None)?;
-    super::input::commit(outputs, &[&args.input])?;
+    super::outputs::commit(outputs, &[&args.input])?;
     for line in &design.summary {
-        println!("{line}");
+        outln!("{line}");
     }
     Ok(Outcome::Done)
 }
@@ -133,16 +141,16 @@ pub fn card_previews(
     if let Some(png) = png {
         let bytes =
             render_folded_png(&fold(90.0), &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        super::input::stage_image(outputs, png, bytes, "png")?;
+        super::outputs::stage_image(outputs, png, bytes, "png")?;
     }
     if let Some(gif) = gif {
-        eprintln!("foldcam: rendering 25 frames");
+        errln!("foldcam: rendering 25 frames");
         let states: Vec<_> = (0..=24)
             .map(|k| fold(5.0 + 85.0 * f64::from(k) / 24.0))
             .collect();
         let bytes =
             render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
-        super::input::stage_image(outputs, gif, bytes, "gif")?;
+        super::outputs::stage_image(outputs, gif, bytes, "gif")?;
     }
     Ok(())
 }

@@ -77,6 +77,7 @@ impl ModelArgs {
             window_gap: self.window_gap,
             thin_top: self.thin_top,
             fit,
+            ..VoxelOptions::default()
         }
     }
 }

@@ -50,6 +50,10 @@ pub struct PolyArgs {
 /// Runs `popup poly`.
 pub fn run(args: PolyArgs) -> Result<Outcome> {
     let path = &args.design;
+    let output = args.out.target()?;
+    let png = super::outputs::optional(args.png.as_ref())?;
+    let gif = super::outputs::optional(args.gif.as_ref())?;
+    super::outputs::check(&[Some(&output), png.as_ref(), gif.as_ref()], &[path])?;
     let bytes = read_design_file(path)?;
     let file = DesignFile {
         name: path,
@@ -65,15 +69,15 @@ pub fn run(args: PolyArgs) -> Result<Outcome> {
     let mut outputs = OutputSet::new();
     super::popup::card_previews(
         &mut outputs,
-        args.png.as_ref(),
-        args.gif.as_ref(),
+        png.as_ref(),
+        gif.as_ref(),
         args.width,
         |angle| design.fold_at(angle),
     )?;
     args.out.stage(&mut outputs, &design.pattern, None)?;
-    super::input::commit(outputs, &[path])?;
+    super::outputs::commit(outputs, &[path])?;
     for line in &design.summary {
-        println!("{line}");
+        outln!("{line}");
     }
     Ok(Outcome::Done)
 }

@@ -5,7 +5,6 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use foldcam::check::check_with_frame;
 use foldcam::check::layers::check_layers;
-use foldcam::formats::write_atomic;
 use foldcam::render::{PreviewOptions, preview_png};
 
 use super::Outcome;
@@ -44,7 +43,8 @@ pub struct Args {
 
 /// Renders the preview.
 pub fn run(args: Args) -> Result<Outcome> {
-    let output = super::pipe::output(&args.output)?;
+    let output = super::outputs::target(&args.output)?;
+    super::outputs::check(&[Some(&output)], &[&args.input])?;
     let is_png = output
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("png"));
@@ -63,15 +63,19 @@ pub fn run(args: Args) -> Result<Outcome> {
         if args.limits.layers {
             let layers = check_layers(cp, &mut report, &args.limits.layer_options())
                 .map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
-            eprint!("foldcam: {}: {}", args.input.display(), layers.to_text());
+            super::say::err(format_args!(
+                "foldcam: {}: {}",
+                args.input.display(),
+                layers.to_text()
+            ));
         }
-        eprintln!(
+        errln!(
             "foldcam: {}: {} fault(s) ringed, numbered as listed:",
             args.input.display(),
             report.findings.len()
         );
         for (i, f) in report.findings.iter().enumerate() {
-            eprintln!("  {}", foldcam::check::finding_line(i + 1, f));
+            errln!("  {}", foldcam::check::finding_line(i + 1, f));
         }
         report.findings
     } else {
@@ -83,12 +87,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     };
     let png = preview_png(cp, &options, &findings)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
-    if super::pipe::is_stdout(&output) {
-        super::pipe::write_stdout(&png)?;
-    } else {
-        write_atomic(&output, &png).map_err(|e| anyhow::anyhow!("{}: {e}", output.display()))?;
-        note!("foldcam: wrote {}", output.display());
-    }
+    super::outputs::write_one(&output, png, &[&args.input])?;
     Ok(if checked && !findings.is_empty() {
         Outcome::CheckFailed
     } else {

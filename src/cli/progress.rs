@@ -77,8 +77,8 @@ impl DesignProgress {
 impl foldcam::design::source::Progress for DesignProgress {
     fn note(&mut self, line: String) {
         match &self.bar {
-            Some(bar) => bar.suspend(|| eprintln!("foldcam: {line}")),
-            None => eprintln!("foldcam: {line}"),
+            Some(bar) => bar.suspend(|| errln!("foldcam: {line}")),
+            None => errln!("foldcam: {line}"),
         }
     }
 
@@ -114,9 +114,9 @@ impl foldcam::design::source::Progress for DesignProgress {
                     tracker.iteration(it, started.elapsed().as_secs_f64());
                     bar.set_message(tracker.status());
                 }
-                bar.suspend(|| eprintln!("{line}"));
+                bar.suspend(|| errln!("{line}"));
             }
-            None => eprintln!("{line}"),
+            None => errln!("{line}"),
         }
     }
 }

@@ -51,7 +51,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
     }
     if !args.host.is_loopback() {
-        eprintln!(
+        errln!(
             "foldcam: warning: serving on {}: other machines on the network can open the \
              studio and upload files to it (it has no login)",
             args.host
@@ -70,8 +70,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     studio::serve(config, |addr| {
         let url = format!("http://{addr}/");
         // The first line on stdout is the address (scripts and tests read it).
-        println!("foldcam studio: {url}");
-        eprintln!("foldcam: serving the studio at {url} (Ctrl-C stops it)");
+        outln!("foldcam studio: {url}");
+        errln!("foldcam: serving the studio at {url} (Ctrl-C stops it)");
         if open {
             open_browser(&url);
         }
@@ -89,6 +89,6 @@ fn open_browser(url: &str) {
         "xdg-open"
     };
     if let Err(e) = std::process::Command::new(opener).arg(url).spawn() {
-        eprintln!("foldcam: warning: could not open a browser ({opener}: {e}): open {url}");
+        errln!("foldcam: warning: could not open a browser ({opener}: {e}): open {url}");
     }
 }

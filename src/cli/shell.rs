@@ -58,6 +58,7 @@ pub fn man(args: ManArgs, command: clap::Command) -> Result<Outcome> {
             super::pipe::write_stdout(&page)?;
         }
         Some(dir) => {
+            super::outputs::no_stdout(&dir, "--dir, a folder of pages,")?;
             std::fs::create_dir_all(&dir).with_context(|| dir.display().to_string())?;
             clap_mangen::generate_to(command, &dir).with_context(|| dir.display().to_string())?;
             note!("foldcam: wrote the manual pages into {}", dir.display());

@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
 use foldcam::fab::plan;
-use foldcam::formats::write_atomic;
 use foldcam::machine::load_machine;
 use foldcam::sim::{self, CoverageReport, SimReport};
 
@@ -67,7 +66,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     // Burns and travels are kept only where they are used; otherwise the run streams the
     // file in memory independent of its length.
     let keep_moves = args.png.is_some() || args.pattern.is_some() || args.json;
-    let png = args.png.as_deref().map(super::pipe::output).transpose()?;
+    let png = super::outputs::optional(args.png.as_ref())?;
+    super::outputs::check(&[png.as_ref()], &[&args.job])?;
     let (source, size): (Box<dyn std::io::Read>, u64) = if super::pipe::is_stdio(&args.job) {
         (Box::new(std::io::stdin()), 0)
     } else {
@@ -90,12 +90,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     if let Some(png) = &png {
         let bytes = sim::render_png(&report, &machine, args.width)
             .map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        if super::pipe::is_stdout(png) {
-            super::pipe::write_stdout(&bytes)?;
-        } else {
-            write_atomic(png, &bytes).with_context(|| png.display().to_string())?;
-            note!("foldcam: wrote {}", png.display());
-        }
+        super::outputs::write_one(png, bytes, &[&args.job])?;
     }
     if args.json {
         let value = serde_json::json!({ "run": report, "coverage": coverage });

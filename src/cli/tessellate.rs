@@ -140,6 +140,13 @@ pub fn run(args: Args) -> Result<Outcome> {
         bail!("--max-iterations must be between 1 and {MAX_ITERATIONS}");
     }
     let (mesh_path, from_file) = design_or_mesh(&args)?;
+    let output = args.out.target()?;
+    let png = super::outputs::optional(args.png.as_ref())?;
+    let cp_png = super::outputs::optional(args.cp_png.as_ref())?;
+    super::outputs::check(
+        &[Some(&output), png.as_ref(), cp_png.as_ref()],
+        &[&args.mesh, &mesh_path],
+    )?;
     let mesh = read_mesh(&mesh_path).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
     let mut options = TessellationOptions::default();
     if let Some(name) = &args.out.material {
@@ -159,7 +166,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         Err(_) => &[],
     };
     for line in lines {
-        println!("{line}");
+        outln!("{line}");
     }
     let unfolded = match result {
         Ok(t) => t.unfolded,
@@ -176,15 +183,15 @@ pub fn run(args: Args) -> Result<Outcome> {
             &model,
             &model.targets_from(&unfolded.pattern),
             &opts,
-            |s, r| eprintln!("  rigid step {s:4}: loop-closure residual {r:.2e}"),
+            |s, r| errln!("  rigid step {s:4}: loop-closure residual {r:.2e}"),
         )?;
-        println!("{}", report.summary());
+        outln!("{}", report.summary());
     }
     // The pattern and its pictures are written together: all of them, or none.
     let mut outputs = OutputSet::new();
     args.out
         .stage(&mut outputs, &unfolded.pattern, Some(&unfolded.folded))?;
-    if let Some(png) = &args.png {
+    if let Some(png) = &png {
         let view = View3d {
             azimuth_deg: 30.0,
             elevation_deg: 35.0,
@@ -192,18 +199,18 @@ pub fn run(args: Args) -> Result<Outcome> {
         };
         let bytes = render_folded_png(&unfolded.folded, &view)
             .map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        super::input::stage_image(&mut outputs, png, bytes, "png")?;
+        super::outputs::stage_image(&mut outputs, png, bytes, "png")?;
     }
-    if let Some(png) = &args.cp_png {
+    if let Some(png) = &cp_png {
         let bytes = preview_png(
             &unfolded.pattern,
             &PreviewOptions::with_width(args.width),
             &[],
         )
         .map_err(|e| anyhow!("{}: {e}", png.display()))?;
-        super::input::stage_image(&mut outputs, png, bytes, "png")?;
+        super::outputs::stage_image(&mut outputs, png, bytes, "png")?;
     }
-    super::input::commit(outputs, &[&args.mesh, &mesh_path])?;
+    super::outputs::commit(outputs, &[&args.mesh, &mesh_path])?;
     Ok(Outcome::Done)
 }
 

@@ -104,6 +104,8 @@ pub struct Args {
 
 /// Builds, writes and describes the grid.
 pub fn run(args: Args) -> Result<Outcome> {
+    let output = super::outputs::target(&args.output)?;
+    super::outputs::check(&[Some(&output)], &[])?;
     let machine = load_machine(&args.machine)?;
     let material = load_material(&args.material)?;
     let mut opts = TestGridOptions::around(&material, &machine);
@@ -122,14 +124,14 @@ pub fn run(args: Args) -> Result<Outcome> {
     opts.label_mm = args.label_height;
     opts.margin_mm = args.margin;
     let grid = test_grid(&machine, &material, &opts)?;
-    super::cut::write_plan(&args.output, &grid.plan, &machine, args.r12, false)?;
-    println!(
+    super::cut::write_plan(&output, &grid.plan, &machine, args.r12, false)?;
+    outln!(
         "{} cells ({} mm creases): cell, dash mm, bridge mm, power %, speed mm/min",
         grid.cells.len(),
         short_number(opts.crease_mm)
     );
     for c in &grid.cells {
-        println!(
+        outln!(
             "  {:>3}  {:>6}  {:>6}  {:>5}  {:>7}",
             c.number,
             short_number(c.dash_mm),
@@ -138,7 +140,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             short_number(c.speed_mm_min)
         );
     }
-    println!(
+    outln!(
         "estimated time {:.1} s (the simulated machine's model)",
         grid.plan.stats.time_s
     );

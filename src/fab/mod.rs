@@ -274,6 +274,19 @@ impl PlanOptions {
         Ok(())
     }
 
+    /// Refuses a piece `size_mm` across (`what`: the pattern's longer side, a calibration
+    /// cell's width) smaller than the kerf: what `cut` and `testgrid` both check.
+    pub fn check_size(&self, what: &'static str, size_mm: f64) -> Result<(), FabError> {
+        if size_mm < self.kerf_mm {
+            return Err(FabError::SmallerThanKerf {
+                what,
+                size_mm,
+                kerf_mm: self.kerf_mm,
+            });
+        }
+        Ok(())
+    }
+
     /// Fits the operation mapping to `machine` and takes its resolution. A pen plotter draws what a laser would burn:
     /// scores and cuts become plots, marks stay marks (a second pen), perforations stay
     /// perforations (drawn as dashes); when mountains and valleys would share one operation,
@@ -378,6 +391,19 @@ pub enum FabError {
         option: &'static str,
         /// What is wrong with its value.
         message: String,
+    },
+    /// A piece to cut is smaller than the beam that cuts it.
+    #[error(
+        "{what} is {size_mm} mm across, smaller than the kerf of {kerf_mm} mm: cutting it would \
+         leave nothing but the kerf's width; make it larger (--size) or the kerf smaller (--kerf)"
+    )]
+    SmallerThanKerf {
+        /// What was measured (`the pattern`, `a calibration cell (--crease)`).
+        what: &'static str,
+        /// Its size, mm (the longer side of its bounding box).
+        size_mm: f64,
+        /// The kerf, mm.
+        kerf_mm: f64,
     },
     /// A geometric step failed (named).
     #[error("{step}: {message}")]

@@ -59,6 +59,8 @@ pub fn plan(
 ) -> Result<FabPlan, FabError> {
     cp.require_millimetres()?;
     opts.validate()?;
+    let size = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
+    opts.check_size("the pattern", size)?;
     let (paths, remarks) = geometry::toolpaths_with_warnings(cp, opts)?;
     let mut plan = plan_toolpaths(cp, paths, machine, material, opts)?;
     plan.warnings.extend(opts.notes.iter().cloned());

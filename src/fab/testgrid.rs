@@ -306,6 +306,7 @@ pub fn test_grid(
     };
     plan_opts.adapt_to_machine(machine)?;
     plan_opts.margin_mm = opts.margin_mm;
+    plan_opts.check_size("a calibration cell (--crease)", opts.crease_mm)?;
     let (w, h) = (opts.crease_mm, opts.cell_height());
     let per_row = (opts.dash_mm.len() * opts.bridge_mm.len()).max(1);
     let room = machine.bed.width_mm - 2.0 * opts.margin_mm + GAP_MM;
@@ -327,8 +328,8 @@ pub fn test_grid(
         let perf = &mut cell_opts.perforation;
         perf.cut_mm = dash;
         perf.bridge_mm = bridge;
-        perf.min_dash_mm = perf.min_dash_mm.min(dash);
-        perf.min_web_mm = perf.min_web_mm.min(bridge);
+        // As `cut` checks the material's perforation with its options laid over it.
+        perf.check_limits().map_err(FabError::from)?;
         let (cell_paths, remarks) = geometry::toolpaths_with_warnings(&cell, &cell_opts)?;
         let shift = pattern.edges.len();
         append(&mut pattern, &cell);

@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 
 use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions, planarize};
 
-pub use atomic::{OutputError, OutputSet, remove_pending_temporaries, write_atomic};
+pub use atomic::{OutputError, OutputSet, check_targets, remove_pending_temporaries, write_atomic};
 pub use options::{DashedAs, ReadOptions};
 pub use snap::SNAP_RELATIVE;
 

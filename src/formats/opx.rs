@@ -19,37 +19,54 @@ use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 /// Most lines read from one file.
 pub const MAX_LINES: usize = 10_000_000;
 
+/// Most XML nodes of one document (elements, text, attributes' owners): several per line of
+/// [`MAX_LINES`] lines, and far fewer than would exhaust memory.
+pub const MAX_NODES: u32 = 200_000_000;
+
+/// The class of a line object.
+const LINE_CLASS: &str = "oripa.OriLineProxy";
+
 const LINE_OBJECT: &str = "<object class=\"oripa.OriLineProxy\">";
 
-/// Parses an `.opx` document.
+/// Parses an `.opx` document with an XML parser (`roxmltree`): only `object` elements of
+/// class `oripa.OriLineProxy` are lines, so text in comments, CDATA sections, strings or
+/// attribute values never becomes a crease. Documents with a DTD are refused (ORIPA writes
+/// none, and entity definitions are how a small file expands into a large one).
 pub fn read_str(text: &str) -> Result<Imported, ParseError> {
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: false,
+        nodes_limit: MAX_NODES,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
+        let pos = e.pos();
+        ParseError::new(
+            format!("line {}, column {}", pos.row, pos.col),
+            format!("not a readable XML document: {e}"),
+        )
+    })?;
     let mut pattern = CreasePattern {
         units: Units::Unitless,
         ..CreasePattern::default()
     };
     let mut zero_length = 0;
-    let mut rest = text;
-    let mut index = 0;
-    while let Some(start) = rest.find(LINE_OBJECT) {
-        let body = &rest[start + LINE_OBJECT.len()..];
-        let end = body.find("</object>").ok_or_else(|| {
-            ParseError::new(format!("line object {index}"), "unterminated <object>")
-        })?;
-        let (kind, a, b) = parse_line(&body[..end])
-            .map_err(|m| ParseError::new(format!("line object {index}"), m))?;
+    let lines = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("object") && n.attribute("class") == Some(LINE_CLASS));
+    for (index, object) in lines.enumerate() {
+        let (kind, a, b) =
+            parse_line(object).map_err(|m| ParseError::new(format!("line object {index}"), m))?;
         if a == b {
             zero_length += 1;
-        } else {
-            if pattern.edges.len() >= MAX_LINES {
-                return Err(ParseError::new(
-                    format!("line object {index}"),
-                    format!("more than {MAX_LINES} lines, the most read"),
-                ));
-            }
-            pattern.add_segment(a, b, super::cp::assignment_of(kind));
+            continue;
         }
-        rest = &body[end..];
-        index += 1;
+        if pattern.edges.len() >= MAX_LINES {
+            return Err(ParseError::new(
+                format!("line object {index}"),
+                format!("more than {MAX_LINES} lines, the most read"),
+            ));
+        }
+        pattern.add_segment(a, b, super::cp::assignment_of(kind));
     }
     if pattern.edges.is_empty() {
         return Err(ParseError::new(
@@ -64,17 +81,17 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     super::finish_drawing(pattern, None, None, "lying", warnings)
 }
 
-/// Reads the properties of one line object (missing ones are 0).
-fn parse_line(body: &str) -> Result<(i64, DVec2, DVec2), String> {
+/// Reads the properties of one line object, its `<void property="…">` children (missing
+/// ones are 0).
+fn parse_line(object: roxmltree::Node<'_, '_>) -> Result<(i64, DVec2, DVec2), String> {
     let mut kind = 0;
     let mut c = [0.0f64; 4];
-    let mut rest = body;
-    while let Some(at) = rest.find("<void property=\"") {
-        let after = &rest[at + 16..];
-        let name_end = after.find('"').ok_or("unterminated property name")?;
-        let name = &after[..name_end];
-        let value_text = value_of(&after[name_end..])
-            .ok_or_else(|| format!("property {name:?} has no value"))?;
+    for property in object.children().filter(|n| n.has_tag_name("void")) {
+        let Some(name) = property.attribute("property") else {
+            continue;
+        };
+        let value_text =
+            value_of(property).ok_or_else(|| format!("property {name:?} has no value"))?;
         match name {
             "type" => {
                 kind = value_text
@@ -98,23 +115,17 @@ fn parse_line(body: &str) -> Result<(i64, DVec2, DVec2), String> {
             }
             _ => {}
         }
-        rest = &after[name_end..];
     }
     Ok((kind, DVec2::new(c[0], -c[1]), DVec2::new(c[2], -c[3])))
 }
 
-/// The text of the first `<int>`, `<double>` or `<float>` element.
-fn value_of(text: &str) -> Option<&str> {
-    let open = text.find('<')?;
-    let tag_start = &text[open + 1..];
-    let tag_end = tag_start.find('>')?;
-    let tag = &tag_start[..tag_end];
-    if !matches!(tag, "int" | "double" | "float" | "long") {
+/// The text of the property's first `<int>`, `<double>`, `<float>` or `<long>` element.
+fn value_of<'a>(property: roxmltree::Node<'a, '_>) -> Option<&'a str> {
+    let value = property.children().find(|n| n.is_element())?;
+    if !matches!(value.tag_name().name(), "int" | "double" | "float" | "long") {
         return None;
     }
-    let value = &tag_start[tag_end + 1..];
-    let close = value.find('<')?;
-    Some(value[..close].trim())
+    Some(value.text().unwrap_or("").trim())
 }
 
 /// Renders a pattern as an `.opx` document (types as in `.cp`: cuts written as boundaries,
@@ -167,11 +178,11 @@ mod tests {
     #[test]
     fn missing_properties_default_to_zero() {
         let text = format!(
-            "{LINE_OBJECT}<void property=\"type\"><int>2</int></void>\
+            "<java>{LINE_OBJECT}<void property=\"type\"><int>2</int></void>\
              <void property=\"x1\"><double>10.0</double></void></object>\
              {LINE_OBJECT}<void property=\"type\"><int>1</int></void>\
              <void property=\"x0\"><double>10.0</double></void>\
-             <void property=\"y1\"><double>-5.0</double></void></object>"
+             <void property=\"y1\"><double>-5.0</double></void></object></java>"
         );
         let cp = read_str(&text).expect("parses").pattern;
         assert_eq!(cp.edges.len(), 2);
@@ -212,10 +223,38 @@ mod tests {
 
     #[test]
     fn bad_numbers_are_named() {
-        let text =
-            format!("{LINE_OBJECT}<void property=\"x0\"><double>abc</double></void></object>");
+        let text = format!(
+            "<java>{LINE_OBJECT}<void property=\"x0\"><double>abc</double></void></object></java>"
+        );
         let err = read_str(&text).expect_err("refused");
         assert!(err.to_string().contains("x0"), "{err}");
         assert!(read_str("<java></java>").is_err());
+    }
+
+    #[test]
+    fn lines_in_comments_cdata_and_strings_are_not_creases() {
+        let line = |t: i32, x: f64| {
+            format!(
+                "{LINE_OBJECT}<void property=\"type\"><int>{t}</int></void>\
+                 <void property=\"x1\"><double>{x}</double></void></object>"
+            )
+        };
+        let text = format!(
+            "<?xml version=\"1.0\"?><java><!-- {} --><string><![CDATA[{}]]></string>\
+             <string>{}</string>{}</java>",
+            line(2, 5.0),
+            line(3, 6.0),
+            line(2, 7.0).replace('<', "&lt;"),
+            line(1, 10.0)
+        );
+        let cp = read_str(&text).expect("parses").pattern;
+        assert_eq!(cp.edges.len(), 1);
+        assert_eq!(cp.edges[0].assignment, Assignment::Boundary);
+        let dtd = format!(
+            "<!DOCTYPE java [<!ENTITY a \"x\">]><java>{}</java>",
+            line(2, 1.0)
+        );
+        let err = read_str(&dtd).expect_err("a DTD is refused");
+        assert!(err.message.contains("not a readable XML document"), "{err}");
     }
 }

@@ -12,6 +12,7 @@ mod assignment;
 mod crease_pattern;
 pub mod edit;
 mod error;
+mod extent;
 pub(crate) mod faces;
 mod folded;
 mod ids;
@@ -25,6 +26,7 @@ pub use crease_pattern::{
     CreasePattern, Edge, Face, MAX_COORDINATE, Metadata, UnitlessError, Units,
 };
 pub use error::PatternError;
+pub use extent::Degenerate;
 pub use faces::find_faces;
 pub use folded::FoldedState;
 pub use ids::{EdgeId, FaceId, VertexId};

@@ -201,7 +201,7 @@ impl Studio {
 /// An API error: an HTTP status and the message `foldcam` would print.
 #[derive(Debug)]
 pub struct ApiError {
-    status: StatusCode,
+    pub(super) status: StatusCode,
     message: String,
 }
 
@@ -553,6 +553,9 @@ async fn layers(
         let options = LayerOptions {
             max_states: Some(LAYER_MAX_STATES),
             kawasaki,
+            time_limit: Some(std::time::Duration::from_secs(
+                crate::limits::STUDIO_LAYER_SECONDS,
+            )),
             ..LayerOptions::default()
         };
         let outcome = check_layers(&c.pattern, &mut report, &options)

@@ -70,6 +70,9 @@ pub fn flat_view(
     let options = LayerOptions {
         max_states: Some(MAX_STATES),
         kawasaki,
+        time_limit: Some(std::time::Duration::from_secs(
+            crate::limits::STUDIO_LAYER_SECONDS,
+        )),
         ..LayerOptions::default()
     };
     let solver = LayerSolver::new(&cp, &options).map_err(|e| format!("{name}: {e}"))?;

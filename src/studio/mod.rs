@@ -18,6 +18,7 @@
 
 pub(crate) mod api;
 pub(crate) mod assets;
+mod budget;
 mod craft_api;
 pub(crate) mod design_open;
 pub(crate) mod document;

@@ -39,6 +39,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
 use super::api::{ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened};
+use super::budget;
 use super::design_open::message;
 use super::document::Document;
 use super::edit_api::json_body;
@@ -533,6 +534,16 @@ async fn solve(
     let mesh = tess.mesh(id)?;
     let request: SolveRequest = json_body(body, "solve")?;
     let options = request.options().map_err(ApiError::input)?;
+    // The solve's memory, by the solver's estimate for its largest triangulation, held until
+    // the job ends.
+    let faces = options
+        .remesh_faces
+        .unwrap_or(0)
+        .max(mesh.mesh.faces().len());
+    let memory = budget::reserve(
+        &format!("{}: the solve", mesh.name),
+        solve_estimate(faces).bytes as u64,
+    )?;
     let job = Arc::new(Job {
         mesh,
         options,
@@ -548,7 +559,10 @@ async fn solve(
     });
     let job_id = tess.add_job(Arc::clone(&job));
     // Not awaited: the page polls the job.
-    tokio::task::spawn_blocking(move || run_job(&job));
+    tokio::task::spawn_blocking(move || {
+        run_job(&job);
+        drop(memory);
+    });
     Ok(Json(json!({ "job": job_id })))
 }
 

@@ -30,9 +30,10 @@ use super::api::{
     ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_body,
     upload_name,
 };
-use super::design_open;
 use super::edit_api::json_body;
 use super::sessions::Sessions;
+use super::{budget, design_open};
+use crate::design::popup::voxel::estimate as conversion_estimate;
 use crate::design::popup::voxel::surface::Surface;
 use crate::design::popup::voxel::{
     CardVerdict, EditChange, PatternCell, VoxelCard, VoxelEdit, VoxelFace, apply_edit,
@@ -41,6 +42,7 @@ use crate::design::popup::voxel::{
 use crate::design::source::voxel::{VoxelOptions, load_card};
 use crate::design::source::{DesignFile, DesignKind, MeshUse, SourceError};
 use crate::geom::triangulate::triangulate_polygon;
+use crate::limits::{STUDIO_BYTES_PER_PATTERN_CELL, STUDIO_VOXEL_PATTERN_CELLS};
 
 /// Most voxel sessions kept at once; the oldest is dropped first.
 pub const MAX_VOXEL_SESSIONS: usize = 16;
@@ -239,6 +241,7 @@ struct CardView {
 
 fn card_view(id: u64, s: &Session, change: Option<EditChange>) -> ApiResult<CardView> {
     let card = s.card();
+    let _memory = card_memory(&s.name, card)?;
     let verdict = card_verdict(card)
         .map_err(|e| ApiError::input(format!("{}: the crease pattern: {e}", s.name)))?;
     let per_row = |f: &dyn Fn(usize, usize) -> bool| -> Vec<Vec<bool>> {
@@ -293,11 +296,32 @@ fn start(voxels: &Voxels, name: String, card: VoxelCard) -> ApiResult<Json<CardV
     Ok(Json(card_view(id, &s, None)?))
 }
 
+/// Refuses a card of `nx × ny × nz` cells beyond [`STUDIO_VOXEL_PATTERN_CELLS`] pattern
+/// cells; otherwise its pattern cells.
+fn card_cells(what: &str, [nx, ny, nz]: [usize; 3]) -> ApiResult<u64> {
+    let cells = nx.saturating_mul(ny.saturating_add(nz));
+    if cells > STUDIO_VOXEL_PATTERN_CELLS {
+        return Err(ApiError::input(format!(
+            "{what}: a card of {nx} × {ny} × {nz} cells has a crease pattern of {cells} cells, \
+             more than the {STUDIO_VOXEL_PATTERN_CELLS} the studio edits: make it smaller, or \
+             build it with `foldcam popup voxel`"
+        )));
+    }
+    Ok(cells as u64)
+}
+
+/// Reserves the memory of a reply on `card` (its verdict and view, [`budget`]).
+fn card_memory(what: &str, card: &VoxelCard) -> ApiResult<budget::Reservation> {
+    let cells = card_cells(what, [card.nx(), card.ny(), card.nz()])?;
+    budget::reserve(what, cells * STUDIO_BYTES_PER_PATTERN_CELL)
+}
+
 async fn new_card(
     State(voxels): State<Arc<Voxels>>,
     body: Result<Bytes, BytesRejection>,
 ) -> ApiResult<Json<CardView>> {
     let q: NewCard = json_body(body, "new card")?;
+    card_cells("new card", [q.nx, q.ny, q.nz])?;
     blocking(move || {
         let mut card = VoxelCard::new(q.nx, q.ny, q.nz, q.cell_mm)
             .map_err(|e| ApiError::input(format!("new card: {e}")))?;
@@ -334,6 +358,7 @@ impl LoadQuery {
             morphology: self.morphology.unwrap_or(d.morphology),
             windows: self.windows.unwrap_or(d.windows),
             thin_top: self.thin_top.unwrap_or(d.thin_top),
+            max_pattern_cells: STUDIO_VOXEL_PATTERN_CELLS,
             ..d
         };
         options
@@ -352,7 +377,16 @@ async fn load(
     let name = upload_name(&q.name);
     let options = q.options()?;
     let body = upload_body(&name, body)?;
+    // The conversion of a mesh or height map into a card of at most the largest size the
+    // studio edits (`max_pattern_cells`), by the conversion's own estimate of its memory.
+    let converting = budget::reserve(
+        &name,
+        (conversion_estimate::BASE_BYTES
+            + conversion_estimate::BYTES_PER_PATTERN_CELL * STUDIO_VOXEL_PATTERN_CELLS as f64)
+            as u64,
+    )?;
     blocking(move || {
+        let converting = converting;
         let path = std::path::PathBuf::from(&name);
         let file = DesignFile {
             name: &path,
@@ -365,6 +399,7 @@ async fn load(
         };
         let mut notes: Vec<String> = Vec::new();
         let card = load_card(&file, mesh.as_ref(), &options, &mut notes).map_err(fail)?;
+        drop(converting);
         start(&voxels, name, card)
     })
     .await

@@ -161,7 +161,8 @@ pub enum Stop {
     StepCap,
     /// [`FoldOptions::max_time`] ran out.
     TimeCap,
-    /// A position stopped being finite (the last finite state is kept).
+    /// A position stopped being finite or left ±[`crate::limits::MAX_COORDINATE`] (the last
+    /// state within them is kept).
     Diverged,
 }
 

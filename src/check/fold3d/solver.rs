@@ -132,9 +132,12 @@ impl<'m> Solver<'m> {
         self.hinge_out.iter().map(|h| h.angle).collect()
     }
 
-    /// Whether every position is finite.
+    /// Whether every position is finite and within [`crate::limits::MAX_COORDINATE`] (a
+    /// state beyond it has blown up, and no reader would accept it).
     pub fn finite(&self) -> bool {
-        self.positions.iter().all(|p| p.is_finite())
+        self.positions
+            .iter()
+            .all(|p| p.is_finite() && p.abs().max_element() <= crate::limits::MAX_COORDINATE)
     }
 
     /// Per-vertex masses that make a unit time step stable (see the module docs).

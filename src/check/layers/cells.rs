@@ -9,7 +9,9 @@
 
 use glam::DVec2;
 
+use super::LayerError;
 use super::folded::FoldedFaces;
+use crate::clock::Deadline;
 use crate::geom::DisjointSets;
 use crate::pattern::faces::find_faces;
 use crate::pattern::{Assignment, CreasePattern, PlanarizeOptions, VertexId, planarize};
@@ -120,7 +122,12 @@ const STABLE_REPEATS: usize = 3;
 /// distance (extra cells and constraints, and a false contradiction in Hashimoto's Venusaur). Creases of different faces that fold onto one line differ by the rounding of
 /// the file's coordinates (often single precision); left apart they cross at a very small
 /// angle at places that move with every merge distance, and the arrangement never settles.
-fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
+/// `None` when `deadline` passes first.
+fn snap_to_common_lines(
+    segments: &[[DVec2; 2]],
+    tol: f64,
+    deadline: &Deadline,
+) -> Option<Vec<[DVec2; 2]>> {
     let n = segments.len();
     let boxes: Vec<(DVec2, DVec2)> = segments
         .iter()
@@ -148,6 +155,9 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
     };
     let mut groups = DisjointSets::new(n);
     for i in 0..n {
+        if deadline.passed() {
+            return None;
+        }
         let (lo, hi) = boxes[i];
         let mut close = Vec::new();
         grid.near(lo, hi, |j| {
@@ -253,8 +263,11 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
     for (slot, pieces) in pieces_at {
         out.splice(slot..=slot, pieces);
     }
-    out
+    Some(out)
 }
+
+/// The deadline of an arrangement passed before it was done.
+struct TimedOut;
 
 /// The folded edges cut into a planar graph, and the merge distance chosen for it.
 ///
@@ -263,15 +276,19 @@ fn snap_to_common_lines(segments: &[[DVec2; 2]], tol: f64) -> Vec<[DVec2; 2]> {
 /// the largest distance of that stable run is used (when no run gets that long before
 /// `floor`, the largest distance of the first longest run). Coordinates written to single precision
 /// by other tools then still meet where they should, and fine details are not merged away.
-/// `floor` is the smallest distance tried.
-fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePattern, f64)> {
+/// `floor` is the smallest distance tried. `Err` when `deadline` passes first.
+fn planar_sheet(
+    segments: &[Option<[DVec2; 2]>],
+    floor: f64,
+    deadline: &Deadline,
+) -> Result<Option<(CreasePattern, f64)>, TimedOut> {
     let segments: Vec<[DVec2; 2]> = segments.iter().flatten().copied().collect();
     let raw = |tol: f64| {
         let mut raw = CreasePattern::new();
-        for s in snap_to_common_lines(&segments, tol) {
+        for s in snap_to_common_lines(&segments, tol, deadline).ok_or(TimedOut)? {
             raw.add_segment(s[0], s[1], Assignment::Boundary);
         }
-        raw
+        Ok(raw)
     };
     let shortest = segments
         .iter()
@@ -279,7 +296,7 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
         .filter(|&d| d > 0.0)
         .fold(f64::MAX, f64::min);
     if shortest == f64::MAX {
-        return None;
+        return Ok(None);
     }
     // The current run of equal counts (its coarsest sheet, counts, length) and the longest
     // run met so far (the first of that length).
@@ -293,7 +310,7 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
         if tol < floor {
             break;
         }
-        let mut sheet = raw(tol);
+        let mut sheet = raw(tol)?;
         let options = PlanarizeOptions {
             tolerance: Some(tol),
             faces: false,
@@ -317,18 +334,34 @@ fn planar_sheet(segments: &[Option<[DVec2; 2]>], floor: f64) -> Option<(CreasePa
             }
         }
     }
-    best
+    Ok(best)
 }
 
 /// Builds the arrangement of `folded` (the folded form of `cp`); `floor` is the smallest merge
 /// distance tried (see [`planar_sheet`]). Returns the arrangement and the distance used.
 pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrangement, f64) {
+    match arrange_by(cp, folded, floor, &Deadline::after(None)) {
+        Ok(done) => done,
+        // Without a time limit the deadline never passes.
+        Err(_) => (Arrangement::default(), floor),
+    }
+}
+
+/// [`arrange`], giving up when `deadline` passes.
+pub(crate) fn arrange_by(
+    cp: &CreasePattern,
+    folded: &FoldedFaces,
+    floor: f64,
+    deadline: &Deadline,
+) -> Result<(Arrangement, f64), LayerError> {
     let segments = folded_segments(cp, folded);
-    let Some((sheet, tol)) = planar_sheet(&segments, floor) else {
-        return (Arrangement::default(), floor);
+    let planar = planar_sheet(&segments, floor, deadline)
+        .map_err(|TimedOut| LayerError::out_of_time(deadline, "arranging the folded layers"))?;
+    let Some((sheet, tol)) = planar else {
+        return Ok((Arrangement::default(), floor));
     };
     if sheet.edges.is_empty() {
-        return (Arrangement::default(), tol);
+        return Ok((Arrangement::default(), tol));
     }
     let traced = find_faces(&sheet);
     let mut arr = Arrangement::default();
@@ -379,7 +412,7 @@ pub fn arrange(cp: &CreasePattern, folded: &FoldedFaces, floor: f64) -> (Arrange
         arr.segment_edges.push(along);
     }
     arr.cell_faces = coverage(cp, folded, &arr, tol);
-    (arr, tol)
+    Ok((arr, tol))
 }
 
 /// Largest difference between a face's area and the area of the cells its flood fill
@@ -587,7 +620,8 @@ mod tests {
             [p(2.5, 0.0), p(1.5, 0.0)],
             [p(1.2, -1.0), p(1.2, 1.0)],
         ];
-        let out = snap_to_common_lines(&segments, 1e-6);
+        let out = snap_to_common_lines(&segments, 1e-6, &crate::clock::Deadline::after(None))
+            .expect("no limit");
         // The cross stroke is left as it is.
         assert!(out.contains(&segments[3]));
         let mut pieces: Vec<(f64, f64)> = out
@@ -612,7 +646,8 @@ mod tests {
     fn separate_stretches_of_one_line_leave_their_gap_open() {
         let p = |x: f64| DVec2::new(x, 0.0);
         let segments = [[p(0.0), p(2.0)], [p(1.0), p(1.5)], [p(3.0), p(4.0)]];
-        let out = snap_to_common_lines(&segments, 1e-6);
+        let out = snap_to_common_lines(&segments, 1e-6, &crate::clock::Deadline::after(None))
+            .expect("no limit");
         // The first two overlap and are one group; the third only shares their line.
         assert!(out.contains(&segments[2]));
         assert!(

@@ -22,6 +22,7 @@ use std::collections::HashSet;
 use super::LayerError;
 use super::cells::Arrangement;
 use super::folded::FoldedFaces;
+use crate::clock::Deadline;
 use crate::pattern::{Assignment, CreasePattern};
 
 /// The four kinds of constraint, in report order.
@@ -65,7 +66,7 @@ pub struct Constraint {
 /// Most transitivity triples generated before the problem is refused as too large: about
 /// 48 bytes each with the solver's rows (3.8 GB at the limit). Imai's Shrimp v2 has 67.5
 /// million (Flat-Folder's count).
-pub const MAX_TRIPLES: usize = 80_000_000;
+pub const MAX_TRIPLES: usize = crate::limits::MAX_LAYER_TRIPLES;
 
 /// The constraint system of one folded form.
 #[derive(Clone, Debug, Default)]
@@ -166,6 +167,7 @@ pub fn build(
     cp: &CreasePattern,
     folded: &FoldedFaces,
     arr: &Arrangement,
+    deadline: &Deadline,
 ) -> Result<System, LayerError> {
     let maximal = maximal_cells(arr);
     let mut sys = System {
@@ -173,7 +175,13 @@ pub fn build(
         ..Default::default()
     };
     edge_constraints(cp, folded, arr, &mut sys);
-    transitivity(arr, &maximal, &mut sys)?;
+    if deadline.passed() {
+        return Err(LayerError::out_of_time(
+            deadline,
+            "building the constraints",
+        ));
+    }
+    transitivity(arr, &maximal, &mut sys, deadline)?;
     for (e, edge) in cp.edges.iter().enumerate() {
         let [Some(f), Some(g)] = folded.edge_faces[e] else {
             continue;
@@ -263,7 +271,12 @@ fn face_cells(cells: &[&[u32]]) -> (Vec<Vec<u32>>, usize) {
 /// pair: for each overlapping pair `a < b`, the faces `c > b` of the maximal cells that hold
 /// both (marks instead of a sort of every triple met, which repeats each triple once per cell
 /// that holds it). Listed in ascending order of `(a, b, c)`.
-fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result<(), LayerError> {
+fn transitivity(
+    arr: &Arrangement,
+    maximal: &[bool],
+    sys: &mut System,
+    deadline: &Deadline,
+) -> Result<(), LayerError> {
     let mut seen: HashSet<&[u32]> = HashSet::new();
     let cells: Vec<&[u32]> = arr
         .cell_faces
@@ -273,6 +286,7 @@ fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result
         .map(|(_, faces)| faces.as_slice())
         .filter(|faces| seen.insert(faces))
         .collect();
+    check_stack(cells.iter().map(|c| c.len()).max().unwrap_or(0))?;
     let (face_cells, n_faces) = face_cells(&cells);
     // The variables of each face's pairs with higher faces are one run of `pairs`: where each
     // run starts, and the variable of `(a, c)` for every `c` of the current face `a`.
@@ -345,6 +359,12 @@ fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result
             }
             found.push([i as u32, ac, bc]);
         }
+        if deadline.passed() {
+            return Err(LayerError::out_of_time(
+                deadline,
+                "building the transitivity constraints",
+            ));
+        }
         if found.len() > MAX_TRIPLES {
             return Err(LayerError::TooLarge {
                 what: "transitivity constraints",
@@ -355,6 +375,22 @@ fn transitivity(arr: &Arrangement, maximal: &[bool], sys: &mut System) -> Result
     }
     sys.counts[Kind::Transitivity as usize] = found.len();
     sys.triples = found;
+    Ok(())
+}
+
+/// Refuses a stack of `layers` faces over one place whose transitivity constraints alone
+/// (every three of its faces) pass [`MAX_TRIPLES`]: the limit would be passed, and this is
+/// known before any constraint is written out (or, from the folded form, before the overlay).
+pub fn check_stack(layers: usize) -> Result<(), LayerError> {
+    let k = layers as u128;
+    let least = k * k.saturating_sub(1) * k.saturating_sub(2) / 6;
+    if least > MAX_TRIPLES as u128 {
+        return Err(LayerError::TooLarge {
+            what: "transitivity constraints at least (from its deepest stack of layers alone)",
+            count: usize::try_from(least).unwrap_or(usize::MAX),
+            limit: MAX_TRIPLES,
+        });
+    }
     Ok(())
 }
 

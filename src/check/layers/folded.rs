@@ -44,6 +44,61 @@ impl FoldedFace {
     }
 }
 
+impl FoldedFace {
+    /// True when `p` lies inside the face farther than `tol` from its every outline.
+    fn holds_clearly(&self, p: DVec2, tol: f64) -> bool {
+        self.contains(p)
+            && std::iter::once(&self.outer)
+                .chain(&self.holes)
+                .flat_map(|ring| ring_pairs_of(ring))
+                .all(|(a, b)| crate::geom::segment::distance_to_point(a, b, p) > tol)
+    }
+}
+
+/// The sides of a closed ring of points.
+fn ring_pairs_of(ring: &[DVec2]) -> impl Iterator<Item = (DVec2, DVec2)> + '_ {
+    (0..ring.len()).map(move |i| (ring[i], ring[(i + 1) % ring.len()]))
+}
+
+/// Faces whose folded centre is tried by [`FoldedFaces::deepest_stack_at_least`].
+pub const STACK_SAMPLES: usize = 64;
+
+impl FoldedFaces {
+    /// A lower bound on the most layers stacked over one point of the folded form: at the
+    /// centre of up to [`STACK_SAMPLES`] faces spread over the pattern, the faces holding it
+    /// farther from their outlines than `tol` and than a quarter of the shortest folded side
+    /// (twice the largest merge distance of the arrangement, [`super::cells::arrange`]), so
+    /// that the point lies in one cell of the arrangement with all of them. Cheap beside the
+    /// arrangement: it needs no overlay.
+    pub fn deepest_stack_at_least(&self, tol: f64) -> usize {
+        let shortest = self
+            .faces
+            .iter()
+            .flat_map(|f| ring_pairs_of(&f.outer))
+            .map(|(a, b)| a.distance(b))
+            .filter(|&d| d > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        let tol = tol.max(shortest / 4.0);
+        if !tol.is_finite() {
+            return 0;
+        }
+        let n = self.faces.len();
+        let step = n.div_ceil(STACK_SAMPLES).max(1);
+        (0..n)
+            .step_by(step)
+            .map(|i| {
+                let ring = &self.faces[i].outer;
+                let centre = ring.iter().copied().sum::<DVec2>() / ring.len().max(1) as f64;
+                self.faces
+                    .iter()
+                    .filter(|f| f.holds_clearly(centre, tol))
+                    .count()
+            })
+            .max()
+            .unwrap_or(0)
+    }
+}
+
 /// The folded form of a pattern: faces placed, edges' neighbouring faces, folded vertices.
 #[derive(Clone, Debug)]
 pub struct FoldedFaces {

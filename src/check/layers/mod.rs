@@ -33,6 +33,7 @@ mod verdict;
 use glam::DVec2;
 use serde::Serialize;
 
+use crate::clock::Deadline;
 use crate::pattern::faces::find_faces;
 use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState, VertexId};
 pub use cells::arrange;
@@ -84,6 +85,9 @@ pub struct LayerOptions {
     /// How much Kawasaki error the local check run first lets through as rounding (by
     /// default fitted to the drawing, see [`rounding`]).
     pub kawasaki: KawasakiTolerance,
+    /// Stop with [`LayerError::TimeLimit`] when arranging the folded layers, building the
+    /// constraints and counting take longer than this; `None` has no limit.
+    pub time_limit: Option<std::time::Duration>,
 }
 
 impl Default for LayerOptions {
@@ -92,6 +96,7 @@ impl Default for LayerOptions {
             max_states: None,
             relative_tolerance: RELATIVE_TOLERANCE,
             kawasaki: KawasakiTolerance::Fitted,
+            time_limit: None,
         }
     }
 }
@@ -129,6 +134,27 @@ pub enum LayerError {
         /// The limit.
         limit: usize,
     },
+    /// The work ran past [`LayerOptions::time_limit`].
+    #[error(
+        "the layer order search stopped at its time limit of {seconds} s while {stage}: raise \
+         --time-limit, or check a part of the pattern"
+    )]
+    TimeLimit {
+        /// The limit, seconds.
+        seconds: f64,
+        /// What was under way.
+        stage: &'static str,
+    },
+}
+
+impl LayerError {
+    /// [`LayerError::TimeLimit`] of `deadline` while `stage`.
+    pub(crate) fn out_of_time(deadline: &Deadline, stage: &'static str) -> LayerError {
+        LayerError::TimeLimit {
+            seconds: deadline.limit().unwrap_or_default().as_secs_f64(),
+            stage,
+        }
+    }
 }
 
 /// Numbers of constraints by kind.
@@ -259,9 +285,11 @@ impl LayerSolver {
             traced = copy;
             &traced
         };
+        let deadline = Deadline::after(opts.time_limit);
         let folded = folded::fold_faces(cp, vertex_agreement(cp).max(tol))?;
-        let (arr, _) = cells::arrange(cp, &folded, tol);
-        let sys = constraints::build(cp, &folded, &arr)?;
+        constraints::check_stack(folded.deepest_stack_at_least(tol))?;
+        let (arr, _) = cells::arrange_by(cp, &folded, tol, &deadline)?;
+        let sys = constraints::build(cp, &folded, &arr, &deadline)?;
         let mut solver = LayerSolver {
             report: LayerReport {
                 states: "0".into(),
@@ -287,22 +315,22 @@ impl LayerSolver {
             components: Vec::new(),
             counts: Vec::new(),
         };
-        solver.solve(opts);
+        solver.solve(opts, &deadline)?;
         Ok(solver)
     }
 
-    fn solve(&mut self, opts: &LayerOptions) {
-        let mut engine = Engine::new(&self.sys);
+    fn solve(&mut self, opts: &LayerOptions, deadline: &Deadline) -> Result<(), LayerError> {
+        let mut engine = Engine::new(&self.sys).with_deadline(deadline);
         for &(lit, e) in &self.sys.forced {
             if !engine.set_literal(lit) {
                 let (a, b) = self.sys.faces_of(lit >> 1);
                 self.report.contradiction = Some(self.crease_conflict(a, b, e));
-                return;
+                return Ok(());
             }
         }
         if let Err(c) = engine.propagate().and_then(|()| engine.propagate_all()) {
             self.report.contradiction = Some(self.conflict(c, "propagation"));
-            return;
+            return Ok(());
         }
         self.report.forced = engine.value.iter().filter(|&&v| v != -1).count();
         let components = engine.components();
@@ -311,6 +339,12 @@ impl LayerSolver {
         let mut exact = true;
         for comp in &components {
             let count = engine.count(comp, cap, None);
+            if engine.timed_out {
+                return Err(LayerError::out_of_time(
+                    deadline,
+                    "counting the layer orders",
+                ));
+            }
             product.mul(count.states);
             exact &= count.exact;
             self.report.component_states.push(ComponentStates {
@@ -330,6 +364,7 @@ impl LayerSolver {
         self.report.exact = exact;
         self.base = engine.value.clone();
         self.components = components;
+        Ok(())
     }
 
     /// The report.

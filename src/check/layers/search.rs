@@ -10,6 +10,7 @@
 //! stopping at a cap.
 
 use super::constraints::{System, tables};
+use crate::clock::Deadline;
 
 /// Outcome of counting one component.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -114,6 +115,10 @@ pub struct Engine<'a> {
     epoch: u32,
     /// Exact counts of components already met, by [`Engine::cache_key`].
     cache: std::collections::HashMap<(u64, u64), u128>,
+    /// When to give up counting (see [`Engine::with_deadline`]).
+    deadline: Option<&'a Deadline>,
+    /// The deadline passed: the counts since are not to be used.
+    pub timed_out: bool,
 }
 
 /// SplitMix64's finaliser (Steele, Lea & Flood 2014): spreads the bits of `x`.
@@ -189,7 +194,24 @@ impl<'a> Engine<'a> {
             stamp: vec![0; n],
             epoch: 0,
             cache: std::collections::HashMap::new(),
+            deadline: None,
+            timed_out: false,
         }
+    }
+
+    /// This engine, stopping its counts when `deadline` passes: [`Engine::timed_out`] is then
+    /// set and the counts returned are not to be used.
+    pub fn with_deadline(mut self, deadline: &'a Deadline) -> Engine<'a> {
+        self.deadline = Some(deadline);
+        self
+    }
+
+    /// Whether the deadline has passed (remembered in [`Engine::timed_out`]).
+    fn out_of_time(&mut self) -> bool {
+        if !self.timed_out && self.deadline.is_some_and(Deadline::passed) {
+            self.timed_out = true;
+        }
+        self.timed_out
     }
 
     /// The constraints on variable `v`, transitivity included.
@@ -434,7 +456,7 @@ impl<'a> Engine<'a> {
         let budget = Some(ENUMERATION_DECISIONS);
         let first_cap = cap.map_or(ENUMERATION_STATES, |c| c.min(ENUMERATION_STATES));
         if let Some(count) = self.enumerate(order, Some(first_cap), None, budget)
-            && (count.exact || cap.is_some_and(|c| count.states >= c))
+            && (count.exact || cap.is_some_and(|c| count.states >= c) || self.timed_out)
         {
             return count;
         }
@@ -494,6 +516,13 @@ impl<'a> Engine<'a> {
             if budget.is_some_and(|b| choices > b) {
                 self.undo_to(base);
                 return None;
+            }
+            if self.out_of_time() {
+                self.undo_to(base);
+                return Some(Count {
+                    states: total,
+                    exact: false,
+                });
             }
             self.set_literal((order[pos] << 1) | (1 - next as u32));
             if self.propagate().is_err() {
@@ -587,6 +616,12 @@ impl<'a> Engine<'a> {
         };
         for comp in self.split(vars) {
             let c = self.count_component(&comp, cap);
+            if self.timed_out {
+                return Count {
+                    states: 0,
+                    exact: false,
+                };
+            }
             if c.states == 0 {
                 return Count {
                     states: 0,
@@ -668,6 +703,12 @@ impl<'a> Engine<'a> {
     /// Branches on the variable of `comp` with the most constraints (see
     /// [`Engine::count_split`]).
     fn branch(&mut self, comp: &[u32], cap: Option<u128>) -> Count {
+        if self.out_of_time() {
+            return Count {
+                states: 0,
+                exact: false,
+            };
+        }
         let Some(&pick) = comp.iter().max_by_key(|&&v| (self.degree(v), v)) else {
             return Count {
                 states: 1,

@@ -101,6 +101,15 @@ fn finish(mut cp: CreasePattern, title: String) -> Result<CreasePattern, Classic
         value: cp.edges.len() as f64,
         expected: "too many edges to clean: use fewer cells",
     })?;
+    if cp.degeneracy().is_some() {
+        let size = cp.bounds().map_or(0.0, |(lo, hi)| lo.distance(hi));
+        return Err(ClassicError {
+            parameter: "size",
+            value: size,
+            expected: "the lengths given leave no sheet (every vertex merges into one point or \
+                       onto one line): give lengths nearer to each other",
+        });
+    }
     set_fold_angles(&mut cp, FOLD_ANGLE_DEG);
     Ok(cp)
 }

@@ -87,6 +87,16 @@ impl TessellationOptions {
                 "--max-iterations must be between 1 and {MAX_ITERATIONS}"
             )));
         }
+        // Too many faces is refused here, before anything is built; too few leaves the
+        // re-triangulation out of the schedule (it cannot be built), as it always did.
+        let limit = crate::limits::REMESH_FACES;
+        if let Some(faces) = self.remesh_faces.filter(|&f| f as u64 > limit.max) {
+            return Err(SourceError::Option(format!(
+                "{} {faces}: expected {}",
+                limit.name(),
+                limit.expected()
+            )));
+        }
         let limits = Limits::from_degrees(self.max_fold_angle_deg, self.min_vertex_angle_deg);
         let mut opts = TessellateOptions::with_limits(limits);
         opts.star = StarOptions {

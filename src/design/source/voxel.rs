@@ -50,6 +50,9 @@ pub struct VoxelOptions {
     pub thin_top: usize,
     /// Grow the margin until the card, folded shut, holds every face; refuse when it cannot.
     pub fit: bool,
+    /// Most cells of the card's pattern, `nx × (ny + nz)`, checked before the card is built
+    /// (the command line's [`limits::VOXEL_PATTERN_CELLS`]; the studio's is smaller).
+    pub max_pattern_cells: usize,
 }
 
 impl Default for VoxelOptions {
@@ -67,6 +70,7 @@ impl Default for VoxelOptions {
             window_gap: 0.25,
             thin_top: 1,
             fit: false,
+            max_pattern_cells: limits::VOXEL_PATTERN_CELLS,
         }
     }
 }
@@ -180,9 +184,33 @@ pub fn load_card(
         };
         DepthField::from_grey(map, options.depth).map_err(|e| at(&e))?
     } else {
-        return parse_voxel_card(file.text()?).map_err(|e| at(&e));
+        let card = parse_voxel_card(file.text()?).map_err(|e| at(&e))?;
+        check_cells(file.name, [card.nx(), card.ny(), card.nz()], options)?;
+        return Ok(card);
     };
+    check_cells(file.name, [field.nx, field.ny, field.nz], options)?;
     card_from_field(file.name, &field, options, progress)
+}
+
+/// Refuses a card of `nx × ny × nz` cells whose pattern holds more cells than
+/// [`VoxelOptions::max_pattern_cells`], before it is built.
+pub fn check_cells(
+    name: &Path,
+    [nx, ny, nz]: [usize; 3],
+    options: &VoxelOptions,
+) -> Result<(), SourceError> {
+    let cells = nx.saturating_mul(ny.saturating_add(nz));
+    if cells > options.max_pattern_cells {
+        return Err(SourceError::input(
+            name,
+            format!(
+                "a card of {nx} × {ny} × {nz} cells has a crease pattern of {cells} cells, more \
+                 than the {} built here (memory): give a lower resolution or a smaller card",
+                options.max_pattern_cells
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// The conversion of section 3 (bump removal, filling under overhangs by eq. 7, windows,

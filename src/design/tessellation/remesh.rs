@@ -58,15 +58,25 @@ impl RemeshReport {
 }
 
 /// Fewest faces [`remesh`] accepts as a target.
-pub const MIN_FACES: usize = 24;
+pub const MIN_FACES: usize = crate::limits::REMESH_FACES.min as usize;
+
+/// Most faces [`remesh`] accepts as a target ([`crate::limits::REMESH_FACES`]): the lattice
+/// and the solve after it grow with the count, so the bound is checked before either is built.
+pub const MAX_FACES: usize = crate::limits::REMESH_FACES.max as usize;
 
 /// Re-triangulates the disk `mesh` with about `faces` near-equilateral triangles (see the
-/// module docs). Errors: not a disk, fewer than [`MIN_FACES`] faces asked for, or a lattice
-/// that does not come out as one disk.
+/// module docs). Errors: not a disk, fewer than [`MIN_FACES`] or more than [`MAX_FACES`]
+/// faces asked for, or a lattice that does not come out as one disk.
 pub fn remesh(mesh: &PolyMesh, faces: usize) -> Result<(PolyMesh, RemeshReport), TessError> {
     if faces < MIN_FACES {
         return Err(TessError::BadParameter(format!(
             "remeshing needs at least {MIN_FACES} faces, got {faces}"
+        )));
+    }
+    if faces > MAX_FACES {
+        return Err(TessError::BadParameter(format!(
+            "remeshing to {faces} faces: at most {MAX_FACES} ({})",
+            crate::limits::REMESH_FACES.name()
         )));
     }
     let he = disk(mesh)?;

@@ -42,6 +42,10 @@ pub const MAX_NESTING: usize = 16;
 /// Most copies one `INSERT` array (columns × rows) makes.
 pub const MAX_ARRAY_COPIES: usize = 100_000;
 
+/// Most entity copies all block inserts of a drawing place together (nested arrays
+/// multiply): [`crate::limits::MAX_BLOCK_COPIES`].
+pub use crate::limits::MAX_BLOCK_COPIES;
+
 /// Most edges read from one file.
 pub const MAX_SEGMENTS: usize = super::svg::MAX_SEGMENTS;
 
@@ -82,6 +86,7 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
         by_colour: BTreeMap::new(),
         missing_blocks: BTreeMap::new(),
         curves: 0,
+        copies: 0,
     };
     let top = Context {
         transform: DAffine2::from_scale(DVec2::splat(scale)),
@@ -164,6 +169,9 @@ struct Reader<'a> {
     by_colour: BTreeMap<String, usize>,
     missing_blocks: BTreeMap<String, usize>,
     curves: usize,
+    /// Entity copies placed through block inserts so far (a copy of an empty block counts
+    /// one): bounded by [`MAX_BLOCK_COPIES`].
+    copies: u64,
 }
 
 impl<'a> Reader<'a> {
@@ -373,8 +381,24 @@ impl<'a> Reader<'a> {
                 ),
             ));
         }
+        // Every copy costs its entities (at least one), counted before they are read: nested
+        // arrays multiply, and blocks that draw nothing cost time all the same.
+        let per_copy = block.entities.len().max(1) as u64;
         for r in 0..rows {
             for c in 0..columns {
+                self.copies += per_copy;
+                if self.copies > MAX_BLOCK_COPIES {
+                    return Err(ParseError::new(
+                        place(entity),
+                        format!(
+                            "the block inserts place more than {MAX_BLOCK_COPIES} entity copies \
+                             (nested arrays multiply: here {columns} × {rows} copies of block \
+                             \"{}\" at depth {}), the most read",
+                            insert.name,
+                            ctx.depth + 1
+                        ),
+                    ));
+                }
                 let offset = DVec2::new(
                     f64::from(c) * insert.column_spacing,
                     f64::from(r) * insert.row_spacing,

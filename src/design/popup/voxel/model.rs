@@ -14,11 +14,12 @@
 
 use thiserror::Error;
 
-/// Largest number of cells along any axis.
-pub const MAX_CELLS_PER_AXIS: usize = 20_000;
+/// Largest number of cells along any axis ([`crate::limits::VOXEL_CELLS_PER_AXIS`]).
+pub const MAX_CELLS_PER_AXIS: usize = crate::limits::VOXEL_CELLS_PER_AXIS;
 
-/// Largest number of unit cells in the crease pattern, `nx × (ny + nz)`.
-pub const MAX_PATTERN_CELLS: usize = 50_000_000;
+/// Largest number of unit cells in the crease pattern, `nx × (ny + nz)`
+/// ([`crate::limits::VOXEL_PATTERN_CELLS`]).
+pub const MAX_PATTERN_CELLS: usize = crate::limits::VOXEL_PATTERN_CELLS;
 
 /// Why a card cannot be made.
 #[derive(Clone, Debug, PartialEq, Error)]
