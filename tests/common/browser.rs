@@ -4,7 +4,7 @@
 //! scenarios: they do not pass quietly.
 //!
 //! Set `FOLDCAM_SCREENSHOTS=DIR` to keep the screenshots (the README's pictures come from
-//! `FOLDCAM_SCREENSHOTS=docs cargo test --test NAME`).
+//! `FOLDCAM_SCREENSHOTS=docs cargo test --test browser MODULE`).
 #![allow(dead_code)]
 
 use std::net::TcpListener;

@@ -1,0 +1,10 @@
+//! Checks of a crease pattern: planarity, local flat-foldability, global layer order
+//! (Flat-Folder's published counts) and the command lines that run them.
+//!
+//! One test binary: each module is the tests of one part, so the crate is linked once.
+
+mod check;
+mod geom_oracles;
+mod layers;
+mod layers_cli;
+mod planarize;
