@@ -7,8 +7,10 @@
 //! These tests need the oracles and panic when they are missing; they are ignored in a plain
 //! `cargo test`.
 
+use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::time::{Duration, Instant};
 
 use foldcam::design::classic::MiuraOri;
 use foldcam::fab::{FabPlan, PlanOptions, plan};
@@ -60,6 +62,21 @@ fn written(p: &FabPlan, job: usize, machine: &MachineProfile) -> (String, DVec2)
 /// `../shared/oracles`): the programs run one after another in one LinuxCNC session, after a
 /// warm-up program; `integ=` is the time the program ran.
 fn linuxcnc_seconds(jobs: &[(String, DVec2)]) -> Vec<f64> {
+    // LinuxCNC in user space (no realtime kernel) now and then stops for good part-way through
+    // a program (seen once in a few runs: motion stalled 0.5 mm before the end of a G0, at zero
+    // velocity, in position): such a session is ended and run once more, and said so.
+    for attempt in 1..=2 {
+        match linuxcnc_attempt(jobs) {
+            Some(seconds) => return seconds,
+            None => eprintln!("LinuxCNC stalled (attempt {attempt} of 2): ended and run again"),
+        }
+    }
+    panic!("LinuxCNC stalled twice on the same programs");
+}
+
+/// One LinuxCNC session over `jobs`; `None` when it has not ended within a budget of 60 s plus
+/// 50 ms per program line (the jobs here run in under 0.02 s per line).
+fn linuxcnc_attempt(jobs: &[(String, DVec2)]) -> Option<Vec<f64>> {
     let source = oracles().join("linuxcnc");
     let which = Command::new("sh")
         .args(["-c", "command -v linuxcnc"])
@@ -107,21 +124,40 @@ fn linuxcnc_seconds(jobs: &[(String, DVec2)]) -> Vec<f64> {
         .status()
         .expect("chmod runs");
     assert!(open.success());
-    let out = Command::new("linuxcnc")
+    let mut child = Command::new("linuxcnc")
         .arg("fiber.ini")
         .current_dir(&dir)
         .env("RTAPI_UID", "65534")
         .env("RTAPI_FIFO_PATH", fifo.join("rtapi_fifo"))
-        .output()
+        .stdout(std::fs::File::create(dir.join("stdout.txt")).expect("stdout file"))
+        .stderr(std::fs::File::create(dir.join("stderr.txt")).expect("stderr file"))
+        .process_group(0)
+        .spawn()
         .expect("linuxcnc runs");
+    let lines: usize = jobs.iter().map(|(text, _)| text.lines().count()).sum();
+    let budget = Duration::from_secs(60) + Duration::from_millis(50) * lines as u32;
+    let start = Instant::now();
+    while child.try_wait().expect("linuxcnc waited for").is_none() {
+        if start.elapsed() > budget {
+            // The whole session: the script, its servers and the realtime process.
+            let _ = Command::new("kill")
+                .args(["-KILL", &format!("-{}", child.id())])
+                .status();
+            let _ = child.wait();
+            let _ = Command::new("halrun").arg("-U").output();
+            return None;
+        }
+        std::thread::sleep(Duration::from_millis(200));
+    }
     let results = std::fs::read_to_string(dir.join("lcnc/results.txt")).unwrap_or_else(|e| {
         panic!(
             "LinuxCNC wrote no results ({e}):\n{}\n{}",
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
+            std::fs::read_to_string(dir.join("stdout.txt")).unwrap_or_default(),
+            std::fs::read_to_string(dir.join("stderr.txt")).unwrap_or_default()
         )
     });
-    jobs.iter()
+    let seconds = jobs
+        .iter()
         .enumerate()
         .map(|(i, (_, end))| {
             let name = format!("job{i}.ngc ");
@@ -142,7 +178,8 @@ fn linuxcnc_seconds(jobs: &[(String, DVec2)]) -> Vec<f64> {
             );
             field(line, "integ=").parse().expect("integ seconds")
         })
-        .collect()
+        .collect();
+    Some(seconds)
 }
 
 /// The text after `key` in `line`, up to the next blank.
