@@ -172,7 +172,6 @@ fn assigned_twist_folds(name: &str, t: &Tessellation) -> usize {
 /// each twist fold ends a mountain or valley as it folds, and the pattern cuts clean on the
 /// fiber laser.
 #[test]
-#[ignore = "slow in debug: about two minutes"]
 fn twisted_stars_solve_a_five_ring_cap_and_cut_clean() {
     let mesh = spherical_cap(6, 5, 20.0, 300.0);
     assert_eq!(mesh.faces().len(), 150);
@@ -227,7 +226,6 @@ fn small_caps_tessellate_in_every_mode() {
 /// the ones the default ladder reaches, given alone to keep the test short), checked as
 /// above, and the truncated stars cut clean on the fiber laser.
 #[test]
-#[ignore = "slow in debug: about half a minute; the release figures are in the report table"]
 fn the_432_face_cap_tessellates_remeshed_with_truncated_stars_and_twist_folds() {
     let mesh = spherical_cap(12, 6, 60.0, 100.0);
     let schedule = default_schedule();
@@ -276,7 +274,6 @@ fn a_small_remeshed_twelve_valent_cap_tessellates_in_every_mode() {
 /// smallest crease angle 29.6°, measured), meets the stainless limits, checked as above,
 /// leaves every twist fold a mountain or a valley, and cuts clean on the fiber laser.
 #[test]
-#[ignore = "slow in debug: about four minutes (424 iterations); release: 20 s"]
 fn the_432_face_cap_tessellates_remeshed_with_twisted_stars_and_cuts_clean() {
     let mesh = spherical_cap(12, 6, 60.0, 100.0);
     let schedule = default_schedule();
