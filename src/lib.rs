@@ -3,7 +3,7 @@
 //! Every design source ends in one model, the [`pattern::CreasePattern`] (vertices in
 //! millimetres, edges with FOLD assignments and fold angles). This crate reads and writes it
 //! ([`formats`]: FOLD 1.2, Origami Simulator SVG, ORIPA `.cp`), cleans any line drawing into a
-//! planar graph ([`pattern::planarize()`]), checks it ([`check`]: Kawasaki, Maekawa, vertex and
+//! planar graph ([`pattern::planarize()`]), checks it ([`check`](mod@check): Kawasaki, Maekawa, vertex and
 //! fold-angle limits) and draws previews ([`render`]). [`Job`] turns a pattern into checked
 //! machine files: plan ([`fab`]) → post-process ([`post`]: G-code, DXF, SVG, LightBurn) → read
 //! back on the simulated machine with coverage ([`sim`]). See `ARCHITECTURE.md` at the

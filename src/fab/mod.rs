@@ -5,7 +5,7 @@
 //! [`operations`] (assignment → operation), [`creases`] and [`lines`] (chaining edges),
 //! [`perforation`] (dashes per crease with vertex clearances), [`contours`], [`kerf`] and
 //! [`tabs`] (cut contours, offsets, tabs, lead-ins), [`geometry`] (all of those together),
-//! [`placement`] and [`sides`] (bed placement, two-sided jobs, registration marks), [`order`]
+//! [`placement`] and [`sides`] (bed placement, two-sided jobs, registration marks), [`order`](mod@order)
 //! (precedence and travel), [`stats`], and [`plan`](mod@plan) (the whole pipeline).
 
 pub(crate) mod contours;

@@ -7,7 +7,7 @@
 //!    about the sheet's vertical centre line, both with registration marks.
 //! 2. **Placement** ([`super::placement`]): the content's bounding box plus the margin, in the
 //!    bed's origin corner, converted to machine coordinates; stored in [`Job::to_machine`].
-//! 3. **Order** ([`super::order`]): precedence groups, nearest neighbour, 2-opt/Or-opt,
+//! 3. **Order** ([`super::order`](mod@super::order)): precedence groups, nearest neighbour, 2-opt/Or-opt,
 //!    joining, each job from the machine origin.
 //! 4. **Statistics** ([`super::stats`]) and **warnings** (the material's design limits,
 //!    checked with [`crate::check::check`]).

@@ -47,7 +47,7 @@ pub fn text_width(text: &str, height: f64) -> f64 {
 }
 
 /// The strokes of `text`, `height` mm tall, its lower-left corner at `origin`; `Err` with the
-/// first character the font lacks (see [`supports`]).
+/// first character the font lacks (see `supports`).
 pub fn text_strokes(text: &str, origin: DVec2, height: f64) -> Result<Vec<Vec<DVec2>>, char> {
     let mut out = Vec::new();
     for (i, c) in text.chars().enumerate() {

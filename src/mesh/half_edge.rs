@@ -1,4 +1,4 @@
-//! A half-edge view of a [`PolyMesh`](super::PolyMesh): twins, vertex fans and the boundary,
+//! A half-edge view of a [`super::PolyMesh`]: twins, vertex fans and the boundary,
 //! for designers that walk a surface (tessellations, paper craft).
 //!
 //! [`HalfEdgeMesh::new`] accepts an oriented 2-manifold, with or without boundary, and refuses

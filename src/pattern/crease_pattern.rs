@@ -146,7 +146,7 @@ pub struct CreasePattern {
     pub vertices: Vec<DVec2>,
     /// Edges.
     pub edges: Vec<Edge>,
-    /// Faces, when known (FOLD files may carry them; [`super::planarize`] computes them).
+    /// Faces, when known (FOLD files may carry them; [`super::planarize`](fn@super::planarize) computes them).
     pub faces: Option<Vec<Face>>,
     /// Face stacking order (`faceOrders`: face f above/below g by sign), kept with the faces.
     pub face_orders: Vec<(FaceId, FaceId, i8)>,
@@ -175,7 +175,7 @@ impl CreasePattern {
     }
 
     /// Adds a segment as two new vertices and an edge (for importers of line drawings;
-    /// [`super::planarize`] merges the duplicates afterwards).
+    /// [`super::planarize`](fn@super::planarize) merges the duplicates afterwards).
     pub fn add_segment(&mut self, a: DVec2, b: DVec2, assignment: Assignment) -> EdgeId {
         let va = self.add_vertex(a);
         let vb = self.add_vertex(b);

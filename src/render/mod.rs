@@ -4,7 +4,7 @@
 //! background with a margin, y up in the pattern and y down in the image (no mirroring), with
 //! a key under the drawing ([`legend`]: a scale bar of a 1, 2 or 5 × 10^k length labelled in mm
 //! or "units", and one legend entry per line style drawn) and with the findings of
-//! [`crate::check`] highlighted: a ring at each finding's position, numbered as the check's
+//! [`crate::check`](mod@crate::check) highlighted: a ring at each finding's position, numbered as the check's
 //! text report numbers it ([`rings`]), and an orange halo under an edge the finding names.
 //!
 //! The width is the caller's (16 to 16384 pixels); the height follows the aspect ratio and is

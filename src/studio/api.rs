@@ -5,9 +5,9 @@
 //! | `GET /api/files` | the files named on the command line (index and name) |
 //! | `POST /api/files/{index}[?make=M]` | opens one of them: the pattern view |
 //! | `POST /api/upload?name=N[&make=M][&with=W]` | reads the body as a file named `N` (a pattern or a design file, see [`design_open`]; `M` what a mesh becomes; `W` the files sent after it, JSON `[{name, size}]`): the pattern view |
-//! | `POST /api/docs/{id}/edit` | applies one edit (JSON [`Edit`]): the new version's view |
+//! | `POST /api/docs/{id}/edit` | applies one edit (JSON `Edit`): the new version's view |
 //! | `POST /api/docs/{id}/undo`, `…/redo` | steps back or forward through the edits |
-//! | `POST /api/docs/{id}/snap` | snaps a pointer position (JSON `point` and [`SnapOptions`]) |
+//! | `POST /api/docs/{id}/snap` | snaps a pointer position (JSON `point` and `SnapOptions`) |
 //! | `GET /api/docs/{id}/check` | `foldcam check --json`'s report |
 //! | `GET /api/docs/{id}/layers` | the layer-order check (`foldcam check --layers`) |
 //! | `GET /api/docs/{id}/flat[?state=K]` | the flat-folded state K seen from above (`foldcam fold-flat --png`) |

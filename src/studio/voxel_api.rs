@@ -117,7 +117,7 @@ struct NewCard {
 }
 
 /// A face as the page marks it: `kind` is `front` or `top` (of voxel `cell`), `back` (the
-/// back sheet at x = cell[0], z = cell[2]) or `base` (the base at x = cell[0], y = cell[1]).
+/// back sheet at x = `cell[0]`, z = `cell[2]`) or `base` (the base at x = `cell[0]`, y = `cell[1]`).
 #[derive(Serialize)]
 struct FaceView {
     kind: &'static str,

@@ -9,7 +9,7 @@
 //!
 //! # The fitted tolerance
 //! Kawasaki's error `E` at a vertex (half the alternating sector sum, radians) is repaired by
-//! rotating one crease by `E` (see [`crate::check`]); rotating the vertex's shortest crease,
+//! rotating one crease by `E` (see [`crate::check`](mod@crate::check)); rotating the vertex's shortest crease,
 //! of length `ℓ`, moves its far end by `E·ℓ`. The drawing is *precise to* `δ = ℓ_min /
 //! `[`PRECISION_DIVISOR`], `ℓ_min` the pattern's shortest edge, so the error is rounding when
 //! `E·ℓ ≤ δ`: the vertex closes up by moving a line end no further than the drawing's own

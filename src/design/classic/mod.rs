@@ -2,7 +2,7 @@
 //! waterbomb base and tessellation, the Yoshimura pattern, and a flat-foldable square grid.
 //!
 //! All lengths are millimetres; every generator returns a pattern whose interior vertices
-//! satisfy Kawasaki's and Maekawa's theorems (tests check this with [`crate::check`]) with the
+//! satisfy Kawasaki's and Maekawa's theorems (tests check this with [`crate::check`](mod@crate::check)) with the
 //! sheet outline as boundary edges and faces computed. Every mountain and valley crease
 //! carries the target fold angle [`FOLD_ANGLE_DEG`] (set in one place, [`set_fold_angles`]),
 //! so FOLD viewers fold it and the material checks have a number to test. Invalid parameters

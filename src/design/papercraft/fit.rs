@@ -1,6 +1,6 @@
 //! Least-squares fitting of a degree-4 B-spline directrix to a point sequence (Ōgaki 2016, §3.5 Step 3:
 //! the thesis approximates the swept real boundary "by least squares with a degree-4
-//! B-spline, after ref. [11]", with any number of control points).
+//! B-spline, after ref. \[11\]", with any number of control points).
 //!
 //! The curve has the clamped uniform knots of [`BSpline::directrix`]. Each data point q_i
 //! gets a parameter t_i (the caller's, mapped affinely onto the domain `[0, n − 4]`) and a

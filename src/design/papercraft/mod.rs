@@ -3,7 +3,7 @@
 //! The user traces cut lines on a reference mesh, places cylindrical developable patches, and
 //! the system trims them and unrolls them into parts. Built so far:
 //!
-//! - [`reference`]: the reference mesh with closest-point projection and normals (§3.1).
+//! - [`reference`](mod@reference): the reference mesh with closest-point projection and normals (§3.1).
 //! - [`cut_line`]: Catmull–Rom cut lines through points on the mesh, sampled and projected
 //!   (§3.2 Step 1).
 //! - [`network`]: the cut-line network as a half-edge structure, patches as faces (§3.3).

@@ -58,7 +58,7 @@ pub struct Limits {
     /// convergence test, and on the spherical caps measured they stall the solve (see
     /// [`collision`]).
     pub collision_gap: f64,
-    /// Which violated boundary runs of eq. 2 become rows (see [`boundary`](super::boundary)).
+    /// Which violated boundary runs of eq. 2 become rows (see [`super::boundary`]).
     pub boundary_runs: BoundaryRuns,
 }
 

@@ -33,7 +33,7 @@
 //! coarser re-triangulation with [`RimCrowding::faces_for_limit`] faces first (see
 //! [`passes`](super::passes)) and, at the input's face count, stops at the first converged
 //! result crowded at the rim.
-//! [`tests`] checks that the index computed here separates exactly these two groups.
+//! The `tests` module checks that the index computed here separates exactly these two groups.
 //!
 //! So the index says what helps: a smaller piece (`ρ`, for instance cuts or slits from the
 //! edge inwards, as Tachi does), fewer and larger faces (`l`; the index falls as `1/l`, the

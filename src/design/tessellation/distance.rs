@@ -19,7 +19,7 @@ pub struct SurfaceDistance {
 
 /// The distance of every face corner of `solved` (its first `corner_count` vertices) to
 /// `input`, each found through the closest-point grid of
-/// [`ReferenceMesh`](crate::design::papercraft::ReferenceMesh); `None` when `input` has no
+/// [`crate::design::papercraft::ReferenceMesh`]; `None` when `input` has no
 /// triangle of positive area.
 pub fn corner_distance(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceDistance> {
     let surface = ReferenceMesh::new(input).ok()?;

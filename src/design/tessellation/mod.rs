@@ -7,7 +7,7 @@
 //! [`assign_folds`] reads mountains and valleys off the half-open tucks; [`solve`] moves every
 //! vertex by generalized Newton–Raphson until the interior vertices are developable (eq. 1)
 //! and the fold-angle (eq. 3, §5) and vertex-angle (§5) limits hold ([`solver`]);
-//! [`unfold`] lays the result flat triangle by triangle and checks it for overlaps;
+//! [`unfold`](mod@unfold) lays the result flat triangle by triangle and checks it for overlaps;
 //! [`intersect`] checks the folded form for faces passing through each other.
 //!
 //! Implemented: §2.1 (checkerboard and digon layouts), eq. 1, eq. 3 with the §5 fold limit,
@@ -23,7 +23,7 @@
 //! constraint ([`boundary`]) and the unfolded pattern is also checked for overlaps directly.
 //! Meshes whose own triangles make the limits unreachable (a modelling program's sphere: a
 //! 12-valent pole, face corners sharper than the crease-angle limit) are re-triangulated
-//! near-regularly ([`remesh`], Floater's (2003) mean-value map onto a disk), by
+//! near-regularly ([`remesh`](mod@remesh), Floater's (2003) mean-value map onto a disk), by
 //! [`tessellate_scheduled`] as the default does (on a coarser re-triangulation first when the
 //! input is crowded at the rim, [`crowding`], [`passes`]); [`distance`] measures how far the
 //! folded form lies from the input surface.

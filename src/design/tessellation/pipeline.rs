@@ -267,7 +267,7 @@ pub fn tessellate_shrinking(
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
 }
 
-/// Whether [`tessellate_scheduled`] re-triangulates the input ([`remesh`](super::remesh)).
+/// Whether [`tessellate_scheduled`] re-triangulates the input ([`remesh`](fn@super::remesh)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Remesh {
     /// Never: the input's own triangles only.
@@ -353,7 +353,7 @@ pub fn tessellate_scheduled(
 }
 
 /// [`tessellate_scheduled`] over passes already built by
-/// [`scheduled_passes`](super::passes::scheduled_passes) (with the input's `crowding` it
+/// [`super::passes::scheduled_passes`] (with the input's `crowding` it
 /// returned), so that a caller that shows the plan builds each re-triangulation once.
 pub fn tessellate_passes(
     mesh: &PolyMesh,
@@ -448,7 +448,7 @@ pub fn tessellate(
 }
 
 /// [`tessellate`] with a face shrink per input face (`face_shrink[f]` in (0, 1], overriding
-/// `opts.star.shrink`; see [`star_tucks_shrunk`](super::star::star_tucks_shrunk)).
+/// `opts.star.shrink`; see [`super::star::star_tucks_shrunk`]).
 /// Errors as [`tessellate`], and when `face_shrink` does not have one entry per face.
 pub fn tessellate_with_face_shrink(
     mesh: &PolyMesh,

@@ -14,7 +14,7 @@
 //!   then all run clockwise;
 //! - treats non-coplanar 3D coordinates, and 2D frames of class `foldedForm` whose faces
 //!   overlap (some faces flipped), as a folded state: it is returned in
-//!   [`Imported::folded`] and the crease pattern is its isometric unfolding (see [`unfold`]);
+//!   [`Imported::folded`] and the crease pattern is its isometric unfolding (see [`unfold`](mod@unfold));
 //! - takes a `foldedForm` frame of `file_frames` as the folded state of a crease-pattern key
 //!   frame when its vertex and edge counts match;
 //! - derives edges from `faces_vertices` when `edges_vertices` is missing (one face: `B`,

@@ -4,7 +4,7 @@
 //! - 3D but coplanar within 1e-7 of the extent: rotated onto xy ([`super::plane`]), with a
 //!   warning.
 //! - 3D and not coplanar: a folded state; it needs faces, which are unfolded
-//!   ([`super::unfold`]) into the crease pattern.
+//!   ([`super::unfold`](mod@super::unfold)) into the crease pattern.
 //! - Flat (2D or rotated) with `frame_classes` containing `foldedForm`, faces, and faces of
 //!   both orientations (a flat-folded form: folding flips faces over): a folded state too,
 //!   unfolded the same way. A `foldedForm` frame whose faces all face one way is read as the

@@ -122,10 +122,10 @@ pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
 /// ([`crate::fab::frame::outline`]) traced from its lower-left corner counter-clockwise, with
 /// the tool off (travel moves only: no beam, the pen up) when `power` is 0 or the machine is a
 /// pen tool, else burned once at `power` (a fraction of the machine's range) at the
-/// material's `mark` speed. Header and trailer as in [`write`].
+/// material's `mark` speed. Header and trailer as in [`write`](fn@write).
 ///
 /// # Errors
-/// As [`write`]; [`PostError::BadSetting`] for a power outside 0..=1.
+/// As [`write`](fn@write); [`PostError::BadSetting`] for a power outside 0..=1.
 pub fn frame(
     plan: &FabPlan,
     job: &Job,

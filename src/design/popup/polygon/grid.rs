@@ -27,7 +27,7 @@ pub(crate) fn shape_contains(shape: &[Vec<Point>], q: DVec2) -> bool {
     shape.first().is_some_and(inside) && !shape[1..].iter().any(inside)
 }
 
-/// Millimetres to grid units (callers keep |mm| within 2 × [`MAX_SIDE_MM`]).
+/// Millimetres to grid units (callers keep |mm| within 2 × `MAX_SIDE_MM`).
 pub(crate) fn units(mm: f64) -> i32 {
     (mm / UNIT_MM).round() as i32
 }

@@ -12,7 +12,7 @@
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 7 as a [`FoldedState`].
 //! - [`apply_edit`] (`edit.rs`): the editor's add / move / resize / remove on a design, the
 //!   failing faces in words ([`findings`]) and the design written back ([`write_design`]).
-//! - [`from_voxel`]: a voxel card (Mitani, Suzuki & Uno 2003) as a polygon card, for refinement.
+//! - [`from_voxel`](mod@from_voxel): a voxel card (Mitani, Suzuki & Uno 2003) as a polygon card, for refinement.
 //! - [`parse_design`] (`design.rs`): TOML design files replaying the operations of §3.1;
 //!   examples in `examples/popup/*.popup.toml`.
 //!
