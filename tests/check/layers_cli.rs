@@ -239,3 +239,79 @@ fn a_kawasaki_tolerance_of_zero_or_ninety_degrees_is_refused() {
         }
     }
 }
+
+/// `fold-flat` on Flat-Folder's 2×2 grid (16 states): each state written is the flat sheet
+/// folded without stretching, flat, smaller than the sheet, with `faceOrders` the layer solver
+/// admits; states 0 and 1 are different orders.
+#[test]
+fn fold_flat_states_are_isometric_admitted_and_distinct() {
+    use foldcam::check::layers::{LayerOptions, LayerSolver};
+    use foldcam::pattern::{PlanarizeOptions, planarize};
+
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut orders = Vec::new();
+    for state in ["0", "1"] {
+        let out_path = dir.path().join(format!("state{state}.fold"));
+        let out = foldcam(&[
+            "fold-flat",
+            &grid("002_brown_2x2_D1.fold"),
+            "-o",
+            out_path.to_str().expect("utf-8"),
+            "--state",
+            state,
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let imported = foldcam::formats::load(&out_path).expect("reads back");
+        let folded = imported.folded.expect("a foldedForm frame");
+        let mut flat = imported.pattern;
+        // Isometric: every edge keeps its length.
+        let (mut lo, mut hi) = (glam::DVec2::splat(f64::MAX), glam::DVec2::splat(f64::MIN));
+        for e in &flat.edges {
+            let [a, b] = e.vertices;
+            let flat_mm = flat.position(a).distance(flat.position(b));
+            let folded_mm = folded.positions[a.index()].distance(folded.positions[b.index()]);
+            assert!(
+                (folded_mm - flat_mm).abs() <= 1e-6 * flat_mm.max(1.0),
+                "state {state}"
+            );
+        }
+        for p in &folded.positions {
+            assert!(p.z.abs() < 1e-9, "state {state}: not flat");
+            lo = lo.min(p.truncate());
+            hi = hi.max(p.truncate());
+        }
+        let (flo, fhi) = flat.bounds().expect("vertices");
+        let area = |a: glam::DVec2, b: glam::DVec2| (b - a).x * (b - a).y;
+        assert!(
+            area(lo, hi) < 0.9 * area(flo, fhi),
+            "state {state}: no smaller than the sheet"
+        );
+        // The orders written are a state of the layer problem.
+        planarize(
+            &mut flat,
+            &PlanarizeOptions {
+                tolerance: None,
+                faces: true,
+            },
+        )
+        .expect("planarises");
+        let solver = LayerSolver::new(&flat, &LayerOptions::default()).expect("layer problem");
+        assert_eq!(solver.report().states, "16");
+        assert!(!folded.face_orders.is_empty());
+        assert!(
+            solver.admits(&folded.face_orders),
+            "state {state} not admitted"
+        );
+        orders.push(folded.face_orders);
+    }
+    let as_set = |o: &Vec<_>| o.iter().copied().collect::<std::collections::BTreeSet<_>>();
+    assert_ne!(
+        as_set(&orders[0]),
+        as_set(&orders[1]),
+        "state 1 repeats state 0"
+    );
+}

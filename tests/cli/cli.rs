@@ -237,6 +237,40 @@ fn demo_runs_end_to_end() {
         .expect("the folded Miura-ori reads back");
     let folded = miura.folded.expect("a foldedForm frame");
     assert!(folded.positions.iter().any(|p| p.z.abs() > 1.0));
+    // Folded, the sheet is not stretched: every edge keeps its flat length (the bar-and-hinge
+    // model lets bars strain a little).
+    let flat = &miura.pattern;
+    assert_eq!(folded.edges.len(), flat.edges.len());
+    for e in &flat.edges {
+        let [a, b] = e.vertices;
+        let flat_mm = flat.position(a).distance(flat.position(b));
+        let folded_mm = folded.positions[a.index()].distance(folded.positions[b.index()]);
+        assert!(
+            (folded_mm - flat_mm).abs() <= 0.01 * flat_mm,
+            "edge {a:?}-{b:?}: {flat_mm} mm flat, {folded_mm} mm folded"
+        );
+    }
+    // Every machine job the demo wrote runs clean on the simulated machine it names
+    // (`STEM.MACHINE.EXT`), and burns or draws something.
+    let mut jobs = 0;
+    for name in &files {
+        let parts: Vec<&str> = name.split('.').collect();
+        if parts.len() < 3 || !matches!(parts[parts.len() - 1], "gcode" | "ngc" | "nc") {
+            continue;
+        }
+        let machine = foldcam::machine::load_machine(parts[parts.len() - 2])
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let program = std::fs::read_to_string(dir.path().join("d").join(name)).expect("job");
+        let run = foldcam::sim::run(&program, &machine).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(run.is_clean(), "{name}: {:?}", run.violations.first());
+        assert!(
+            run.burn_length_mm > 10.0,
+            "{name}: {} mm",
+            run.burn_length_mm
+        );
+        jobs += 1;
+    }
+    assert!(jobs >= 4, "{jobs} jobs in {files:?}");
 }
 
 /// Malformed inputs: exit 2, the message names the file, no panic, and no output file (nor

@@ -138,26 +138,87 @@ fn check_plan_and_preview_read_and_write_pipes() {
     assert!(String::from_utf8_lossy(&o.stdout).contains("pierces"));
 }
 
+/// The subcommands `foldcam help` lists (without `help` itself).
+fn listed_commands(d: &std::path::Path) -> Vec<String> {
+    let o = foldcam(&["help"], d, b"");
+    ok(&o);
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let list = text
+        .split("Commands:\n")
+        .nth(1)
+        .expect("a Commands: section")
+        .split("\n\n")
+        .next()
+        .expect("its lines");
+    list.lines()
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .map(str::to_owned)
+        .collect()
+}
+
 #[test]
 fn completions_and_man_page_name_every_command() {
     let dir = tempfile::tempdir().expect("temp dir");
     let d = dir.path();
+    let commands = listed_commands(d);
+    assert!(commands.len() >= 19, "{commands:?}");
     for shell in ["bash", "zsh", "fish", "powershell"] {
         let o = foldcam(&["completions", shell], d, b"");
         ok(&o);
         let script = String::from_utf8_lossy(&o.stdout);
-        for command in ["convert", "tessellate", "papercraft", "completions"] {
-            assert!(script.contains(command), "{shell} completes {command}");
+        for command in &commands {
+            assert!(
+                script.contains(command.as_str()),
+                "{shell} completes {command}"
+            );
+        }
+        if shell == "bash" {
+            // The script bash would source parses (bash is on every machine this runs on).
+            std::fs::write(d.join("foldcam.bash"), script.as_bytes()).expect("written");
+            let syntax = std::process::Command::new("bash")
+                .arg("-n")
+                .arg(d.join("foldcam.bash"))
+                .output()
+                .expect("bash runs");
+            assert!(
+                syntax.status.success(),
+                "bash -n: {}",
+                String::from_utf8_lossy(&syntax.stderr)
+            );
         }
     }
     let o = foldcam(&["man"], d, b"");
     ok(&o);
-    let page = String::from_utf8_lossy(&o.stdout);
+    // roff writes a hyphen as `\-`.
+    let page = String::from_utf8_lossy(&o.stdout).replace("\\-", "-");
     assert!(page.contains(".TH foldcam 1"), "a roff man page");
-    assert!(page.contains("papercraft"));
+    for command in &commands {
+        assert!(
+            page.contains(command.as_str()),
+            "the man page names {command}"
+        );
+    }
     ok(&foldcam(&["man", "--dir", "man1"], d, b""));
     assert!(d.join("man1/foldcam.1").is_file());
-    assert!(d.join("man1/foldcam-cut.1").is_file());
+    for command in &commands {
+        let file = d.join(format!("man1/foldcam-{command}.1"));
+        assert!(file.is_file(), "{} written", file.display());
+        // groff reads every page without a warning, as man-db runs it (-k: UTF-8 through preconv;
+        // -ww: all warnings; -z: no output).
+        let groff = std::process::Command::new("groff")
+            .args(["-k", "-z", "-ww", "-man"])
+            .arg(&file)
+            .output()
+            .expect("groff runs (Debian groff-base)");
+        assert!(
+            groff.status.success() && groff.stderr.is_empty(),
+            "{}: {}",
+            file.display(),
+            String::from_utf8_lossy(&groff.stderr)
+        );
+    }
 }
 
 #[test]

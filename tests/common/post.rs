@@ -127,3 +127,11 @@ pub fn plotter(dialect: Dialect) -> MachineProfile {
         ..machine(dialect)
     }
 }
+
+/// Held by the tests that run the controllers' or other tools' own programs (LinuxCNC, GRBL's
+/// planner, rs274, ezdxf), so that they run one at a time: LinuxCNC's simulation in user space
+/// stalls now and then when other work takes the CPU from its servo thread.
+pub fn external_tools_alone() -> std::sync::MutexGuard<'static, ()> {
+    static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    LOCK.lock().unwrap_or_else(|e| e.into_inner())
+}

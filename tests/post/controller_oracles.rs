@@ -7,6 +7,8 @@
 //! These tests need the oracles and panic when they are missing; they are ignored in a plain
 //! `cargo test`.
 
+use crate::post_common;
+
 use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -239,6 +241,7 @@ fn fiber_jobs() -> Vec<(&'static str, CreasePattern)> {
 #[test]
 #[ignore = "needs ../shared oracles"]
 fn linuxcnc_runs_the_miura_and_bird_base_within_five_percent_of_plan() {
+    let _alone = post_common::external_tools_alone();
     let machine = load_machine("linuxcnc-fiber").expect("shipped");
     let mut texts = Vec::new();
     let mut owners = Vec::new();
@@ -317,6 +320,7 @@ fn assert_close_to_grbl(what: &str, plan_s: f64, text: &str, machine: &str) {
 #[test]
 #[ignore = "needs ../shared oracles"]
 fn grbl_runs_the_plotter_test_grid_within_two_percent_of_plan() {
+    let _alone = post_common::external_tools_alone();
     // The calibration grid on the pen plotter: 184 separate strokes, each stopped for the pen
     // (GRBL's step idle delay at every stop). (On grbl-diode it runs 270.27 s against 270.06 s
     // planned; left out to keep CI short.)
@@ -332,6 +336,7 @@ fn grbl_runs_the_plotter_test_grid_within_two_percent_of_plan() {
 #[test]
 #[ignore = "needs ../shared oracles"]
 fn grbl_runs_a_miura_ori_within_two_percent_of_plan() {
+    let _alone = post_common::external_tools_alone();
     // Long diagonal strokes: GRBL limits each axis, so its diagonals accelerate faster.
     let cp = MiuraOri::default().build().expect("miura");
     for machine in ["grbl-diode", "grbl-pen-plotter"] {

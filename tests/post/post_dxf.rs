@@ -166,6 +166,7 @@ fn ezdxf_available() -> bool {
 #[test]
 #[ignore = "needs python3 with ezdxf (pip install ezdxf); .ci/run installs it"]
 fn ezdxf_audit_is_clean_and_counts_match() {
+    let _alone = post_common::external_tools_alone();
     assert!(
         ezdxf_available(),
         "python3 with ezdxf is not available (pip install ezdxf)"

@@ -335,6 +335,7 @@ fn linuxcnc_frames_each_stroke_and_uses_parentheses() {
 #[test]
 #[ignore = "needs rs274 (Debian linuxcnc-uspace)"]
 fn linuxcnc_interpreter_accepts_the_program() {
+    let _alone = post_common::external_tools_alone();
     let plan = plan(job());
     let text = program(&plan, &machine(Dialect::LinuxCnc));
     let dir = tempfile::tempdir().unwrap();

@@ -2,6 +2,8 @@
 //! machine, LightBurn, DXF and SVG layers per cell), framing jobs, LightBurn perforations along
 //! curved creases, and plotter statistics agreeing with what the plotter draws.
 
+use crate::post_common;
+
 use foldcam::design::classic::MiuraOri;
 use foldcam::fab::testgrid::{TestGrid, TestGridOptions, test_grid};
 use foldcam::fab::{FabPlan, Operation, PlanOptions, plan};
@@ -408,6 +410,7 @@ fn plotter_statistics_count_what_the_plotter_draws() {
 #[test]
 #[ignore = "needs rs274 (Debian linuxcnc-uspace)"]
 fn linuxcnc_reads_every_test_grid_and_frame_to_its_end() {
+    let _alone = post_common::external_tools_alone();
     let cp = MiuraOri::default().build().expect("miura");
     let mut read = 0;
     for name in shipped_machines() {
