@@ -11,7 +11,6 @@
 
 use std::path::Path;
 
-
 use foldcam::fab::{FabPlan, Operation, PlanOptions, PlanOverrides, plan};
 use foldcam::machine::{MachineProfile, load_machine, load_material};
 use foldcam::pattern::{CreasePattern, PlanarizeOptions, planarize};
@@ -381,4 +380,138 @@ fn too_many_dash_patterns_for_lightburn_are_refused_with_a_way_out() {
     let xml = post::lbrn2(&p, &p.jobs[0], &machine, LbrnPerforation::Dashes).expect("dashes");
     let (n, m, d) = deviation(&foldcam_dashes(&p, &machine), &lightburn_dashes(&xml));
     assert!(n == m && d < 1e-3, "{n} {m} {d}");
+}
+
+/// The layer groups of an SVG at the root: (id, label, number of drawn elements).
+fn svg_layers(svg: &str) -> Vec<(String, String, usize)> {
+    const INKSCAPE: &str = "http://www.inkscape.org/namespaces/inkscape";
+    let doc = roxmltree::Document::parse(svg).expect("well-formed SVG");
+    doc.root_element()
+        .children()
+        .filter(|n| n.attribute((INKSCAPE, "groupmode")) == Some("layer"))
+        .map(|g| {
+            let drawn = g
+                .children()
+                .filter(|c| ["path", "line", "polyline", "polygon"].contains(&c.tag_name().name()))
+                .count();
+            (
+                g.attribute("id").unwrap_or_default().to_string(),
+                g.attribute((INKSCAPE, "label"))
+                    .unwrap_or_default()
+                    .to_string(),
+                drawn,
+            )
+        })
+        .collect()
+}
+
+/// The layers vpype makes of `svg`: `vpype read FILE write OUT` and OUT's layer groups (vpype
+/// writes layer N as `id="layerN"` with the name it read as label, one element per line).
+fn vpype_layers(svg: &str) -> Vec<(String, String, usize)> {
+    let dir = tempfile::tempdir().expect("temporary folder");
+    let (input, output) = (dir.path().join("job.svg"), dir.path().join("vpype.svg"));
+    std::fs::write(&input, svg).expect("written");
+    let run = std::process::Command::new("vpype")
+        .arg("read")
+        .arg(&input)
+        .arg("write")
+        .arg(&output)
+        .output()
+        .expect("vpype on PATH (python3 -m pip install vpype)");
+    assert!(
+        run.status.success(),
+        "vpype read: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    svg_layers(&std::fs::read_to_string(&output).expect("vpype's SVG"))
+}
+
+/// vpype keeps every layer of `svg` apart, numbered in order, with every element a line of
+/// its own; returns the layers.
+fn assert_vpype_keeps_layers_apart(what: &str, svg: &str) -> Vec<(String, String, usize)> {
+    let ours = svg_layers(svg);
+    let theirs = vpype_layers(svg);
+    eprintln!(
+        "{what}: {} layers written, vpype reads {}: {:?}",
+        ours.len(),
+        theirs.len(),
+        theirs.iter().map(|l| &l.1).collect::<Vec<_>>()
+    );
+    let numbered: Vec<(String, String, usize)> = ours
+        .iter()
+        .enumerate()
+        .map(|(i, (_, label, n))| (format!("layer{}", i + 1), label.clone(), *n))
+        .collect();
+    assert_eq!(theirs, numbered, "{what}");
+    ours
+}
+
+#[test]
+#[ignore = "needs vpype (pip)"]
+fn vpype_reads_one_layer_per_assignment_in_order() {
+    let machine = load_machine("grbl-pen-plotter").expect("shipped");
+    let material = load_material("card-300gsm").expect("shipped");
+    let bird = designs().remove(0).1;
+    // Mountains plotted, valleys marked: two pens.
+    let p = planned(&bird, &machine, "card-300gsm");
+    let svg = post::svg(&p, &p.jobs[0], &machine.bed, false).expect("svg");
+    let layers = assert_vpype_keeps_layers_apart("bird base, plotter", &svg);
+    let labels: Vec<&str> = layers.iter().map(|l| l.1.as_str()).collect();
+    assert_eq!(labels, ["mark", "plot"]);
+    // Dashed valleys: every dash is a line of vpype's perforate layer.
+    let overrides = PlanOverrides {
+        valley: Some(Some(Operation::Perforate)),
+        ..Default::default()
+    };
+    let o = PlanOptions::for_machine(&machine, &material, &overrides).expect("adapts");
+    let dashed = plan(&bird, &machine, &material, &o).expect("plans");
+    let svg = post::svg(&dashed, &dashed.jobs[0], &machine.bed, false).expect("svg");
+    let layers = assert_vpype_keeps_layers_apart("bird base, dashed valleys", &svg);
+    let dashes = foldcam_dashes(&dashed, &machine).len();
+    let perforate = layers
+        .iter()
+        .find(|l| l.1 == "perforate")
+        .expect("perforate");
+    assert!(
+        dashes > 50 && perforate.2 == dashes,
+        "{dashes} {perforate:?}"
+    );
+    // A calibration grid: 27 cells of their own, whose names hold digits, between the mark
+    // and the cut layers.
+    let laser = load_machine("grbl-diode").expect("shipped");
+    let paper = load_material("paper-160gsm").expect("shipped");
+    let opts = foldcam::fab::testgrid::TestGridOptions::around(&paper, &laser);
+    let grid = foldcam::fab::testgrid::test_grid(&laser, &paper, &opts).expect("grid");
+    let svg = post::svg(&grid.plan, &grid.plan.jobs[0], &laser.bed, false).expect("svg");
+    let layers = assert_vpype_keeps_layers_apart("calibration grid", &svg);
+    assert_eq!(layers.len(), grid.cells.len() + 2);
+    assert_eq!(layers[0].1, "mark");
+    assert_eq!(layers[1].1, "2 perforate-cell-1");
+}
+
+#[test]
+fn svg_layers_carry_their_number_first_where_vpype_looks_for_it() {
+    // What vpype 1.15 reads (`read_multilayer_svg`): the first digits of the label, else of
+    // the id, else the group's position. Without a vpype, the numbers it would read.
+    let first_digits = |s: &str| -> Option<usize> {
+        let digits: String = s
+            .chars()
+            .skip_while(|c| !c.is_ascii_digit())
+            .take_while(|c| c.is_ascii_digit())
+            .collect();
+        digits.parse().ok()
+    };
+    let laser = load_machine("grbl-diode").expect("shipped");
+    let paper = load_material("paper-160gsm").expect("shipped");
+    let opts = foldcam::fab::testgrid::TestGridOptions::around(&paper, &laser);
+    let grid = foldcam::fab::testgrid::test_grid(&laser, &paper, &opts).expect("grid");
+    let svg = post::svg(&grid.plan, &grid.plan.jobs[0], &laser.bed, false).expect("svg");
+    let layers = svg_layers(&svg);
+    assert_eq!(layers.len(), grid.cells.len() + 2);
+    for (i, (id, label, _)) in layers.iter().enumerate() {
+        let read = first_digits(label)
+            .or_else(|| first_digits(id))
+            .unwrap_or(i + 1);
+        assert_eq!(read, i + 1, "{id} {label}");
+    }
 }

@@ -271,7 +271,7 @@ fn testgrid_dxf_and_svg_give_every_cell_a_layer_with_unique_handles() {
     let labels: Vec<&str> = doc
         .descendants()
         .filter_map(|g| g.attribute(("http://www.inkscape.org/namespaces/inkscape", "label")))
-        .filter(|l| l.starts_with("perforate-cell-"))
+        .filter(|l| l.contains(" perforate-cell-"))
         .collect();
     assert_eq!(labels.len(), n);
 }
