@@ -74,8 +74,11 @@ struct Setting {
     perforation: Option<(f64, f64)>,
 }
 
+/// A `Path` shape as read back: its layer index and its polyline.
+type Shape = (usize, Vec<DVec2>);
+
 /// The project's settings by index and its `Path` shapes as (index, polyline).
-fn read_project(xml: &str) -> (Vec<(usize, Setting)>, Vec<(usize, Vec<DVec2>)>) {
+fn read_project(xml: &str) -> (Vec<(usize, Setting)>, Vec<Shape>) {
     let doc = roxmltree::Document::parse(xml).expect("well-formed XML");
     let root = doc.root_element();
     assert_eq!(root.tag_name().name(), "LightBurnProject");

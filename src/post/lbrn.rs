@@ -62,6 +62,11 @@ pub const MAX_LAYERS: usize = 30;
 /// Simulator's `HexSpiralTess` at 120 mm needs 47 layers at 0.005 mm, 25 at 0.02 mm.
 pub const PERFORATION_TOLERANCE_MM: f64 = 0.02;
 
+/// A dash/gap pair for LightBurn's perforation mode, `(perfLen, perfSkip)`, mm.
+type Pair = (f64, f64);
+/// A run of a crease's dashes written as one path: `(first dash, last dash)`, indices.
+type Run = (usize, usize);
+
 /// How a LightBurn project draws perforated creases.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum LbrnPerforation {
@@ -215,10 +220,7 @@ fn perf_round(value: f64) -> f64 {
 /// `(first dash, last dash)` its paths cover: the first of `pairs` that lays the dashes
 /// within [`PERFORATION_TOLERANCE_MM`] in no more runs than the crease's own pair (median
 /// dash, median gap), else that own pair. `None` for a crease without dashes.
-fn fit_crease(
-    dashes: &[Vec<DVec2>],
-    pairs: &[(f64, f64)],
-) -> Option<((f64, f64), Vec<(usize, usize)>)> {
+fn fit_crease(dashes: &[Vec<DVec2>], pairs: &[(f64, f64)]) -> Option<(Pair, Vec<Run>)> {
     if dashes.is_empty() {
         return None;
     }
