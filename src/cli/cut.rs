@@ -5,7 +5,9 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use foldcam::fab::{FabPlan, Operation};
 use foldcam::formats::OutputSet;
-use foldcam::job::{JOB_EXTENSIONS, Job, JobFormat, check_gcode, job_file, job_paths};
+use foldcam::job::{
+    JOB_EXTENSIONS, Job, JobFormat, WriterChoices, check_gcode, job_file, job_paths,
+};
 use foldcam::machine::MachineProfile;
 
 use super::Outcome;
@@ -33,9 +35,16 @@ pub struct Args {
     /// Write DXF R12 (LINE/POLYLINE) instead of R2000.
     #[arg(long)]
     pub r12: bool,
-    /// In SVG output, draw perforations as dashed strokes (for plotting) instead of dashes.
+    /// In SVG output, draw each perforated crease as one path with a dash style (for viewing
+    /// in Inkscape) instead of one path per dash; plotter software such as vpype, and
+    /// LightBurn, draw dash styles as solid lines.
     #[arg(long)]
     pub dasharray: bool,
+    /// In a LightBurn project (.lbrn2), hand perforations to LightBurn's perforation mode:
+    /// each crease one path, one layer per distinct dash and gap, so every crease keeps its
+    /// fitted dashes. By default every dash is a shape of its own.
+    #[arg(long)]
+    pub lightburn_perforation: bool,
     /// Write a framing job instead of the job (G-code only): the job's bounding box traced
     /// with the laser off (or the pen up), as LightBurn's Frame does, to see where it lands
     /// on the sheet. (The FOLD frame to read is --fold-frame.)
@@ -45,6 +54,17 @@ pub struct Args {
     /// (0 to 1; default 0: off), at the material's mark speed. Ignored by pen plotters.
     #[arg(long, value_name = "SHARE", requires = "frame", value_parser = frame_power)]
     pub frame_power: Option<f64>,
+}
+
+impl Args {
+    /// The writer choices asked for.
+    pub fn choices(&self) -> WriterChoices {
+        WriterChoices {
+            r12: self.r12,
+            dasharray: self.dasharray,
+            lightburn_perforation: self.lightburn_perforation,
+        }
+    }
 }
 
 /// Parses a power from 0 to 1.
@@ -73,7 +93,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         return Ok(Outcome::Done);
     }
     let mut outputs = OutputSet::new();
-    stage_job(&mut outputs, &output, &job, args.r12, args.dasharray)?;
+    stage_job(&mut outputs, &output, &job, args.choices())?;
     super::outputs::commit(outputs, &[input])?;
     out!("{}", super::plan::summary(&job.plan));
     Ok(Outcome::Done)
@@ -88,7 +108,7 @@ fn write_frames(
     power: f64,
     input: &Path,
 ) -> Result<()> {
-    if job_format(output, false, false)? != JobFormat::Gcode {
+    if job_format(output, WriterChoices::default())? != JobFormat::Gcode {
         bail!(
             "{}: --frame writes G-code (.gcode, .nc, .ngc); LightBurn and other job software \
              frame a drawing themselves",
@@ -125,18 +145,22 @@ fn write_frames(
     Ok(())
 }
 
-/// The job format `output`'s extension asks for, with the DXF and SVG choices.
-pub fn job_format(output: &Path, r12: bool, dasharray: bool) -> Result<JobFormat> {
+/// The job format `output`'s extension asks for, with the writer choices that apply to it
+/// (a warning names each one that does not).
+pub fn job_format(output: &Path, choices: WriterChoices) -> Result<JobFormat> {
     let Some(format) = JobFormat::from_path(output) else {
         bail!(
             "{}: unknown job type (expected {JOB_EXTENSIONS})",
             output.display()
         );
     };
-    if dasharray && !matches!(format, JobFormat::Svg { .. }) {
+    if choices.dasharray && !matches!(format, JobFormat::Svg { .. }) {
         errln!("warning: --dasharray applies to SVG output only: ignored");
     }
-    Ok(format.with_choices(r12, dasharray))
+    if choices.lightburn_perforation && !matches!(format, JobFormat::Lbrn2 { .. }) {
+        errln!("warning: --lightburn-perforation applies to .lbrn2 output only: ignored");
+    }
+    Ok(format.with_choices(choices))
 }
 
 /// Stages a planned job's files as `output`'s extension says (see [`stage_plan`]).
@@ -144,10 +168,9 @@ pub fn stage_job(
     outputs: &mut OutputSet,
     output: &Path,
     job: &Job<'_>,
-    r12: bool,
-    dasharray: bool,
+    choices: WriterChoices,
 ) -> Result<()> {
-    stage_plan(outputs, output, &job.plan, job.machine, r12, dasharray)
+    stage_plan(outputs, output, &job.plan, job.machine, choices)
 }
 
 /// Renders every job of the plan as `output`'s extension says (G-code first read back by
@@ -158,10 +181,9 @@ pub fn stage_plan(
     output: &Path,
     p: &FabPlan,
     machine: &MachineProfile,
-    r12: bool,
-    dasharray: bool,
+    choices: WriterChoices,
 ) -> Result<()> {
-    let format = job_format(output, r12, dasharray)?;
+    let format = job_format(output, choices)?;
     if super::pipe::is_stdout(output) && p.jobs.len() > 1 {
         bail!(
             "-: a two-sided plan is {} files (front and back): name the output instead of \
@@ -177,6 +199,12 @@ pub fn stage_plan(
     if format == (JobFormat::Svg { dasharray: true }) && !perforates {
         errln!("warning: --dasharray: the plan has no perforation to draw dashed");
     }
+    if format == (JobFormat::Svg { dasharray: true }) && perforates && machine.pen_tool() {
+        errln!(
+            "warning: --dasharray on a plotter: vpype and plotter drivers draw dash styles as \
+             solid lines; without --dasharray every dash is a path of its own"
+        );
+    }
     for (job, path) in p.jobs.iter().zip(job_paths(output, p)) {
         let bytes =
             job_file(format, p, job, machine).with_context(|| path.display().to_string())?;
@@ -190,11 +218,10 @@ pub fn write_plan(
     output: &Path,
     p: &FabPlan,
     machine: &MachineProfile,
-    r12: bool,
-    dasharray: bool,
+    choices: WriterChoices,
 ) -> Result<()> {
     let mut outputs = OutputSet::new();
-    stage_plan(&mut outputs, output, p, machine, r12, dasharray)?;
+    stage_plan(&mut outputs, output, p, machine, choices)?;
     super::outputs::commit(outputs, &[])?;
     out!("{}", super::plan::summary(p));
     Ok(())

@@ -31,12 +31,26 @@ pub struct DesignOutput {
     /// With --machine and .dxf output: DXF R12 instead of R2000.
     #[arg(long, help_heading = "Cutting")]
     pub r12: bool,
-    /// With --machine and .svg output: perforations as dashed strokes.
+    /// With --machine and .svg output: each perforated crease as one path with a dash style
+    /// (for viewing) instead of one path per dash.
     #[arg(long, help_heading = "Cutting")]
     pub dasharray: bool,
+    /// With --machine and .lbrn2 output: LightBurn's perforation mode, one layer per
+    /// distinct dash and gap, instead of one shape per dash.
+    #[arg(long, help_heading = "Cutting")]
+    pub lightburn_perforation: bool,
 }
 
 impl DesignOutput {
+    /// The writer choices asked for.
+    pub fn choices(&self) -> foldcam::job::WriterChoices {
+        foldcam::job::WriterChoices {
+            r12: self.r12,
+            dasharray: self.dasharray,
+            lightburn_perforation: self.lightburn_perforation,
+        }
+    }
+
     /// `-o` as a target ([`super::outputs::target`]: `-` is standard output).
     pub fn target(&self) -> Result<PathBuf> {
         super::outputs::target(&self.output)
@@ -61,7 +75,7 @@ impl DesignOutput {
         let (machine, material, options) = self.fab.resolve(machine, material)?;
         let job = Job::plan_with(cp, &machine, &material, options)
             .with_context(|| path.display().to_string())?;
-        super::cut::stage_job(outputs, path, &job, self.r12, self.dasharray)?;
+        super::cut::stage_job(outputs, path, &job, self.choices())?;
         out!("{}", super::plan::summary(&job.plan));
         Ok(())
     }

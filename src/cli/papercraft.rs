@@ -129,8 +129,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         if let Some((m, x, o)) = &profiles {
             let sheet = sheet_path(job_path, s);
             let p = plan(cp, m, x, o).with_context(|| sheet.display().to_string())?;
-            let (r12, dashes) = (args.out.r12, args.out.dasharray);
-            super::cut::stage_plan(&mut outputs, &sheet, &p, m, r12, dashes)?;
+            super::cut::stage_plan(&mut outputs, &sheet, &p, m, args.out.choices())?;
             plans.push(p);
         }
         if profiles.is_none() || job.is_some() {

@@ -100,6 +100,11 @@ pub struct Args {
     /// Write DXF R12 instead of R2000.
     #[arg(long)]
     pub r12: bool,
+    /// In a LightBurn project (.lbrn2), each coupon's crease as one path in LightBurn's
+    /// perforation mode (its layer's cut and skip are the coupon's dash and gap) instead of
+    /// one shape per dash.
+    #[arg(long)]
+    pub lightburn_perforation: bool,
 }
 
 /// Builds, writes and describes the grid.
@@ -124,7 +129,12 @@ pub fn run(args: Args) -> Result<Outcome> {
     opts.label_mm = args.label_height;
     opts.margin_mm = args.margin;
     let grid = test_grid(&machine, &material, &opts)?;
-    super::cut::write_plan(&output, &grid.plan, &machine, args.r12, false)?;
+    let choices = foldcam::job::WriterChoices {
+        r12: args.r12,
+        dasharray: false,
+        lightburn_perforation: args.lightburn_perforation,
+    };
+    super::cut::write_plan(&output, &grid.plan, &machine, choices)?;
     outln!(
         "{} cells ({} mm creases): cell, dash mm, bridge mm, power %, speed mm/min",
         grid.cells.len(),

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::fab::FabPlan;
-use crate::post::DxfVersion;
+use crate::post::{DxfVersion, LbrnPerforation};
 
 /// A machine-job file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,7 +18,10 @@ pub enum JobFormat {
         dasharray: bool,
     },
     /// LightBurn project, one layer per operation (`.lbrn2`).
-    Lbrn2,
+    Lbrn2 {
+        /// Perforations as dash shapes (the default) or LightBurn's perforation mode.
+        perforation: LbrnPerforation,
+    },
 }
 
 /// The extensions [`JobFormat::from_path`] knows, for messages.
@@ -26,13 +29,15 @@ pub const JOB_EXTENSIONS: &str = ".gcode, .nc, .ngc, .gc, .dxf, .svg or .lbrn2";
 
 impl JobFormat {
     /// The format an extension asks for (case-insensitive, without the dot), DXF as R2000
-    /// and SVG with dashes; `None` for any other extension.
+    /// SVG with dashes and LightBurn projects with dash shapes; `None` for any other extension.
     pub fn from_extension(ext: &str) -> Option<JobFormat> {
         Some(match ext.to_ascii_lowercase().as_str() {
             "gcode" | "nc" | "ngc" | "gc" => JobFormat::Gcode,
             "dxf" => JobFormat::Dxf(DxfVersion::R2000),
             "svg" => JobFormat::Svg { dasharray: false },
-            "lbrn2" => JobFormat::Lbrn2,
+            "lbrn2" => JobFormat::Lbrn2 {
+                perforation: LbrnPerforation::Dashes,
+            },
             _ => return None,
         })
     }
@@ -48,7 +53,7 @@ impl JobFormat {
             JobFormat::Gcode => "gcode",
             JobFormat::Dxf(_) => "dxf",
             JobFormat::Svg { .. } => "svg",
-            JobFormat::Lbrn2 => "lbrn2",
+            JobFormat::Lbrn2 { .. } => "lbrn2",
         }
     }
 }

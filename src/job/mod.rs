@@ -244,17 +244,40 @@ fn render(
         JobFormat::Gcode => post::gcode(plan, job, machine)?.into_bytes(),
         JobFormat::Dxf(version) => post::dxf(plan, job, version)?,
         JobFormat::Svg { dasharray } => post::svg(plan, job, &machine.bed, dasharray)?.into_bytes(),
-        JobFormat::Lbrn2 => post::lbrn2(plan, job, machine)?.into_bytes(),
+        JobFormat::Lbrn2 { perforation } => {
+            post::lbrn2(plan, job, machine, perforation)?.into_bytes()
+        }
     })
 }
 
-/// DXF R12 instead of R2000, or SVG perforations as dashed strokes: the two writer choices.
+/// The writer choices a command line can make: DXF R12 instead of R2000, SVG perforations as
+/// dashed strokes, LightBurn's perforation mode in a LightBurn project.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WriterChoices {
+    /// DXF R12 (`LINE`/`POLYLINE`) instead of R2000.
+    pub r12: bool,
+    /// SVG perforations as one path per crease with a `stroke-dasharray`.
+    pub dasharray: bool,
+    /// LightBurn projects use LightBurn's perforation mode (one layer per dash/gap pair)
+    /// instead of dash shapes.
+    pub lightburn_perforation: bool,
+}
+
 impl JobFormat {
-    /// This format with DXF R12 (when DXF) and SVG dashed strokes (when SVG) as asked.
-    pub fn with_choices(self, r12: bool, dasharray: bool) -> JobFormat {
+    /// This format with the `choices` that apply to it (the others are ignored).
+    pub fn with_choices(self, choices: WriterChoices) -> JobFormat {
         match self {
-            JobFormat::Dxf(_) if r12 => JobFormat::Dxf(DxfVersion::R12),
-            JobFormat::Svg { .. } => JobFormat::Svg { dasharray },
+            JobFormat::Dxf(_) if choices.r12 => JobFormat::Dxf(DxfVersion::R12),
+            JobFormat::Svg { .. } => JobFormat::Svg {
+                dasharray: choices.dasharray,
+            },
+            JobFormat::Lbrn2 { .. } => JobFormat::Lbrn2 {
+                perforation: if choices.lightburn_perforation {
+                    post::LbrnPerforation::LightBurn
+                } else {
+                    post::LbrnPerforation::Dashes
+                },
+            },
             other => other,
         }
     }

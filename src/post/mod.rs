@@ -23,6 +23,7 @@ mod style;
 mod svg;
 
 pub use check::{MAX_COORD_MM, MAX_RESOLUTION_MM, MIN_RESOLUTION_MM};
+pub use lbrn::{LbrnPerforation, PERFORATION_TOLERANCE_MM};
 pub use style::{LayerStyle, layer_style};
 
 use crate::fab::{FabPlan, Job};
@@ -89,6 +90,21 @@ pub enum PostError {
         /// Layers the format holds.
         limit: usize,
     },
+    /// More distinct dash/gap pairs than a LightBurn project has layers, with LightBurn's
+    /// perforation mode.
+    #[error(
+        "job {job} needs {layers} LightBurn layers with LightBurn's perforation mode (one per \
+         distinct dash and gap of the creases); a project holds at most {limit} (its colour \
+         layers 00-29): write the dashes as shapes instead (leave out --lightburn-perforation)"
+    )]
+    TooManyDashPatterns {
+        /// The job name.
+        job: String,
+        /// Layers needed.
+        layers: usize,
+        /// Layers the format holds.
+        limit: usize,
+    },
     /// A machine profile value cannot be written.
     #[error("machine {machine}: {key} = {message}")]
     BadMachine {
@@ -133,14 +149,23 @@ pub fn dxf(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, Po
 }
 
 /// LightBurn project (`.lbrn2`) of one job: one layer per operation with the material's
-/// speed, power, passes and (for perforation) LightBurn's perforation settings; see
-/// [`lbrn`](mod@lbrn) for the format and the LightBurn version followed.
+/// speed, power and passes, in drawing coordinates (mm, y up from the bed's front-left
+/// corner). Perforations are the fitted dashes as shapes ([`LbrnPerforation::Dashes`]) or
+/// paths for LightBurn's perforation mode, one layer per distinct dash/gap pair
+/// ([`LbrnPerforation::LightBurn`]); see [`lbrn`](mod@lbrn) for the format and the LightBurn
+/// versions it was compared with.
 ///
 /// # Errors
-/// [`PostError::BadCoordinate`], [`PostError::EmptyJob`] or [`PostError::TooManyLayers`].
-pub fn lbrn2(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
+/// [`PostError::BadCoordinate`], [`PostError::EmptyJob`], [`PostError::TooManyLayers`] or,
+/// with LightBurn's perforation mode, [`PostError::TooManyDashPatterns`].
+pub fn lbrn2(
+    plan: &FabPlan,
+    job: &Job,
+    machine: &MachineProfile,
+    perforation: LbrnPerforation,
+) -> Result<String, PostError> {
     check::job(job)?;
-    lbrn::write(plan, job, machine)
+    lbrn::write(plan, job, machine, perforation)
 }
 
 /// SVG of one job on `bed`, one Inkscape layer per operation; `dasharray` draws perforations

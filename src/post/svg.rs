@@ -6,14 +6,20 @@
 //! the bed's y already grows toward the front (`Bed::y_flipped`); x is kept. Coordinates are
 //! printed on a 0.001 mm grid.
 //!
-//! Each operation present gets a layer (`<g inkscape:groupmode="layer"
+//! Each operation present gets a layer (`<g id="layer3" inkscape:groupmode="layer"
 //! inkscape:label="cut">`; and each settings override present one more, see
 //! [`super::layers`]), in execution order, so later operations draw on top) stroked in
 //! its LightBurn colour (see [`super::layer_style`]) with a 0.025 mm hairline and no fill;
-//! LightBurn and Inkscape import one layer per colour or group. Every stroke is one `<path>`,
-//! perforation dashes included. With `dasharray`, each perforation toolpath is instead one
-//! `<path>` through all its dashes, whose `stroke-dasharray` lists every dash and gap length
-//! exactly, for plotting software that lifts the pen on gaps.
+//! LightBurn and Inkscape import one layer per colour or group. The groups are numbered
+//! `layer1`, `layer2`, … in that order, and a label with digits of its own (a calibration
+//! cell's, `perforate-cell-4`) starts with its layer's number (`2 perforate-cell-4`): vpype
+//! (1.15) takes a layer's number from the first digits of its `inkscape:label`, then of its
+//! `id`, so `vpype read` gives one layer per group, numbered in execution order.
+//!
+//! Every stroke is one `<path>`, perforation dashes included, so a pen plotter (or vpype,
+//! which draws dash styles as solid lines) draws each dash. With `dasharray`, each perforation
+//! toolpath is instead one `<path>` through all its dashes, whose `stroke-dasharray` lists
+//! every dash and gap length exactly, for viewing in software that draws dash styles.
 
 use std::fmt::Write;
 
@@ -52,12 +58,14 @@ pub fn write(plan: &FabPlan, job: &Job, bed: &Bed, dasharray: bool) -> Result<St
         flip: !bed.y_flipped,
     };
     let mut body = String::new();
+    let mut number = 0;
     for l in layers(plan, job) {
         let paths: Vec<&Toolpath> = job.paths.iter().filter(|p| l.holds(plan, p)).collect();
         let dashed = dasharray && l.op == Operation::Perforate;
         let elements = layer_elements(&page, &paths, dashed);
         if !elements.is_empty() {
-            layer(&mut body, plan, &l, &elements);
+            number += 1;
+            layer(&mut body, plan, &l, number, &elements);
         }
     }
     if body.is_empty() {
@@ -91,13 +99,26 @@ fn document(page: &Page, bed: &Bed, name: &str, body: &str) -> String {
     out
 }
 
-/// One layer group holding `elements`, with the layer's settings in its `<desc>`.
-fn layer(out: &mut String, plan: &FabPlan, l: &Layer, elements: &[String]) {
+/// The Inkscape label of layer `number` named `name`: the name, with the number in front when
+/// the name holds digits of its own (vpype takes a layer's number from the first digits of its
+/// label, then of its id).
+fn layer_label(name: &str, number: usize) -> String {
+    if name.chars().any(|c| c.is_ascii_digit()) {
+        format!("{number} {name}")
+    } else {
+        name.to_string()
+    }
+}
+
+/// Layer group number `number` (from 1) holding `elements`, with the layer's settings in its
+/// `<desc>`.
+fn layer(out: &mut String, plan: &FabPlan, l: &Layer, number: usize, elements: &[String]) {
     let style = layer_style(l.op);
     let name = l.name.as_str();
+    let label = crate::formats::svg::write::escape(&layer_label(name, number));
     let _ = writeln!(
         out,
-        "  <g id=\"layer-{name}\" inkscape:groupmode=\"layer\" inkscape:label=\"{name}\" \
+        "  <g id=\"layer{number}\" inkscape:groupmode=\"layer\" inkscape:label=\"{label}\" \
          fill=\"none\" stroke=\"{}\" stroke-width=\"{HAIRLINE_MM}\" \
          stroke-linejoin=\"round\">",
         style.hex

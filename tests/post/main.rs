@@ -7,6 +7,7 @@
 mod post_common;
 
 mod controller_oracles;
+mod lightburn_vpype;
 mod machine_profiles;
 mod motion;
 mod post_dxf;
