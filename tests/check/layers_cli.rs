@@ -270,15 +270,7 @@ fn fold_flat_states_are_isometric_admitted_and_distinct() {
         let mut flat = imported.pattern;
         // Isometric: every edge keeps its length.
         let (mut lo, mut hi) = (glam::DVec2::splat(f64::MAX), glam::DVec2::splat(f64::MIN));
-        for e in &flat.edges {
-            let [a, b] = e.vertices;
-            let flat_mm = flat.position(a).distance(flat.position(b));
-            let folded_mm = folded.positions[a.index()].distance(folded.positions[b.index()]);
-            assert!(
-                (folded_mm - flat_mm).abs() <= 1e-6 * flat_mm.max(1.0),
-                "state {state}"
-            );
-        }
+        crate::isometry::assert_isometric(&flat, &folded, 1e-6, &format!("state {state}"));
         for p in &folded.positions {
             assert!(p.z.abs() < 1e-9, "state {state}: not flat");
             lo = lo.min(p.truncate());

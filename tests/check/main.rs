@@ -5,6 +5,8 @@
 
 mod check;
 mod geom_oracles;
+#[path = "../common/isometry.rs"]
+mod isometry;
 mod layers;
 mod layers_cli;
 mod planarize;

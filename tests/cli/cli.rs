@@ -239,17 +239,7 @@ fn demo_runs_end_to_end() {
     assert!(folded.positions.iter().any(|p| p.z.abs() > 1.0));
     // Folded, the sheet is not stretched: every edge keeps its flat length (the bar-and-hinge
     // model lets bars strain a little).
-    let flat = &miura.pattern;
-    assert_eq!(folded.edges.len(), flat.edges.len());
-    for e in &flat.edges {
-        let [a, b] = e.vertices;
-        let flat_mm = flat.position(a).distance(flat.position(b));
-        let folded_mm = folded.positions[a.index()].distance(folded.positions[b.index()]);
-        assert!(
-            (folded_mm - flat_mm).abs() <= 0.01 * flat_mm,
-            "edge {a:?}-{b:?}: {flat_mm} mm flat, {folded_mm} mm folded"
-        );
-    }
+    crate::isometry::assert_isometric(&miura.pattern, &folded, 0.01, "folded Miura-ori");
     // Every machine job the demo wrote runs clean on the simulated machine it names
     // (`STEM.MACHINE.EXT`), and burns or draws something.
     let mut jobs = 0;

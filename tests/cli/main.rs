@@ -5,6 +5,8 @@
 
 #[path = "../common/bin.rs"]
 mod bin;
+#[path = "../common/isometry.rs"]
+mod isometry;
 
 mod atomic_write;
 mod cli;

@@ -3,6 +3,8 @@
 //!
 //! One test binary: each module is the tests of one part, so the crate is linked once.
 
+#[path = "../common/isometry.rs"]
+mod isometry;
 #[path = "../common/render3d.rs"]
 mod render3d_common;
 
