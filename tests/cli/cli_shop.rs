@@ -151,6 +151,49 @@ fn testgrid_writes_every_format_and_refuses_values_out_of_range() {
         assert!(String::from_utf8_lossy(&out.stdout).contains("27 cells"));
         assert!(dir.path().join(file).exists());
     }
+    // Lists and FROM:TO:N ranges: 2 dashes × 1 bridge × 3 powers × 2 speeds, and the job burns
+    // each power at each speed (read back on the simulated machine).
+    let out = run_in(
+        dir.path(),
+        &[
+            &base[..],
+            &[
+                "-o",
+                "r.gcode",
+                "--dash",
+                "1,2",
+                "--bridge",
+                "0.5",
+                "--power",
+                "0.2:0.6:3",
+                "--speed",
+                "1200:2400:2",
+            ][..],
+        ]
+        .concat(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("12 cells"));
+    let text = std::fs::read_to_string(dir.path().join("r.gcode")).expect("written");
+    let machine = load_machine("marlin-laser").expect("shipped");
+    let run = foldcam::sim::run(&text, &machine).expect("readable");
+    assert!(run.is_clean(), "{:?}", run.violations.first());
+    for power in [0.2, 0.4, 0.6] {
+        for speed in [1200.0, 2400.0] {
+            let burned: f64 = run
+                .burns
+                .iter()
+                .filter(|b| (run.power_fraction(b.power) - power).abs() < 1e-3)
+                .filter(|b| (b.feed_mm_min - speed).abs() < 1e-6)
+                .map(|b| b.length())
+                .sum();
+            assert!(burned > 10.0, "{power} at {speed} mm/min: {burned} mm");
+        }
+    }
     let out = run_in(
         dir.path(),
         &[&base[..], &["-o", "bad.gcode", "--power", "0.5,2"][..]].concat(),
