@@ -125,6 +125,56 @@ fn cut_frame_writes_a_dark_outline_job_and_refuses_drawings() {
     let machine = load_machine("grbl-diode").expect("shipped");
     let run = foldcam::sim::run(&text, &machine).expect("readable");
     assert!(run.is_clean() && run.burns.is_empty() && run.travels.len() >= 5);
+    // The frame visits the corners of what the job itself burns (both read back on the
+    // simulated machine), and `--frame-power` burns that rectangle's perimeter.
+    let out = run_in(dir.path(), &[&args[..], &["-o", "j.gcode"][..]].concat());
+    assert!(out.status.success());
+    let job_text = std::fs::read_to_string(dir.path().join("j.gcode")).expect("written");
+    let job = foldcam::sim::run(&job_text, &machine).expect("readable");
+    let lo = job
+        .burns
+        .iter()
+        .flat_map(|b| [b.from, b.to])
+        .fold(glam::DVec2::MAX, |a, p| a.min(p));
+    let hi = job
+        .burns
+        .iter()
+        .flat_map(|b| [b.from, b.to])
+        .fold(glam::DVec2::MIN, |a, p| a.max(p));
+    let tol = machine.resolution_mm + 1e-9;
+    for corner in [
+        lo,
+        glam::DVec2::new(hi.x, lo.y),
+        hi,
+        glam::DVec2::new(lo.x, hi.y),
+    ] {
+        assert!(
+            run.travels.iter().any(|t| t.to.distance(corner) <= tol),
+            "the frame misses the job's corner {corner}"
+        );
+    }
+    let out = run_in(
+        dir.path(),
+        &[
+            &args[..],
+            &["-o", "lit.gcode", "--frame", "--frame-power", "0.05"][..],
+        ]
+        .concat(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lit_text = std::fs::read_to_string(dir.path().join("lit.gcode")).expect("written");
+    let lit = foldcam::sim::run(&lit_text, &machine).expect("readable");
+    let perimeter = 2.0 * ((hi.x - lo.x) + (hi.y - lo.y));
+    assert!(lit.is_clean());
+    assert!(
+        (lit.burn_length_mm - perimeter).abs() <= 4.0 * tol,
+        "{} mm burned for a {perimeter} mm frame",
+        lit.burn_length_mm
+    );
     let out = run_in(
         dir.path(),
         &[&args[..], &["-o", "f.svg", "--frame"][..]].concat(),
