@@ -4,7 +4,7 @@
 //!
 //! Files of at least [`GZIP_FROM`] bytes are also sent gzipped to browsers that accept it,
 //! compressed once at their first request ([`gzipped`]): three.js goes from 687 KB to about
-//! 175 KB.
+//! 170 KB (169 894 bytes).
 
 use std::io::Write;
 use std::sync::OnceLock;

@@ -12,7 +12,8 @@ use std::net::TcpListener;
 use std::time::Duration;
 
 use bin::foldcam;
-use browser::{browser, start_driver, wait_until};
+use browser::{browser, click, open_studio, start_driver, wait_until};
+use fantoccini::Locator;
 use serde_json::Value;
 use studio::Server;
 
@@ -124,4 +125,67 @@ async fn a_page_on_another_origin_changes_and_reads_nothing() {
     assert!(after.0 == before.0, "the plan changed");
     let (_, next) = server.post_json("/api/files/0", b"");
     assert_eq!(next["id"], 1, "the hostile page opened a document");
+}
+
+/// The studio's own page under its content security policy: every view shown and a job
+/// planned (the plan's totals once had an inline `style`) break none of it.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_studio_page_breaks_none_of_its_own_policy() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = foldcam(&["generate", "miura", "-o", "miura.fold"], dir.path());
+    assert!(out.status.success());
+    let server = Server::start(&["miura.fold"], dir.path());
+    let (_driver, c) = open_studio(&server.url()).await;
+    c.execute(
+        "window.cspViolations = [];
+         document.addEventListener('securitypolicyviolation',
+           (e) => window.cspViolations.push(`${e.violatedDirective} ${e.blockedURI} ${e.sample}`));",
+        vec![],
+    )
+    .await
+    .unwrap();
+    for view in [
+        "fold",
+        "flat",
+        "folding",
+        "tessellate",
+        "voxel",
+        "popup",
+        "craft",
+        "pattern",
+        "machine",
+    ] {
+        click(&c, &format!("#tabs button[data-view='{view}']")).await;
+    }
+    c.find(Locator::Css("#machine"))
+        .await
+        .unwrap()
+        .select_by_value("grbl-diode")
+        .await
+        .unwrap();
+    c.find(Locator::Css("#material"))
+        .await
+        .unwrap()
+        .select_by_value("card-300gsm")
+        .await
+        .unwrap();
+    click(&c, "#plan-btn").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.planned === 'true' \
+         && document.getElementById('plan-stats').textContent.includes('travel')",
+        "the plan",
+    )
+    .await;
+    // Let the views' late work (3D scenes, examples lists) finish.
+    tokio::time::sleep(Duration::from_secs(2)).await;
+    let violations = c
+        .execute("return window.cspViolations", vec![])
+        .await
+        .unwrap();
+    assert_eq!(
+        violations,
+        serde_json::json!([]),
+        "the page broke its policy"
+    );
 }
