@@ -34,7 +34,7 @@
 
 use std::convert::Infallible;
 use std::hash::{BuildHasher, Hasher};
-use std::net::{IpAddr, SocketAddr};
+use std::net::SocketAddr;
 use std::sync::Arc;
 
 use axum::body::Bytes;
@@ -98,9 +98,8 @@ impl Guard {
             return true;
         }
         self.any_ip_port.is_some_and(|port| {
-            host.parse::<SocketAddr>().is_ok_and(|a| {
-                a.port() == port && !matches!(a.ip(), IpAddr::V4(v) if v.is_unspecified())
-            })
+            host.parse::<SocketAddr>()
+                .is_ok_and(|a| a.port() == port && !a.ip().is_unspecified())
         })
     }
 
