@@ -1,8 +1,13 @@
 // The studio's JSON API: every error comes back as {"error": message}.
 
-/** Fetches JSON; throws an Error carrying the server's message. */
+/** This launch's token, written into the page by the server: the studio refuses requests that
+ * change something without it (other web pages cannot read the page to learn it). */
+const TOKEN = document.querySelector('meta[name="foldcam-token"]')?.content ?? '';
+
+/** Fetches JSON with the page's token; throws an Error carrying the server's message. */
 export async function call(url, options = {}) {
-  const response = await fetch(url, options);
+  const headers = { ...(options.headers || {}), 'x-foldcam-token': TOKEN };
+  const response = await fetch(url, { ...options, headers });
   const text = await response.text();
   let body;
   try {

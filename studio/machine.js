@@ -137,7 +137,7 @@ export class MachineView {
     const s = plan.stats;
     const rows = s.length_mm.map(([op, mm]) => `<tr><td>${op}</td><td>${mm.toFixed(1)} mm</td></tr>`);
     rows.push(`<tr><td>pierces</td><td id="plan-pierces">${s.pierces}</td></tr>`);
-    rows.push(`<tr><td>travel <span style="color:${TRAVEL}">(dashed)</span></td><td>${s.travel_mm.toFixed(1)} mm</td></tr>`);
+    rows.push(`<tr><td>travel <span class="travel-key">(dashed)</span></td><td>${s.travel_mm.toFixed(1)} mm</td></tr>`);
     rows.push(`<tr><td>time (estimated)</td><td id="plan-time">${clock(s.time_s)}</td></tr>`);
     this.stats.innerHTML = `<table>${rows.join('')}</table>` +
       plan.warnings.map((w) => `<p class="muted">warning: ${w.replace(/</g, '&lt;')}</p>`).join('');

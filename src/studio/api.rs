@@ -45,6 +45,7 @@ use super::design_open;
 use super::document::{Document, PatternView};
 use super::edit_api;
 use super::flat::{FlatView, flat_view};
+use super::guard::{self, Guard};
 use super::machine_api;
 use super::settings::UploadedProfiles;
 use crate::check::fold3d::{FoldOptions, fold};
@@ -66,6 +67,8 @@ pub const LAYER_MAX_STATES: u64 = 1_000_000;
 /// The server's state: its configuration and the open documents.
 pub struct Studio {
     config: StudioConfig,
+    /// What keeps other web pages out ([`super::guard`]).
+    guard: Arc<Guard>,
     docs: Mutex<Documents>,
     pub(super) profiles: Mutex<UploadedProfiles>,
 }
@@ -113,9 +116,14 @@ pub(super) enum Step {
 }
 
 impl Studio {
-    /// A studio with no document open.
+    /// A studio with no document open, answering to the address of `config` (give the
+    /// port actually bound).
     pub fn new(config: StudioConfig) -> Studio {
         Studio {
+            guard: Arc::new(Guard::new(std::net::SocketAddr::new(
+                config.host,
+                config.port,
+            ))),
             config,
             docs: Mutex::new(Documents::default()),
             profiles: Mutex::new(UploadedProfiles::default()),
@@ -290,9 +298,11 @@ pub(super) fn upload_text<'a>(name: &str, body: &'a [u8]) -> ApiResult<&'a str> 
     })
 }
 
-/// The routes, with the upload limit of `state`'s configuration.
+/// The routes, with the upload limit of `state`'s configuration, behind the checks of
+/// [`super::guard`] and with its security headers on every response.
 pub fn router(state: Arc<Studio>) -> Router {
     let limit = state.config.max_upload_bytes;
+    let guard = Arc::clone(&state.guard);
     Router::new()
         .route("/api/files", get(files))
         .route("/api/files/{index}", post(open_file))
@@ -320,6 +330,8 @@ pub fn router(state: Arc<Studio>) -> Router {
         .layer(axum::middleware::map_response(no_store))
         .fallback(static_file)
         .layer(DefaultBodyLimit::max(limit))
+        .layer(axum::middleware::from_fn_with_state(guard, guard::check))
+        .layer(axum::middleware::map_response(guard::security_headers))
         .with_state(state)
 }
 
@@ -333,19 +345,35 @@ async fn no_store(mut response: Response) -> Response {
     response
 }
 
-/// An embedded front-end file by exact name; anything else is 404.
-async fn static_file(uri: Uri) -> Response {
+/// An embedded front-end file by exact name; anything else is 404. The page gets this
+/// launch's token ([`Guard::page`]); large files are sent gzipped when the request accepts it.
+async fn static_file(State(s): State<Arc<Studio>>, headers: HeaderMap, uri: Uri) -> Response {
     let path = uri.path();
     let name = if path == "/" {
         "index.html"
     } else {
         path.trim_start_matches('/')
     };
-    match assets::get(name) {
-        Some((bytes, mime)) => ([(header::CONTENT_TYPE, mime)], bytes).into_response(),
-        None => {
-            ApiError::new(StatusCode::NOT_FOUND, format!("{path}: no such page")).into_response()
-        }
+    let Some((bytes, mime)) = assets::get(name) else {
+        return ApiError::new(StatusCode::NOT_FOUND, format!("{path}: no such page"))
+            .into_response();
+    };
+    if name == "index.html" {
+        let page = s.guard.page(&String::from_utf8_lossy(bytes));
+        return ([(header::CONTENT_TYPE, mime)], page).into_response();
+    }
+    let vary = (header::VARY, "accept-encoding");
+    match assets::gzipped(name).filter(|_| assets::accepts_gzip(&headers)) {
+        Some(gz) => (
+            [
+                (header::CONTENT_TYPE, mime),
+                (header::CONTENT_ENCODING, "gzip"),
+                vary,
+            ],
+            gz,
+        )
+            .into_response(),
+        None => ([(header::CONTENT_TYPE, mime), vary], bytes).into_response(),
     }
 }
 

@@ -39,6 +39,7 @@ use super::api::{
 };
 use super::design_open;
 use super::edit_api::json_body;
+use super::guard::JsonBody;
 use super::sessions::Sessions;
 use crate::design::papercraft::ReferenceMesh;
 use crate::design::papercraft::design::parse_design;
@@ -466,7 +467,7 @@ struct LineRequest {
 async fn add_line(
     State(crafts): State<Arc<Crafts>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<SessionView>> {
     let q: LineRequest = json_body(body, "cut line")?;
     on_session(crafts, id, false, move |s| {
@@ -490,7 +491,7 @@ struct RemoveRequest {
 async fn remove_line(
     State(crafts): State<Arc<Crafts>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<SessionView>> {
     let q: RemoveRequest = json_body(body, "remove")?;
     on_session(crafts, id, false, move |s| {

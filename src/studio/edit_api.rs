@@ -4,23 +4,23 @@
 use std::sync::Arc;
 
 use axum::Json;
-use axum::body::Bytes;
 use axum::extract::State;
-use axum::extract::rejection::BytesRejection;
 use axum::http::StatusCode;
 use serde::Deserialize;
 
 use super::api::{ApiError, ApiResult, Opened, PathId, Step, Studio, blocking};
 use super::document::PatternView;
+use super::guard::JsonBody;
 use crate::pattern::edit::{Edit, apply as apply_edit};
 use crate::pattern::snap::{SnapOptions, Snapped, snap};
 
-/// A JSON request body (any content type): 400 naming `what` and the place of the error.
+/// A JSON request body: 415 when it was not sent as `application/json` ([`JsonBody`]), 400
+/// naming `what` and the place of the error when it is not valid.
 pub(super) fn json_body<T: serde::de::DeserializeOwned>(
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
     what: &str,
 ) -> ApiResult<T> {
-    let body = body.map_err(|r| ApiError::new(r.status(), r.body_text()))?;
+    let body = body.0?;
     serde_json::from_slice(&body)
         .map_err(|e| ApiError::new(StatusCode::BAD_REQUEST, format!("{what} request: {e}")))
 }
@@ -30,7 +30,7 @@ pub(super) fn json_body<T: serde::de::DeserializeOwned>(
 pub(super) async fn edit(
     State(s): State<Arc<Studio>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<Opened>> {
     let edit: Edit = json_body(body, "edit")?;
     let base = s.get(id)?;
@@ -89,7 +89,7 @@ struct SnapRequest {
 pub(super) async fn snap_point(
     State(s): State<Arc<Studio>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<Snapped>> {
     let q: SnapRequest = json_body(body, "snap")?;
     let doc = s.get(id)?;

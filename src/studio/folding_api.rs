@@ -37,6 +37,7 @@ use super::api::{
 };
 use super::document::Document;
 use super::edit_api::json_body;
+use super::guard::JsonBody;
 use super::sessions::Sessions;
 use crate::design::folding::Folding;
 use crate::design::folding::crease::{crease_pattern, step_states};
@@ -320,7 +321,7 @@ async fn on_session<T: Send + 'static>(
 
 async fn new_sheet(
     State(folds): State<Arc<Folds>>,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<SessionView>> {
     let q: NewSheet = json_body(body, "new sheet")?;
     blocking(move || {
@@ -423,7 +424,7 @@ fn plan(s: &Session, q: &GestureRequest) -> ApiResult<(GesturePlan, Result<Foldi
 async fn preview(
     State(folds): State<Arc<Folds>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<PreviewView>> {
     let q: GestureRequest = json_body(body, "preview")?;
     on_session(folds, id, move |s| {
@@ -452,7 +453,7 @@ async fn preview(
 async fn drag(
     State(folds): State<Arc<Folds>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<SessionView>> {
     let q: GestureRequest = json_body(body, "drag")?;
     on_session(folds, id, move |s| {

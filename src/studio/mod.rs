@@ -11,6 +11,12 @@
 //! path on disk: machine and material profiles are chosen among the shipped ones by name, and
 //! static files come from the embedded table, so `..` in a URL reaches nothing.
 //!
+//! # Other web pages
+//! Requests naming another `Host`, and state-changing requests from another origin or without
+//! the page's token, are refused; JSON bodies must be sent as `application/json`; every
+//! response carries a content security policy and framing, sniffing and referrer headers
+//! ([`guard`]).
+//!
 //! # Errors
 //! Every API error is a JSON object `{"error": "..."}` whose text is the message `foldcam`
 //! would print for the same input (without the leading `foldcam: `), with the upload's file
@@ -25,6 +31,7 @@ pub(crate) mod document;
 mod edit_api;
 pub(crate) mod flat;
 mod folding_api;
+pub(crate) mod guard;
 mod machine_api;
 mod popup_api;
 mod sessions;
@@ -109,6 +116,11 @@ pub fn serve(config: StudioConfig, on_ready: impl FnOnce(SocketAddr)) -> Result<
         let bound = listener
             .local_addr()
             .map_err(|source| StudioError::Bind { addr, source })?;
+        // The guard answers to the port actually bound (port 0 picks one).
+        let config = StudioConfig {
+            port: bound.port(),
+            ..config
+        };
         let state = Arc::new(api::Studio::new(config));
         on_ready(bound);
         axum::serve(listener, api::router(state))

@@ -36,6 +36,7 @@ use super::api::{
 };
 use super::design_open::{message, open_upload};
 use super::edit_api::json_body;
+use super::guard::JsonBody;
 use super::sessions::Sessions;
 use crate::design::popup::polygon::{
     Add, CardSize, Design, Edit, Operation, PlaneName, apply_edit, crease_pattern, findings,
@@ -314,7 +315,7 @@ fn start(popups: &Popups, name: String, design: Design) -> ApiResult<Json<Sessio
 
 async fn new_card(
     State(popups): State<Arc<Popups>>,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<SessionView>> {
     let card: CardSize = json_body(body, "new card")?;
     blocking(move || {
@@ -363,7 +364,7 @@ async fn show(
 async fn edit(
     State(popups): State<Arc<Popups>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<SessionView>> {
     let request: EditRequest = json_body(body, "edit")?;
     on_session(popups, id, move |s| {

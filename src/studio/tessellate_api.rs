@@ -43,6 +43,7 @@ use super::budget;
 use super::design_open::message;
 use super::document::Document;
 use super::edit_api::json_body;
+use super::guard::JsonBody;
 use crate::design::source::tess_design::{
     TessSettings, layout_by_name, remesh_by_name, tuck_by_name, tuck_name, write_design,
 };
@@ -529,7 +530,7 @@ fn by_name<T>(
 async fn solve(
     State(tess): State<Arc<Tessellations>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<Value>> {
     let mesh = tess.mesh(id)?;
     let request: SolveRequest = json_body(body, "solve")?;

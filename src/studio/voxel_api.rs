@@ -31,6 +31,7 @@ use super::api::{
     upload_name,
 };
 use super::edit_api::json_body;
+use super::guard::JsonBody;
 use super::sessions::Sessions;
 use super::{budget, design_open};
 use crate::design::popup::voxel::estimate as conversion_estimate;
@@ -316,10 +317,7 @@ fn card_memory(what: &str, card: &VoxelCard) -> ApiResult<budget::Reservation> {
     budget::reserve(what, cells * STUDIO_BYTES_PER_PATTERN_CELL)
 }
 
-async fn new_card(
-    State(voxels): State<Arc<Voxels>>,
-    body: Result<Bytes, BytesRejection>,
-) -> ApiResult<Json<CardView>> {
+async fn new_card(State(voxels): State<Arc<Voxels>>, body: JsonBody) -> ApiResult<Json<CardView>> {
     let q: NewCard = json_body(body, "new card")?;
     card_cells("new card", [q.nx, q.ny, q.nz])?;
     blocking(move || {
@@ -412,7 +410,7 @@ async fn show(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResul
 async fn edit(
     State(voxels): State<Arc<Voxels>>,
     PathId(id): PathId,
-    body: Result<Bytes, BytesRejection>,
+    body: JsonBody,
 ) -> ApiResult<Json<CardView>> {
     let e: VoxelEdit = json_body(body, "voxel edit")?;
     on_session(voxels, id, move |s| {

@@ -14,6 +14,7 @@ mod studio;
 
 mod studio_browser;
 mod studio_browser_craft;
+mod studio_browser_guard;
 mod studio_browser_popup;
 mod studio_browser_tessellate;
 mod studio_browser_voxel;

@@ -16,6 +16,26 @@ pub struct Server {
     child: Child,
     /// The address it listens on.
     pub addr: SocketAddr,
+    /// This launch's page token (from the page's `<meta name="foldcam-token">`), sent by
+    /// [`Server::raw`] as the page's `api.js` sends it.
+    pub token: String,
+}
+
+/// A whole reply: status, header lines (names in lower case) and the body (de-chunked).
+pub struct Reply {
+    pub status: u16,
+    pub headers: Vec<(String, String)>,
+    pub body: Vec<u8>,
+}
+
+impl Reply {
+    /// The value of header `name` (lower case), if sent.
+    pub fn header(&self, name: &str) -> Option<&str> {
+        self.headers
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.as_str())
+    }
 }
 
 impl Server {
@@ -39,7 +59,37 @@ impl Server {
             .strip_prefix("foldcam studio: http://")
             .unwrap_or_else(|| panic!("unexpected first line {line:?}"));
         let addr = url.trim_end_matches('/').parse().expect("an address");
-        Server { child, addr }
+        let mut server = Server {
+            child,
+            addr,
+            token: String::new(),
+        };
+        let (_, page) = server.get("/");
+        let page = String::from_utf8_lossy(&page);
+        server.token = page
+            .split("<meta name=\"foldcam-token\" content=\"")
+            .nth(1)
+            .and_then(|rest| rest.split('"').next())
+            .unwrap_or_default()
+            .to_string();
+        server
+    }
+
+    /// Sends exactly `head` (request line and headers, without the blank line) with
+    /// `Connection: close`, `Content-Length` and `body`: the whole reply.
+    pub fn exact(&self, head: &str, body: &[u8]) -> Reply {
+        let mut s = TcpStream::connect(self.addr).expect("connect");
+        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
+        let mut request = format!(
+            "{head}\r\nConnection: close\r\nContent-Length: {}\r\n\r\n",
+            body.len()
+        )
+        .into_bytes();
+        request.extend_from_slice(body);
+        let _ = s.write_all(&request);
+        let mut reply = Vec::new();
+        let _ = s.read_to_end(&mut reply);
+        full_reply(&reply)
     }
 
     /// The page's URL.
@@ -47,14 +97,22 @@ impl Server {
         format!("http://{}/", self.addr)
     }
 
-    /// Sends `head` (request line and headers, without the blank line) and `body`; returns
-    /// the status code and the body.
+    /// Sends `head` (request line and headers, without the blank line) and `body` as the
+    /// studio's page does: with the `Host` served, the page's token and (unless `head` names
+    /// one) `Content-Type: application/json`; returns the status code and the body.
     pub fn raw(&self, head: &str, body: &[u8]) -> (u16, Vec<u8>) {
         let mut s = TcpStream::connect(self.addr).expect("connect");
         s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
+        let content_type = if head.to_ascii_lowercase().contains("\r\ncontent-type:") {
+            ""
+        } else {
+            "Content-Type: application/json\r\n"
+        };
         let mut request = format!(
-            "{head}\r\nHost: {}\r\nConnection: close\r\nContent-Length: {}\r\n\r\n",
+            "{head}\r\nHost: {}\r\nX-Foldcam-Token: {}\r\n{content_type}Connection: close\r\n\
+             Content-Length: {}\r\n\r\n",
             self.addr,
+            self.token,
             body.len()
         )
         .into_bytes();
@@ -71,9 +129,10 @@ impl Server {
         let mut s = TcpStream::connect(self.addr).expect("connect");
         s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
         let head = format!(
-            "POST {path} HTTP/1.1\r\nHost: {}\r\nConnection: close\r\nExpect: 100-continue\r\n\
-             Content-Length: {}\r\n\r\n",
+            "POST {path} HTTP/1.1\r\nHost: {}\r\nX-Foldcam-Token: {}\r\nConnection: close\r\n\
+             Expect: 100-continue\r\nContent-Length: {}\r\n\r\n",
             self.addr,
+            self.token,
             body.len()
         );
         s.write_all(head.as_bytes()).unwrap();
@@ -116,6 +175,27 @@ impl Drop for Server {
     fn drop(&mut self) {
         let _ = self.child.kill();
         let _ = self.child.wait();
+    }
+}
+
+/// Status, headers and body (de-chunked) of a whole HTTP reply.
+fn full_reply(reply: &[u8]) -> Reply {
+    let split = reply
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .unwrap_or_else(|| panic!("no HTTP reply: {reply:?}"));
+    let head = String::from_utf8_lossy(&reply[..split]).into_owned();
+    let headers: Vec<(String, String)> = head
+        .lines()
+        .skip(1)
+        .filter_map(|l| l.split_once(':'))
+        .map(|(n, v)| (n.trim().to_ascii_lowercase(), v.trim().to_string()))
+        .collect();
+    let (status, body) = split_reply(reply);
+    Reply {
+        status,
+        headers,
+        body,
     }
 }
 

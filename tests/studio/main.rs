@@ -13,6 +13,7 @@ mod studio;
 mod studio_craft;
 mod studio_designs;
 mod studio_folding;
+mod studio_guard;
 mod studio_popup;
 mod studio_server;
 mod studio_tessellate;
