@@ -370,8 +370,8 @@ fn a_stopped_solve_shows_where_it_misses_the_limits() {
 fn a_long_solve_is_cancelled_and_bad_options_are_refused() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
-    // cap.obj (432 faces) takes minutes in a debug build: cancelled after its first
-    // iteration, it stops within a few iterations.
+    // cap.obj (432 faces) takes a few hundred iterations: cancelled after its first, it stops
+    // after the iteration running when the cancel is answered.
     let cap = std::fs::read(repo_file("examples/tessellation/cap.obj")).unwrap();
     let mesh = ok(server.post_json("/api/tess/mesh?name=cap.obj", &cap));
     let job = start(&server, mesh["id"].as_u64().unwrap(), json!({}));
@@ -387,13 +387,23 @@ fn a_long_solve_is_cancelled_and_bad_options_are_refused() {
         std::thread::sleep(Duration::from_millis(100));
     }
     ok(server.post_json(&format!("/api/tess/jobs/{job}/cancel"), b""));
+    // Iterations heard once the cancel is answered: the solve may finish the one running.
+    let at_cancel = ok(get_json(&server, &format!("/api/tess/jobs/{job}")))["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "iteration")
+        .count();
     let (state, events) = wait(&server, job);
     assert_eq!(state["status"], "cancelled", "{state}");
     // Stopped after the running iteration, not at the end of the solve (minutes away, a few
     // hundred iterations): a cancelled job carries no error.
     assert!(state["error"].is_null(), "{state}");
     let late = events.iter().filter(|e| e["kind"] == "iteration").count();
-    assert!(late < 10, "{late} iterations heard in all");
+    assert!(
+        late <= at_cancel + 1 && late < 100,
+        "{late} iterations heard in all, {at_cancel} when the cancel was answered"
+    );
     let after = ok(get_json(&server, &format!("/api/tess/jobs/{job}")));
     assert_eq!(after["next"].as_u64(), Some(events.len() as u64));
     assert_eq!(server.get(&format!("/api/tess/jobs/{job}/result")).0, 409);
