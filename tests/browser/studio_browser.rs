@@ -243,18 +243,7 @@ async fn the_studio_works_in_a_real_browser() {
         .click()
         .await
         .unwrap();
-    c.find(Locator::Css("#machine"))
-        .await
-        .unwrap()
-        .select_by_value("grbl-diode")
-        .await
-        .unwrap();
-    c.find(Locator::Css("#material"))
-        .await
-        .unwrap()
-        .select_by_value("card-300gsm")
-        .await
-        .unwrap();
+    browser::choose_machine(&c, "grbl-diode", "card-300gsm").await;
     c.find(Locator::Css("#plan-btn"))
         .await
         .unwrap()

@@ -13,7 +13,6 @@ use std::time::Duration;
 
 use bin::foldcam;
 use browser::{browser, click, open_studio, start_driver, wait_until};
-use fantoccini::Locator;
 use serde_json::Value;
 use studio::Server;
 
@@ -157,18 +156,7 @@ async fn the_studio_page_breaks_none_of_its_own_policy() {
     ] {
         click(&c, &format!("#tabs button[data-view='{view}']")).await;
     }
-    c.find(Locator::Css("#machine"))
-        .await
-        .unwrap()
-        .select_by_value("grbl-diode")
-        .await
-        .unwrap();
-    c.find(Locator::Css("#material"))
-        .await
-        .unwrap()
-        .select_by_value("card-300gsm")
-        .await
-        .unwrap();
+    browser::choose_machine(&c, "grbl-diode", "card-300gsm").await;
     click(&c, "#plan-btn").await;
     wait_until(
         &c,

@@ -141,6 +141,18 @@ pub async fn text(c: &Client, css: &str) -> String {
 }
 
 /// Clicks the element `css`.
+/// Chooses `machine` and `material` in the Machine view's selects.
+pub async fn choose_machine(c: &Client, machine: &str, material: &str) {
+    for (css, value) in [("#machine", machine), ("#material", material)] {
+        c.find(Locator::Css(css))
+            .await
+            .unwrap()
+            .select_by_value(value)
+            .await
+            .unwrap();
+    }
+}
+
 pub async fn click(c: &Client, css: &str) {
     c.find(Locator::Css(css))
         .await

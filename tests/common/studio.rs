@@ -78,18 +78,11 @@ impl Server {
     /// Sends exactly `head` (request line and headers, without the blank line) with
     /// `Connection: close`, `Content-Length` and `body`: the whole reply.
     pub fn exact(&self, head: &str, body: &[u8]) -> Reply {
-        let mut s = TcpStream::connect(self.addr).expect("connect");
-        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
-        let mut request = format!(
-            "{head}\r\nConnection: close\r\nContent-Length: {}\r\n\r\n",
+        let head = format!(
+            "{head}\r\nConnection: close\r\nContent-Length: {}",
             body.len()
-        )
-        .into_bytes();
-        request.extend_from_slice(body);
-        let _ = s.write_all(&request);
-        let mut reply = Vec::new();
-        let _ = s.read_to_end(&mut reply);
-        full_reply(&reply)
+        );
+        full_reply(&self.send(&head, body))
     }
 
     /// The page's URL.
@@ -101,27 +94,32 @@ impl Server {
     /// studio's page does: with the `Host` served, the page's token and (unless `head` names
     /// one) `Content-Type: application/json`; returns the status code and the body.
     pub fn raw(&self, head: &str, body: &[u8]) -> (u16, Vec<u8>) {
-        let mut s = TcpStream::connect(self.addr).expect("connect");
-        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
         let content_type = if head.to_ascii_lowercase().contains("\r\ncontent-type:") {
             ""
         } else {
             "Content-Type: application/json\r\n"
         };
-        let mut request = format!(
+        let head = format!(
             "{head}\r\nHost: {}\r\nX-Foldcam-Token: {}\r\n{content_type}Connection: close\r\n\
-             Content-Length: {}\r\n\r\n",
+             Content-Length: {}",
             self.addr,
             self.token,
             body.len()
-        )
-        .into_bytes();
+        );
+        split_reply(&self.send(&head, body))
+    }
+
+    /// Sends `head` (without the blank line) and `body` on a new connection; the whole reply.
+    fn send(&self, head: &str, body: &[u8]) -> Vec<u8> {
+        let mut s = TcpStream::connect(self.addr).expect("connect");
+        s.set_read_timeout(Some(REPLY_TIMEOUT)).unwrap();
+        let mut request = format!("{head}\r\n\r\n").into_bytes();
         request.extend_from_slice(body);
         // A server may answer (413) before the whole body is sent and close: that is fine.
         let _ = s.write_all(&request);
         let mut reply = Vec::new();
         let _ = s.read_to_end(&mut reply);
-        split_reply(&reply)
+        reply
     }
     /// `POST path` with `Expect: 100-continue`: the body is sent only when the server asks
     /// for it (so a refusal on the declared length is read before any body byte is sent).
