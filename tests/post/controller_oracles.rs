@@ -239,7 +239,7 @@ fn fiber_jobs() -> Vec<(&'static str, CreasePattern)> {
 }
 
 #[test]
-#[ignore = "needs ../shared oracles"]
+#[ignore = "needs ../shared oracles and linuxcnc-uspace (.ci/run installs it)"]
 fn linuxcnc_runs_the_miura_and_bird_base_within_five_percent_of_plan() {
     let _alone = post_common::external_tools_alone();
     let machine = load_machine("linuxcnc-fiber").expect("shipped");
@@ -318,7 +318,7 @@ fn assert_close_to_grbl(what: &str, plan_s: f64, text: &str, machine: &str) {
 }
 
 #[test]
-#[ignore = "needs ../shared oracles"]
+#[ignore = "needs ../shared oracles and GRBL's oracle built (.ci/run builds it)"]
 fn grbl_runs_the_plotter_test_grid_within_two_percent_of_plan() {
     let _alone = post_common::external_tools_alone();
     // The calibration grid on the pen plotter: 184 separate strokes, each stopped for the pen
@@ -334,7 +334,7 @@ fn grbl_runs_the_plotter_test_grid_within_two_percent_of_plan() {
 }
 
 #[test]
-#[ignore = "needs ../shared oracles"]
+#[ignore = "needs ../shared oracles and GRBL's oracle built (.ci/run builds it)"]
 fn grbl_runs_a_miura_ori_within_two_percent_of_plan() {
     let _alone = post_common::external_tools_alone();
     // Long diagonal strokes: GRBL limits each axis, so its diagonals accelerate faster.
