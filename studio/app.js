@@ -200,7 +200,8 @@ async function foldNow() {
   const r = fold.report;
   $('fold-report').textContent = `Bar-and-hinge simulation (Ghassaei, Demaine & Gershenfeld 2018): ` +
     `${r.triangles} triangles, ${r.steps} steps, ${r.stop.replace('_', ' ')}; largest bar strain ` +
-    `${(100 * r.max_strain).toFixed(3)}%; ${r.crossing_faces.length} pair(s) of faces passing through each other.`;
+    `${(100 * r.max_strain).toFixed(3)}%; ${r.crossing_faces.length} pair(s) of faces passing through each other` +
+    (r.past_flat.length ? `; ${r.past_flat.length} crease(s) folded past flat (their faces pass through each other).` : '.');
   showFoldFrame();
 }
 

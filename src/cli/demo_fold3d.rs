@@ -60,7 +60,7 @@ pub fn miura(dir: &Path, width: u32) -> Result<()> {
         r.seconds,
         100.0 * r.max_strain,
         r.max_angle_error_deg,
-        if r.crossing_faces.is_empty() {
+        if r.crossing_faces.is_empty() && r.past_flat.is_empty() {
             "clear of each other"
         } else {
             "PASS THROUGH each other"

@@ -208,8 +208,17 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
             r.wrong_sign[0].index()
         );
     }
+    if let Some(first) = r.past_flat.first() {
+        outln!(
+            "  {} crease(s) folded past flat: the faces on either side pass through each other \
+             (first: edge {}; written as ±180 deg)",
+            r.past_flat.len(),
+            first.index()
+        );
+    }
     match r.crossing_faces.first() {
-        None => outln!("  no faces pass through each other"),
+        None if r.past_flat.is_empty() => outln!("  no faces pass through each other"),
+        None => {}
         Some((a, b)) => outln!(
             "  faces pass through each other: {} pair(s), e.g. faces {} and {}",
             r.crossing_faces.len(),

@@ -2,7 +2,9 @@
 //! Miura-ori kinematics derived here from the cell geometry, the rigid-foldable forms that
 //! `tessellate` solves, a pop-up card's own folded state, and isometry along the way.
 
-use foldcam::check::fold3d::{FoldError, FoldOptions, ModelError, Stop, fold, fold_with};
+use foldcam::check::fold3d::{
+    FoldError, FoldOptions, ModelError, PAST_FLAT_TOLERANCE_DEG, Stop, fold, fold_with,
+};
 use foldcam::design::classic::MiuraOri;
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, planarize};
 use glam::{DVec2, DVec3};
@@ -629,5 +631,203 @@ fn cli_folds_every_format_and_every_bundled_pattern() {
                 );
             }
         }
+    }
+}
+
+/// A Miura-ori (20 × 15 mm cells, 6 mm zigzag offset) whose straight creases are one kind per
+/// row and whose zigzag creases alternate along their length: folded all the way, its
+/// straight creases are driven past flat (the held-out sheet of issue 40).
+fn miura_one_kind_per_row() -> CreasePattern {
+    let m = MiuraOri {
+        columns: 8,
+        rows: 6,
+        width: 20.0,
+        height: 15.0,
+        shear: 6.0,
+    };
+    let mut cp = m.build().unwrap();
+    let v = cp.vertices.clone();
+    for e in &mut cp.edges {
+        if !matches!(e.assignment, Assignment::Mountain | Assignment::Valley) {
+            continue;
+        }
+        let (a, b) = (v[e.vertices[0].index()], v[e.vertices[1].index()]);
+        let row = (a.y.min(b.y) / m.height).round() as i64;
+        let column = (a.x.min(b.x) / m.width).round() as i64;
+        let straight = (a.y - b.y).abs() < 1e-9;
+        let mountain = if straight {
+            row % 2 == 0
+        } else {
+            (row + column) % 2 == 0
+        };
+        e.assignment = if mountain {
+            Assignment::Mountain
+        } else {
+            Assignment::Valley
+        };
+        e.fold_angle = None;
+    }
+    planarize(&mut cp, &PlanarizeOptions::default()).unwrap();
+    cp
+}
+
+/// The fold angle of crease `e` measured from the folded positions alone (FOLD's sign, degrees
+/// in (−180, 180]): the faces' normals on either side, oriented by the flat pattern.
+fn measured_fold_angle(cp: &CreasePattern, x: &[DVec3], e: usize) -> Option<f64> {
+    let faces = cp.faces.as_deref()?;
+    let [j, k] = cp.edges[e].vertices;
+    // The face with j → k along its boundary (counter-clockwise in the flat sheet) and the
+    // face with k → j.
+    let side = |from: usize, to: usize| {
+        faces.iter().find(|f| {
+            let n = f.outer.len();
+            (0..n).any(|i| f.outer[i].index() == from && f.outer[(i + 1) % n].index() == to)
+        })
+    };
+    let (fa, fb) = (side(j.index(), k.index())?, side(k.index(), j.index())?);
+    let normal = |f: &foldcam::pattern::Face| {
+        let p: Vec<DVec3> = f.outer.iter().map(|v| x[v.index()]).collect();
+        (1..p.len() - 1)
+            .map(|i| (p[i] - p[0]).cross(p[i + 1] - p[0]))
+            .sum::<DVec3>()
+            .normalize()
+    };
+    let (na, nb) = (normal(fa), normal(fb));
+    let axis = (x[k.index()] - x[j.index()]).normalize();
+    Some(nb.cross(na).dot(axis).atan2(na.dot(nb)).to_degrees())
+}
+
+/// Pairs of faces (lower first) where a side of one pierces the inside of the other by more
+/// than `depth` (mm), sides that start at a shared corner excepted: an edge-through-polygon
+/// test written here, independent of the simulator's triangle check.
+fn faces_pierced(cp: &CreasePattern, x: &[DVec3], depth: f64) -> Vec<(usize, usize)> {
+    let faces = cp.faces.as_deref().unwrap();
+    let mut found = Vec::new();
+    for (a, fa) in faces.iter().enumerate() {
+        for (b, fb) in faces.iter().enumerate() {
+            if a == b {
+                continue;
+            }
+            let pb: Vec<DVec3> = fb.outer.iter().map(|v| x[v.index()]).collect();
+            let n = (1..pb.len() - 1)
+                .map(|i| (pb[i] - pb[0]).cross(pb[i + 1] - pb[0]))
+                .sum::<DVec3>()
+                .normalize();
+            let m = fa.outer.len();
+            let pierced = (0..m).any(|i| {
+                let (s, t) = (fa.outer[i], fa.outer[(i + 1) % m]);
+                if fb.outer.contains(&s) || fb.outer.contains(&t) {
+                    return false;
+                }
+                let (p, q) = (x[s.index()], x[t.index()]);
+                let (dp, dq) = ((p - pb[0]).dot(n), (q - pb[0]).dot(n));
+                if !(dp.abs() > depth && dq.abs() > depth && dp.signum() != dq.signum()) {
+                    return false;
+                }
+                let hit = p + (q - p) * (dp / (dp - dq));
+                let k = pb.len();
+                (0..k).all(|e| {
+                    let inward = n.cross(pb[(e + 1) % k] - pb[e]).normalize();
+                    (hit - pb[e]).dot(inward) > depth
+                })
+            });
+            if pierced {
+                found.push((a.min(b), a.max(b)));
+            }
+        }
+    }
+    found.sort_unstable();
+    found.dedup();
+    found
+}
+
+#[test]
+fn a_fold_past_flat_is_reported_and_written_within_folds_range() {
+    let cp = miura_one_kind_per_row();
+    let opts = FoldOptions {
+        percent: 100.0,
+        ..FoldOptions::default()
+    };
+    let f = fold(&cp, &opts).unwrap();
+    let x = &f.folded.positions;
+    let r = &f.report;
+    // Creases whose faces turned through flat, measured from the positions: the turn has the
+    // wrong sign for the assignment although it is near ±180.
+    let through: Vec<usize> = (0..cp.edges.len())
+        .filter(|&e| {
+            let target = match cp.edges[e].assignment {
+                Assignment::Valley => 1.0,
+                Assignment::Mountain => -1.0,
+                _ => return false,
+            };
+            // Past flat by more than the stated tolerance: the wrong sign, within 10° of ±180.
+            measured_fold_angle(&cp, x, e).is_some_and(|a| {
+                a * target < 0.0 && a.abs() > 170.0 && 180.0 - a.abs() > PAST_FLAT_TOLERANCE_DEG
+            })
+        })
+        .collect();
+    assert!(
+        !through.is_empty(),
+        "this sheet folds some crease past flat"
+    );
+    for e in &through {
+        assert!(
+            r.past_flat.iter().any(|p| p.index() == *e),
+            "edge {e} turned past flat ({:?} deg measured) but is not reported: {:?}",
+            measured_fold_angle(&cp, x, *e),
+            r.past_flat
+        );
+    }
+    // Every pair of faces an independent edge-through-face test finds is reported.
+    let pierced = faces_pierced(&cp, x, 1e-3);
+    for (a, b) in &pierced {
+        assert!(
+            r.crossing_faces
+                .iter()
+                .any(|(p, q)| (p.index(), q.index()) == (*a, *b)),
+            "faces {a} and {b} pass through each other but are not reported"
+        );
+    }
+    // What is written stays within FOLD's range, and the error is a turn, at most 180°.
+    for a in r.fold_angles.iter().flatten() {
+        assert!((-180.0..=180.0).contains(a), "{a}");
+    }
+    assert!(r.max_angle_error_deg <= 180.0, "{}", r.max_angle_error_deg);
+}
+
+#[test]
+fn cli_fold3d_output_of_a_fold_past_flat_is_read_back_by_check() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("miura-rows.fold");
+    std::fs::write(
+        &input,
+        foldcam::formats::fold::write_string(&miura_one_kind_per_row(), None),
+    )
+    .unwrap();
+    let output = dir.path().join("folded.fold");
+    let out = foldcam()
+        .arg("fold3d")
+        .arg(&input)
+        .args(["--percent", "100", "-o"])
+        .arg(&output)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("folded past flat"), "{stdout}");
+    assert!(!stdout.contains("no faces pass through"), "{stdout}");
+    for frame in ["0", "1"] {
+        let check = foldcam()
+            .arg("check")
+            .arg(&output)
+            .args(["--fold-frame", frame])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&check.stderr);
+        // check exits 0 (pass) or 1 (findings); 2 is a file it refuses.
+        assert!(
+            matches!(check.status.code(), Some(0 | 1)),
+            "frame {frame}: {text}{}",
+            String::from_utf8_lossy(&check.stdout)
+        );
     }
 }

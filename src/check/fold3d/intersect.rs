@@ -1,7 +1,7 @@
 //! Triangles of a folded sheet that pass through each other.
 //!
 //! Broad phase: sweep and prune on x over the triangles' bounding boxes grown by the
-//! tolerance. Narrow phase: two triangles that share no vertex cross when a side of one
+//! tolerance. Narrow phase: two triangles that share no side cross when a side of one
 //! pierces the other, i.e. its ends lie on opposite sides of the other's plane, each farther
 //! than the tolerance, and the piercing point lies inside the other triangle by more than the
 //! tolerance. Triangles in one plane (stacked layers of a flat fold) touch but do not cross
@@ -27,7 +27,16 @@ pub fn crossing_triangles(
         .collect();
     let mut found = Vec::new();
     overlapping_boxes(&boxes, |a, b| {
-        if triangles[a].iter().any(|v| triangles[b].contains(v)) {
+        // Triangles sharing a side (a hinge) cross only by folding past flat, which the
+        // hinge's angle tells; a shared corner alone does not stop the far side of one from
+        // piercing the other (the sides from the shared corner start in the other's plane and
+        // are never counted).
+        if triangles[a]
+            .iter()
+            .filter(|v| triangles[b].contains(v))
+            .count()
+            >= 2
+        {
             return ControlFlow::Continue(());
         }
         let (ta, tb) = (corners(a), corners(b));
@@ -86,5 +95,23 @@ mod tests {
         ];
         let tris = [[0, 1, 2], [3, 4, 5], [6, 7, 8]];
         assert_eq!(crossing_triangles(&p, &tris, 1e-9, 10), vec![(0, 1)]);
+    }
+
+    #[test]
+    fn a_shared_corner_does_not_hide_a_crossing_but_a_shared_side_does() {
+        let p = vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(0.0, 2.0, 0.0),
+            // From the shared corner 0, its far side pierces the first triangle.
+            DVec3::new(1.0, 0.4, -1.0),
+            DVec3::new(0.4, 1.0, 1.0),
+        ];
+        assert_eq!(
+            crossing_triangles(&p, &[[0, 1, 2], [0, 3, 4]], 1e-9, 10),
+            vec![(0, 1)]
+        );
+        // Sharing the side 0–1 (a hinge), the wings are left to the hinge's angle.
+        assert!(crossing_triangles(&p, &[[0, 1, 2], [0, 1, 4]], 1e-9, 10).is_empty());
     }
 }

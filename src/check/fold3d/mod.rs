@@ -189,13 +189,18 @@ pub struct FoldReport {
     pub fold_angles: Vec<Option<f64>>,
     /// Target of every crease at this percentage, degrees.
     pub targets: Vec<Option<f64>>,
-    /// Largest |reached − target| over the creases, degrees.
+    /// Largest |reached − target| over the creases, degrees, the difference taken as a turn
+    /// (wrapped to [0, 180]: a hinge 10° past flat on the other side is 10° off, not 350°).
     pub max_angle_error_deg: f64,
     /// The crease with that error.
     pub max_angle_error_edge: Option<EdgeId>,
     /// Creases whose reached angle has the opposite sign of their target (by more than
     /// [`SIGN_TOLERANCE_DEG`]).
     pub wrong_sign: Vec<EdgeId>,
+    /// Creases folded past flat (the solver's angle beyond ±180° by more than
+    /// [`PAST_FLAT_TOLERANCE_DEG`]): their two faces pass through each other along the crease.
+    /// Their [`Self::fold_angles`] are clamped to ±180°.
+    pub past_flat: Vec<EdgeId>,
     /// Pairs of faces whose triangles pass through each other (at most
     /// [`MAX_CROSSINGS_LISTED`] triangle pairs examined).
     pub crossing_faces: Vec<(FaceId, FaceId)>,
@@ -207,6 +212,15 @@ pub struct FoldReport {
 
 /// A reached angle this close to 0 has no sign, degrees.
 pub const SIGN_TOLERANCE_DEG: f64 = 0.5;
+
+/// How far past ±180° a hinge may fold before its faces count as passing through each other,
+/// degrees (the solver's settling noise on a folded-flat crease stays far below).
+pub const PAST_FLAT_TOLERANCE_DEG: f64 = 0.05;
+
+/// The turn between two fold angles, degrees, in [0, 180].
+pub fn angle_difference_deg(a: f64, b: f64) -> f64 {
+    ((a - b + 180.0).rem_euclid(360.0) - 180.0).abs()
+}
 
 /// The result of a simulation.
 #[derive(Clone, Debug, PartialEq)]
@@ -371,10 +385,23 @@ fn report(
         outer.iter().map(|v| cp.vertices[v.index()]).sum::<DVec2>() / outer.len().max(1) as f64
     });
     let fraction = run.percent / 100.0;
-    let fold_angles: Vec<Option<f64>> = model
+    // The solver's angles are unwrapped: beyond ±180° a hinge's wings have passed through
+    // each other. The reached angle is kept within FOLD's [−180, 180] (the nearest folded-flat
+    // state) and such a hinge is reported apart.
+    let unwrapped: Vec<Option<f64>> = model
         .edge_hinge
         .iter()
         .map(|h| h.map(|h| angles[h as usize].to_degrees()))
+        .collect();
+    let past_flat: Vec<EdgeId> = unwrapped
+        .iter()
+        .enumerate()
+        .filter(|(_, a)| a.is_some_and(|a| a.abs() > 180.0 + PAST_FLAT_TOLERANCE_DEG))
+        .map(|(e, _)| EdgeId::new(e))
+        .collect();
+    let fold_angles: Vec<Option<f64>> = unwrapped
+        .iter()
+        .map(|a| a.map(|a| a.clamp(-180.0, 180.0)))
         .collect();
     let targets: Vec<Option<f64>> = cp
         .edges
@@ -384,11 +411,11 @@ fn report(
     let mut max_err = 0.0;
     let mut max_edge = None;
     let mut wrong_sign = Vec::new();
-    for (e, (reached, target)) in fold_angles.iter().zip(&targets).enumerate() {
+    for (e, (reached, target)) in unwrapped.iter().zip(&targets).enumerate() {
         let (Some(r), Some(t)) = (reached, target) else {
             continue;
         };
-        let err = (r - t).abs();
+        let err = angle_difference_deg(*r, *t);
         if err > max_err {
             max_err = err;
             max_edge = Some(EdgeId::new(e));
@@ -431,6 +458,7 @@ fn report(
         max_angle_error_deg: max_err,
         max_angle_error_edge: max_edge,
         wrong_sign,
+        past_flat,
         crossing_faces,
         seconds: run.seconds,
         triangles: model.triangles.len(),
