@@ -223,10 +223,13 @@ fn field<'a>(line: &'a str, key: &str) -> &'a str {
 }
 
 /// Jobs of issue 35 on the shipped fiber laser, on 0.5 mm stainless: the Miura-ori and the
-/// bird base (150 mm). Curved designs (Origami Simulator's `HexSpiralTess.svg`) still run
-/// markedly slower on LinuxCNC than planned: its blend arcs cannot consume a short segment
-/// that carries a synchronised output change, and every segment's speed is capped at its
-/// length per servo period; neither is modelled yet.
+/// bird base (150 mm). Curved designs (Origami Simulator's `HexSpiralTess.svg` at 200 mm)
+/// still run markedly slower on LinuxCNC than planned (88.9 s against 43 s): LinuxCNC's blend
+/// arcs may not consume a segment that carries a synchronised output change (`M67`), and a
+/// power change next to a short piece of a curve's polyline then slows nearly to a stop
+/// (the power-on lines alone cost 28 s; without any `M67` the job runs 48.5 s). On a 30 mm
+/// circle of 0.5 mm chords, a power change splitting a chord into halves runs at full speed
+/// and one splitting it 0.05 : 0.45 stops. Neither is modelled yet.
 fn fiber_jobs() -> Vec<(&'static str, CreasePattern)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     vec![
