@@ -66,7 +66,14 @@ pub(super) fn kawasaki(
     if error_deg <= tolerance_deg {
         return None;
     }
-    let hint = rotation_hint(cp, v, fan, sum);
+    // The option that would change the verdict, named in words both front ends use (the
+    // CLI's `--kawasaki-tolerance`, the studio's Kawasaki tolerance field).
+    let hint = format!(
+        "{} (or, if the drawing is only this precise, a Kawasaki tolerance of {:.4}° or more \
+         accepts it)",
+        rotation_hint(cp, v, fan, sum),
+        error_deg
+    );
     Some(Finding {
         kind: FindingKind::Kawasaki,
         vertex: Some(v),

@@ -485,12 +485,20 @@ fn following_the_kawasaki_hint_repairs_the_vertex() {
     for (theta, delta) in [(60.0, 1.0), (45.0, -2.5), (70.0, 4.0)] {
         let mut cp = miura(theta, delta);
         let report = check(&cp, &CheckOptions::default());
-        let hint = &report
+        let finding = report
             .of_kind(FindingKind::Kawasaki)
             .next()
-            .expect("finding")
-            .hint;
+            .expect("finding");
+        let hint = &finding.hint;
         let (edge, degrees) = parse_rotation(hint).expect(hint);
+        // The hint also names the setting that would pass the vertex as drawn.
+        assert!(
+            hint.contains(&format!(
+                "Kawasaki tolerance of {:.4}° or more",
+                finding.value
+            )),
+            "{hint}"
+        );
         // Rotate the crease's far end about the centre (vertex 0).
         let far = cp.edges[edge].other(VertexId(0));
         let p = cp.vertices[far.index()];
