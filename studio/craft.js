@@ -255,6 +255,13 @@ export class CraftView {
         li.append(r.residual === null ? 'placed patch' : `fitted cylinder (residual ${r.residual.toFixed(2)})`);
       }
       return li;
+    }), ...(this.view.unglued || []).map((seam) => {
+      const li = document.createElement('li');
+      li.className = 'error unglued';
+      li.append(`cut line ${seam.cut_line}: ${seam.lengths_mm[0].toFixed(1)} mm on one part, ` +
+        `${seam.lengths_mm[1].toFixed(1)} mm on the other — these glued edges do not match; ` +
+        'draw the cut lines where the surface is closer to a cylinder');
+      return li;
     }));
     const lines = this.$('craft-lines');
     lines.replaceChildren(...this.view.lines.map((line, i) => {

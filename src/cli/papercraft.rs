@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow};
+use foldcam::design::papercraft::{GLUE_TOLERANCE_MM, GLUE_TOLERANCE_SHARE, Seam};
 use foldcam::design::source::{DesignFile, craft, mesh_path_beside, read_design_file};
 use foldcam::fab::label_operation;
 use foldcam::fab::{PlanOptions, plan};
@@ -53,6 +54,10 @@ pub struct Args {
     /// --material. Without it, --machine makes -o the job.
     #[arg(long, value_name = "FILE", requires_all = ["machine", "material"])]
     pub job: Option<PathBuf>,
+    /// Exit 0 even when a glued cut line is longer on one part than on the other (by more
+    /// than 0.1 mm or 0.1%): the parts are written either way, and such seams are named.
+    #[arg(long)]
+    pub allow_mismatch: bool,
 }
 
 /// The plan options for the sheets' jobs: `cut`'s, with the edge numbers (flat lines) marked
@@ -158,5 +163,43 @@ pub fn run(args: Args) -> Result<Outcome> {
     for line in &made.summary {
         outln!("{line}");
     }
-    Ok(Outcome::Done)
+    glue_verdict(&made.made.seams, args.allow_mismatch)
+}
+
+/// Names every glued cut line whose two sides differ in length beyond the tolerance; exit 1
+/// for them unless `allow` (`--allow-mismatch`).
+fn glue_verdict(seams: &[Seam], allow: bool) -> Result<Outcome> {
+    let bad: Vec<&Seam> = seams.iter().filter(|s| !s.glues()).collect();
+    let worst = seams.iter().map(Seam::mismatch_mm).fold(0.0, f64::max);
+    if bad.is_empty() {
+        outln!(
+            "{} glued cut line(s) match on both parts (largest difference {worst:.3} mm, \
+             tolerance {GLUE_TOLERANCE_MM} mm or {}%)",
+            seams.len(),
+            100.0 * GLUE_TOLERANCE_SHARE
+        );
+        return Ok(Outcome::Done);
+    }
+    let severity = if allow { "warning" } else { "error" };
+    for s in &bad {
+        errln!("foldcam: {severity}: {s}: the glued edges do not match");
+    }
+    errln!(
+        "foldcam: {} of {} glued cut line(s) differ by more than {GLUE_TOLERANCE_MM} mm or {}%: \
+         a patch there does not follow the mesh (move its directrix or ruling, or draw the cut \
+         lines where the surface is closer to a cylinder); the parts were written{}",
+        bad.len(),
+        seams.len(),
+        100.0 * GLUE_TOLERANCE_SHARE,
+        if allow {
+            ""
+        } else {
+            " (--allow-mismatch exits 0)"
+        }
+    );
+    Ok(if allow {
+        Outcome::Done
+    } else {
+        Outcome::CheckFailed
+    })
 }

@@ -252,6 +252,8 @@ struct SessionView {
     sheets: usize,
     /// Why the parts could not be made.
     error: Option<String>,
+    /// Glued cut lines whose two sides differ in length beyond the tolerance.
+    unglued: Vec<crate::design::papercraft::Seam>,
     can_undo: bool,
 }
 
@@ -288,6 +290,13 @@ fn session_view(id: u64, s: &Session, with_mesh: bool) -> SessionView {
             error: r.error.clone(),
         })
         .collect();
+    let unglued = match &s.eval.made {
+        Ok(made) => (made.seams.iter())
+            .filter(|seam| !seam.glues())
+            .cloned()
+            .collect(),
+        Err(_) => Vec::new(),
+    };
     let (parts, sheets, error) = match &s.eval.made {
         Ok(made) => {
             let parts = (made.placements.iter())
@@ -327,6 +336,7 @@ fn session_view(id: u64, s: &Session, with_mesh: bool) -> SessionView {
         sheet: [s.sketch.params.sheet.width, s.sketch.params.sheet.height],
         sheets,
         error,
+        unglued,
         can_undo: !s.undo.is_empty(),
     }
 }

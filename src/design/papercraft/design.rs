@@ -227,6 +227,8 @@ pub struct Made {
     pub auto: Vec<AutoReport>,
     /// Shared cut lines whose label fits on neither or only one of their parts.
     pub unlabelled: Vec<usize>,
+    /// Every cut line two parts share, with its length on each ([`super::parts::seams`]).
+    pub seams: Vec<super::parts::Seam>,
     /// The patches, placed then automatic (mesh units).
     pub patches: Vec<CylinderPatch>,
 }
@@ -338,6 +340,7 @@ impl Design {
             max_length: self.tabs.max_length,
         };
         add_tabs(&mut parts, &network, &style)?;
+        let seams = super::parts::seams(&parts);
         let unlabelled = add_labels(&mut parts, &network, self.label_height);
         let spec = SheetSpec {
             width: self.sheet.width,
@@ -359,6 +362,7 @@ impl Design {
             sheets,
             auto,
             unlabelled,
+            seams,
             patches: built,
         })
     }

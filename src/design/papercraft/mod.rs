@@ -66,7 +66,7 @@ pub use neighbour::boundary_gap;
 pub use network::Network;
 pub use packing::pack_shapes;
 pub use paint::paint_regions;
-pub use parts::{Part, TabStyle, add_tabs};
+pub use parts::{GLUE_TOLERANCE_MM, GLUE_TOLERANCE_SHARE, Part, Seam, TabStyle, add_tabs, seams};
 pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
 pub use shapes::{elliptic_body, revolution, sphere};
 pub use sketch::{

@@ -15,6 +15,7 @@
 //! dropped; [`Part::dropped_tabs`] counts those.
 
 use glam::DVec2;
+use serde::Serialize;
 
 use super::PapercraftError;
 use super::network::Network;
@@ -64,6 +65,91 @@ pub struct PartSide {
     pub start: usize,
     /// Number of outline segments on the side.
     pub len: usize,
+}
+
+/// Largest difference between the two lengths of a glued cut line that still glues, mm.
+pub const GLUE_TOLERANCE_MM: f64 = 0.1;
+
+/// Largest difference between the two lengths of a glued cut line that still glues, as a
+/// share of the longer one (the larger of this and [`GLUE_TOLERANCE_MM`] applies).
+pub const GLUE_TOLERANCE_SHARE: f64 = 0.001;
+
+/// A cut line shared by two parts, glued: its length on each part (millimetres, along the
+/// unrolled outline). Unrolling is isometric, so the two lengths agree when both patches
+/// follow the mesh along the line; they differ where a patch fits the mesh badly.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Seam {
+    /// The cut line (the number its labels show).
+    pub cut_line: usize,
+    /// The two parts' patch indices, in the order of their half-edges.
+    pub parts: [usize; 2],
+    /// Its length on each part, mm.
+    pub lengths_mm: [f64; 2],
+}
+
+impl Seam {
+    /// |length on one part − length on the other|, mm.
+    pub fn mismatch_mm(&self) -> f64 {
+        (self.lengths_mm[0] - self.lengths_mm[1]).abs()
+    }
+
+    /// Whether the two sides glue: they differ by at most [`GLUE_TOLERANCE_MM`] or
+    /// [`GLUE_TOLERANCE_SHARE`] of the longer, whichever is larger.
+    pub fn glues(&self) -> bool {
+        let longer = self.lengths_mm[0].max(self.lengths_mm[1]);
+        self.mismatch_mm() <= GLUE_TOLERANCE_MM.max(GLUE_TOLERANCE_SHARE * longer)
+    }
+}
+
+impl std::fmt::Display for Seam {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "cut line {}: {:.2} mm on patch {}'s part, {:.2} mm on patch {}'s ({:.2} mm apart)",
+            self.cut_line,
+            self.lengths_mm[0],
+            self.parts[0],
+            self.lengths_mm[1],
+            self.parts[1],
+            self.mismatch_mm()
+        )
+    }
+}
+
+/// Every cut line two parts share, in cut-line order, with its length on each part (the sum
+/// of the sides on that line).
+pub fn seams(parts: &[Part]) -> Vec<Seam> {
+    use std::collections::BTreeMap;
+    // Per cut line, per half-edge (2c or 2c + 1): the part and the summed side length.
+    let mut lines: BTreeMap<usize, BTreeMap<usize, (usize, f64)>> = BTreeMap::new();
+    for part in parts {
+        for side in &part.sides {
+            let length: f64 = (0..side.len)
+                .map(|k| {
+                    part.point(side.start + k)
+                        .distance(part.point(side.start + k + 1))
+                })
+                .sum();
+            let entry = lines
+                .entry(side.half_edge / 2)
+                .or_default()
+                .entry(side.half_edge)
+                .or_insert((part.patch, 0.0));
+            entry.1 += length;
+        }
+    }
+    lines
+        .into_iter()
+        .filter_map(|(cut_line, halves)| {
+            let mut it = halves.into_values();
+            let (a, b) = (it.next()?, it.next()?);
+            Some(Seam {
+                cut_line,
+                parts: [a.0, b.0],
+                lengths_mm: [a.1, b.1],
+            })
+        })
+        .collect()
 }
 
 /// A glue tab: its root is the outline from point `from` over `len` segments.

@@ -139,3 +139,96 @@ fn the_cli_writes_every_sheet() {
     assert_eq!(missing.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.craft.toml"));
 }
+
+/// The vase with gore 0's patch tilted off the mesh (its ruling leaning 31° out of the
+/// horizontal plane), its mesh named by absolute path.
+fn tilted_vase(dir: &Path) -> std::path::PathBuf {
+    let mesh = std::fs::canonicalize("examples/papercraft/vase.obj").unwrap();
+    let text = vase_text()
+        .replacen(
+            "mesh = \"vase.obj\"",
+            &format!("mesh = {:?}", mesh.display().to_string()),
+            1,
+        )
+        .replacen(
+            "ruling = [-0.3827, 0.9239, 0.0000]",
+            "ruling = [-0.3827, 0.9239, 0.6]",
+            1,
+        );
+    assert!(text.contains("0.9239, 0.6]"));
+    let path = dir.join("tilted.craft.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn seams_are_the_glued_sides_lengths_and_the_vase_glues() {
+    let design = parse_design(&vase_text()).unwrap();
+    let mesh = read_mesh(Path::new("examples/papercraft/vase.obj")).unwrap();
+    let made = design.build(&ReferenceMesh::new(&mesh).unwrap()).unwrap();
+    // Every cut line between two gores (8 meridians; foot and rim lines border one part).
+    assert_eq!(made.seams.len(), 8, "{:?}", made.seams);
+    for s in &made.seams {
+        let mut lengths = side_lengths(&made, s.cut_line);
+        lengths.sort_by(f64::total_cmp);
+        let mut ours = s.lengths_mm;
+        ours.sort_by(f64::total_cmp);
+        assert!((ours[0] - lengths[0]).abs() < 1e-9 && (ours[1] - lengths[1]).abs() < 1e-9);
+        assert!(s.glues(), "{s}");
+    }
+}
+
+#[test]
+fn the_cli_names_glued_edges_that_differ_and_exits_1() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = tilted_vase(dir.path());
+    let run = |extra: &[&str], out: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_foldcam"))
+            .arg("papercraft")
+            .arg(&design)
+            .arg("-o")
+            .arg(dir.path().join(out))
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let refused = run(&[], "a.fold");
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(1), "{stderr}");
+    // The seams named are those the library measures beyond the tolerance, with both lengths.
+    let text = std::fs::read_to_string(&design).unwrap();
+    let made = parse_design(&text)
+        .unwrap()
+        .build(
+            &ReferenceMesh::new(&read_mesh(Path::new("examples/papercraft/vase.obj")).unwrap())
+                .unwrap(),
+        )
+        .unwrap();
+    let bad: Vec<_> = made.seams.iter().filter(|s| !s.glues()).collect();
+    assert!(
+        !bad.is_empty(),
+        "the tilted gore fits badly: {:?}",
+        made.seams
+    );
+    for s in &bad {
+        assert!(s.mismatch_mm() > 0.1);
+        assert!(
+            stderr.contains(&format!(
+                "cut line {}: {:.2} mm",
+                s.cut_line, s.lengths_mm[0]
+            )),
+            "{stderr}"
+        );
+    }
+    assert!(
+        dir.path().join("a.fold").exists(),
+        "the parts are written to be looked at"
+    );
+    let allowed = run(&["--allow-mismatch"], "b.fold");
+    assert!(
+        allowed.status.success(),
+        "{}",
+        String::from_utf8_lossy(&allowed.stderr)
+    );
+    assert!(String::from_utf8_lossy(&allowed.stderr).contains("warning: cut line"));
+}
