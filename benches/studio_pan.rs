@@ -30,11 +30,7 @@ const PAN_SECONDS: f64 = 4.0;
 const WARM_UP_SECONDS: f64 = 1.0;
 
 /// The patterns: name, Miura-ori columns and rows.
-const PATTERNS: [(&str, usize, usize); 3] = [
-    ("small", 8, 8),
-    ("10k", 70, 70),
-    ("100k", 224, 223),
-];
+const PATTERNS: [(&str, usize, usize); 3] = [("small", 8, 8), ("10k", 70, 70), ("100k", 224, 223)];
 
 /// Pans the pattern view for `seconds`: frames drawn, rAF callbacks and the seconds elapsed.
 const PAN: &str = r#"

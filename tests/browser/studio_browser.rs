@@ -417,7 +417,10 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
         ((x - 40.0).abs() < 1.0 && (y - 40.0).abs() < 1.0).then_some((x, y))
     });
     let at = at.expect("no vertex near (40, 40)");
-    assert!(pattern_ink(&c, &[at]).await[0][3] > 0, "nothing drawn at {at:?}");
+    assert!(
+        pattern_ink(&c, &[at]).await[0][3] > 0,
+        "nothing drawn at {at:?}"
+    );
     keep_screenshot(&c, "studio-edit.png").await;
 
     // Undo: the file's pattern again, and the check passes.

@@ -198,6 +198,43 @@ async fn the_canvas_draws_the_creases_and_the_pointer_finds_the_servers_edge() {
         .expect("a clear point");
     pointer_move(&c, screen_in(&c, "cp-svg", away.0, away.1).await).await;
     assert_eq!(overlay_data(&c, "hovered").await, None);
+
+    // Dashes only while the median line is at least DASH_FROM_PIXELS on screen: zoomed out
+    // until it is 12 px, the lines are solid (ink all along a valley).
+    let mut lengths: Vec<f64> = edges
+        .iter()
+        .map(|(a, b, _)| (b.0 - a.0).hypot(b.1 - a.1))
+        .collect();
+    lengths.sort_by(f64::total_cmp);
+    let median_px = lengths[lengths.len() / 2] / units_per_pixel;
+    let dashed = || async {
+        c.execute(
+            "return document.getElementById('cp-canvas').dataset.dashed ?? null",
+            vec![],
+        )
+        .await
+        .unwrap()
+    };
+    assert_eq!(dashed().await, json!((median_px >= 33.0).to_string()));
+    c.execute(
+        "const v = document.getElementById('cp-canvas').patternView, k = arguments[0];
+         const [x, y, w, h] = v.home;
+         v.setBox([x - w * (k - 1) / 2, y - h * (k - 1) / 2, w * k, h * k]);",
+        vec![json!(median_px / 12.0)],
+    )
+    .await
+    .unwrap();
+    let valley = edges.iter().position(|e| e.2 == "V").unwrap();
+    let (a, b, _) = &edges[valley];
+    let along: Vec<(f64, f64)> = (0..SAMPLES)
+        .map(|k| {
+            let t = 0.3 + 0.4 * k as f64 / (SAMPLES - 1) as f64;
+            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+        })
+        .collect();
+    let ink = pattern_ink(&c, &along).await;
+    assert_eq!(dashed().await, json!("false"));
+    assert!(ink.iter().all(|p| p[3] > 128), "a solid valley: {ink:?}");
     c.close().await.unwrap();
 }
 
@@ -269,6 +306,10 @@ async fn the_segment_grid_finds_what_a_search_of_every_segment_finds() {
     // Both answers occur often: points near a line and points near none.
     let found = result["found"].as_u64().unwrap();
     assert!((1000..5000).contains(&found), "{result}");
-    assert_eq!(result["wrong"], json!([]), "the grid differs from the search");
+    assert_eq!(
+        result["wrong"],
+        json!([]),
+        "the grid differs from the search"
+    );
     c.close().await.unwrap();
 }

@@ -45,7 +45,11 @@ fn the_flat_sheet_comes_first_and_the_fold_starts_from_it() {
     // The flat sheet: one frame at 0 %, no simulation report, and every vertex where the
     // FOLD file puts it, with z = 0 (a Miura-ori has no cuts: one model vertex per vertex).
     let flat = get_json(&server, &format!("/api/docs/{id}/fold3d?flat=true"));
-    assert!(flat["report"].is_null(), "nothing simulated: {}", flat["report"]);
+    assert!(
+        flat["report"].is_null(),
+        "nothing simulated: {}",
+        flat["report"]
+    );
     let frames = flat["frames"].as_array().unwrap();
     assert_eq!(frames.len(), 1);
     assert_eq!(frames[0]["percent"], 0.0);
@@ -69,7 +73,11 @@ fn the_flat_sheet_comes_first_and_the_fold_starts_from_it() {
     // The simulation: the same triangles, its first frame is that sheet, and it folds away
     // from it (the settled end leaves the plane).
     let fold = get_json(&server, &format!("/api/docs/{id}/fold3d"));
-    assert!(fold["report"]["steps"].as_u64().unwrap() > 0, "{}", fold["report"]);
+    assert!(
+        fold["report"]["steps"].as_u64().unwrap() > 0,
+        "{}",
+        fold["report"]
+    );
     assert_eq!(fold["triangles"], flat["triangles"]);
     assert_eq!(fold["triangle_face"], flat["triangle_face"]);
     let frames = fold["frames"].as_array().unwrap();
