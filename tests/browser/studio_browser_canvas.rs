@@ -32,8 +32,11 @@ fn distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
     (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
 }
 
-/// The server's pattern view: the ends of every edge and its assignment letter.
-fn edges_of(view: &Value) -> Vec<((f64, f64), (f64, f64), String)> {
+/// One edge of the server's pattern view: its two ends and its assignment letter.
+type Line = ((f64, f64), (f64, f64), String);
+
+/// The server's pattern view: every edge, by index.
+fn edges_of(view: &Value) -> Vec<Line> {
     let vertex = |k: &Value| {
         let p = &view["vertices"][k.as_u64().unwrap() as usize];
         (p[0].as_f64().unwrap(), p[1].as_f64().unwrap())

@@ -64,7 +64,7 @@ fn the_flat_sheet_comes_first_and_the_fold_starts_from_it() {
         assert_eq!(sheet[3 * v + 2], 0.0, "z of vertex {v}");
     }
     let triangles = flat["triangles"].as_array().unwrap();
-    assert!(!triangles.is_empty() && triangles.len() % 3 == 0);
+    assert!(!triangles.is_empty() && triangles.len().is_multiple_of(3));
     assert_eq!(
         flat["triangle_face"].as_array().unwrap().len(),
         triangles.len() / 3
