@@ -1,6 +1,7 @@
 //! The pattern view draws on a canvas: the creases are on it where the server's pattern puts
-//! them, in their assignment's colour; the pointer over a line finds the edge the server
-//! names; the page's segment grid finds what a search of every segment finds.
+//! them, in their assignment's colour, dashed only when long enough on screen; the pointer
+//! over a line finds the edge the server names, and a click with the Assign tool edits it; the
+//! page's segment grid finds what a search of every segment finds.
 
 use crate::bin;
 use crate::browser;
@@ -8,8 +9,10 @@ use crate::studio;
 use crate::studio_browser::{canvas_count, open};
 
 use bin::foldcam;
-use browser::{open_studio, pattern_ink, pointer_click, pointer_move, screen_in, text};
-use fantoccini::Client;
+use browser::{
+    click, open_studio, pattern_ink, pointer_click, pointer_move, screen_in, text, wait_until,
+};
+use fantoccini::{Client, Locator};
 use serde_json::{Value, json};
 use studio::Server;
 
@@ -238,6 +241,35 @@ async fn the_canvas_draws_the_creases_and_the_pointer_finds_the_servers_edge() {
     let ink = pattern_ink(&c, &along).await;
     assert_eq!(dashed().await, json!("false"));
     assert!(ink.iter().all(|p| p[3] > 128), "a solid valley: {ink:?}");
+
+    // Editing picks lines the same way: back home, the Assign tool makes the clicked mountain
+    // a cut, and the canvas draws one cut line and one mountain fewer.
+    c.execute(
+        "const v = document.getElementById('cp-canvas').patternView; v.setBox(v.home);",
+        vec![],
+    )
+    .await
+    .unwrap();
+    let mountains = canvas_count(&c, "linesM").await;
+    assert_eq!(canvas_count(&c, "linesC").await, 0);
+    click(&c, "#edit-tools button[data-tool='assign']").await;
+    c.find(Locator::Css("#edit-assignment"))
+        .await
+        .unwrap()
+        .select_by_value("C")
+        .await
+        .unwrap();
+    let (a, b, _) = &edges[checked[0]];
+    let at = screen_in(&c, "cp-svg", (a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0).await;
+    pointer_click(&c, at).await;
+    wait_until(
+        &c,
+        "return document.body.dataset.edits === '1' && !document.body.dataset.busy",
+        "the assignment",
+    )
+    .await;
+    assert_eq!(canvas_count(&c, "linesC").await, 1);
+    assert_eq!(canvas_count(&c, "linesM").await, mountains - 1);
     c.close().await.unwrap();
 }
 
