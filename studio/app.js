@@ -14,7 +14,7 @@ import { CraftView } from './craft.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
-const patternView = new PatternView($('cp-svg'), $('hover-info'));
+const patternView = new PatternView($('cp-svg'), $('cp-canvas'), $('hover-info'));
 const machineView = new MachineView($('view-machine'));
 const editor = new Editor(patternView, $('edit-tools'), (view) => guarded(() => edited(view)));
 const flatView = new FlatView($('view-flat'));
@@ -157,6 +157,7 @@ function forgetDerived() {
   delete document.body.dataset.flat;
   state.planned = false;
   delete document.body.dataset.foldPercent;
+  delete document.body.dataset.foldStage;
   delete document.body.dataset.planned;
   $('fold-label').textContent = 'not folded yet';
   $('fold-report').textContent = '';
@@ -191,10 +192,22 @@ async function opened(view) {
   await enterView(active);
 }
 
+/** Folds the document in 3D: the flat sheet first, at once (`fold3d?flat=true`), then the
+ * simulation, which starts from that sheet. `body[data-fold-stage]` says which is shown
+ * (`flat`, then `folded`). */
 async function foldNow() {
   if (!state.foldView) state.foldView = new FoldView($('fold-canvas'));
+  const doc = state.doc;
   $('fold-label').textContent = 'folding…';
-  const fold = await call(`/api/docs/${state.doc.id}/fold3d`);
+  const flat = await call(`/api/docs/${doc.id}/fold3d?flat=true`);
+  if (state.doc !== doc) return;
+  state.fold = flat;
+  state.foldView.show(flat);
+  showFoldFrame();
+  document.body.dataset.foldStage = 'flat';
+  $('fold-label').textContent = 'the flat sheet; folding…';
+  const fold = await call(`/api/docs/${doc.id}/fold3d`);
+  if (state.doc !== doc) return;
   state.fold = fold;
   state.foldView.show(fold);
   const r = fold.report;
@@ -203,6 +216,7 @@ async function foldNow() {
     `${(100 * r.max_strain).toFixed(3)}%; ${r.crossing_faces.length} pair(s) of faces passing through each other` +
     (r.past_flat.length ? `; ${r.past_flat.length} crease(s) folded past flat (their faces pass through each other).` : '.');
   showFoldFrame();
+  document.body.dataset.foldStage = 'folded';
 }
 
 function showFoldFrame() {

@@ -11,7 +11,7 @@
 //! | `GET /api/docs/{id}/check` | `foldcam check --json`'s report |
 //! | `GET /api/docs/{id}/layers` | the layer-order check (`foldcam check --layers`) |
 //! | `GET /api/docs/{id}/flat[?state=K]` | the flat-folded state K seen from above (`foldcam fold-flat --png`) |
-//! | `GET /api/docs/{id}/fold3d` | the 3D fold (bar-and-hinge model) as frames from flat to 100% |
+//! | `GET /api/docs/{id}/fold3d[?flat=true]` | the 3D fold (bar-and-hinge model) as frames from flat to 100%; with `flat=true` at once, only the flat sheet the fold starts from (no report) |
 //! | `GET /api/docs/{id}/plan?machine&material[&size][&options]` | the plan drawn: toolpaths, travel, totals |
 //! | `GET /api/docs/{id}/cut?machine&material&format[&job][&size]` | the job file `foldcam cut` writes |
 //! | `GET /api/docs/{id}/simulate?machine&material[&job][&size]` | the G-code run on the simulated machine |
@@ -48,7 +48,7 @@ use super::flat::{FlatView, flat_view};
 use super::guard::{self, Guard};
 use super::machine_api;
 use super::settings::UploadedProfiles;
-use crate::check::fold3d::{FoldOptions, fold};
+use crate::check::fold3d::{BarHingeModel, FoldOptions, fold};
 use crate::check::layers::{KawasakiTolerance, LayerOptions, check_layers};
 use crate::check::{CheckOptions, check_with_frame};
 use crate::design::source::MeshUse;
@@ -627,10 +627,11 @@ struct FoldView {
     triangles: Vec<u32>,
     /// Pattern face of each triangle.
     triangle_face: Vec<usize>,
-    /// Frames from flat to the settled end.
+    /// Frames from flat to the settled end (only the flat sheet for `flat=true`).
     frames: Vec<FoldFrame>,
-    /// The simulation's report (strain, fold-angle error, crossings, how it stopped).
-    report: crate::check::fold3d::FoldReport,
+    /// The simulation's report (strain, fold-angle error, crossings, how it stopped); `None`
+    /// for the flat sheet alone (`flat=true`: nothing was simulated).
+    report: Option<crate::check::fold3d::FoldReport>,
 }
 
 #[derive(Serialize)]
@@ -639,14 +640,58 @@ struct FoldFrame {
     percent: f64,
     /// True for the settled end (other frames are taken while the target rises).
     settled: bool,
-    /// x, y, z of every model vertex.
+    /// x, y, z of every model vertex, in the pattern's unit.
     positions: Vec<f32>,
 }
 
-async fn fold3d(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<Json<FoldView>> {
+#[derive(Deserialize)]
+struct FoldQuery {
+    /// Only the flat sheet: the model's triangles and its rest positions (z = 0), the
+    /// first frame of the fold, without simulating.
+    #[serde(default)]
+    flat: bool,
+}
+
+/// x, y, z of every position, as the page's frames hold them.
+fn frame_positions(p: &[glam::DVec3]) -> Vec<f32> {
+    p.iter()
+        .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
+        .collect()
+}
+
+/// The model's triangles and the face of each, as the page takes them.
+fn model_triangles(model: &BarHingeModel) -> (Vec<u32>, Vec<usize>) {
+    (
+        model.triangles.iter().flatten().copied().collect(),
+        model.triangle_face.iter().map(|x| x.index()).collect(),
+    )
+}
+
+async fn fold3d(
+    State(s): State<Arc<Studio>>,
+    PathId(id): PathId,
+    query: Result<Query<FoldQuery>, QueryRejection>,
+) -> ApiResult<Json<FoldView>> {
+    let Query(q) = query?;
     let doc = s.get(id)?;
     blocking(move || {
         let c = doc.cleaned(true).map_err(ApiError::input)?;
+        if q.flat {
+            // The sheet the simulation starts from ([`fold`] builds the same model).
+            let model = BarHingeModel::build(&c.pattern)
+                .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+            let (triangles, triangle_face) = model_triangles(&model);
+            return Ok(Json(FoldView {
+                triangles,
+                triangle_face,
+                frames: vec![FoldFrame {
+                    percent: 0.0,
+                    settled: true,
+                    positions: frame_positions(&model.rest),
+                }],
+                report: None,
+            }));
+        }
         let opts = FoldOptions {
             frames: FOLD_FRAMES,
             max_time: FOLD_TIME_LIMIT,
@@ -654,11 +699,6 @@ async fn fold3d(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
         };
         let f =
             fold(&c.pattern, &opts).map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
-        let flat = |p: &[glam::DVec3]| -> Vec<f32> {
-            p.iter()
-                .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
-                .collect()
-        };
         // Frame k of the ramp is taken at step k·every, when the target is k·every/ramp of
         // the full fold (see `fold3d::fold_with`).
         let ramp = opts.ramp_steps.min(opts.max_steps);
@@ -667,7 +707,7 @@ async fn fold3d(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
         let mut frames = vec![FoldFrame {
             percent: 0.0,
             settled: true,
-            positions: flat(&f.model.rest),
+            positions: frame_positions(&f.model.rest),
         }];
         for (k, p) in f.frames.iter().enumerate() {
             let last = k == ramp_frames;
@@ -679,14 +719,15 @@ async fn fold3d(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<J
             frames.push(FoldFrame {
                 percent,
                 settled: last,
-                positions: flat(p),
+                positions: frame_positions(p),
             });
         }
+        let (triangles, triangle_face) = model_triangles(&f.model);
         Ok(Json(FoldView {
-            triangles: f.model.triangles.iter().flatten().copied().collect(),
-            triangle_face: f.model.triangle_face.iter().map(|x| x.index()).collect(),
+            triangles,
+            triangle_face,
             frames,
-            report: f.report,
+            report: Some(f.report),
         }))
     })
     .await

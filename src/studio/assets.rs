@@ -34,12 +34,13 @@ macro_rules! asset {
     };
 }
 
-static ASSETS: [Asset; 17] = [
+static ASSETS: [Asset; 18] = [
     asset!("index.html", "text/html; charset=utf-8"),
     asset!("style.css", "text/css; charset=utf-8"),
     asset!("app.js", "text/javascript; charset=utf-8"),
     asset!("api.js", "text/javascript; charset=utf-8"),
     asset!("cp.js", "text/javascript; charset=utf-8"),
+    asset!("segments.js", "text/javascript; charset=utf-8"),
     asset!("edit.js", "text/javascript; charset=utf-8"),
     asset!("flat.js", "text/javascript; charset=utf-8"),
     asset!("fold.js", "text/javascript; charset=utf-8"),

@@ -13,6 +13,7 @@ mod lines;
 mod studio;
 
 mod studio_browser;
+mod studio_browser_canvas;
 mod studio_browser_craft;
 mod studio_browser_guard;
 mod studio_browser_popup;

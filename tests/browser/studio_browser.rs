@@ -14,7 +14,8 @@ use std::time::Duration;
 
 use bin::{foldcam, repo_file};
 use browser::{
-    click, download_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
+    click, download_text, keep_screenshot, open_studio, pattern_ink, pointer_drag, pointer_move,
+    screen_in, text, wait_until,
 };
 use fantoccini::actions::{InputSource, MouseActions, PointerAction};
 use fantoccini::{Client, Locator};
@@ -25,7 +26,7 @@ use studio::Server;
 const PIXEL_TOLERANCE: u8 = 24;
 
 /// Chooses `file` in the page's file picker and waits for the document to be shown.
-async fn open(c: &Client, file: &Path) {
+pub(crate) async fn open(c: &Client, file: &Path) {
     let before = c
         .execute("return document.body.dataset.doc ?? null", vec![])
         .await
@@ -75,6 +76,44 @@ fn fold_counts(path: &Path) -> (usize, usize, usize, usize) {
     )
 }
 
+/// The pattern view canvas's data attribute `key` (camel case: `linesM` is `data-lines-m`),
+/// a count of lines drawn.
+pub(crate) async fn canvas_count(c: &Client, key: &str) -> usize {
+    let n = c
+        .execute(
+            "return document.getElementById('cp-canvas').dataset[arguments[0]] ?? null",
+            vec![json!(key)],
+        )
+        .await
+        .unwrap();
+    n.as_str()
+        .unwrap_or_else(|| panic!("no data attribute {key}"))
+        .parse()
+        .unwrap()
+}
+
+/// The index of the first edge of a FOLD file with assignment `letter`.
+fn first_edge(file: &Value, letter: &str) -> usize {
+    file["edges_assignment"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .position(|a| a.as_str().unwrap().eq_ignore_ascii_case(letter))
+        .unwrap_or_else(|| panic!("no {letter} edge"))
+}
+
+/// The viewport position (CSS pixels) of the middle of edge `index` of a FOLD file, in the
+/// crease-pattern view.
+async fn edge_middle_on_screen(c: &Client, file: &Value, index: usize) -> (f64, f64) {
+    let ends = &file["edges_vertices"][index];
+    let p = |k: usize| {
+        let q = &file["vertices_coords"][ends[k].as_u64().unwrap() as usize];
+        (q[0].as_f64().unwrap(), q[1].as_f64().unwrap())
+    };
+    let (a, b) = (p(0), p(1));
+    screen_of(c, (a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0).await
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_studio_works_in_a_real_browser() {
     let dir = tempfile::tempdir().unwrap();
@@ -92,30 +131,15 @@ async fn the_studio_works_in_a_real_browser() {
     assert_eq!(text(&c, "#count-M").await, m.to_string());
     assert_eq!(text(&c, "#count-V").await, v.to_string());
     assert_eq!(text(&c, "#check-status").await, "passed");
-    // Every edge is drawn, in its assignment's colour class.
-    let drawn = c
-        .find_all(Locator::Css("#cp-lines line.edge-M"))
-        .await
-        .unwrap();
-    assert_eq!(drawn.len(), m);
+    // Every edge is drawn, the mountains in their own path (the canvas counts what it drew).
+    assert_eq!(canvas_count(&c, "lines").await, edges);
+    assert_eq!(canvas_count(&c, "linesM").await, m);
+    assert_eq!(canvas_count(&c, "linesV").await, v);
     // Hover over one mountain: the page names it with the length the file gives.
-    let hit = c.find(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
-    let index: usize = hit
-        .attr("data-edge")
-        .await
-        .unwrap()
-        .unwrap()
-        .parse()
-        .unwrap();
-    // A real pointer move onto the line's middle (WebDriver actions).
-    let mouse = MouseActions::new("mouse".to_string()).then(PointerAction::MoveToElement {
-        element: hit.clone(),
-        duration: None,
-        x: 0.0,
-        y: 0.0,
-    });
-    c.perform_actions(mouse).await.unwrap();
     let file: Value = serde_json::from_slice(&std::fs::read(&miura).unwrap()).unwrap();
+    let index = first_edge(&file, "M");
+    // A real pointer move onto the line's middle (WebDriver actions).
+    pointer_move(&c, edge_middle_on_screen(&c, &file, index).await).await;
     let ends = &file["edges_vertices"][index];
     let p = |k: usize| {
         let q = &file["vertices_coords"][ends[k].as_u64().unwrap() as usize];
@@ -324,16 +348,15 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
     assert_eq!(text(&c, "#check-status").await, "passed");
 
     // The hover label names an edge only while the pointer is on it.
-    let hit = c.find(Locator::Css("#cp-lines line.edge-M")).await.unwrap();
+    let file: Value = serde_json::from_slice(&studio::flat_vertex_folded_flat()).unwrap();
     let (x0, y0) = screen_of(&c, 5.0, 95.0).await; // empty paper near a corner
-    let hover = MouseActions::new("mouse".to_string()).then(PointerAction::MoveToElement {
-        element: hit,
-        duration: None,
-        x: 0.0,
-        y: 0.0,
-    });
-    c.perform_actions(hover).await.unwrap();
-    assert!(text(&c, "#hover-info").await.starts_with("edge "));
+    let mountain = first_edge(&file, "M");
+    pointer_move(&c, edge_middle_on_screen(&c, &file, mountain).await).await;
+    let info = text(&c, "#hover-info").await;
+    assert!(
+        info.starts_with(&format!("edge {mountain}: mountain (M)")),
+        "{info}"
+    );
     let away = MouseActions::new("mouse".to_string()).then(PointerAction::MoveTo {
         duration: None,
         x: x0,
@@ -380,19 +403,24 @@ async fn dragging_a_vertex_in_the_browser_breaks_kawasaki_and_undo_mends_it() {
         .await
         .unwrap();
     assert_eq!(kawasaki.len(), 1, "one Kawasaki fault, at the moved vertex");
-    // The vertex is where it was dropped (to a pixel): read back from the page's pattern.
+    // The vertex is where it was dropped (to a pixel): read back from the page's pattern,
+    // and the canvas draws lines there.
     let moved = c
         .execute(
-            "return [...document.querySelectorAll('#cp-lines line')].flatMap((l) => \
-             [[+l.getAttribute('x1'), +l.getAttribute('y1')], [+l.getAttribute('x2'), +l.getAttribute('y2')]])",
+            "return document.getElementById('cp-canvas').patternView.pattern.vertices",
             vec![],
         )
         .await
         .unwrap();
-    let near = moved.as_array().unwrap().iter().any(|p| {
-        (p[0].as_f64().unwrap() - 40.0).abs() < 1.0 && (p[1].as_f64().unwrap() - 40.0).abs() < 1.0
+    let at = moved.as_array().unwrap().iter().find_map(|p| {
+        let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+        ((x - 40.0).abs() < 1.0 && (y - 40.0).abs() < 1.0).then_some((x, y))
     });
-    assert!(near, "no line ends near (40, 40)");
+    let at = at.expect("no vertex near (40, 40)");
+    assert!(
+        pattern_ink(&c, &[at]).await[0][3] > 0,
+        "nothing drawn at {at:?}"
+    );
     keep_screenshot(&c, "studio-edit.png").await;
 
     // Undo: the file's pattern again, and the check passes.

@@ -262,3 +262,43 @@ pub async fn download_text(c: &Client, css: &str) -> String {
     let href = link_href(c, css).await;
     fetch_text(c, &href).await
 }
+
+/// A real pointer move to a viewport point (CSS pixels), no button pressed.
+pub async fn pointer_move(c: &Client, at: (f64, f64)) {
+    let mouse = MouseActions::new("mouse".to_string()).then(PointerAction::MoveTo {
+        duration: None,
+        x: at.0,
+        y: at.1,
+    });
+    c.perform_actions(mouse).await.unwrap();
+}
+
+/// What the pattern view's canvas (`#cp-canvas`) shows at pattern points `(x, y)` (y up):
+/// of the 3 × 3 canvas pixels around each, the one with the most ink, as RGBA (alpha 0 where
+/// nothing is drawn). Waits two animation frames first, so a redraw asked for is done.
+pub async fn pattern_ink(c: &Client, points: &[(f64, f64)]) -> Vec<[u8; 4]> {
+    let points: Vec<[f64; 2]> = points.iter().map(|&(x, y)| [x, y]).collect();
+    let ink = c
+        .execute_async(
+            "const [points, done] = arguments;
+             requestAnimationFrame(() => requestAnimationFrame(() => {
+               const canvas = document.getElementById('cp-canvas');
+               const m = canvas.patternView.root.getScreenCTM();
+               const r = canvas.getBoundingClientRect();
+               const dpr = window.devicePixelRatio || 1;
+               const ctx = canvas.getContext('2d', { willReadFrequently: true });
+               done(points.map(([x, y]) => {
+                 const px = Math.floor((m.a * x + m.c * y + m.e - r.left) * dpr);
+                 const py = Math.floor((m.b * x + m.d * y + m.f - r.top) * dpr);
+                 const d = ctx.getImageData(px - 1, py - 1, 3, 3).data;
+                 let best = 0;
+                 for (let k = 4; k < d.length; k += 4) if (d[k + 3] > d[best + 3]) best = k;
+                 return [d[best], d[best + 1], d[best + 2], d[best + 3]];
+               }));
+             }));",
+            vec![json!(points)],
+        )
+        .await
+        .unwrap();
+    serde_json::from_value(ink).unwrap()
+}

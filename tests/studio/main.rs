@@ -12,6 +12,7 @@ mod studio;
 
 mod studio_craft;
 mod studio_designs;
+mod studio_fold3d;
 mod studio_folding;
 mod studio_guard;
 mod studio_popup;
