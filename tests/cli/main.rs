@@ -19,4 +19,5 @@ mod hardening;
 mod hardening_inputs;
 mod malformed;
 mod picture_keys;
+mod read_back;
 mod readme;
