@@ -226,12 +226,23 @@ pub struct CheckReport {
     pub options: CheckOptions,
     /// Each family of checks: whether it ran, over how much, and why.
     pub runs: Vec<applies::CheckRun>,
+    /// Interior vertices whose foldability no check judged: a crease there folds to less
+    /// than 180° (Kawasaki and Maekawa describe folding flat only) and no 3D frame was
+    /// compared for developability. A report that passes with such vertices has not shown
+    /// that the pattern folds ([`CheckReport::checked_folding`]).
+    pub unchecked_vertices: usize,
 }
 
 impl CheckReport {
     /// True when nothing failed.
     pub fn passed(&self) -> bool {
         self.findings.is_empty()
+    }
+
+    /// True when every interior vertex's folding was judged by a check that ran (folding
+    /// flat, or the 3D frame's developability): a pass then says the pattern folds locally.
+    pub fn checked_folding(&self) -> bool {
+        self.unchecked_vertices == 0
     }
 
     /// The findings of one kind.
@@ -310,11 +321,18 @@ pub fn check_with_frame(
         maekawa_skipped_unassigned: vertices.maekawa_skipped,
         flat_foldability_checked: opts.flat_foldability,
         vertices_3d: vertices.vertices_3d,
+        vertices_3d_flat: vertices.vertices_3d_flat,
         largest_developability_error: develop.as_ref().map(|d| d.largest_error),
     };
+    let developed = develop.is_some();
     CheckReport {
         findings,
         warnings: Vec::new(),
+        unchecked_vertices: if developed || !opts.flat_foldability {
+            0
+        } else {
+            summary.vertices_3d - summary.vertices_3d_flat
+        },
         summary,
         options: opts.clone(),
         runs,

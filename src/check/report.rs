@@ -119,6 +119,9 @@ pub struct CheckSummary {
     /// Interior vertices with creases where Kawasaki and Maekawa do not apply: a crease there
     /// folds to less than 180° (a 3D target).
     pub vertices_3d: usize,
+    /// Of [`Self::vertices_3d`], those whose creases satisfy Kawasaki and Maekawa all the
+    /// same: they would fold flat, so folding there is checked.
+    pub vertices_3d_flat: usize,
     /// The largest relative distance change within a face between the pattern and its 3D
     /// frame, when a frame was checked.
     pub largest_developability_error: Option<f64>,
@@ -231,10 +234,36 @@ impl CheckReport {
     }
 
     fn verdict(&self) -> String {
+        if self.passed() && !self.checked_folding() {
+            return format!(
+                "NOT CHECKED: at {} interior vertices a crease folds to less than 180° and no 3D \
+                 frame came to compare, so whether the pattern folds there was not checked (a \
+                 FOLD file with its folded frame is checked for developability); the checks that \
+                 ran found nothing",
+                self.unchecked_vertices
+            );
+        }
         if self.passed() {
+            let ran: Vec<String> = (self.runs.iter())
+                .filter(|r| r.ran)
+                .map(|r| format!("{} ({})", r.name, r.count))
+                .collect();
+            let mut ran = ran;
+            if self.summary.vertices_3d_flat > 0 {
+                ran.push(format!(
+                    "Kawasaki and Maekawa hold at {} vertices folding to 3D targets, so they fold \
+                     flat too",
+                    self.summary.vertices_3d_flat
+                ));
+            }
+            let ran = if ran.is_empty() {
+                "nothing applied".to_string()
+            } else {
+                format!("checked: {}", ran.join(", "))
+            };
             return match self.warnings.len() {
-                0 => "PASS".to_string(),
-                n => format!("PASS with {n} warning(s)"),
+                0 => format!("PASS ({ran})"),
+                n => format!("PASS with {n} warning(s) ({ran})"),
             };
         }
         let counts: Vec<String> = FindingKind::ALL

@@ -66,8 +66,9 @@ fn flat_foldability(opts: &CheckOptions, v: &Tally) -> CheckRun {
     let skipped_3d = if v.vertices_3d > 0 {
         format!(
             "; not applied at {} vertices where a crease folds to less than 180° (a 3D target: \
-             Kawasaki and Maekawa describe folding flat)",
-            v.vertices_3d
+             Kawasaki and Maekawa describe folding flat){}",
+            v.vertices_3d,
+            flat_anyway(v)
         )
     } else {
         String::new()
@@ -77,8 +78,9 @@ fn flat_foldability(opts: &CheckOptions, v: &Tally) -> CheckRun {
             NAME,
             format!(
                 "all {} interior vertices have a crease folding to less than 180°: a 3D target, \
-                 which Kawasaki and Maekawa (folding flat) do not describe",
-                v.vertices_3d
+                 which Kawasaki and Maekawa (folding flat) do not describe{}",
+                v.vertices_3d,
+                flat_anyway(v)
             ),
         );
     }
@@ -91,6 +93,18 @@ fn flat_foldability(opts: &CheckOptions, v: &Tally) -> CheckRun {
             v.checked, v.maekawa_skipped
         ),
     )
+}
+
+/// `; at N of them the creases satisfy both all the same (they fold flat, so they fold)`,
+/// or nothing.
+fn flat_anyway(v: &Tally) -> String {
+    match v.vertices_3d_flat {
+        0 => String::new(),
+        n => format!(
+            "; at {n} of them the creases satisfy both all the same (they would fold flat, so \
+             they fold)"
+        ),
+    }
 }
 
 fn developability(v: &Tally, develop: Option<&Developability>) -> CheckRun {

@@ -36,6 +36,10 @@ pub(super) struct Tally {
     /// Interior vertices with creases not checked for flat-foldability because a crease
     /// there folds to less than 180° (a 3D target).
     pub vertices_3d: usize,
+    /// Of those, the vertices whose creases satisfy Kawasaki and Maekawa all the same (within
+    /// the tolerance, every crease assigned): they fold flat, so they fold at all, and their
+    /// folding counts as checked; the others fail nothing, as a 3D target need not fold flat.
+    pub vertices_3d_flat: usize,
     /// The narrowest crease sector seen.
     pub smallest_angle: Option<VertexMeasure>,
 }
@@ -73,6 +77,13 @@ impl Tally {
         }
         if !vertex_folds_flat(ctx.cp, fan) {
             self.vertices_3d += 1;
+            let tol = ctx.opts.kawasaki_tolerance_deg;
+            let kawasaki = flat_foldability::kawasaki(ctx.cp, v, fan, tol).is_none();
+            let maekawa = degree % 2 == 0
+                && matches!(flat_foldability::maekawa(ctx.cp, v, fan), Maekawa::Pass);
+            if kawasaki && maekawa {
+                self.vertices_3d_flat += 1;
+            }
             return;
         }
         self.checked += 1;
@@ -96,6 +107,7 @@ impl Tally {
         self.checked += other.checked;
         self.maekawa_skipped += other.maekawa_skipped;
         self.vertices_3d += other.vertices_3d;
+        self.vertices_3d_flat += other.vertices_3d_flat;
         self.smallest_angle = match (self.smallest_angle, other.smallest_angle) {
             (Some(a), Some(b)) => Some(if b.degrees < a.degrees { b } else { a }),
             (a, b) => a.or(b),

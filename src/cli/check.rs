@@ -25,7 +25,9 @@ use super::input;
                   contradiction when they cannot. The report says which checks ran and why. The pattern is cleaned into \
                   a planar graph first; vertex and edge numbers refer to the cleaned pattern \
                   (the same as the file's when it was clean already).\n\nExit status: 0 all checks pass, 1 a \
-                  check failed, 2 the input could not be read.",
+                  check failed or, without --allow-unchecked, whether the pattern folds could not \
+                  be checked at some vertices (3D targets without a 3D frame: NOT CHECKED), 2 \
+                  the input could not be read.",
     after_help = "Examples:\n  foldcam check bird.fold\n  \
                   foldcam check tess.svg --min-vertex-angle 30 --max-fold-angle 165\n  \
                   foldcam check bird.cp --json > report.json\n  \
@@ -39,6 +41,10 @@ pub struct Args {
     /// Print the report as JSON (for scripts) instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Exit 0 when nothing failed although whether the pattern folds was not checked at some
+    /// vertices (3D targets without a 3D frame); the report still says NOT CHECKED.
+    #[arg(long)]
+    pub allow_unchecked: bool,
     #[command(flatten)]
     pub limits: CheckArgs,
 }
@@ -76,9 +82,11 @@ pub fn run(args: Args) -> Result<Outcome> {
         }
         out!("{}", report.to_text(input::unit_label(cp.units)));
     }
-    Ok(if report.passed() {
-        Outcome::Done
-    } else {
-        Outcome::CheckFailed
-    })
+    Ok(
+        if report.passed() && (report.checked_folding() || args.allow_unchecked) {
+            Outcome::Done
+        } else {
+            Outcome::CheckFailed
+        },
+    )
 }

@@ -421,7 +421,110 @@ fn text_report_caps_each_kind_and_ends_with_the_verdict() {
             .starts_with("FAIL: 60")
     );
     let passing = check(&miura(60.0, 0.0), &CheckOptions::default()).to_text("mm");
-    assert_eq!(passing.trim_end().lines().last(), Some("PASS"));
+    // A pass names the checks that ran and how much each covered: the degree-4 vertex.
+    assert_eq!(
+        passing.trim_end().lines().last(),
+        Some("PASS (checked: flat_foldability (1))")
+    );
+}
+
+#[test]
+fn a_pass_says_what_was_checked_and_not_checked_exits_1() {
+    let dir = tempfile::tempdir().unwrap();
+    let bin = env!("CARGO_BIN_EXE_foldcam");
+    let run = |args: &[&str]| {
+        std::process::Command::new(bin)
+            .args(args)
+            .current_dir(dir.path())
+            .output()
+            .unwrap()
+    };
+    let last_line = |o: &std::process::Output| {
+        let text = String::from_utf8_lossy(&o.stdout).to_string();
+        text.trim_end().lines().last().unwrap_or("").to_string()
+    };
+    // A Miura-ori sheared by 4 mm with its creases at 170°: 3D targets, where Kawasaki and
+    // Maekawa do not have to hold; they hold all the same at its 11 × 7 interior vertices, so
+    // the pass says so rather than a plain PASS.
+    let made = run(&[
+        "generate",
+        "miura",
+        "--columns",
+        "12",
+        "--rows",
+        "8",
+        "--shear",
+        "4",
+        "-o",
+        "m.fold",
+    ]);
+    assert!(made.status.success());
+    let pattern = foldcam::formats::load(&dir.path().join("m.fold"))
+        .unwrap()
+        .pattern;
+    let report = check(&pattern, &CheckOptions::default());
+    assert_eq!(report.summary.vertices_3d, 77);
+    assert_eq!(report.summary.vertices_3d_flat, 77);
+    assert!(report.passed() && report.checked_folding());
+    let o = run(&["check", "m.fold"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        last_line(&o),
+        "PASS (checked: Kawasaki and Maekawa hold at 77 vertices folding to 3D targets, so \
+         they fold flat too)"
+    );
+    // One crease of it turned by 2° no longer folds flat: at a 3D target that fails nothing,
+    // but the vertex is then not checked at all.
+    let mut bent = pattern.clone();
+    let centre = report
+        .summary
+        .smallest_crease_angle
+        .expect("an angle")
+        .vertex;
+    let e = (0..bent.edges.len())
+        .find(|&e| bent.edges[e].vertices.contains(&centre) && bent.edges[e].assignment.may_fold())
+        .unwrap();
+    let far = bent.edges[e].other(centre);
+    let c = bent.vertices[centre.index()];
+    bent.vertices[far.index()] =
+        c + DVec2::from_angle(2f64.to_radians()).rotate(bent.vertices[far.index()] - c);
+    let report = check(&bent, &CheckOptions::default());
+    assert!(report.passed(), "a 3D target fails nothing here");
+    assert!(report.unchecked_vertices >= 1 && !report.checked_folding());
+    std::fs::write(
+        dir.path().join("bent.fold"),
+        foldcam::formats::fold::write_string(&bent, None),
+    )
+    .unwrap();
+    let o = run(&["check", "bent.fold"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        last_line(&o).starts_with(&format!(
+            "NOT CHECKED: at {} interior vertices",
+            report.unchecked_vertices
+        )),
+        "{}",
+        last_line(&o)
+    );
+    assert!(
+        run(&["check", "bent.fold", "--allow-unchecked"])
+            .status
+            .success()
+    );
+    // Folded in 3D, the file carries a frame: developability runs and nothing is unchecked.
+    let folded = run(&[
+        "fold3d",
+        "bent.fold",
+        "--percent",
+        "50",
+        "-o",
+        "folded.fold",
+    ]);
+    assert!(matches!(folded.status.code(), Some(0 | 1)));
+    let o = run(&["check", "folded.fold", "--fold-frame", "1"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("developability    ran"), "{text}");
+    assert!(!text.contains("NOT CHECKED"), "{text}");
 }
 
 #[test]
