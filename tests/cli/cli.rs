@@ -805,8 +805,26 @@ fn tessellation_passes_the_checks_that_apply_to_it() {
         let mut args = vec!["check", file];
         args.extend(limits);
         let o = foldcam(&args, dir.path());
-        assert_eq!(o.status.code(), Some(0), "{file}: {}", text(&o.stdout));
+        // Without the 3D frame nothing judged whether the SVG's vertices fold (they are 3D
+        // targets, and a star-tuck vertex does not fold flat): NOT CHECKED, exit 1.
+        assert_eq!(
+            o.status.code(),
+            Some(if frame { 0 } else { 1 }),
+            "{file}: {}",
+            text(&o.stdout)
+        );
         let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        let unchecked = v["unchecked_vertices"].as_u64().unwrap();
+        let (all_3d, flat_3d) = (
+            v["summary"]["vertices_3d"].as_u64().unwrap(),
+            v["summary"]["vertices_3d_flat"].as_u64().unwrap(),
+        );
+        assert_eq!(
+            unchecked,
+            if frame { 0 } else { all_3d - flat_3d },
+            "{file}"
+        );
+        assert!(frame || unchecked > 0, "{file}");
         let run = |name: &str| {
             v["runs"]
                 .as_array()
@@ -823,6 +841,9 @@ fn tessellation_passes_the_checks_that_apply_to_it() {
         // Only the FOLD file carries the 3D frame.
         assert_eq!(run("developability")["ran"], frame, "{file}");
     }
+    let allowed = foldcam(&["check", "t.svg", "--allow-unchecked"], dir.path());
+    assert_eq!(allowed.status.code(), Some(0), "{}", text(&allowed.stdout));
+    assert!(text(&allowed.stdout).contains("NOT CHECKED"));
     // Tighter limits than the solve's still fail: the check is not switched off.
     let o = foldcam(&["check", "t.svg", "--max-fold-angle", "120"], dir.path());
     assert_eq!(o.status.code(), Some(1), "{}", text(&o.stdout));
