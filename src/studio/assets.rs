@@ -34,7 +34,7 @@ macro_rules! asset {
     };
 }
 
-static ASSETS: [Asset; 17] = [
+static ASSETS: [Asset; 18] = [
     asset!("index.html", "text/html; charset=utf-8"),
     asset!("style.css", "text/css; charset=utf-8"),
     asset!("app.js", "text/javascript; charset=utf-8"),
@@ -50,6 +50,7 @@ static ASSETS: [Asset; 17] = [
     asset!("tessellate.js", "text/javascript; charset=utf-8"),
     asset!("voxel.js", "text/javascript; charset=utf-8"),
     asset!("popup.js", "text/javascript; charset=utf-8"),
+    asset!("start.js", "text/javascript; charset=utf-8"),
     asset!(
         "vendor/three.module.min.js",
         "text/javascript; charset=utf-8"
