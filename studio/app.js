@@ -185,6 +185,7 @@ async function edited(view) {
 
 /** Shows a newly opened document (the API's pattern view with its id). */
 async function opened(view) {
+  startScreen.hide();
   state.doc = view;
   forgetDerived();
   showCounts(view);
