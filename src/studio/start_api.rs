@@ -174,7 +174,7 @@ const EXAMPLES: &[Example] = &[
 ];
 
 #[derive(Serialize)]
-struct ExampleEntry {
+pub(super) struct ExampleEntry {
     name: &'static str,
     file: &'static str,
     title: &'static str,
@@ -182,7 +182,7 @@ struct ExampleEntry {
 }
 
 #[derive(Serialize)]
-struct ExampleGroup {
+pub(super) struct ExampleGroup {
     group: &'static str,
     examples: Vec<ExampleEntry>,
 }
