@@ -58,7 +58,11 @@ pub fn label_operation(machine: &MachineProfile, material: &Material) -> Option<
 ///
 /// Returns `false` when `machine` cannot mark `material` (a laser whose mark power is 0): the
 /// labels are then left out, and the caller says so.
-pub fn mark_labels(options: &mut PlanOptions, machine: &MachineProfile, material: &Material) -> bool {
+pub fn mark_labels(
+    options: &mut PlanOptions,
+    machine: &MachineProfile,
+    material: &Material,
+) -> bool {
     options.mapping.flat = label_operation(machine, material);
     options.mapping.flat.is_some()
 }
@@ -72,7 +76,8 @@ mod tests {
     fn labels_are_marked_where_the_machine_can_mark_the_material() {
         let machine = load_machine("grbl-diode").unwrap();
         let material = load_material("paper-160gsm").unwrap();
-        let mut options = PlanOptions::for_machine(&machine, &material, &Default::default()).unwrap();
+        let mut options =
+            PlanOptions::for_machine(&machine, &material, &Default::default()).unwrap();
         options.mapping.flat = None;
         assert!(mark_labels(&mut options, &machine, &material));
         assert_eq!(options.mapping.flat, Some(Operation::Mark));

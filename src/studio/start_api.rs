@@ -358,7 +358,9 @@ fn save_bytes(doc: &Document, what: SaveAs) -> Result<Vec<u8>, String> {
     match what {
         SaveAs::Pattern(format) => {
             let c = doc.planar()?;
-            let folded = (format == Format::Fold).then_some(c.folded.as_ref()).flatten();
+            let folded = (format == Format::Fold)
+                .then_some(c.folded.as_ref())
+                .flatten();
             Ok(formats::render(format, &c.pattern, folded).into_bytes())
         }
         SaveAs::Folded => {

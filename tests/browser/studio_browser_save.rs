@@ -15,8 +15,8 @@ use std::path::Path;
 
 use bin::{foldcam, repo_file};
 use browser::{
-    click, downloaded, keep_screenshot, open_studio_downloading, pointer_click, press,
-    press_ctrl, screen_in, text, wait_until,
+    click, downloaded, keep_screenshot, open_studio_downloading, pointer_click, press, press_ctrl,
+    screen_in, text, wait_until,
 };
 use fantoccini::{Client, Locator};
 use serde_json::Value;
@@ -80,7 +80,12 @@ async fn the_opening_screen_opens_an_example_and_saves_its_folded_form() {
         )
         .await
         .unwrap();
-    for g in ["Simple folds", "Origami bases", "Tessellations", "Paper craft"] {
+    for g in [
+        "Simple folds",
+        "Origami bases",
+        "Tessellations",
+        "Paper craft",
+    ] {
         assert!(
             groups.as_array().unwrap().iter().any(|x| x == g),
             "{g} in {groups}"
@@ -163,7 +168,10 @@ async fn a_crease_drawn_on_a_blank_sheet_is_saved_and_read_back_by_the_cli() {
     // Ctrl+S now saves in the format used last (.cp): the browser names the second copy.
     press_ctrl(&c, 's').await;
     let again = downloaded(downloads.path(), "blank (1).cp").await;
-    assert_eq!(again, std::fs::read(downloads.path().join("blank.cp")).unwrap());
+    assert_eq!(
+        again,
+        std::fs::read(downloads.path().join("blank.cp")).unwrap()
+    );
     c.close().await.unwrap();
 }
 

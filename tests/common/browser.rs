@@ -105,8 +105,7 @@ async fn browser_with(driver: &Driver, downloads: Option<&Path>) -> Client {
 /// as long as the returned value is kept.
 pub async fn open_studio(url: &str) -> (Driver, Client) {
     let (driver, c) = open_studio_with(url, None).await;
-    if c
-        .execute("return !document.getElementById('start').hidden", vec![])
+    if c.execute("return !document.getElementById('start').hidden", vec![])
         .await
         .unwrap()
         == Value::Bool(true)
@@ -141,9 +140,12 @@ pub async fn downloaded(dir: &Path, name: &str) -> Vec<u8> {
     let start = Instant::now();
     let path = dir.join(name);
     loop {
-        let partial = std::fs::read_dir(dir)
-            .unwrap()
-            .any(|e| e.unwrap().file_name().to_string_lossy().ends_with(".crdownload"));
+        let partial = std::fs::read_dir(dir).unwrap().any(|e| {
+            e.unwrap()
+                .file_name()
+                .to_string_lossy()
+                .ends_with(".crdownload")
+        });
         if path.exists() && !partial {
             return std::fs::read(&path).unwrap();
         }

@@ -51,8 +51,16 @@ fn the_examples_are_listed_in_groups_and_open_as_the_cli_makes_them() {
     assert_eq!(status, 200);
     let groups = json_of(&body);
     let groups = groups.as_array().unwrap();
-    let names: Vec<&str> = groups.iter().map(|g| g["group"].as_str().unwrap()).collect();
-    for wanted in ["Simple folds", "Origami bases", "Tessellations", "Paper craft"] {
+    let names: Vec<&str> = groups
+        .iter()
+        .map(|g| g["group"].as_str().unwrap())
+        .collect();
+    for wanted in [
+        "Simple folds",
+        "Origami bases",
+        "Tessellations",
+        "Paper craft",
+    ] {
         assert!(names.contains(&wanted), "{names:?}");
     }
     for g in groups {
@@ -89,7 +97,10 @@ fn the_examples_are_listed_in_groups_and_open_as_the_cli_makes_them() {
     let (status, body) = server.post_json("/api/examples/crane", b"");
     assert_eq!(status, 404);
     let message = body["error"].as_str().unwrap();
-    assert!(message.contains("\"crane\"") && message.contains("miura-ori"), "{message}");
+    assert!(
+        message.contains("\"crane\"") && message.contains("miura-ori"),
+        "{message}"
+    );
 }
 
 #[test]
@@ -134,7 +145,10 @@ fn a_blank_sheet_is_a_bounded_square_outline() {
     );
     assert_eq!(reply.status, 403);
     let reply = server.exact(
-        &format!("POST /api/examples/miura-ori HTTP/1.1\r\nHost: {}", server.addr),
+        &format!(
+            "POST /api/examples/miura-ori HTTP/1.1\r\nHost: {}",
+            server.addr
+        ),
         b"",
     );
     assert_eq!(reply.status, 403, "no token");
@@ -202,7 +216,12 @@ fn the_folded_form_is_a_fold_file_whose_key_frame_is_folded() {
         ),
         b"",
     );
-    assert_eq!(reply.status, 200, "{}", String::from_utf8_lossy(&reply.body));
+    assert_eq!(
+        reply.status,
+        200,
+        "{}",
+        String::from_utf8_lossy(&reply.body)
+    );
     assert_eq!(
         reply.header("content-disposition"),
         Some("attachment; filename=\"flat-vertex-folded.fold\"")
@@ -266,7 +285,10 @@ fn the_paper_craft_job_is_the_clis_with_the_edge_numbers() {
     assert!((mark - 144.0).abs() < 0.5, "edge numbers marked: {mark} mm");
     let (status, job) = server.get(&format!("/api/docs/{id}/cut?{query}&format=gcode"));
     assert_eq!(status, 200, "{}", String::from_utf8_lossy(&job));
-    assert!(job == cli, "the studio's job differs from `foldcam papercraft --job`'s");
+    assert!(
+        job == cli,
+        "the studio's job differs from `foldcam papercraft --job`'s"
+    );
 
     // Flat lines chosen "skip" in the studio leave them out, as `--flat skip` does.
     let (_, body) = server.get(&format!("/api/docs/{id}/plan?{query}&flat=skip"));

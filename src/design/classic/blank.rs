@@ -40,7 +40,11 @@ mod tests {
         let cp = blank_sheet(BLANK_SHEET_MM).unwrap();
         assert_eq!(cp.vertices.len(), 4);
         assert_eq!(cp.edges.len(), 4);
-        assert!(cp.edges.iter().all(|e| e.assignment == Assignment::Boundary));
+        assert!(
+            cp.edges
+                .iter()
+                .all(|e| e.assignment == Assignment::Boundary)
+        );
         assert_eq!(cp.faces.as_ref().map(Vec::len), Some(1));
         let (lo, hi) = cp.bounds().unwrap();
         assert_eq!((lo, hi), (DVec2::ZERO, DVec2::splat(BLANK_SHEET_MM)));
