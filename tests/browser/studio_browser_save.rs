@@ -13,7 +13,7 @@ use crate::studio;
 
 use std::path::Path;
 
-use bin::{foldcam, repo_file};
+use bin::{check_summary, vase_job_from_cli};
 use browser::{
     click, downloaded, keep_screenshot, open_studio_downloading, pointer_click, press, press_ctrl,
     screen_in, text, wait_until,
@@ -37,18 +37,6 @@ async fn document_shown(c: &Client, what: &str) {
         what,
     )
     .await;
-}
-
-/// `foldcam check --json FILE`'s summary of the downloaded `file` in `dir`.
-fn cli_summary(dir: &Path, file: &str) -> Value {
-    let out = foldcam(&["check", file, "--json"], dir);
-    let report: Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
-        panic!(
-            "{file}: check --json: {e}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        )
-    });
-    report["summary"].clone()
 }
 
 async fn start_visible(c: &Client) -> bool {
@@ -117,7 +105,7 @@ async fn the_opening_screen_opens_an_example_and_saves_its_folded_form() {
     assert_eq!(fold["frame_classes"], serde_json::json!(["foldedForm"]));
     let coords = fold["vertices_coords"].as_array().unwrap();
     assert!(coords.iter().any(|p| p[2].as_f64().unwrap().abs() > 1.0));
-    let summary = cli_summary(downloads.path(), "miura-ori-folded.fold");
+    let summary = check_summary(downloads.path(), "miura-ori-folded.fold");
     assert_eq!(summary["edges"].as_u64(), Some(edges), "{summary}");
     c.close().await.unwrap();
 }
@@ -160,7 +148,7 @@ async fn a_crease_drawn_on_a_blank_sheet_is_saved_and_read_back_by_the_cli() {
     save_as(&c, "cp").await;
     downloaded(downloads.path(), "blank.cp").await;
     for file in ["blank.fold", "blank.svg", "blank.cp"] {
-        let summary = cli_summary(downloads.path(), file);
+        let summary = check_summary(downloads.path(), file);
         assert_eq!(summary["edges"], 5, "{file}: {summary}");
         assert_eq!(summary["assignments"]["mountain"], 1, "{file}: {summary}");
         assert_eq!(summary["assignments"]["boundary"], 4, "{file}: {summary}");
@@ -179,34 +167,7 @@ async fn a_crease_drawn_on_a_blank_sheet_is_saved_and_read_back_by_the_cli() {
 async fn the_paper_craft_job_downloaded_from_the_studio_is_the_clis() {
     let dir = tempfile::tempdir().unwrap();
     let downloads = tempfile::tempdir().unwrap();
-    for f in ["vase.craft.toml", "vase.obj"] {
-        std::fs::copy(
-            repo_file(&format!("examples/papercraft/{f}")),
-            dir.path().join(f),
-        )
-        .unwrap();
-    }
-    let out = foldcam(
-        &[
-            "papercraft",
-            "vase.craft.toml",
-            "-o",
-            "vase.fold",
-            "--job",
-            "cli.gcode",
-            "-m",
-            "grbl-diode",
-            "-x",
-            "paper-160gsm",
-        ],
-        dir.path(),
-    );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let cli = std::fs::read(dir.path().join("cli.gcode")).unwrap();
+    let cli = vase_job_from_cli(dir.path(), "grbl-diode", "paper-160gsm");
 
     let server = Server::start(&[], dir.path());
     let (_driver, c) = open_studio_downloading(&server.url(), downloads.path()).await;

@@ -6,7 +6,7 @@
 use crate::bin;
 use crate::studio;
 
-use bin::{foldcam, repo_file};
+use bin::{check_summary, foldcam, repo_file, vase_job_from_cli};
 use serde_json::{Value, json};
 use studio::Server;
 
@@ -23,14 +23,18 @@ fn json_of(bytes: &[u8]) -> Value {
 /// `foldcam check --json FILE`'s summary of `bytes` written as `name` in `dir`.
 fn cli_summary(dir: &std::path::Path, name: &str, bytes: &[u8]) -> Value {
     std::fs::write(dir.join(name), bytes).unwrap();
-    let out = foldcam(&["check", name, "--json"], dir);
-    let report: Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
-        panic!(
-            "{name}: check --json: {e}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        )
-    });
-    report["summary"].clone()
+    check_summary(dir, name)
+}
+
+/// `GET /api/docs/{id}/save?format={format}`: the whole reply, headers included.
+fn save(server: &Server, id: u64, format: &str) -> studio::Reply {
+    server.exact(
+        &format!(
+            "GET /api/docs/{id}/save?format={format} HTTP/1.1\r\nHost: {}",
+            server.addr
+        ),
+        b"",
+    )
 }
 
 /// The burn length of operation `op` in a plan's statistics, mm (0 when it has none).
@@ -79,19 +83,17 @@ fn the_examples_are_listed_in_groups_and_open_as_the_cli_makes_them() {
     assert_eq!(opened["name"], "miura-ori.fold");
     let out = foldcam(&["generate", "miura", "-o", "miura.fold"], dir.path());
     assert!(out.status.success());
-    let out = foldcam(&["check", "miura.fold", "--json"], dir.path());
-    let summary = json_of(&out.stdout)["summary"].clone();
+    let summary = check_summary(dir.path(), "miura.fold");
     assert_eq!(opened["counts"]["edges"], summary["edges"]);
     assert_eq!(opened["counts"]["assignments"], summary["assignments"]);
 
     // An ORIPA example is read as the file itself.
     let opened = ok(server.post_json("/api/examples/preliminary-base", b""));
     let path = repo_file("examples/patterns/preliminary-base.cp");
-    let out = foldcam(&["check", &path, "--json"], dir.path());
-    assert_eq!(opened["counts"], {
-        let s = json_of(&out.stdout)["summary"].clone();
-        json!({"vertices": s["vertices"], "edges": s["edges"], "assignments": s["assignments"]})
-    });
+    let s = check_summary(dir.path(), &path);
+    let counts =
+        json!({"vertices": s["vertices"], "edges": s["edges"], "assignments": s["assignments"]});
+    assert_eq!(opened["counts"], counts);
 
     // An unknown example: 404 naming the examples there are.
     let (status, body) = server.post_json("/api/examples/crane", b"");
@@ -173,13 +175,7 @@ fn a_crease_drawn_on_a_blank_sheet_is_saved_in_every_format_and_read_back() {
         ("cp", "blank.cp"),
         ("opx", "blank.opx"),
     ] {
-        let reply = server.exact(
-            &format!(
-                "GET /api/docs/{id}/save?format={format} HTTP/1.1\r\nHost: {}",
-                server.addr
-            ),
-            b"",
-        );
+        let reply = save(&server, id, format);
         assert_eq!(reply.status, 200, "{format}");
         assert_eq!(
             reply.header("content-disposition"),
@@ -209,13 +205,7 @@ fn the_folded_form_is_a_fold_file_whose_key_frame_is_folded() {
     let server = Server::start(&[], dir.path());
     let opened = ok(server.post_json("/api/examples/flat-vertex", b""));
     let id = opened["id"].as_u64().unwrap();
-    let reply = server.exact(
-        &format!(
-            "GET /api/docs/{id}/save?format=folded HTTP/1.1\r\nHost: {}",
-            server.addr
-        ),
-        b"",
-    );
+    let reply = save(&server, id, "folded");
     assert_eq!(
         reply.status,
         200,
@@ -245,34 +235,7 @@ fn the_folded_form_is_a_fold_file_whose_key_frame_is_folded() {
 #[test]
 fn the_paper_craft_job_is_the_clis_with_the_edge_numbers() {
     let dir = tempfile::tempdir().unwrap();
-    for f in ["vase.craft.toml", "vase.obj"] {
-        std::fs::copy(
-            repo_file(&format!("examples/papercraft/{f}")),
-            dir.path().join(f),
-        )
-        .unwrap();
-    }
-    let out = foldcam(
-        &[
-            "papercraft",
-            "vase.craft.toml",
-            "-o",
-            "vase.fold",
-            "--job",
-            "vase.gcode",
-            "-m",
-            "grbl-diode",
-            "-x",
-            "paper-160gsm",
-        ],
-        dir.path(),
-    );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let cli = std::fs::read(dir.path().join("vase.gcode")).unwrap();
+    let cli = vase_job_from_cli(dir.path(), "grbl-diode", "paper-160gsm");
 
     let server = Server::start(&[], dir.path());
     let opened = ok(server.post_json("/api/examples/vase", b""));
