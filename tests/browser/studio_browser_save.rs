@@ -11,8 +11,6 @@ use crate::bin;
 use crate::browser;
 use crate::studio;
 
-use std::path::Path;
-
 use bin::{check_summary, vase_job_from_cli};
 use browser::{
     click, downloaded, keep_screenshot, open_studio_downloading, pointer_click, press, press_ctrl,
