@@ -260,6 +260,10 @@ pub const MAX_LAYER_TRIPLES: usize = 80_000_000;
 /// longer (the command line has `--time-limit`, without a default).
 pub const STUDIO_LAYER_SECONDS: u64 = 60;
 
+/// The side of the studio's blank sheet (`POST /api/blank?side=MM`): from 1 mm to 10 m, the
+/// largest sheet a machine bed or a roll of paper holds.
+pub const STUDIO_BLANK_SIDE: Limit = mm("", "side", 1.0, 10_000.0);
+
 /// Most cells of a voxel pop-up card along any axis (`popup voxel`, the studio's editor).
 pub const VOXEL_CELLS_PER_AXIS: usize = 20_000;
 

@@ -11,6 +11,7 @@ import { TessellationView } from './tessellate.js';
 import { VoxelView } from './voxel.js';
 import { PopupView } from './popup.js';
 import { CraftView } from './craft.js';
+import { StartScreen } from './start.js';
 
 const $ = (id) => document.getElementById(id);
 const state = { doc: null, legend: null, findings: [], fold: null, foldView: null, planned: false };
@@ -27,6 +28,10 @@ new VoxelView($('view-voxel'), async (view) => { await opened(view); await switc
 // The polygon pop-up editor; its saved design opens as a document in the pattern view.
 new PopupView($('view-popup'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 new CraftView($('view-craft'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+// The opening screen (examples, blank sheet) and the Save menu.
+const startScreen = new StartScreen(async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+// A test hook: browser tests wait for the first end of a crease being drawn.
+window.patternEditor = editor;
 let edits = 0;
 
 function showError(e) {
@@ -181,6 +186,7 @@ async function edited(view) {
 
 /** Shows a newly opened document (the API's pattern view with its id). */
 async function opened(view) {
+  startScreen.hide();
   state.doc = view;
   forgetDerived();
   showCounts(view);
@@ -287,9 +293,12 @@ async function start() {
     state.planned = true;
     document.body.dataset.planned = 'true';
   }));
+  await startScreen.load();
   if (files.length) {
     await guarded(async () => opened(await call(`/api/files/0?make=${$('mesh-make').value}`, { method: 'POST' })),
       openingLabel(files[0].name));
+  } else {
+    startScreen.show();
   }
   document.body.dataset.ready = 'true';
 }

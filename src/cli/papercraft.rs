@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, anyhow};
 use foldcam::design::papercraft::{GLUE_TOLERANCE_MM, GLUE_TOLERANCE_SHARE, Seam};
 use foldcam::design::source::{DesignFile, craft, mesh_path_beside, read_design_file};
-use foldcam::fab::label_operation;
+use foldcam::fab::mark_labels;
 use foldcam::fab::{PlanOptions, plan};
 use foldcam::formats::OutputSet;
 use foldcam::machine::{MachineProfile, Material};
@@ -68,15 +68,12 @@ fn job_options(
     material: &str,
 ) -> Result<(MachineProfile, Material, PlanOptions)> {
     let (m, x, mut o) = args.out.fab.resolve(machine, material)?;
-    if args.out.fab.flat.is_none() {
-        o.mapping.flat = label_operation(&m, &x);
-        if o.mapping.flat.is_none() {
-            errln!(
-                "foldcam: {} cannot mark {} (its mark power is 0): edge numbers left out",
-                m.name,
-                x.name
-            );
-        }
+    if args.out.fab.flat.is_none() && !mark_labels(&mut o, &m, &x) {
+        errln!(
+            "foldcam: {} cannot mark {} (its mark power is 0): edge numbers left out",
+            m.name,
+            x.name
+        );
     }
     Ok((m, x, o))
 }

@@ -28,7 +28,7 @@ pub(crate) mod timing;
 
 pub use frame::bounds;
 pub use geometry::{toolpaths, toolpaths_with_warnings};
-pub use operations::label_operation;
+pub use operations::{label_operation, mark_labels};
 pub use options::PlanOverrides;
 pub use order::{order, ranks, travel_mm};
 pub use placement::{Placement, bed_to_machine, bounds_of, place};

@@ -5,7 +5,7 @@
 //! and unassigned creases → their own entries (perforate, score or plot); flat facet lines →
 //! `mapping.flat` (skip or mark); join edges (two faces glued) are never machined.
 
-use super::Operation;
+use super::{Operation, PlanOptions};
 use crate::machine::{MachineProfile, Material, OperationMapping};
 use crate::pattern::{Assignment, CreasePattern, EdgeId};
 
@@ -51,9 +51,43 @@ pub fn label_operation(machine: &MachineProfile, material: &Material) -> Option<
     can_mark(machine, material).then_some(Operation::Mark)
 }
 
+/// Makes a plan mark the labels a design draws as flat lines (paper-craft edge numbers), as
+/// `foldcam papercraft --job` does when `--flat` is not given: flat lines get
+/// [`label_operation`] ([`Operation::Mark`] where [`can_mark`], else skipped). Used by the
+/// command line and the studio alike, so both write the same job for the same design.
+///
+/// Returns `false` when `machine` cannot mark `material` (a laser whose mark power is 0): the
+/// labels are then left out, and the caller says so.
+pub fn mark_labels(
+    options: &mut PlanOptions,
+    machine: &MachineProfile,
+    material: &Material,
+) -> bool {
+    options.mapping.flat = label_operation(machine, material);
+    options.mapping.flat.is_some()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::machine::{load_machine, load_material};
+
+    #[test]
+    fn labels_are_marked_where_the_machine_can_mark_the_material() {
+        let machine = load_machine("grbl-diode").unwrap();
+        let material = load_material("paper-160gsm").unwrap();
+        let mut options =
+            PlanOptions::for_machine(&machine, &material, &Default::default()).unwrap();
+        options.mapping.flat = None;
+        assert!(mark_labels(&mut options, &machine, &material));
+        assert_eq!(options.mapping.flat, Some(Operation::Mark));
+        // A material whose mark power is 0: the labels are left out, and the caller is told.
+        let mut dark = material.clone();
+        dark.settings.mark.power = 0.0;
+        options.mapping.flat = Some(Operation::Mark);
+        assert!(!mark_labels(&mut options, &machine, &dark));
+        assert_eq!(options.mapping.flat, None);
+    }
 
     #[test]
     fn join_is_never_machined_and_cut_follows_boundary() {

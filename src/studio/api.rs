@@ -18,6 +18,8 @@
 //! | `GET /api/machines`, `GET /api/materials` | the shipped profiles and the uploaded ones |
 //! | `POST /api/profiles/{machine,material}?name=N` | reads a TOML profile as `cut -m N.toml` would |
 //! | `GET /api/legend` | line colours and dashes of each assignment (as in our previews) |
+//! | `GET /api/examples`, `POST /api/examples/{name}`, `POST /api/blank[?side=MM]` | the bundled examples and a blank sheet, opened as documents ([`super::start_api`]) |
+//! | `GET /api/docs/{id}/save?format=F` | the pattern saved as FOLD, SVG, `.cp`, `.opx` or its folded form ([`super::start_api`]) |
 //! | `/api/fold/…` | the fold-sequence designer ([`super::folding_api`]) |
 //! | `/api/tess/…` | the tessellation designer ([`super::tessellate_api`]) |
 //! | `/api/voxel/…` | the voxel pop-up editor ([`super::voxel_api`]) |
@@ -221,6 +223,12 @@ impl ApiError {
         }
     }
 
+    /// The message.
+    #[cfg(test)]
+    pub(super) fn message(&self) -> &str {
+        &self.message
+    }
+
     /// Bad input: 422 with the message.
     pub(super) fn input(message: String) -> ApiError {
         ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, message)
@@ -322,6 +330,10 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/profiles/{kind}", post(machine_api::upload_profile))
         .route("/api/materials", get(machine_api::materials))
         .route("/api/legend", get(legend))
+        .route("/api/examples", get(super::start_api::examples))
+        .route("/api/examples/{name}", post(super::start_api::open))
+        .route("/api/blank", post(super::start_api::blank))
+        .route("/api/docs/{id}/save", get(super::start_api::save))
         .merge(super::folding_api::router(Arc::clone(&state)))
         .merge(super::tessellate_api::router(Arc::clone(&state)))
         .merge(super::voxel_api::router(Arc::clone(&state)))

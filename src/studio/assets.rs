@@ -51,6 +51,7 @@ static ASSETS: [Asset; 18] = [
     asset!("tessellate.js", "text/javascript; charset=utf-8"),
     asset!("voxel.js", "text/javascript; charset=utf-8"),
     asset!("popup.js", "text/javascript; charset=utf-8"),
+    asset!("start.js", "text/javascript; charset=utf-8"),
     asset!(
         "vendor/three.module.min.js",
         "text/javascript; charset=utf-8"

@@ -33,6 +33,10 @@ pub struct DesignNote {
     pub made: &'static str,
     /// What the build said: its notes, then the command's summary lines.
     pub lines: Vec<String>,
+    /// The pattern's flat lines are labels (a paper craft's edge numbers): planned as
+    /// `foldcam papercraft --job` plans them, marked where the machine can
+    /// ([`crate::fab::mark_labels`]) unless the user chose an operation for flat lines.
+    pub labels: bool,
 }
 
 /// The pattern after cleaning, with what cleaning had to say.
@@ -106,6 +110,23 @@ impl Document {
         Document::new(name.to_string(), imported)
     }
 
+    /// A pattern made in the studio (a bundled example's generator, a blank sheet), named
+    /// `name`.
+    ///
+    /// # Errors
+    /// A pattern with no edges.
+    pub fn from_pattern(name: String, pattern: CreasePattern) -> Result<Document, String> {
+        Document::new(
+            name,
+            Imported {
+                pattern,
+                folded: None,
+                warnings: Vec::new(),
+                notes: Vec::new(),
+            },
+        )
+    }
+
     /// A design built by [`crate::design::source::build_design`], named `name`; `notes` are
     /// what the build said while it ran.
     ///
@@ -130,6 +151,7 @@ impl Document {
         doc.design = Some(DesignNote {
             made: design.made,
             lines,
+            labels: design.kind.flat_lines_are_labels(),
         });
         Ok(doc)
     }
@@ -149,6 +171,7 @@ impl Document {
             design: self.design.as_ref().map(|d| DesignNote {
                 made: d.made,
                 lines: Vec::new(),
+                labels: d.labels,
             }),
             clean: OnceLock::new(),
         }

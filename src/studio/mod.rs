@@ -36,6 +36,7 @@ mod machine_api;
 mod popup_api;
 mod sessions;
 pub(crate) mod settings;
+mod start_api;
 mod tessellate_api;
 pub(crate) mod toolpath;
 mod voxel_api;

@@ -36,7 +36,9 @@ pub struct Planned {
     pub pattern: CreasePattern,
 }
 
-/// Plans `doc` as `foldcam cut DOC -m MACHINE -x MATERIAL [--size S] [options]` would.
+/// Plans `doc` as `foldcam cut DOC -m MACHINE -x MATERIAL [--size S] [options]` would; a
+/// paper craft's edge numbers are marked as `foldcam papercraft DESIGN --job` marks them
+/// (unless the settings choose an operation for flat lines).
 ///
 /// # Errors
 /// The message `foldcam cut` prints for the same input, naming the option for a setting out
@@ -44,7 +46,11 @@ pub struct Planned {
 pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, String> {
     let machine = choice.machine.clone();
     let material = &choice.material;
-    let options = choice.settings.options(&machine, material)?;
+    let mut options = choice.settings.options(&machine, material)?;
+    // A paper craft's edge numbers are marked as `foldcam papercraft --job` marks them.
+    if choice.settings.flat.is_none() && doc.design.as_ref().is_some_and(|d| d.labels) {
+        crate::fab::mark_labels(&mut options, &machine, material);
+    }
     let cleaned = doc.cleaned(false)?;
     let mut pattern = cleaned.pattern;
     if let Some(size) = choice.size {

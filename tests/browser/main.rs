@@ -17,5 +17,6 @@ mod studio_browser_canvas;
 mod studio_browser_craft;
 mod studio_browser_guard;
 mod studio_browser_popup;
+mod studio_browser_save;
 mod studio_browser_tessellate;
 mod studio_browser_voxel;

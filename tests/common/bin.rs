@@ -30,3 +30,43 @@ pub fn listing(dir: &Path) -> Vec<String> {
     names.sort();
     names
 }
+
+/// The G-code `foldcam papercraft vase.craft.toml --job -m MACHINE -x MATERIAL` writes for the
+/// bundled vase (its design and mesh copied into `dir` first).
+pub fn vase_job_from_cli(dir: &Path, machine: &str, material: &str) -> Vec<u8> {
+    for f in ["vase.craft.toml", "vase.obj"] {
+        std::fs::copy(repo_file(&format!("examples/papercraft/{f}")), dir.join(f)).unwrap();
+    }
+    let args = [
+        "papercraft",
+        "vase.craft.toml",
+        "-o",
+        "vase.fold",
+        "--job",
+        "cli.gcode",
+        "-m",
+        machine,
+        "-x",
+        material,
+    ];
+    let out = foldcam(&args, dir);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::read(dir.join("cli.gcode")).unwrap()
+}
+
+/// The `summary` of `foldcam check FILE --json` run in `dir` (vertex, edge and assignment
+/// counts of the file as foldcam reads it).
+pub fn check_summary(dir: &Path, file: &str) -> serde_json::Value {
+    let out = foldcam(&["check", file, "--json"], dir);
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "{file}: check --json: {e}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        )
+    });
+    report["summary"].clone()
+}

@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-use fantoccini::actions::{InputSource, MouseActions, PointerAction};
+use fantoccini::actions::{InputSource, KeyAction, KeyActions, MouseActions, PointerAction};
 use fantoccini::{Client, ClientBuilder, Locator};
 use serde_json::{Value, json};
 
@@ -67,10 +67,13 @@ pub fn start_driver() -> Driver {
 
 /// A headless Chromium session of [`WINDOW`]'s size.
 pub async fn browser(driver: &Driver) -> Client {
+    browser_with(driver, None).await
+}
+
+/// [`browser`], saving what the page downloads in `downloads` (when given) without asking.
+async fn browser_with(driver: &Driver, downloads: Option<&Path>) -> Client {
     let mut caps = serde_json::Map::new();
-    caps.insert(
-        "goog:chromeOptions".into(),
-        json!({
+    let mut options = json!({
             "args": [
                 "--headless=new",
                 "--no-sandbox",
@@ -81,8 +84,14 @@ pub async fn browser(driver: &Driver) -> Client {
                 "--hide-scrollbars",
                 format!("--window-size={},{}", WINDOW.0, WINDOW.1),
             ]
-        }),
-    );
+    });
+    if let Some(dir) = downloads {
+        options["prefs"] = json!({
+            "download.default_directory": dir,
+            "download.prompt_for_download": false,
+        });
+    }
+    caps.insert("goog:chromeOptions".into(), options);
     let connector = hyper_util::client::legacy::connect::HttpConnector::new();
     ClientBuilder::new(connector)
         .capabilities(caps)
@@ -91,11 +100,30 @@ pub async fn browser(driver: &Driver) -> Client {
         .unwrap_or_else(|e| panic!("headless Chromium did not start: {e}"))
 }
 
-/// A headless Chromium on `url` (the studio's address), once the page has started; the
-/// driver lives as long as the returned value is kept.
+/// A headless Chromium on `url` (the studio's address), once the page has started, with the
+/// opening screen closed (as a user closes it) when the studio has no file; the driver lives
+/// as long as the returned value is kept.
 pub async fn open_studio(url: &str) -> (Driver, Client) {
+    let (driver, c) = open_studio_with(url, None).await;
+    if c.execute("return !document.getElementById('start').hidden", vec![])
+        .await
+        .unwrap()
+        == Value::Bool(true)
+    {
+        click(&c, "#start-close").await;
+    }
+    (driver, c)
+}
+
+/// A headless Chromium on `url` once the page has started, its opening screen as the page
+/// left it; what the page downloads goes to `downloads` (see [`downloaded`]).
+pub async fn open_studio_downloading(url: &str, downloads: &Path) -> (Driver, Client) {
+    open_studio_with(url, Some(downloads)).await
+}
+
+async fn open_studio_with(url: &str, downloads: Option<&Path>) -> (Driver, Client) {
     let driver = start_driver();
-    let c = browser(&driver).await;
+    let c = browser_with(&driver, downloads).await;
     c.goto(url).await.unwrap();
     wait_until(
         &c,
@@ -104,6 +132,53 @@ pub async fn open_studio(url: &str) -> (Driver, Client) {
     )
     .await;
     (driver, c)
+}
+
+/// The bytes of the file `name` the browser downloaded into `dir`, once it is complete;
+/// panics after [`PAGE_TIMEOUT`].
+pub async fn downloaded(dir: &Path, name: &str) -> Vec<u8> {
+    let start = Instant::now();
+    let path = dir.join(name);
+    loop {
+        let partial = std::fs::read_dir(dir).unwrap().any(|e| {
+            e.unwrap()
+                .file_name()
+                .to_string_lossy()
+                .ends_with(".crdownload")
+        });
+        if path.exists() && !partial {
+            return std::fs::read(&path).unwrap();
+        }
+        assert!(
+            start.elapsed() < PAGE_TIMEOUT,
+            "{name} was not downloaded; {} holds {:?}",
+            dir.display(),
+            std::fs::read_dir(dir)
+                .unwrap()
+                .map(|e| e.unwrap().file_name())
+                .collect::<Vec<_>>()
+        );
+        tokio::time::sleep(Duration::from_millis(150)).await;
+    }
+}
+
+/// Presses `key` with Control held (Ctrl+S and the like), as real key events.
+pub async fn press_ctrl(c: &Client, key: char) {
+    let control: char = fantoccini::key::Key::Control.into();
+    let keys = KeyActions::new("keyboard".to_string())
+        .then(KeyAction::Down { value: control })
+        .then(KeyAction::Down { value: key })
+        .then(KeyAction::Up { value: key })
+        .then(KeyAction::Up { value: control });
+    c.perform_actions(keys).await.unwrap();
+}
+
+/// Presses `key` alone (a [`fantoccini::key::Key`] such as Escape, or a letter).
+pub async fn press(c: &Client, key: char) {
+    let keys = KeyActions::new("keyboard".to_string())
+        .then(KeyAction::Down { value: key })
+        .then(KeyAction::Up { value: key });
+    c.perform_actions(keys).await.unwrap();
 }
 
 /// Waits until `script` (a function body) returns true; panics with `what` and the page's

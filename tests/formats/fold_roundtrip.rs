@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use foldcam::formats::fold::{
     HOLES_KEY, UNKNOWN_ANGLE_KEY, frame_count, parse_root, read_frame_str, read_str, resolve_frame,
-    write_string,
+    write_folded_string, write_string,
 };
 use foldcam::pattern::{
     Assignment, CreasePattern, Edge, Face, FaceId, FoldedState, Metadata, Units, VertexId,
@@ -337,8 +337,9 @@ fn frames_inherit_from_their_parents() {
     assert!(read_frame_str(FRAMES, 4).is_err());
 }
 
-#[test]
-fn folded_state_is_written_as_an_inheriting_frame() {
+/// Two unit squares side by side, hinged on a valley of 90° (boundary outside), and the
+/// right square turned up about the hinge.
+fn hinged_sheet() -> (CreasePattern, FoldedState) {
     let mut cp = CreasePattern::new();
     for (x, y) in [
         (0.0, 0.0),
@@ -384,6 +385,12 @@ fn folded_state_is_written_as_an_inheriting_frame() {
         faces: cp.faces.clone(),
         face_orders: Vec::new(),
     };
+    (cp, folded)
+}
+
+#[test]
+fn folded_state_is_written_as_an_inheriting_frame() {
+    let (cp, folded) = hinged_sheet();
     let text = write_string(&cp, Some(&folded));
     let v: Value = serde_json::from_str(&text).unwrap_or_default();
     assert_eq!(v["frame_classes"], json!(["creasePattern"]));
@@ -409,6 +416,26 @@ fn folded_state_is_written_as_an_inheriting_frame() {
     let again = write_string(&back.pattern, back.folded.as_ref());
     let v2: Value = serde_json::from_str(&again).unwrap_or_default();
     assert_eq!(v2["file_frames"].as_array().map(Vec::len), Some(1));
+}
+
+#[test]
+fn a_folded_form_alone_is_a_3d_key_frame_that_unfolds_to_the_pattern() {
+    let (cp, folded) = hinged_sheet();
+    let text = write_folded_string(&cp, &folded);
+    let v: Value = serde_json::from_str(&text).unwrap_or_default();
+    assert_eq!(v["frame_classes"], json!(["foldedForm"]));
+    assert_eq!(v["frame_attributes"], json!(["3D"]));
+    assert!(v.get("file_frames").is_none(), "one frame only");
+    assert!(v.get("frame_parent").is_none() && v.get("frame_inherit").is_none());
+    assert_eq!(v["vertices_coords"][1], json!([1, 0, 1]));
+    assert_eq!(v["edges_assignment"][6], json!("V"));
+    assert_eq!(v["edges_foldAngle"][6], json!(90));
+    // Read back, it unfolds onto the crease pattern (the same edges, the sheet flat again).
+    let back = read_str(&text).expect("reads");
+    assert_eq!(back.pattern.edges.len(), cp.edges.len());
+    for (a, b) in back.pattern.vertices.iter().zip(&cp.vertices) {
+        assert!(a.distance(*b) < 1e-12, "{a} vs {b}");
+    }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -17,5 +17,6 @@ mod studio_folding;
 mod studio_guard;
 mod studio_popup;
 mod studio_server;
+mod studio_start;
 mod studio_tessellate;
 mod studio_voxel;

@@ -1,5 +1,6 @@
 //! Classic crease patterns generated from parameters: Miura-ori, the square twist, the
-//! waterbomb base and tessellation, the Yoshimura pattern, and a flat-foldable square grid.
+//! waterbomb base and tessellation, the Yoshimura pattern, a flat-foldable square grid, and a
+//! blank square sheet to draw on.
 //!
 //! All lengths are millimetres; every generator returns a pattern whose interior vertices
 //! satisfy Kawasaki's and Maekawa's theorems (tests check this with [`crate::check`](mod@crate::check)) with the
@@ -8,11 +9,13 @@
 //! so FOLD viewers fold it and the material checks have a number to test. Invalid parameters
 //! give a [`ClassicError`] naming the parameter.
 
+mod blank;
 mod miura;
 mod square_twist;
 mod waterbomb;
 mod yoshimura;
 
+pub use blank::{BLANK_SHEET_MM, blank_sheet};
 pub use miura::{MiuraOri, grid};
 pub use square_twist::SquareTwist;
 pub use waterbomb::{Waterbomb, waterbomb_base};

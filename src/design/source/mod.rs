@@ -108,6 +108,14 @@ impl DesignKind {
         }
     }
 
+    /// Whether the flat lines of the patterns this kind makes are labels to mark on the
+    /// sheet (a paper craft's edge numbers), rather than facet lines to skip: `foldcam
+    /// papercraft --job` and the studio then mark them where the machine can
+    /// ([`crate::fab::mark_labels`]).
+    pub fn flat_lines_are_labels(self) -> bool {
+        self == DesignKind::PaperCraft
+    }
+
     /// Whether `name`'s ending is one a design file may have (the content may still say
     /// otherwise for a `.toml`).
     pub fn has_design_ending(name: &Path) -> bool {

@@ -64,7 +64,7 @@ pub use faces::with_faces;
 pub use frames::{frame_count, resolve_frame};
 pub use read::{parse_root, read_frame_str, read_str};
 pub use unfold::{Unfolding, unfold};
-pub use write::{write_string, write_string_frames};
+pub use write::{write_folded_string, write_string, write_string_frames};
 
 #[cfg(doc)]
 use super::{Imported, ParseError};

@@ -50,6 +50,42 @@ pub fn write_string_frames(pattern: &CreasePattern, folded: &[FoldedState]) -> S
     json::to_text(&Value::Object(root))
 }
 
+/// Renders a folded state as a FOLD 1.2 file whose key frame is the folded form, the shape
+/// in which Origami Simulator saves a simulation: `frame_classes: ["foldedForm"]`,
+/// `frame_attributes: ["3D"]`, 3D `vertices_coords` (the pattern's length unit), the folded
+/// state's edges and faces (written as by [`write_string`]'s folded frame, so edges keep the
+/// pattern's assignments and fold angles unless the folded state has its own). `pattern`
+/// gives the file's descriptive keys, its unit and, when the folded state shares its
+/// topology, the derived keys. Nothing else rides along: no `file_frames`. A reader that
+/// unfolds a folded form (foldcam's own) gets the crease pattern back.
+pub fn write_folded_string(pattern: &CreasePattern, folded: &FoldedState) -> String {
+    let pattern = &*super::faces::with_faces(pattern, false);
+    let mut root = Map::new();
+    write_file_keys(&mut root, &pattern.meta);
+    root.remove(FRAMES_KEY);
+    let mut key = Map::new();
+    write_frame(&mut key, pattern);
+    let same_topology = folded.positions.len() == pattern.vertices.len()
+        && folded.edges == pattern.edges
+        && folded.faces == pattern.faces;
+    if !same_topology {
+        for k in DERIVED_KEYS {
+            key.remove(k);
+        }
+    }
+    for (k, v) in folded_frame(pattern, folded) {
+        if k != "frame_parent" && k != "frame_inherit" {
+            key.insert(k, v);
+        }
+    }
+    key.insert("frame_attributes".into(), Value::from(vec!["3D"]));
+    key.remove(FRAMES_KEY);
+    for (k, v) in key {
+        root.insert(k, v);
+    }
+    json::to_text(&Value::Object(root))
+}
+
 /// The descriptive keys: file-level where the file level has room, frame-level otherwise.
 const TEXT_KEYS: [(&str, &str); 3] = [
     ("file_title", "frame_title"),
