@@ -256,6 +256,11 @@ pub const REMESH_FACES: CountLimit = CountLimit {
 /// has 67.5 million. A pattern whose deepest stack alone passes it is refused at once.
 pub const MAX_LAYER_TRIPLES: usize = 80_000_000;
 
+/// A studio tessellation solve whose page has not asked for its progress for this long is
+/// cancelled, seconds (the page asks several times a second; a browser wakes a hidden tab's
+/// timers at least once a minute): a closed tab does not keep a core busy.
+pub const STUDIO_ABANDONED_SECONDS: u64 = 90;
+
 /// Longest the studio's layer-order searches run, seconds: a request never holds a worker
 /// longer (the command line has `--time-limit`, without a default).
 pub const STUDIO_LAYER_SECONDS: u64 = 60;

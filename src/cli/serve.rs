@@ -41,6 +41,10 @@ pub struct Args {
     /// Largest upload accepted, MiB.
     #[arg(long, value_name = "MIB", default_value_t = studio::DEFAULT_MAX_UPLOAD_BYTES / (1024 * 1024))]
     pub max_upload: usize,
+    /// Cancel a tessellation solve when its page has not asked for its progress for this
+    /// long, seconds (a closed tab).
+    #[arg(long, value_name = "SECONDS", default_value_t = foldcam::limits::STUDIO_ABANDONED_SECONDS, value_parser = clap::value_parser!(u64).range(1..=86_400))]
+    pub abandon_after: u64,
 }
 
 /// Starts the server and serves until interrupted.
@@ -65,6 +69,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         port: args.port,
         files: args.files,
         max_upload_bytes,
+        abandon_after: std::time::Duration::from_secs(args.abandon_after),
     };
     let open = args.open;
     studio::serve(config, |addr| {

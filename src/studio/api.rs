@@ -118,6 +118,11 @@ pub(super) enum Step {
 }
 
 impl Studio {
+    /// How long a tessellation solve runs without its page asking for progress.
+    pub(super) fn abandon_after(&self) -> std::time::Duration {
+        self.config.abandon_after
+    }
+
     /// A studio with no document open, answering to the address of `config` (give the
     /// port actually bound).
     pub fn new(config: StudioConfig) -> Studio {

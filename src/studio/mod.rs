@@ -69,6 +69,9 @@ pub struct StudioConfig {
     pub files: Vec<PathBuf>,
     /// Largest request body accepted, bytes.
     pub max_upload_bytes: usize,
+    /// A tessellation solve whose page has not asked for its progress for this long is
+    /// cancelled.
+    pub abandon_after: std::time::Duration,
 }
 
 impl Default for StudioConfig {
@@ -78,6 +81,7 @@ impl Default for StudioConfig {
             port: DEFAULT_PORT,
             files: Vec::new(),
             max_upload_bytes: DEFAULT_MAX_UPLOAD_BYTES,
+            abandon_after: std::time::Duration::from_secs(crate::limits::STUDIO_ABANDONED_SECONDS),
         }
     }
 }

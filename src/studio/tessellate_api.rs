@@ -124,6 +124,10 @@ struct Job {
     options: TessellationOptions,
     material: Option<String>,
     cancel: AtomicBool,
+    /// When the page last asked for the job's progress.
+    last_poll: Mutex<Instant>,
+    /// Cancelled when the page has not asked for this long.
+    abandon_after: std::time::Duration,
     state: Mutex<JobState>,
 }
 
@@ -234,7 +238,24 @@ impl Progress for JobProgress {
     }
 
     fn cancelled(&self) -> bool {
-        self.job.cancel.load(Ordering::Relaxed)
+        if self.job.cancel.load(Ordering::Relaxed) {
+            return true;
+        }
+        let quiet = self
+            .job
+            .last_poll
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .elapsed();
+        if quiet <= self.job.abandon_after {
+            return false;
+        }
+        self.job.cancel.store(true, Ordering::Relaxed);
+        self.job.state().error = Some(format!(
+            "cancelled: its page stopped asking for progress for {:.0} s (closed?)",
+            quiet.as_secs_f64()
+        ));
+        true
     }
 }
 
@@ -550,6 +571,8 @@ async fn solve(
         options,
         material: request.material,
         cancel: AtomicBool::new(false),
+        last_poll: Mutex::new(Instant::now()),
+        abandon_after: tess.studio.abandon_after(),
         state: Mutex::new(JobState {
             status: Status::Running,
             events: Vec::new(),
@@ -604,6 +627,7 @@ async fn progress(
 ) -> ApiResult<Json<Value>> {
     let Query(q) = query?;
     let job = tess.job(id)?;
+    *job.last_poll.lock().unwrap_or_else(PoisonError::into_inner) = Instant::now();
     let s = job.state();
     let since = q.since.unwrap_or(0).min(s.events.len());
     Ok(Json(json!({

@@ -125,10 +125,22 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
     assert_eq!(dataset(&c, "parts").await, "8");
     assert_eq!(dataset(&c, "faults").await, "0");
     let regions = c
-        .find_all(fantoccini::Locator::Css("#craft-regions li"))
+        .find_all(fantoccini::Locator::Css("#craft-regions li:not(.unglued)"))
         .await
         .unwrap();
     assert_eq!(regions.len(), 8);
+    // Glued cut lines whose two sides differ are listed under the regions, by number.
+    let unglued: Vec<String> = {
+        let items = c
+            .find_all(fantoccini::Locator::Css("#craft-regions li.unglued"))
+            .await
+            .unwrap();
+        let mut texts = Vec::new();
+        for item in items {
+            texts.push(item.text().await.unwrap());
+        }
+        texts
+    };
     c.execute(
         "document.getElementById('craft-side').scrollTop = 0; return true",
         vec![],
@@ -150,11 +162,22 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
         &["papercraft", "saved.craft.toml", "-o", "cli.fold"],
         dir.path(),
     );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    // The CLI names the same cut lines the page lists, and exits 1 for them.
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        out.status.code(),
+        Some(if unglued.is_empty() { 0 } else { 1 }),
+        "{stderr}"
     );
+    assert_eq!(
+        stderr.matches("the glued edges do not match").count(),
+        unglued.len(),
+        "{stderr}"
+    );
+    for item in &unglued {
+        let line = item.split(':').next().expect("cut line N: …").to_string();
+        assert!(stderr.contains(&format!("{line}:")), "{item} in {stderr}");
+    }
     let cli: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("cli.fold")).unwrap())
             .unwrap();

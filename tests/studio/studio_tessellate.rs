@@ -509,3 +509,46 @@ fn the_command_reads_a_design_file_whose_options_its_flags_override() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("nowhere.obj"));
     assert!(!d.join("bad.fold").exists() && !d.join("lost.fold").exists());
 }
+
+#[test]
+fn a_solve_whose_page_stops_asking_is_cancelled() {
+    let dir = tempfile::tempdir().unwrap();
+    // Cancelled after 1 s without a progress request (90 s by default).
+    let server = Server::start(&["--abandon-after", "1"], dir.path());
+    let cap = std::fs::read(repo_file("examples/tessellation/cap.obj")).unwrap();
+    let mesh = ok(server.post_json("/api/tess/mesh?name=cap.obj", &cap));
+    let job = start(&server, mesh["id"].as_u64().unwrap(), json!({}));
+    // While the page asks several times a second, the solve runs on.
+    let begun = Instant::now();
+    loop {
+        let state = ok(get_json(&server, &format!("/api/tess/jobs/{job}")));
+        let iterations = state["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|e| e["kind"] == "iteration")
+            .count();
+        assert_eq!(state["status"], "running", "{state}");
+        if iterations >= 2 && begun.elapsed() > Duration::from_secs(2) {
+            break;
+        }
+        assert!(begun.elapsed() < SOLVE_WAIT, "no iterations came");
+        std::thread::sleep(Duration::from_millis(200));
+    }
+    // Then it goes quiet, as a closed tab does: the solve stops at its next iteration.
+    let state = loop {
+        std::thread::sleep(Duration::from_secs(4));
+        let state = ok(get_json(&server, &format!("/api/tess/jobs/{job}")));
+        if state["status"] != "running" {
+            break state;
+        }
+        assert!(begun.elapsed() < SOLVE_WAIT, "never cancelled: {state}");
+    };
+    assert_eq!(state["status"], "cancelled", "{state}");
+    assert!(
+        state["error"]
+            .as_str()
+            .is_some_and(|e| e.contains("stopped asking for progress")),
+        "{state}"
+    );
+}
