@@ -34,9 +34,24 @@ const startScreen = new StartScreen(async (view) => { await opened(view); await 
 window.patternEditor = editor;
 let edits = 0;
 
+/** Shows `e` (or hides the box for null) above the view, in the page's flow so that it covers
+ * nothing, with a button that closes it. */
 function showError(e) {
-  $('error').textContent = e ? String(e.message || e) : '';
-  $('error').hidden = !e;
+  const box = $('error');
+  box.replaceChildren();
+  if (e) {
+    const message = document.createElement('span');
+    message.id = 'error-text';
+    message.textContent = String(e.message || e);
+    const close = document.createElement('button');
+    close.id = 'error-close';
+    close.textContent = '×';
+    close.title = 'Close';
+    close.setAttribute('aria-label', 'Close the message');
+    close.addEventListener('click', () => showError(null));
+    box.append(message, close);
+  }
+  box.hidden = !e;
 }
 
 /** Runs an async action, showing its error (the server's message) in the page, and `label`

@@ -96,7 +96,10 @@ export class MachineView {
     this.offer(id, plan, q);
     if (plan.gcode) {
       const sim = await call(`/api/docs/${id}/simulate?${q}`);
-      const p = el('p', {});
+      // An HTML paragraph (the module's `el` makes SVG elements, which an HTML page does not
+      // show).
+      document.getElementById('sim-result')?.remove();
+      const p = document.createElement('p');
       p.id = 'sim-result';
       p.textContent = `Simulated ${sim.machine}: ${sim.lines} lines, ${clock(sim.time_s)} with acceleration, ` +
         `${sim.violation_count} problem(s).`;
@@ -109,12 +112,26 @@ export class MachineView {
     const [bw, bh] = plan.bed;
     const flip = plan.y_flipped ? 1 : -1;
     this.svg.replaceChildren();
-    const pad = 0.03 * Math.max(bw, bh);
-    this.setBox(flip < 0 ? [-pad, -bh - pad, bw + 2 * pad, bh + 2 * pad] : [-pad, -pad, bw + 2 * pad, bh + 2 * pad]);
+    const job = plan.jobs[0];
+    // The view: the job (its sheet and burns) with a margin, so a small job on a large bed
+    // is not a speck; the bed shows around it as far as the margin reaches. A job with
+    // nothing drawn shows the whole bed.
+    const xs = [];
+    const ys = [];
+    for (const s of job.sheet) { xs.push(s[0], s[2]); ys.push(s[1], s[3]); }
+    for (const path of job.paths) {
+      for (const stroke of path.strokes) for (const p of stroke) { xs.push(p[0]); ys.push(p[1]); }
+    }
+    let [x0, y0, x1, y1] = xs.length
+      ? [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)]
+      : [0, 0, bw, bh];
+    const pad = Math.max(0.08 * Math.max(x1 - x0, y1 - y0), 5);
+    [x0, y0, x1, y1] = [x0 - pad, y0 - pad, x1 + pad, y1 + pad];
+    this.setBox(flip < 0 ? [x0, -y1, x1 - x0, y1 - y0] : [x0, y0, x1 - x0, y1 - y0]);
+    this.svg.dataset.view = [x0, y0, x1, y1].map((v) => v.toFixed(2)).join(' ');
     const root = el('g', { transform: `scale(1,${flip})` }, this.svg);
     el('rect', { x: 0, y: 0, width: bw, height: bh, fill: '#fafafa', stroke: '#999',
       'vector-effect': 'non-scaling-stroke' }, root);
-    const job = plan.jobs[0];
     const line = (g, s, attrs) => el('line', { x1: s[0], y1: s[1], x2: s[2], y2: s[3],
       'vector-effect': 'non-scaling-stroke', ...attrs }, g);
     const sheet = el('g', { id: 'tp-sheet' }, root);

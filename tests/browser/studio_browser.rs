@@ -177,6 +177,26 @@ async fn the_studio_works_in_a_real_browser() {
     )
     .await;
     assert_eq!(text(&c, "#layers-result").await, "");
+    // The message sits in the page's flow (it covers no control) and closes.
+    let overlaps = c
+        .execute(
+            "const e = document.getElementById('error').getBoundingClientRect(); \
+             return [...document.querySelectorAll('main button, main input, main select')] \
+               .filter((b) => b.offsetParent && !document.getElementById('error').contains(b)) \
+               .some((b) => { const r = b.getBoundingClientRect(); \
+                 return r.bottom > e.top && r.top < e.bottom && r.right > e.left && r.left < e.right; })",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(overlaps, json!(false), "the message covers a control");
+    click(&c, "#error-close").await;
+    assert_eq!(
+        c.execute("return document.getElementById('error').hidden", vec![])
+            .await
+            .unwrap(),
+        json!(true)
+    );
     field.clear().await.unwrap();
     click(&c, "#layers-btn").await;
     wait_until(&c, layer_line, "the layer order again").await;
@@ -280,6 +300,44 @@ async fn the_studio_works_in_a_real_browser() {
         "the plan",
     )
     .await;
+    // The simulated machine's verdict is shown: an HTML paragraph with a size on screen.
+    let shown = c
+        .execute(
+            "const p = document.getElementById('sim-result'); const r = p.getBoundingClientRect(); \
+             return p instanceof HTMLParagraphElement && r.width > 0 && r.height > 0 \
+               && p.innerText.startsWith('Simulated ')",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(shown, json!(true), "the simulation's result is not visible");
+    // The preview frames the job (its burns with a margin of 8%, at least 5 mm), not the
+    // whole bed.
+    let framing = c
+        .execute(
+            "const b = document.getElementById('tp-burns').getBBox(); \
+             const v = document.getElementById('toolpath-svg').dataset.view.split(' ').map(Number); \
+             return [b.x, b.y, b.x + b.width, b.y + b.height, ...v];",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let f: Vec<f64> = framing
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let (burns, view) = (&f[..4], &f[4..]);
+    let size = (burns[2] - burns[0]).max(burns[3] - burns[1]);
+    let pad = (0.08 * size).max(5.0);
+    for k in 0..4 {
+        let want = burns[k] + if k < 2 { -pad } else { pad };
+        assert!(
+            (view[k] - want).abs() < 0.02 + 0.08 * size,
+            "view {view:?} does not frame the burns {burns:?}"
+        );
+    }
     let travel = c.find_all(Locator::Css("#tp-travel line")).await.unwrap();
     assert!(!travel.is_empty(), "travel is drawn");
     let served = download_text(&c, "#dl-gcode").await;

@@ -101,8 +101,9 @@ fn the_cli_writes_every_sheet() {
     let stdout = String::from_utf8_lossy(&status.stdout);
     assert!(stdout.contains("8 parts"), "{stdout}");
     let sheets: usize = stdout
-        .split(", ")
-        .find_map(|s| s.strip_suffix(" sheet(s)\n"))
+        .lines()
+        .flat_map(|l| l.split(", "))
+        .find_map(|s| s.strip_suffix(" sheet(s)"))
         .and_then(|n| n.parse().ok())
         .unwrap_or(0);
     assert!(sheets >= 2, "{stdout}");
