@@ -36,6 +36,12 @@ let edits = 0;
 
 /** Shows `e` (or hides the box for null) above the view, in the page's flow so that it covers
  * nothing, with a button that closes it. */
+/** The file name of `path` (after its last `/` or `\\`): the page shows it, with the whole
+ * path on hover. */
+function shortName(path) {
+  return String(path).split(/[\\/]/).pop() || String(path);
+}
+
 function showError(e) {
   const box = $('error');
   box.replaceChildren();
@@ -112,7 +118,8 @@ function showCounts(view) {
   $('count-V').textContent = a.valley;
   $('count-B').textContent = a.boundary;
   $('count-other').textContent = `${a.flat}, ${a.unassigned}, ${a.cut}, ${a.join}`;
-  $('doc-name').textContent = view.name;
+  $('doc-name').textContent = shortName(view.name);
+  $('doc-name').title = view.name;
   $('made').textContent = view.made ? `Built from a design file: ${view.made}.` : '';
   $('messages').replaceChildren(...view.messages.map((m) => {
     const li = document.createElement('li');
@@ -273,7 +280,8 @@ async function start() {
   const files = await call('/api/files');
   $('cli-files').replaceChildren(...files.map((f) => {
     const b = document.createElement('button');
-    b.textContent = f.name;
+    b.textContent = shortName(f.name);
+    b.title = f.name;
     const open = async () => opened(await call(`/api/files/${f.index}?make=${$('mesh-make').value}`, { method: 'POST' }));
     b.addEventListener('click', () => guarded(open, openingLabel(f.name)));
     return b;

@@ -702,3 +702,49 @@ async fn a_design_file_uploaded_in_the_browser_opens_as_the_command_builds_it() 
     keep_screenshot(&c, "studio-design.png").await;
     c.close().await.unwrap();
 }
+
+#[tokio::test]
+async fn a_file_named_by_a_long_path_shows_its_name_with_the_path_on_hover() {
+    let dir = tempfile::tempdir().unwrap();
+    let deep = dir
+        .path()
+        .join("a-folder-with-a-rather-long-name-for-designs")
+        .join("and-another-one-below-it-for-this-season");
+    std::fs::create_dir_all(&deep).unwrap();
+    let out = foldcam(&["generate", "miura", "-o", "miura.fold"], &deep);
+    assert!(out.status.success());
+    let file = deep.join("miura.fold");
+    let full = file.to_str().unwrap().to_string();
+    let server = Server::start(&[&full], dir.path());
+    let (_driver, c) = open_studio(&server.url()).await;
+    let button = c.find(Locator::Css("#cli-files button")).await.unwrap();
+    assert_eq!(button.text().await.unwrap(), "miura.fold");
+    assert_eq!(
+        button.attr("title").await.unwrap().as_deref(),
+        Some(full.as_str())
+    );
+    button.click().await.unwrap();
+    wait_until(
+        &c,
+        "return document.getElementById('doc-name').textContent === 'miura.fold'",
+        "the document's name",
+    )
+    .await;
+    let name = c.find(Locator::Css("#doc-name")).await.unwrap();
+    let title = name.attr("title").await.unwrap().unwrap_or_default();
+    assert!(
+        title.ends_with("miura.fold") && title.len() > full.len() / 2,
+        "{title}"
+    );
+    // The header keeps one row: the name does not wrap it.
+    let rows = c
+        .execute(
+            "const n = document.getElementById('doc-name'); \
+             const line = parseFloat(getComputedStyle(n).lineHeight) || 20; \
+             return n.getBoundingClientRect().height / line;",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert!(rows.as_f64().unwrap() < 1.5, "the name spans {rows} lines");
+}
