@@ -171,6 +171,13 @@ export class CraftView {
     this.$('craft-info').textContent = `${view.name}: ${view.lines.length} cut lines, `
       + `${view.regions.length} regions, ${fitted} patches, ${view.parts.length} parts on `
       + `${view.sheets} sheet(s). Click points on the mesh, then Finish line (Enter); drag to turn.`;
+    // Lines that enclose nothing yet: say what makes a region.
+    const open = view.lines.filter((l) => l.open).length;
+    this.$('craft-hint').textContent = view.lines.length && !view.regions.length
+      ? `No region yet: a region is a part of the mesh closed all round by cut lines. ` +
+        (open ? `${open} line(s) have a loose end (drawn dashed): end each line on another ` +
+          'line or on the mesh\'s edge so that the lines close a loop.' : 'Draw more lines to close a loop.')
+      : '';
     this.$('craft-error').textContent = view.error ? `The parts cannot be made: ${view.error}` : '';
     this.root.dataset.parts = String(view.parts.length);
     this.root.dataset.lines = String(view.lines.length);

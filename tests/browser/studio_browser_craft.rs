@@ -57,6 +57,28 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
     )
     .await;
 
+    // Lines that close no region get a hint saying what makes one (the page's own view,
+    // with its regions taken away and two lines left loose).
+    let hint = c
+        .execute(
+            "const saved = craftView.view; \
+             craftView.show({ ...saved, regions: [], parts: [], unglued: [], \
+               paint: saved.paint.map(() => -1), \
+               lines: saved.lines.map((l, i) => ({ ...l, open: i < 2 })) }); \
+             const shown = document.getElementById('craft-hint').textContent; \
+             craftView.show(saved); \
+             return [shown, document.getElementById('craft-hint').textContent];",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let shown = hint[0].as_str().unwrap();
+    assert!(
+        shown.starts_with("No region yet") && shown.contains("2 line(s) have a loose end"),
+        "{shown}"
+    );
+    assert_eq!(hint[1], json!(""), "no hint once the lines close regions");
+
     // Remove meridian 1 with its button: gores 0 and 1 become one region.
     click(&c, "#craft-lines button[data-line='1']").await;
     wait_until(
