@@ -355,7 +355,8 @@ pub enum FabError {
     /// The pattern is larger than the bed.
     #[error(
         "the pattern ({width:.1} × {height:.1} mm with margins) does not fit the bed of \
-         {bed_width:.1} × {bed_height:.1} mm: scale it with --size or use a larger machine"
+         {bed_width:.1} × {bed_height:.1} mm: make it smaller (--size on the command line, \
+         the Size field in the studio) or use a larger machine"
     )]
     DoesNotFit {
         /// Pattern width plus margins, mm.
@@ -395,7 +396,8 @@ pub enum FabError {
     /// A piece to cut is smaller than the beam that cuts it.
     #[error(
         "{what} is {size_mm} mm across, smaller than the kerf of {kerf_mm} mm: cutting it would \
-         leave nothing but the kerf's width; make it larger (--size) or the kerf smaller (--kerf)"
+         leave nothing but the kerf's width; make it larger (--size, the studio's Size field) or \
+         the kerf smaller (--kerf, the studio's Kerf field)"
     )]
     SmallerThanKerf {
         /// What was measured (`the pattern`, `a calibration cell (--crease)`).

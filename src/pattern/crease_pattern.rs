@@ -78,8 +78,9 @@ pub enum Units {
 /// A physical size was needed but the pattern is unitless.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 #[error(
-    "the pattern has no physical size (FOLD frame_unit \"unit\" or an ORIPA file): give one \
-     with --size MM (the longer side) or --scale MM_PER_UNIT"
+    "the pattern has no physical size (FOLD frame_unit \"unit\" or an ORIPA file): give it one, \
+     the longer side in mm (the command line's --size MM, the studio's Size field) or mm per \
+     unit (--scale MM_PER_UNIT)"
 )]
 pub struct UnitlessError;
 

@@ -833,3 +833,29 @@ fn the_layer_order_takes_the_kawasaki_tolerance_of_the_check_panel() {
         );
     }
 }
+
+#[test]
+fn a_unitless_pattern_asks_for_a_size_in_the_studios_words() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    // An ORIPA file has no physical size.
+    let cp = std::fs::read(repo_file("examples/patterns/bird-base.cp")).unwrap();
+    let (status, doc) = server.post_json("/api/upload?name=bird-base.cp", &cp);
+    assert_eq!(status, 200, "{doc}");
+    let id = doc["id"].as_u64().unwrap();
+    let (status, body) = server.get(&format!(
+        "/api/docs/{id}/plan?machine=grbl-diode&material=card-300gsm"
+    ));
+    let reply: Value = serde_json::from_slice(&body).unwrap();
+    assert_eq!(status, 422, "{reply}");
+    let error = reply["error"].as_str().unwrap();
+    assert!(
+        error.contains("no physical size") && error.contains("the studio's Size field"),
+        "{error}"
+    );
+    // With the Size field's value the same plan is made.
+    let (status, _) = server.get(&format!(
+        "/api/docs/{id}/plan?machine=grbl-diode&material=card-300gsm&size=150"
+    ));
+    assert_eq!(status, 200);
+}
