@@ -76,6 +76,16 @@ fn rgb(hex: &str) -> [u8; 3] {
     [(n >> 16) as u8, (n >> 8) as u8, n as u8]
 }
 
+/// `SAMPLES` points spread over the middle 40% of the segment `a`–`b`.
+fn middle_of(a: (f64, f64), b: (f64, f64)) -> Vec<(f64, f64)> {
+    (0..SAMPLES)
+        .map(|k| {
+            let t = 0.3 + 0.4 * k as f64 / (SAMPLES - 1) as f64;
+            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+        })
+        .collect()
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_canvas_draws_the_creases_and_the_pointer_finds_the_servers_edge() {
     let dir = tempfile::tempdir().unwrap();
@@ -132,13 +142,7 @@ async fn the_canvas_draws_the_creases_and_the_pointer_finds_the_servers_edge() {
     for &i in &checked {
         let (a, b, letter) = &edges[i];
         // On the line: ink in its colour along most of it (dashes leave gaps).
-        let along: Vec<(f64, f64)> = (0..SAMPLES)
-            .map(|k| {
-                let t = 0.3 + 0.4 * k as f64 / (SAMPLES - 1) as f64;
-                (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
-            })
-            .collect();
-        let ink = pattern_ink(&c, &along).await;
+        let ink = pattern_ink(&c, &middle_of(*a, *b)).await;
         let inked = ink.iter().filter(|p| p[3] > 128).count();
         assert!(
             2 * inked >= SAMPLES,
@@ -232,13 +236,7 @@ async fn the_canvas_draws_the_creases_and_the_pointer_finds_the_servers_edge() {
     .unwrap();
     let valley = edges.iter().position(|e| e.2 == "V").unwrap();
     let (a, b, _) = &edges[valley];
-    let along: Vec<(f64, f64)> = (0..SAMPLES)
-        .map(|k| {
-            let t = 0.3 + 0.4 * k as f64 / (SAMPLES - 1) as f64;
-            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
-        })
-        .collect();
-    let ink = pattern_ink(&c, &along).await;
+    let ink = pattern_ink(&c, &middle_of(*a, *b)).await;
     assert_eq!(dashed().await, json!("false"));
     assert!(ink.iter().all(|p| p[3] > 128), "a solid valley: {ink:?}");
 

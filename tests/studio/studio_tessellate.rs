@@ -366,15 +366,21 @@ fn a_stopped_solve_shows_where_it_misses_the_limits() {
     assert_eq!(server.get(&format!("/api/tess/jobs/{job}/fold")).0, 409);
 }
 
+/// Uploads the bundled cap.obj (432 faces, a solve of a few hundred iterations) and starts
+/// its solve with the default options: the job's id.
+fn start_cap(server: &Server) -> u64 {
+    let cap = std::fs::read(repo_file("examples/tessellation/cap.obj")).unwrap();
+    let mesh = ok(server.post_json("/api/tess/mesh?name=cap.obj", &cap));
+    start(server, mesh["id"].as_u64().unwrap(), json!({}))
+}
+
 #[test]
 fn a_long_solve_is_cancelled_and_bad_options_are_refused() {
     let dir = tempfile::tempdir().unwrap();
     let server = Server::start(&[], dir.path());
     // cap.obj (432 faces) takes a few hundred iterations: cancelled after its first, it stops
     // after the iteration running when the cancel is answered.
-    let cap = std::fs::read(repo_file("examples/tessellation/cap.obj")).unwrap();
-    let mesh = ok(server.post_json("/api/tess/mesh?name=cap.obj", &cap));
-    let job = start(&server, mesh["id"].as_u64().unwrap(), json!({}));
+    let job = start_cap(&server);
     let begun = Instant::now();
     loop {
         let state = ok(get_json(&server, &format!("/api/tess/jobs/{job}")));
@@ -515,9 +521,7 @@ fn a_solve_whose_page_stops_asking_is_cancelled() {
     let dir = tempfile::tempdir().unwrap();
     // Cancelled after 1 s without a progress request (90 s by default).
     let server = Server::start(&["--abandon-after", "1"], dir.path());
-    let cap = std::fs::read(repo_file("examples/tessellation/cap.obj")).unwrap();
-    let mesh = ok(server.post_json("/api/tess/mesh?name=cap.obj", &cap));
-    let job = start(&server, mesh["id"].as_u64().unwrap(), json!({}));
+    let job = start_cap(&server);
     // While the page asks several times a second, the solve runs on.
     let begun = Instant::now();
     loop {
