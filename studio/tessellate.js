@@ -217,9 +217,16 @@ export class TessellationView {
     this.result = null;
     this.shell.showMesh(mesh);
     this.$('tess-mesh-info').textContent = `${mesh.name}: ${mesh.positions.length} vertices, ` +
-      `${mesh.faces.length} faces; one solve ≈ ${mesh.estimate}`;
+      `${mesh.faces.length} faces; a first guess from the face count: ${mesh.estimate} per ` +
+      'solve (the time left is measured while it solves)';
     this.$('tess-report').replaceChildren();
     this.$('tess-cp').replaceChildren();
+    // Nothing of the previous mesh's solve stays: its progress, notes and plot.
+    this.events = [];
+    this.$('tess-progress').textContent = '';
+    this.$('tess-notes').replaceChildren();
+    this.$('tess-plot').replaceChildren();
+    delete document.body.dataset.tessIterations;
     this.setStatus('ready');
   }
 

@@ -153,6 +153,38 @@ async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
     assert!(!written.is_empty());
     assert_eq!(drawn, written, "the page's crease pattern is the command's");
 
+    // Another mesh starts clean: nothing of the dome's solve stays on the page.
+    click(&c, "#tabs button[data-view='tessellate']").await;
+    click(&c, "#tess-load").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.tessStatus === 'ready' && !document.body.dataset.busy",
+        "the mesh loaded again",
+    )
+    .await;
+    let left = c
+        .execute(
+            "return [document.getElementById('tess-progress').textContent, \
+               document.getElementById('tess-notes').children.length, \
+               document.getElementById('tess-plot').children.length, \
+               document.body.dataset.tessIterations ?? null]",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(
+        left,
+        json!(["", 0, 0, null]),
+        "the previous solve's progress stays"
+    );
+    click(&c, "#tess-solve").await;
+    wait_until(
+        &c,
+        "return document.body.dataset.tessStatus === 'done'",
+        "the solve again",
+    )
+    .await;
+
     // To crease pattern: the document the pattern view checks, plans and cuts.
     click(&c, "#tess-pattern").await;
     wait_until(
