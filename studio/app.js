@@ -22,7 +22,8 @@ const flatView = new FlatView($('view-flat'));
 machineView.onError = (promise) => guarded(() => promise);
 // The fold-sequence designer; its crease pattern opens as a document in the pattern view.
 new FoldingView($('view-folding'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
-new TessellationView($('view-tessellate'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
+// A test hook: browser tests compare the lines drawn on the paper with the paper.
+window.tessellationView = new TessellationView($('view-tessellate'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 // The voxel pop-up editor; its crease pattern opens as a document the same way.
 new VoxelView($('view-voxel'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 // The polygon pop-up editor; its saved design opens as a document in the pattern view.

@@ -57,10 +57,13 @@ class Shell {
     geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(positions.flat()), 3));
     geometry.setIndex(triangles.flat());
     geometry.computeBoundingSphere();
-    const { center, radius } = geometry.boundingSphere;
+    // A copy: `translate` recomputes the bounding sphere in place, which would move a kept
+    // reference to its centre to the origin and leave the lines drawn over the paper off it.
+    const center = geometry.boundingSphere.center.clone();
+    const radius = geometry.boundingSphere.radius;
     geometry.translate(-center.x, -center.y, -center.z);
     geometry.computeVertexNormals();
-    this.centre = center.clone();
+    this.centre = center;
     this.radius = radius || 1;
     this.camera.position.set(0, 0, this.radius * 4.2);
     this.camera.near = this.radius * 0.01;

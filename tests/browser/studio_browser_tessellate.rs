@@ -70,6 +70,25 @@ async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
     )
     .await;
     assert!(text(&c, "#tess-mesh-info").await.starts_with("dome.obj"));
+    // The mesh's edges are drawn on the paper: the first edge starts at its face's first
+    // corner as the paper places it (both centred by the same offset).
+    let offset = c
+        .execute(
+            "const v = tessellationView; const [paper, , lines] = v.shell.model.children; \
+             const i = v.mesh.faces[0][0]; \
+             const p = paper.geometry.getAttribute('position'); \
+             const l = lines.geometry.getAttribute('position'); \
+             return [Math.hypot(p.getX(i) - l.getX(0), p.getY(i) - l.getY(0), p.getZ(i) - l.getZ(0)), \
+               v.shell.radius];",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let (gap, radius) = (offset[0].as_f64().unwrap(), offset[1].as_f64().unwrap());
+    assert!(
+        gap < 1e-5 * radius,
+        "the mesh's lines are drawn {gap} off the paper"
+    );
     // The stainless sheet's limits, chosen by material: the angle fields follow.
     c.execute(
         "const s = document.getElementById('tess-material'); s.value = 'stainless-0.5'; \
