@@ -160,14 +160,9 @@ pub(super) enum Maekawa {
 
 /// Maekawa's condition at `v` (an interior vertex of even degree).
 pub(super) fn maekawa(cp: &CreasePattern, v: VertexId, fan: &[Spoke]) -> Maekawa {
-    let (mut m, mut vv) = (0u32, 0u32);
-    for s in creases(cp, fan) {
-        match cp.edges[s.edge.index()].assignment {
-            Assignment::Mountain => m += 1,
-            Assignment::Valley => vv += 1,
-            _ => return Maekawa::Skipped,
-        }
-    }
+    let Some((m, vv)) = mountains_and_valleys(cp, fan) else {
+        return Maekawa::Skipped;
+    };
     let diff = i64::from(m) - i64::from(vv);
     if diff.abs() == 2 {
         return Maekawa::Pass;
@@ -190,6 +185,29 @@ pub(super) fn maekawa(cp: &CreasePattern, v: VertexId, fan: &[Spoke]) -> Maekawa
         ),
         hint: maekawa_hint(m, vv),
     }))
+}
+
+/// The mountains and valleys among the creases of `fan`; `None` when one is neither.
+fn mountains_and_valleys(cp: &CreasePattern, fan: &[Spoke]) -> Option<(u32, u32)> {
+    let (mut m, mut v) = (0u32, 0u32);
+    for s in creases(cp, fan) {
+        match cp.edges[s.edge.index()].assignment {
+            Assignment::Mountain => m += 1,
+            Assignment::Valley => v += 1,
+            _ => return None,
+        }
+    }
+    Some((m, v))
+}
+
+/// Whether the creases of `fan` satisfy Kawasaki (within `tolerance_deg`) and Maekawa, every
+/// crease assigned, without building findings: for vertices that fold to 3D targets, where
+/// failing either is no fault ([`super::vertex`] counts those that would fold flat anyway).
+pub(super) fn creases_fold_flat(cp: &CreasePattern, fan: &[Spoke], tolerance_deg: f64) -> bool {
+    let (sum, n) = alternating_sum(creases(cp, fan).map(|s| s.angle));
+    n % 2 == 0
+        && (sum / 2.0).abs().to_degrees() <= tolerance_deg
+        && mountains_and_valleys(cp, fan).is_some_and(|(m, v)| m.abs_diff(v) == 2)
 }
 
 fn plural(n: u32) -> &'static str {

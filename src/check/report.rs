@@ -244,11 +244,10 @@ impl CheckReport {
             );
         }
         if self.passed() {
-            let ran: Vec<String> = (self.runs.iter())
+            let mut ran: Vec<String> = (self.runs.iter())
                 .filter(|r| r.ran)
                 .map(|r| format!("{} ({})", r.name, r.count))
                 .collect();
-            let mut ran = ran;
             if self.summary.vertices_3d_flat > 0 {
                 ran.push(format!(
                     "Kawasaki and Maekawa hold at {} vertices folding to 3D targets, so they fold \

@@ -77,11 +77,7 @@ impl Tally {
         }
         if !vertex_folds_flat(ctx.cp, fan) {
             self.vertices_3d += 1;
-            let tol = ctx.opts.kawasaki_tolerance_deg;
-            let kawasaki = flat_foldability::kawasaki(ctx.cp, v, fan, tol).is_none();
-            let maekawa = degree % 2 == 0
-                && matches!(flat_foldability::maekawa(ctx.cp, v, fan), Maekawa::Pass);
-            if kawasaki && maekawa {
+            if flat_foldability::creases_fold_flat(ctx.cp, fan, ctx.opts.kawasaki_tolerance_deg) {
                 self.vertices_3d_flat += 1;
             }
             return;

@@ -124,12 +124,7 @@ pub fn seams(parts: &[Part]) -> Vec<Seam> {
     let mut lines: BTreeMap<usize, BTreeMap<usize, (usize, f64)>> = BTreeMap::new();
     for part in parts {
         for side in &part.sides {
-            let length: f64 = (0..side.len)
-                .map(|k| {
-                    part.point(side.start + k)
-                        .distance(part.point(side.start + k + 1))
-                })
-                .sum();
+            let length = part.side_length(side);
             let entry = lines
                 .entry(side.half_edge / 2)
                 .or_default()
@@ -223,6 +218,16 @@ impl Part {
     /// Outline point `i` (modulo the length).
     pub fn point(&self, i: usize) -> DVec2 {
         self.outline[i % self.outline.len()]
+    }
+
+    /// The length of `side` along the outline, mm.
+    pub fn side_length(&self, side: &PartSide) -> f64 {
+        (0..side.len)
+            .map(|k| {
+                self.point(side.start + k)
+                    .distance(self.point(side.start + k + 1))
+            })
+            .sum()
     }
 
     /// The area of the outline and its tabs, mm².
