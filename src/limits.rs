@@ -291,6 +291,17 @@ pub const STUDIO_BYTES_PER_PATTERN_CELL: u64 = 1_000;
 /// (and may be sent again when others are done).
 pub const STUDIO_MEMORY_BYTES: u64 = 2_000_000_000;
 
+/// Most versions an open document or studio editor session keeps for undo, the shown one
+/// included; the oldest go first.
+pub const STUDIO_UNDO_VERSIONS: usize = 100;
+
+/// Most bytes of earlier versions an open document or studio editor session keeps for undo,
+/// by the versions' array sizes: 30 MB, so that the studio's 32 documents and 40 editor
+/// sessions with undo (16 voxel cards, 16 pop-up cards, 8 paper crafts) hold at most
+/// 2.2 GB of history however long a page is left open, besides the shown versions (bounded
+/// by the size caps above).
+pub const STUDIO_UNDO_BYTES: usize = 30_000_000;
+
 /// The smallest merge tolerance, in the pattern's units: the least `--tolerance` accepts and the
 /// floor of every tolerance computed from a pattern's size (an empty or one-point pattern has
 /// none). Positive, so that "closer than the tolerance" never means "equal".

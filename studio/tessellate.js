@@ -219,9 +219,10 @@ export class TessellationView {
     this.job = null;
     this.result = null;
     this.shell.showMesh(mesh);
+    // No time is promised before one is measured: the progress line gives the time left
+    // once two iterations of a solve are timed.
     this.$('tess-mesh-info').textContent = `${mesh.name}: ${mesh.positions.length} vertices, ` +
-      `${mesh.faces.length} faces; a first guess from the face count: ${mesh.estimate} per ` +
-      'solve (the time left is measured while it solves)';
+      `${mesh.faces.length} faces; the time left is measured while it solves`;
     this.$('tess-report').replaceChildren();
     this.$('tess-cp').replaceChildren();
     // Nothing of the previous mesh's solve stays: its progress, notes and plot.
@@ -276,7 +277,7 @@ export class TessellationView {
       const state = await call(`/api/tess/jobs/${job}?since=${this.events.length}`);
       if (this.job !== job) return;
       this.events.push(...state.events);
-      this.showProgress(state);
+      this.showProgress();
       if (state.status !== 'running') {
         if (state.status === 'done' || state.status === 'refused') {
           this.showResult(await call(`/api/tess/jobs/${job}/result`));
@@ -307,7 +308,7 @@ export class TessellationView {
   }
 
   /** The latest iteration in words, the notes, and the residual per iteration (log scale). */
-  showProgress(state) {
+  showProgress() {
     const iterations = this.events.filter((e) => e.kind === 'iteration');
     const notes = this.events.filter((e) => e.kind === 'note').map((e) => e.text);
     const last = iterations[iterations.length - 1];
@@ -315,7 +316,7 @@ export class TessellationView {
     // residual, time left in this solve).
     this.$('tess-progress').textContent = last
       ? `${last.progress}; max fold ${last.max_fold.toFixed(1)}°, min angle ${last.min_angle.toFixed(1)}°`
-      : `starting… (one solve ≈ ${state.estimate})`;
+      : 'starting… (the time left is shown once two iterations are timed)';
     this.$('tess-notes').replaceChildren(...notes.map((n) => { const li = document.createElement('li'); li.textContent = n; return li; }));
     document.body.dataset.tessIterations = String(iterations.length);
     const svg = this.$('tess-plot');

@@ -48,6 +48,7 @@ use super::document::{Document, PatternView};
 use super::edit_api;
 use super::flat::{FlatView, flat_view};
 use super::guard::{self, Guard};
+use super::history::Versions;
 use super::machine_api;
 use super::settings::UploadedProfiles;
 use crate::check::fold3d::{BarHingeModel, FoldOptions, fold};
@@ -75,30 +76,20 @@ pub struct Studio {
     pub(super) profiles: Mutex<UploadedProfiles>,
 }
 
-/// Most versions of one document kept for undo.
-pub const MAX_UNDO: usize = 100;
-
 #[derive(Default)]
 struct Documents {
     next: u64,
     open: VecDeque<(u64, History)>,
 }
 
-/// The versions of one document: the file as opened, then one per edit; `at` is shown.
-struct History {
-    versions: Vec<Arc<Document>>,
-    at: usize,
-}
+/// The versions of one document: the file as opened, then one per edit.
+type History = Versions<Arc<Document>>;
 
 impl History {
-    fn current(&self) -> &Arc<Document> {
-        &self.versions[self.at]
-    }
-
     fn state(&self) -> Undo {
         Undo {
-            undo: self.at > 0,
-            redo: self.at + 1 < self.versions.len(),
+            undo: self.can_undo(),
+            redo: self.can_redo(),
         }
     }
 }
@@ -142,13 +133,7 @@ impl Studio {
         let id = docs.next;
         docs.next += 1;
         let doc = Arc::new(doc);
-        docs.open.push_back((
-            id,
-            History {
-                versions: vec![Arc::clone(&doc)],
-                at: 0,
-            },
-        ));
+        docs.open.push_back((id, Versions::new(Arc::clone(&doc))));
         while docs.open.len() > super::MAX_DOCUMENTS {
             docs.open.pop_front();
         }
@@ -184,12 +169,7 @@ impl Studio {
                     "the document changed while the edit was made: try again",
                 ));
             }
-            h.versions.truncate(h.at + 1);
-            h.versions.push(Arc::new(next));
-            if h.versions.len() > MAX_UNDO {
-                h.versions.remove(0);
-            }
-            h.at = h.versions.len() - 1;
+            h.push(Arc::new(next));
             Ok(h.state())
         })?
     }
@@ -197,18 +177,11 @@ impl Studio {
     /// Moves in `id`'s history; refused when there is nothing to undo or redo.
     pub(super) fn step(&self, id: u64, step: Step) -> ApiResult<(Arc<Document>, Undo)> {
         self.with(id, |h| {
-            let next = match step {
-                Step::Back => h.at.checked_sub(1),
-                Step::Forward => Some(h.at + 1).filter(|&n| n < h.versions.len()),
+            let doc = match step {
+                Step::Back => h.undo()?,
+                Step::Forward => h.redo()?,
             };
-            let Some(at) = next else {
-                return Err(ApiError::input(match step {
-                    Step::Back => "nothing to undo".to_string(),
-                    Step::Forward => "nothing to redo".to_string(),
-                }));
-            };
-            h.at = at;
-            Ok((Arc::clone(h.current()), h.state()))
+            Ok((Arc::clone(doc), h.state()))
         })?
     }
 }

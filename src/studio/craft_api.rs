@@ -40,6 +40,7 @@ use super::api::{
 use super::design_open;
 use super::edit_api::json_body;
 use super::guard::JsonBody;
+use super::history::Versions;
 use super::sessions::Sessions;
 use crate::design::papercraft::ReferenceMesh;
 use crate::design::papercraft::design::parse_design;
@@ -50,9 +51,6 @@ use crate::mesh::{PolyMesh, parse_obj, parse_stl};
 
 /// Most paper-craft sessions kept at once; the oldest is dropped first.
 pub const MAX_CRAFT_SESSIONS: usize = 8;
-
-/// Most undo states kept per session.
-pub const MAX_UNDO: usize = 64;
 
 /// Snapping reach of a cut line's ends, as a share of the mesh's bounding-box diagonal.
 pub const SNAP_FRACTION: f64 = 0.03;
@@ -89,8 +87,8 @@ struct Session {
     mesh_bytes: Arc<Vec<u8>>,
     mesh: Arc<ReferenceMesh>,
     diagonal: f64,
-    sketch: Sketch,
-    undo: Vec<Sketch>,
+    /// The drawing and its earlier states.
+    sketches: Versions<Sketch>,
     eval: Evaluation,
     paint: Vec<Option<usize>>,
 }
@@ -126,8 +124,7 @@ impl Session {
             mesh_bytes: Arc::new(mesh_bytes),
             mesh: Arc::new(mesh),
             diagonal,
-            sketch,
-            undo: Vec::new(),
+            sketches: Versions::new(sketch),
             eval,
             paint,
         })
@@ -136,11 +133,7 @@ impl Session {
     /// Replaces the drawing by `next`, keeping the current one for undo.
     fn change(&mut self, next: Sketch) -> Result<(), String> {
         let (eval, paint) = evaluate(&self.mesh, &next)?;
-        let before = std::mem::replace(&mut self.sketch, next);
-        self.undo.push(before);
-        if self.undo.len() > MAX_UNDO {
-            self.undo.remove(0);
-        }
+        self.sketches.push(next);
         self.eval = eval;
         self.paint = paint;
         Ok(())
@@ -267,7 +260,8 @@ fn session_view(id: u64, s: &Session, with_mesh: bool) -> SessionView {
     let arr = |p: DVec3| p.to_array();
     let open = &s.eval.open;
     let lines = s
-        .sketch
+        .sketches
+        .current()
         .cut_lines()
         .unwrap_or_default()
         .iter()
@@ -323,7 +317,7 @@ fn session_view(id: u64, s: &Session, with_mesh: bool) -> SessionView {
     SessionView {
         id,
         name: s.name.clone(),
-        mesh_name: s.sketch.mesh_name.clone(),
+        mesh_name: s.sketches.current().mesh_name.clone(),
         reach: SNAP_FRACTION * s.diagonal,
         mesh,
         paint: (s.paint.iter())
@@ -333,11 +327,14 @@ fn session_view(id: u64, s: &Session, with_mesh: bool) -> SessionView {
         regions,
         holes: s.eval.holes.clone(),
         parts,
-        sheet: [s.sketch.params.sheet.width, s.sketch.params.sheet.height],
+        sheet: [
+            s.sketches.current().params.sheet.width,
+            s.sketches.current().params.sheet.height,
+        ],
         sheets,
         error,
         unglued,
-        can_undo: !s.undo.is_empty(),
+        can_undo: s.sketches.can_undo(),
     }
 }
 
@@ -483,9 +480,9 @@ async fn add_line(
     on_session(crafts, id, false, move |s| {
         let clicked: Vec<DVec3> = q.points.iter().map(|&p| DVec3::from_array(p)).collect();
         let reach = SNAP_FRACTION * s.diagonal;
-        let line = snap_line(&s.mesh, &s.sketch.lines, &clicked, reach)
+        let line = snap_line(&s.mesh, &s.sketches.current().lines, &clicked, reach)
             .map_err(|e| ApiError::input(e.to_string()))?;
-        let mut next = s.sketch.clone();
+        let mut next = s.sketches.current().clone();
         next.lines.push(line);
         s.change(next).map_err(ApiError::input)
     })
@@ -505,7 +502,7 @@ async fn remove_line(
 ) -> ApiResult<Json<SessionView>> {
     let q: RemoveRequest = json_body(body, "remove")?;
     on_session(crafts, id, false, move |s| {
-        let mut next = s.sketch.clone();
+        let mut next = s.sketches.current().clone();
         next.remove_line(q.line)
             .map_err(|e| ApiError::input(e.to_string()))?;
         s.change(next).map_err(ApiError::input)
@@ -518,11 +515,7 @@ async fn undo(
     PathId(id): PathId,
 ) -> ApiResult<Json<SessionView>> {
     on_session(crafts, id, false, |s| {
-        let Some(before) = s.undo.pop() else {
-            return Err(ApiError::input("nothing to undo".into()));
-        };
-        let (eval, paint) = evaluate(&s.mesh, &before).map_err(ApiError::input)?;
-        s.sketch = before;
+        let (eval, paint) = evaluate(&s.mesh, s.sketches.undo()?).map_err(ApiError::input)?;
         s.eval = eval;
         s.paint = paint;
         Ok(())
@@ -545,7 +538,7 @@ async fn mesh_file(State(crafts): State<Arc<Crafts>>, PathId(id): PathId) -> Api
     let s = session.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(download(
         "application/octet-stream",
-        &s.sketch.mesh_name,
+        &s.sketches.current().mesh_name,
         s.mesh_bytes.as_ref().clone(),
     ))
 }
@@ -561,7 +554,7 @@ async fn to_pattern(
         (
             format!("{}.craft.toml", s.name),
             s.eval.text.clone(),
-            s.sketch.mesh_name.clone(),
+            s.sketches.current().mesh_name.clone(),
             Arc::clone(&s.mesh_bytes),
         )
     };

@@ -32,6 +32,7 @@ mod edit_api;
 pub(crate) mod flat;
 mod folding_api;
 pub(crate) mod guard;
+mod history;
 mod machine_api;
 mod popup_api;
 mod sessions;

@@ -37,6 +37,7 @@ use super::api::{
 use super::design_open::{message, open_upload};
 use super::edit_api::json_body;
 use super::guard::JsonBody;
+use super::history::Versions;
 use super::sessions::Sessions;
 use crate::design::popup::polygon::{
     Add, CardSize, Design, Edit, Operation, PlaneName, apply_edit, crease_pattern, findings,
@@ -49,9 +50,6 @@ use crate::pattern::CreasePattern;
 /// Most pop-up sessions kept at once; the oldest is dropped first.
 pub const MAX_POPUP_SESSIONS: usize = 16;
 
-/// Most versions a session keeps for undo; the oldest is forgotten first.
-pub const MAX_POPUP_VERSIONS: usize = 200;
-
 /// The name a new card's downloads take.
 const NEW_NAME: &str = "card.popup.toml";
 
@@ -59,14 +57,13 @@ const NEW_NAME: &str = "card.popup.toml";
 struct Session {
     /// The design's file name (always ending `.popup.toml`).
     name: String,
-    /// Every version, the first the design opened; `at` is the one shown.
-    versions: Vec<Design>,
-    at: usize,
+    /// Every version kept, the first the design opened.
+    versions: Versions<Design>,
 }
 
 impl Session {
     fn design(&self) -> &Design {
-        &self.versions[self.at]
+        self.versions.current()
     }
 }
 
@@ -264,8 +261,8 @@ fn session_view(id: u64, s: &Session) -> ApiResult<SessionView> {
         card: [c.width, c.depth, c.height],
         operations,
         history: History {
-            undo: s.at > 0,
-            redo: s.at + 1 < s.versions.len(),
+            undo: s.versions.can_undo(),
+            redo: s.versions.can_redo(),
         },
         valid,
         lines,
@@ -306,8 +303,7 @@ fn start(popups: &Popups, name: String, design: Design) -> ApiResult<Json<Sessio
         .map_err(|e| ApiError::input(format!("{name}: {e}")))?;
     let (id, s) = popups.sessions.add(Session {
         name,
-        versions: vec![design],
-        at: 0,
+        versions: Versions::new(design),
     });
     let s = s.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(Json(session_view(id, &s)?))
@@ -370,12 +366,7 @@ async fn edit(
     on_session(popups, id, move |s| {
         let next = apply_edit(s.design(), &request.into())
             .map_err(|e| ApiError::input(format!("{}: {e}", s.name)))?;
-        s.versions.truncate(s.at + 1);
         s.versions.push(next);
-        if s.versions.len() > MAX_POPUP_VERSIONS {
-            s.versions.remove(0);
-        }
-        s.at = s.versions.len() - 1;
         Ok(Json(session_view(id, s)?))
     })
     .await
@@ -386,10 +377,7 @@ async fn undo(
     PathId(id): PathId,
 ) -> ApiResult<Json<SessionView>> {
     on_session(popups, id, move |s| {
-        if s.at == 0 {
-            return Err(ApiError::input("nothing to undo".into()));
-        }
-        s.at -= 1;
+        s.versions.undo()?;
         Ok(Json(session_view(id, s)?))
     })
     .await
@@ -400,10 +388,7 @@ async fn redo(
     PathId(id): PathId,
 ) -> ApiResult<Json<SessionView>> {
     on_session(popups, id, move |s| {
-        if s.at + 1 >= s.versions.len() {
-            return Err(ApiError::input("nothing to redo".into()));
-        }
-        s.at += 1;
+        s.versions.redo()?;
         Ok(Json(session_view(id, s)?))
     })
     .await

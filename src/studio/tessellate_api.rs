@@ -391,8 +391,6 @@ struct MeshView {
     name: String,
     positions: Vec<[f64; 3]>,
     faces: Vec<Vec<u32>>,
-    /// The time and memory of one solve, as `foldcam tessellate` announces them.
-    estimate: String,
 }
 
 fn load_mesh(tess: &Tessellations, name: String, bytes: Vec<u8>) -> ApiResult<Json<MeshView>> {
@@ -414,7 +412,6 @@ fn load_mesh(tess: &Tessellations, name: String, bytes: Vec<u8>) -> ApiResult<Js
         name: m.name.clone(),
         positions: m.mesh.positions().iter().map(|p| p.to_array()).collect(),
         faces: m.mesh.faces().iter().map(|f| f.to_vec()).collect(),
-        estimate: solve_estimate(m.mesh.faces().len()).to_string(),
     };
     let (id, entry) = tess.add_mesh(MeshEntry { name, bytes, mesh });
     Ok(Json(view(id, &entry)))
@@ -636,7 +633,6 @@ async fn progress(
         "next": s.events.len(),
         "dropped": s.dropped,
         "error": s.error,
-        "estimate": solve_estimate(job.mesh.mesh.faces().len()).to_string(),
     })))
 }
 

@@ -32,6 +32,7 @@ use super::api::{
 };
 use super::edit_api::json_body;
 use super::guard::JsonBody;
+use super::history::Versions;
 use super::sessions::Sessions;
 use super::{budget, design_open};
 use crate::design::popup::voxel::estimate as conversion_estimate;
@@ -48,9 +49,6 @@ use crate::limits::{STUDIO_BYTES_PER_PATTERN_CELL, STUDIO_VOXEL_PATTERN_CELLS};
 /// Most voxel sessions kept at once; the oldest is dropped first.
 pub const MAX_VOXEL_SESSIONS: usize = 16;
 
-/// Most card versions kept for undo.
-pub const MAX_VOXEL_UNDO: usize = 200;
-
 /// Most faulty cells sent for one fault (the page marks them; the list says how many more).
 pub const CELLS_SHOWN: usize = 2_000;
 
@@ -58,14 +56,13 @@ pub const CELLS_SHOWN: usize = 2_000;
 struct Session {
     /// The file it came from, or "card.voxel.txt".
     name: String,
-    /// Every version; `at` is shown.
-    versions: Vec<VoxelCard>,
-    at: usize,
+    /// Every version kept, the first the card opened.
+    versions: Versions<VoxelCard>,
 }
 
 impl Session {
     fn card(&self) -> &VoxelCard {
-        &self.versions[self.at]
+        self.versions.current()
     }
 
     /// The name of the saved file: the session's, ending in `.voxel.txt`.
@@ -267,8 +264,8 @@ fn card_view(id: u64, s: &Session, change: Option<EditChange>) -> ApiResult<Card
         omitted: per_row(&|x, z| card.is_top_omitted(x, z)),
         makes_a_card: verdict.makes_a_card(),
         faults: faults(card, &verdict),
-        undo: s.at > 0,
-        redo: s.at + 1 < s.versions.len(),
+        undo: s.versions.can_undo(),
+        redo: s.versions.can_redo(),
         change: change.map(|c| [c.added, c.removed]),
     })
 }
@@ -290,8 +287,7 @@ async fn on_session<T: Send + 'static>(
 fn start(voxels: &Voxels, name: String, card: VoxelCard) -> ApiResult<Json<CardView>> {
     let (id, s) = voxels.sessions.add(Session {
         name,
-        versions: vec![card],
-        at: 0,
+        versions: Versions::new(card),
     });
     let s = s.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(Json(card_view(id, &s, None)?))
@@ -417,12 +413,7 @@ async fn edit(
         let mut card = s.card().clone();
         let change = apply_edit(&mut card, &e)
             .map_err(|err| ApiError::input(format!("{}: {err}", s.name)))?;
-        s.versions.truncate(s.at + 1);
         s.versions.push(card);
-        if s.versions.len() > MAX_VOXEL_UNDO {
-            s.versions.remove(0);
-        }
-        s.at = s.versions.len() - 1;
         Ok(Json(card_view(id, s, Some(change))?))
     })
     .await
@@ -430,10 +421,7 @@ async fn edit(
 
 async fn undo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
     on_session(voxels, id, move |s| {
-        if s.at == 0 {
-            return Err(ApiError::input("nothing to undo".into()));
-        }
-        s.at -= 1;
+        s.versions.undo()?;
         Ok(Json(card_view(id, s, None)?))
     })
     .await
@@ -441,10 +429,7 @@ async fn undo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResul
 
 async fn redo(State(voxels): State<Arc<Voxels>>, PathId(id): PathId) -> ApiResult<Json<CardView>> {
     on_session(voxels, id, move |s| {
-        if s.at + 1 >= s.versions.len() {
-            return Err(ApiError::input("nothing to redo".into()));
-        }
-        s.at += 1;
+        s.versions.redo()?;
         Ok(Json(card_view(id, s, None)?))
     })
     .await

@@ -69,7 +69,14 @@ async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
         "the example mesh",
     )
     .await;
-    assert!(text(&c, "#tess-mesh-info").await.starts_with("dome.obj"));
+    let info = text(&c, "#tess-mesh-info").await;
+    assert!(info.starts_with("dome.obj"), "{info}");
+    // No time is promised before one is measured (the face-count guess said "under a second"
+    // for solves of minutes).
+    assert!(
+        !info.contains("about") && !info.contains("second"),
+        "{info}"
+    );
     // The mesh's edges are drawn on the paper: the first edge starts at its face's first
     // corner as the paper places it (both centred by the same offset).
     let offset = c
@@ -128,6 +135,21 @@ async fn a_solve_in_the_browser_saves_a_design_the_command_rebuilds() {
         .parse()
         .unwrap();
     assert!(iterations > 0);
+    // Every progress line the page showed says a time only once two iterations of its solve
+    // were timed.
+    let lines = c
+        .execute(
+            "return tessellationView.events.filter((e) => e.kind === 'iteration') \
+               .map((e) => [e.index, e.progress, e.seconds_left])",
+            vec![],
+        )
+        .await
+        .unwrap();
+    for line in lines.as_array().unwrap() {
+        let (index, text) = (line[0].as_u64().unwrap(), line[1].as_str().unwrap());
+        assert_eq!(index >= 2, text.contains(" left in this solve"), "{line}");
+        assert_eq!(index >= 2, !line[2].is_null(), "{line}");
+    }
     // The command's progress line: the iteration out of the cap, the solve of the schedule,
     // the time left (none once converged).
     let progress = text(&c, "#tess-progress").await;

@@ -252,12 +252,13 @@ pub fn tessellate_outcome(
     let (passes, crowding) =
         scheduled_passes(mesh, &limits, &schedule).map_err(|e| SourceError::input(name, e))?;
     progress.note(format!(
-        "estimate: {} per solve, up to {} solve(s): {} face shrink(s) on {} \
-         triangulation(s), a colliding one solved once more with the stiffer outline",
-        solve_estimate(mesh.faces().len()),
+        "estimate: up to {} solve(s): {} face shrink(s) on {} triangulation(s), a colliding \
+         one solved once more with the stiffer outline; a first guess from the face count, \
+         {} per solve, until the first iterations are timed",
         passes.len() * schedule.shrinks.len(),
         schedule.shrinks.len(),
         passes.len(),
+        solve_estimate(mesh.faces().len()),
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
     let advice = curvature_advice(mesh)
@@ -408,15 +409,13 @@ pub struct PlannedSolve {
     pub triangulation: Triangulation,
 }
 
-/// What a tessellation will try, in order, and what one solve is expected to cost: the
-/// schedule of [`tessellate_scheduled`](crate::design::tessellation::tessellate_scheduled) (which stops at the first usable result) with the
-/// up-front estimate of [`solve_estimate`].
+/// What a tessellation will try, in order: the schedule of
+/// [`tessellate_scheduled`](crate::design::tessellation::tessellate_scheduled) (which stops at
+/// the first usable result), with each solve's iteration cap and tolerance.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SolvePlan {
     /// The solves, in the order they are tried.
     pub solves: Vec<PlannedSolve>,
-    /// Expected seconds of one solve, up front.
-    pub seconds_per_solve: f64,
     /// Newton iteration cap of each solve.
     pub max_iterations: usize,
     /// Developability the solve stops at, radians.
@@ -442,7 +441,6 @@ pub fn solve_plan(
     let passes = scheduled_passes(mesh, &opts.solve.limits, &schedule)
         .map(|(passes, _)| passes.iter().map(|p| p.triangulation).collect())
         .unwrap_or_else(|_| vec![Triangulation::Input]);
-    let faces = options.remesh_faces.unwrap_or(mesh.faces().len());
     let shrinks = &schedule.shrinks;
     Ok(SolvePlan {
         solves: passes
@@ -454,7 +452,6 @@ pub fn solve_plan(
                 })
             })
             .collect(),
-        seconds_per_solve: solve_estimate(faces.max(mesh.faces().len())).seconds,
         max_iterations: opts.solve_options().max_iterations,
         tolerance: opts.solve.tolerance,
     })
@@ -473,8 +470,10 @@ pub const RATE_WINDOW: usize = 5;
 /// iterations left, read off the developability residual `r`: Newton–Raphson steps cut it
 /// by a roughly constant factor `q < 1` per iteration while far from the solution (the
 /// geometric mean over the last [`RATE_WINDOW`] iterations), so reaching the tolerance `τ`
-/// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations are seen
-/// the up-front estimate (minus the time spent) stands in. Times are passed in, so nothing
+/// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations of the
+/// running solve are seen nothing is known, and nothing is said: the up-front estimate of
+/// [`solve_estimate`] is a guess from the face count, printed as one before the work starts,
+/// never as the time left. Times are passed in, so nothing
 /// here reads a clock. A solve that makes no iteration (refused before solving) is still
 /// counted; a re-triangulation that cannot be built is not in the plan (see [`solve_plan`]).
 #[derive(Clone, Debug)]
@@ -530,13 +529,14 @@ impl SolveTracker {
         (self.solve, self.plan.solves.len())
     }
 
-    /// Seconds the running solve has left, see the type's docs.
-    pub fn seconds_left(&self) -> f64 {
+    /// Seconds the running solve has left, see the type's docs; `None` until two of its
+    /// iterations are measured.
+    pub fn seconds_left(&self) -> Option<f64> {
+        if self.index < 2 || self.residuals.len() < 2 {
+            return None;
+        }
         let spent = self.now - self.started;
         let cap_left = self.plan.max_iterations.saturating_sub(self.index) as f64;
-        if self.index < 2 || self.residuals.len() < 2 {
-            return (self.plan.seconds_per_solve - spent).max(0.0);
-        }
         let per_iteration = spent / self.index as f64;
         let (first, last) = (self.residuals[0], self.residuals[self.residuals.len() - 1]);
         let steps = (self.residuals.len() - 1) as f64;
@@ -550,7 +550,7 @@ impl SolveTracker {
         } else {
             cap_left
         };
-        per_iteration * left
+        Some(per_iteration * left)
     }
 
     /// The whole progress line, as `foldcam tessellate`'s bar shows it: the iteration of the
@@ -581,11 +581,11 @@ impl SolveTracker {
             .residuals
             .last()
             .map_or(String::new(), |r| format!(", developability {r:.1e} rad"));
-        format!(
-            "{what}(solve {} of at most {n}){residual}, about {} left in this solve",
-            k + 1,
-            seconds_text(self.seconds_left())
-        )
+        let left = self.seconds_left().map_or_else(
+            || "time left measured after two iterations".to_string(),
+            |s| format!("about {} left in this solve", seconds_text(s)),
+        );
+        format!("{what}(solve {} of at most {n}){residual}, {left}", k + 1)
     }
 }
 
@@ -617,7 +617,6 @@ mod tests {
                     triangulation: Triangulation::Remeshed { faces: 100 },
                 },
             ],
-            seconds_per_solve: 10.0,
             max_iterations: 200,
             tolerance: 1e-10,
         }
@@ -641,26 +640,24 @@ mod tests {
     #[test]
     fn time_left_follows_the_residual_decrease_and_the_iteration_rate() {
         let mut t = SolveTracker::new(plan());
-        // Before two iterations the up-front estimate minus the time spent.
+        // Before two iterations nothing is measured, and nothing is said.
         t.iteration(&it(1, 1.0), 1.0);
-        assert!((t.seconds_left() - 9.0).abs() < 1e-12);
+        assert_eq!(t.seconds_left(), None);
         for k in 2..=3 {
             t.iteration(&it(k, 10f64.powi(1 - k as i32)), k as f64);
         }
-        assert!(
-            (t.seconds_left() - 8.0).abs() < 1e-9,
-            "{}",
-            t.seconds_left()
-        );
+        let left = t.seconds_left().expect("measured");
+        assert!((left - 8.0).abs() < 1e-9, "{left}");
         // A residual that does not fall: the iterations up to the cap.
         let mut flat = SolveTracker::new(plan());
         for k in 1..=4 {
             flat.iteration(&it(k, 0.5), 0.5 * k as f64);
         }
-        assert!((flat.seconds_left() - 0.5 * 196.0).abs() < 1e-9);
+        let left = flat.seconds_left().expect("measured");
+        assert!((left - 0.5 * 196.0).abs() < 1e-9, "{left}");
         // Reached: nothing left.
         t.iteration(&it(4, 1e-12), 4.0);
-        assert_eq!(t.seconds_left(), 0.0);
+        assert_eq!(t.seconds_left(), Some(0.0));
     }
 
     /// The next solve of the plan begins when told, timed from its own start.
@@ -682,15 +679,23 @@ mod tests {
             t.status()
                 .contains("shrink 0.7 on the re-triangulation (solve 2 of at most 2)")
         );
-        // One second into the second solve, up-front estimate 10 s.
-        assert!((t.seconds_left() - 9.0).abs() < 1e-12);
+        // One iteration into the second solve: its time is not measured yet (the first
+        // solve's rate belongs to another triangulation).
+        assert_eq!(t.seconds_left(), None);
         assert!(
             t.status().contains("developability 1.0e0 rad"),
             "{}",
             t.status()
         );
         assert!(
-            t.status().ends_with("about 9 s left in this solve"),
+            t.status()
+                .ends_with("time left measured after two iterations"),
+            "{}",
+            t.status()
+        );
+        t.iteration(&it(2, 0.1), 5.5);
+        assert!(
+            t.status().ends_with("about 7 s left in this solve"),
             "{}",
             t.status()
         );
