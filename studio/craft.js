@@ -123,10 +123,8 @@ export class CraftView {
       this.surface.geometry.dispose();
     }
     const geometry = new THREE.BufferGeometry();
-    const positions = new Float32Array(mesh.triangles);
-    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-    geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(positions.length), 3));
-    geometry.computeVertexNormals();
+    this.triangles = new Float32Array(mesh.triangles);
+    geometry.setAttribute('position', new THREE.BufferAttribute(this.triangles, 3));
     geometry.computeBoundingSphere();
     const { center, radius } = geometry.boundingSphere;
     this.surface = new THREE.Mesh(geometry,
@@ -141,6 +139,32 @@ export class CraftView {
     this.camera.far = this.radius * 20;
   }
 
+  /**
+   * Colours the mesh by region: whole triangles, and the triangles a cut line divides as the
+   * server's pieces, so that the colours meet along the cut lines.
+   */
+  paint(view) {
+    const pieces = view.pieces ?? { triangles: [], corners: [], regions: [] };
+    const divided = new Set(pieces.triangles);
+    const kept = view.paint.map((r, t) => t).filter((t) => !divided.has(t));
+    const count = kept.length + pieces.regions.length;
+    const positions = new Float32Array(9 * count);
+    const colours = new Float32Array(9 * count);
+    const c = new THREE.Color();
+    const put = (i, corners, r) => {
+      positions.set(corners, 9 * i);
+      c.setHex(r < 0 ? NONE : this.regionColour(r));
+      for (let k = 0; k < 3; k += 1) colours.set([c.r, c.g, c.b], 9 * i + 3 * k);
+    };
+    kept.forEach((t, i) => put(i, this.triangles.subarray(9 * t, 9 * t + 9), view.paint[t]));
+    pieces.regions.forEach((r, i) => put(kept.length + i, pieces.corners.slice(9 * i, 9 * i + 9), r));
+    const geometry = this.surface.geometry;
+    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    geometry.computeVertexNormals();
+    this.surface.userData.pieces = pieces.regions.length;
+  }
+
   regionColour(r) {
     const region = this.view.regions[r];
     if (!region) return NONE;
@@ -149,13 +173,7 @@ export class CraftView {
 
   show(view) {
     this.view = view;
-    const colours = this.surface.geometry.getAttribute('color');
-    const c = new THREE.Color();
-    view.paint.forEach((r, t) => {
-      c.setHex(r < 0 ? NONE : this.regionColour(r));
-      for (let k = 0; k < 3; k += 1) colours.setXYZ(3 * t + k, c.r, c.g, c.b);
-    });
-    colours.needsUpdate = true;
+    this.paint(view);
     this.drawOverlay();
     this.drawParts();
     this.drawLists();

@@ -44,7 +44,7 @@ use super::history::Versions;
 use super::sessions::Sessions;
 use crate::design::papercraft::ReferenceMesh;
 use crate::design::papercraft::design::parse_design;
-use crate::design::papercraft::paint::paint_regions;
+use crate::design::papercraft::paint::{Paint, paint_regions};
 use crate::design::papercraft::sketch::{Evaluation, Sketch, SketchParams, regions, snap_line};
 use crate::design::source::MeshUse;
 use crate::mesh::{PolyMesh, parse_obj, parse_stl};
@@ -90,7 +90,7 @@ struct Session {
     /// The drawing and its earlier states.
     sketches: Versions<Sketch>,
     eval: Evaluation,
-    paint: Vec<Option<usize>>,
+    paint: Paint,
 }
 
 impl Session {
@@ -140,10 +140,7 @@ impl Session {
     }
 }
 
-fn evaluate(
-    mesh: &ReferenceMesh,
-    sketch: &Sketch,
-) -> Result<(Evaluation, Vec<Option<usize>>), String> {
+fn evaluate(mesh: &ReferenceMesh, sketch: &Sketch) -> Result<(Evaluation, Paint), String> {
     let eval = sketch.evaluate(mesh).map_err(|e| e.to_string())?;
     let lines = sketch.cut_lines().map_err(|e| e.to_string())?;
     let paint = paint_regions(mesh, &lines, &regions(mesh, &lines));
@@ -226,6 +223,20 @@ struct PartView {
     overlapping: bool,
 }
 
+/// The pieces of [`Paint`]: the triangle each is part of, nine coordinates each, the region
+/// of each (−1: none).
+#[derive(Serialize)]
+struct PiecesView {
+    triangles: Vec<usize>,
+    corners: Vec<f64>,
+    regions: Vec<i64>,
+}
+
+/// A region as the page numbers it, −1 for none.
+fn region_number(r: Option<usize>) -> i64 {
+    r.map_or(-1, |r| r as i64)
+}
+
 #[derive(Serialize)]
 struct SessionView {
     id: u64,
@@ -235,8 +246,10 @@ struct SessionView {
     reach: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     mesh: Option<MeshView>,
-    /// Region of each mesh triangle (−1: none).
+    /// Region of each mesh triangle (−1: none); a triangle in `pieces` is drawn as them.
     paint: Vec<i64>,
+    /// Triangles a cut line divides, drawn as pieces so that the colours meet along it.
+    pieces: PiecesView,
     lines: Vec<LineView>,
     regions: Vec<RegionView>,
     holes: Vec<Vec<usize>>,
@@ -320,9 +333,18 @@ fn session_view(id: u64, s: &Session, with_mesh: bool) -> SessionView {
         mesh_name: s.sketches.current().mesh_name.clone(),
         reach: SNAP_FRACTION * s.diagonal,
         mesh,
-        paint: (s.paint.iter())
-            .map(|p| p.map_or(-1, |r| r as i64))
+        paint: (s.paint.triangles.iter())
+            .map(|&r| region_number(r))
             .collect(),
+        pieces: PiecesView {
+            triangles: (s.paint.pieces.iter()).map(|p| p.triangle).collect(),
+            corners: (s.paint.pieces.iter())
+                .flat_map(|p| p.corners.iter().flat_map(|c| c.to_array()))
+                .collect(),
+            regions: (s.paint.pieces.iter())
+                .map(|p| region_number(p.region))
+                .collect(),
+        },
         lines,
         regions,
         holes: s.eval.holes.clone(),

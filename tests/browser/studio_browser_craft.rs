@@ -151,6 +151,36 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
         .await
         .unwrap();
     assert_eq!(regions.len(), 8);
+    // The meridian drawn by hand runs across the mesh's triangles (half a degree off the
+    // mesh's own edges): the triangles it divides are drawn as the server's pieces, each in
+    // its region's colour, so the colours meet along the line and not along triangle edges.
+    let painted = c
+        .execute(
+            "const v = craftView.view, g = craftView.surface.geometry; \
+             const divided = new Set(v.pieces.triangles); \
+             const kept = v.paint.length - divided.size; \
+             const colour = g.getAttribute('color'); \
+             const C = craftView.surface.material.color.constructor; \
+             const wrong = v.pieces.regions.filter((r, i) => { \
+               const want = new C(); want.setHex(r < 0 ? 0 : craftView.regionColour(r)); \
+               const k = 3 * (kept + i); \
+               return r >= 0 && Math.abs(colour.getX(k) - want.r) + Math.abs(colour.getY(k) - want.g) \
+                 + Math.abs(colour.getZ(k) - want.b) > 1e-6; }).length; \
+             return [v.pieces.regions.length, new Set(v.pieces.regions).size, \
+               g.getAttribute('position').count, 3 * (kept + v.pieces.regions.length), wrong];",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let n = |k: usize| painted[k].as_u64().unwrap();
+    assert!(n(0) > 0, "no triangle drawn in pieces: {painted}");
+    assert!(n(1) >= 2, "the pieces lie in one region only: {painted}");
+    assert_eq!(
+        n(2),
+        n(3),
+        "the surface is the whole triangles and the pieces: {painted}"
+    );
+    assert_eq!(n(4), 0, "pieces in another region's colour: {painted}");
     // Glued cut lines whose two sides differ are listed under the regions, by number.
     let unglued: Vec<String> = {
         let items = c

@@ -65,7 +65,7 @@ pub use layout::{Placement, SheetSpec, pack, pack_boxes, part_points, sheet_patt
 pub use neighbour::boundary_gap;
 pub use network::Network;
 pub use packing::pack_shapes;
-pub use paint::paint_regions;
+pub use paint::{Paint, Piece, paint_regions};
 pub use parts::{GLUE_TOLERANCE_MM, GLUE_TOLERANCE_SHARE, Part, Seam, TabStyle, add_tabs, seams};
 pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
 pub use shapes::{elliptic_body, revolution, sphere};
