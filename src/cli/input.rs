@@ -54,10 +54,28 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
     for w in &imported.warnings {
         errln!("foldcam: warning: {}: {w}", path.display());
     }
+    note!(
+        "foldcam: {}: {}",
+        path.display(),
+        size_read(&imported.pattern)
+    );
     for n in &imported.notes {
         note!("foldcam: {}: {n}", path.display());
     }
     Ok(imported)
+}
+
+/// The size a pattern was read at: "read 343.0 × 343.0 mm, 120 lines" (the bounding box, as
+/// the file's units and the reader's scale made it; a unitless pattern says how to size it).
+pub fn size_read(cp: &foldcam::pattern::CreasePattern) -> String {
+    let (w, h) = cp
+        .bounds()
+        .map_or((0.0, 0.0), |(lo, hi)| ((hi - lo).x, (hi - lo).y));
+    let unit = match cp.units {
+        Units::Millimetres => "mm",
+        Units::Unitless => "units (no physical size: --size MM gives one)",
+    };
+    format!("read {w:.1} × {h:.1} {unit}, {} lines", cp.edges.len())
 }
 
 fn load_frame(path: &Path, n: usize) -> Result<Imported> {

@@ -93,7 +93,29 @@ fn open_browser(url: &str) {
     } else {
         "xdg-open"
     };
-    if let Err(e) = std::process::Command::new(opener).arg(url).spawn() {
-        errln!("foldcam: warning: could not open a browser ({opener}: {e}): open {url}");
+    // The opener's own complaints (xdg-open tries several programs, and says so for each)
+    // are replaced by one line when it fails.
+    let spawned = std::process::Command::new(opener)
+        .arg(url)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn();
+    let url = url.to_string();
+    match spawned {
+        Ok(mut child) => {
+            std::thread::spawn(move || match child.wait() {
+                Ok(status) if !status.success() => errln!(
+                    "foldcam: warning: could not open a browser ({opener} {status}): open {url}"
+                ),
+                Err(e) => {
+                    errln!("foldcam: warning: could not open a browser ({opener}: {e}): open {url}")
+                }
+                Ok(_) => {}
+            });
+        }
+        Err(e) => {
+            errln!("foldcam: warning: could not open a browser ({opener}: {e}): open {url}")
+        }
     }
 }

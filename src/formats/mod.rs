@@ -229,10 +229,14 @@ pub(crate) fn finish_drawing(
             crate::pattern::Units::Millimetres => "mm",
             crate::pattern::Units::Unitless => "units",
         };
-        notes.push(format!(
-            "snap tolerance {snap:.4} {unit} (--snap): {joined} line end(s) joined to the line \
-             or corner they stopped short of, {merged} junction(s) merged with a neighbour"
-        ));
+        // Said when it changed the drawing; a clean drawing reads without the note.
+        if joined + merged > 0 {
+            notes.push(format!(
+                "snap tolerance {snap:.4} {unit} (--snap): {joined} line end(s) joined to the \
+                 line or corner they stopped short of, {merged} junction(s) merged with a \
+                 neighbour"
+            ));
+        }
     }
     pattern
         .validate()

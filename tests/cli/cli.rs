@@ -850,3 +850,99 @@ fn tessellation_passes_the_checks_that_apply_to_it() {
     let out = text(&o.stdout);
     assert!(out.contains("flat_foldability  not run"), "{out}");
 }
+
+/// `serve --open` on a machine whose opener fails (xdg-open without a browser prints a line
+/// for every program it tries) says so once, in its own words, and keeps serving.
+#[test]
+fn serve_open_without_a_browser_says_so_once() {
+    use std::io::{BufRead, BufReader, Read};
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let opener = dir.path().join("xdg-open");
+    let script =
+        "#!/bin/sh\nfor p in a b c d e f g; do echo \"xdg-open: no method $p\" >&2; done\nexit 3\n";
+    std::fs::write(&opener, script).unwrap();
+    std::fs::set_permissions(&opener, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_foldcam"))
+        .args(["serve", "--port", "0", "--open"])
+        .current_dir(dir.path())
+        .env("PATH", dir.path())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    assert!(first.starts_with("foldcam studio: http://"), "{first}");
+    let mut stderr = child.stderr.take().unwrap();
+    // The warning comes once the opener has ended; the server is still running then.
+    let start = std::time::Instant::now();
+    let mut said = Vec::new();
+    let mut buf = [0u8; 4096];
+    while !String::from_utf8_lossy(&said).contains("could not open a browser")
+        && start.elapsed() < std::time::Duration::from_secs(20)
+    {
+        let n = stderr.read(&mut buf).unwrap();
+        if n == 0 {
+            break;
+        }
+        said.extend_from_slice(&buf[..n]);
+    }
+    assert!(child.try_wait().unwrap().is_none(), "the server stopped");
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let said = String::from_utf8_lossy(&said);
+    assert_eq!(
+        said.matches("could not open a browser").count(),
+        1,
+        "{said}"
+    );
+    assert!(said.contains("open http://127.0.0.1:"), "{said}");
+    assert!(
+        !said.contains("no method"),
+        "the opener's own lines: {said}"
+    );
+}
+
+/// Every import says the size it was read at (an SVG's pixels become millimetres at 96 dpi
+/// unless it says otherwise): the note's width, height and line count are the written FOLD's.
+#[test]
+fn every_import_says_the_size_it_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let crane = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/traditionalCrane.svg");
+    let out = foldcam(
+        &["convert", crane.to_str().unwrap(), "crane.fold"],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let fold: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("crane.fold")).unwrap()).unwrap();
+    let coords: Vec<[f64; 2]> = fold["vertices_coords"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()])
+        .collect();
+    let extent = |k: usize| {
+        let (lo, hi) = coords.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| {
+            (lo.min(p[k]), hi.max(p[k]))
+        });
+        hi - lo
+    };
+    let lines = fold["edges_vertices"].as_array().unwrap().len();
+    let want = format!("read {:.1} × {:.1} mm, {lines} lines", extent(0), extent(1));
+    assert!(stderr.contains(&want), "{want} not in\n{stderr}");
+    // Quiet runs say only results and warnings.
+    let quiet = foldcam(
+        &["convert", crane.to_str().unwrap(), "quiet.fold", "-q"],
+        dir.path(),
+    );
+    assert!(!String::from_utf8_lossy(&quiet.stderr).contains("read "));
+}

@@ -74,6 +74,8 @@ fn a_closed_pipe_ends_the_program_quietly() {
             "miura.fold",
             "-x",
             "card-300gsm",
+            // No notes (the size read): only an error could reach stderr.
+            "-q",
         ])
         .current_dir(dir.path())
         .stdout(Stdio::piped())
