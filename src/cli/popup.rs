@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
 use clap::Subcommand;
+use foldcam::design::popup::as_held;
 use foldcam::design::popup::voxel::format_voxel_card;
 use foldcam::design::source::{DesignFile, DesignKind, read_design_file, voxel};
 use foldcam::formats::OutputSet;
@@ -121,8 +122,20 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     Ok(Outcome::Done)
 }
 
+/// The camera of the card previews, `width` pixels wide: from the front of the card, a little
+/// to its left and above. Meant for states turned by [`as_held`], whose front faces −y, the
+/// camera's azimuth 0.
+pub fn card_view(width: u32) -> View3d {
+    View3d {
+        azimuth_deg: -20.0,
+        elevation_deg: 28.0,
+        ..View3d::with_width(width)
+    }
+}
+
 /// The PNG of a card standing at 90° and the GIF of it opening, as asked for, rendered
-/// before anything is written. `fold(angle)` gives the card's folded state at an opening angle
+/// before anything is written, both as seen from the front of the card (the folded states
+/// turned by [`as_held`], so the design's left is the picture's left). `fold(angle)` gives the card's folded state at an opening angle
 /// in degrees. Shared by the voxel and polygon cards.
 pub fn card_previews(
     outputs: &mut OutputSet,
@@ -131,13 +144,8 @@ pub fn card_previews(
     width: u32,
     fold: impl Fn(f64) -> foldcam::pattern::FoldedState,
 ) -> Result<()> {
-    // The card's base runs towards +y (the paper's axes) and the renderer's azimuth 0 looks
-    // from −y: look from the front-left, above, at the front of the pop-up.
-    let view = View3d {
-        azimuth_deg: 200.0,
-        elevation_deg: 28.0,
-        ..View3d::with_width(width)
-    };
+    let view = card_view(width);
+    let fold = |angle| as_held(&fold(angle));
     if let Some(png) = png {
         let bytes =
             render_folded_png(&fold(90.0), &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
