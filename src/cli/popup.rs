@@ -33,11 +33,12 @@ pub enum Command {
                   paper's mesh conversion: bumps smaller than the structuring element are removed, voxels \
                   are added under overhangs until every slice is a staircase, windows \
                   open where they were added and thin top faces are left out, each only where \
-                  the card still pops up. Checks that the card pops up (every front face \
-                  held from both the base and the back sheet), writes the crease pattern \
+                  the card still pops up. Checks that the card pops up (every vertical face, \
+                  a piece of the back sheet cut free of it included, joined by folds to both \
+                  the base and the back sheet), writes the crease pattern \
                   (valleys +90°, mountains −90°, cuts) or, with --machine and --material, the \
                   cutting job, and on request a preview of the standing card and a GIF of it \
-                  opening.\n\nExit status: 0 written, 1 the card would not pop up (the failing \
+                  opening, seen from the front (the design's left on the picture's left).\n\nExit status: 0 written, 1 the card would not pop up (the failing \
                   cells are listed and nothing is written), 2 bad input.",
     after_help = "Examples:\n  foldcam popup voxel examples/popup/house.voxel.txt -o house.fold --png house.png --gif house.gif\n  \
                   foldcam popup voxel examples/popup/building.obj --resolution 120 --card-width 180 -o building.fold --png building.png\n  \
