@@ -1,7 +1,7 @@
 //! The preview of a pop-up card is drawn as seen from the front of the open card: what the
 //! design has on its left (x from 0 at the card's left edge, as the pattern and the README
-//! have it) is on the picture's left. Checked by reading the PNG `foldcam popup voxel --png`
-//! writes.
+//! have it) is on the picture's left. Checked by reading the PNGs `foldcam popup voxel --png`
+//! and `foldcam popup poly --png` write.
 
 use foldcam::design::popup::as_held;
 use foldcam::design::popup::voxel::{crease_pattern, fold_card, parse_voxel_card};
@@ -91,6 +91,59 @@ fn the_card_preview_has_the_design_left_on_the_image_left() {
     assert!(
         across < 0.4,
         "the block's top is {across:.2} of the way across"
+    );
+}
+
+/// A polygon card (Mitani & Suzuki 2004) with the same kind of block: a wall 20 mm in front
+/// of the back sheet and its roof 60 mm up, over x 10–30 mm of a 120 mm card.
+const LEFT_BOX: &str = r#"[card]
+width = 120.0
+depth = 60.0
+height = 80.0
+grid = 5.0
+
+[[operation]]
+plane = "vertical"
+at = 4
+units = "grid"
+polygon = [[2, 0], [6, 0], [6, 12], [2, 12]]
+
+[[operation]]
+plane = "horizontal"
+at = 12
+units = "grid"
+polygon = [[2, 0], [6, 0], [6, 4], [2, 4]]
+"#;
+
+#[test]
+fn the_polygon_card_preview_has_the_design_left_on_the_image_left() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("left.popup.toml"), LEFT_BOX).unwrap();
+    let out = foldcam(
+        &[
+            "popup",
+            "poly",
+            "left.popup.toml",
+            "-o",
+            "left.fold",
+            "--png",
+            "left.png",
+            "--width",
+            "400",
+        ],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let png = std::fs::read(dir.path().join("left.png")).unwrap();
+    let (across, pixels) = block_top_across(&png);
+    assert!(pixels > 200, "{pixels} pixels of the box's roof");
+    assert!(
+        across < 0.4,
+        "the box's roof is {across:.2} of the way across"
     );
 }
 
