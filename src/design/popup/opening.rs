@@ -58,7 +58,7 @@ pub(crate) fn clamp_opening(opening_deg: f64) -> f64 {
 /// the card's left edge as seen from the front (the pattern's valleys fold towards the printed
 /// side, which becomes the card's inside). The folded states are the mirror image of the card
 /// in the reader's hands; this reflection gives the card itself, its front towards −y, the
-/// front of [`crate::render::View3d`]'s camera, x from left to right. Lengths, edges and fold
+/// front of the 3D previews' camera (`render::View3d`, azimuth 0), x from left to right. Lengths, edges and fold
 /// angles are unchanged.
 pub fn as_held(state: &FoldedState) -> FoldedState {
     let mut held = state.clone();
