@@ -48,9 +48,10 @@ pub(crate) fn clamp_opening(opening_deg: f64) -> f64 {
     }
 }
 
-/// The folded card `state` (as [`fold_faces`] makes it, millimetres) as the reader holds it,
-/// for pictures: reflected through the back sheet's plane, `(x, y, z) ↦ (x, −y, z)`, with
-/// every face cycle reversed so that its Newell normal still points to the paper's front side.
+/// The folded card `state` (as the voxel and polygon `fold_card` make it, millimetres) as the
+/// reader holds it, for pictures: reflected through the back sheet's plane, `(x, y, z) ↦ (x,
+/// −y, z)`, with every face cycle reversed so that its Newell normal still points to the
+/// paper's front side.
 ///
 /// The papers' axes (Mitani, Suzuki & Uno 2003, eq. 6; Mitani & Suzuki 2004, eq. 7) put the
 /// base in front of the back sheet at +y with z up, so a viewer in front of the card (at +y)

@@ -217,13 +217,15 @@ impl Graph {
         let top = self.runs.iter().map(|r| r.hi).max().unwrap_or(0);
         let on_back = |id: usize| self.runs[id].plane == Plane::Vertical(0);
         let mut proper = vec![false; n];
-        let mut stack: Vec<usize> = (0..n)
-            .filter(|&id| {
+        let edge_column = |x: usize| margin && (x == 0 || x + 1 == columns);
+        let mut stack: Vec<usize> = (0..columns)
+            .flat_map(|x| (self.start[x]..self.start[x + 1]).map(move |id| (x, id)))
+            .filter(|&(x, id)| {
                 let run = self.runs[id];
-                let x = self.column_of(id);
-                let beside_margin = margin && (x == 0 || x + 1 == columns) && run.hi as usize >= ny;
+                let beside_margin = edge_column(x) && run.hi as usize >= ny;
                 on_back(id) && (run.hi == top || beside_margin)
             })
+            .map(|(_, id)| id)
             .collect();
         for &id in &stack {
             proper[id] = true;
