@@ -315,21 +315,18 @@ fn show_card(
     card: &foldcam::design::popup::voxel::VoxelCard,
 ) -> Result<()> {
     use foldcam::design::popup::voxel::{check_popup, crease_pattern, fold_card};
-    use foldcam::render::{View3d, render_folded_png, render_gif};
+    use foldcam::render::{render_folded_png, render_gif};
     if !check_popup(card).passed() {
         bail!("{name}: the bundled card does not pop up");
     }
     let cp = crease_pattern(card).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     formats::save(&dir.join(format!("{name}.fold")), &cp, None)?;
-    let view = View3d {
-        azimuth_deg: 200.0,
-        elevation_deg: 28.0,
-        ..View3d::with_width(width.min(640))
-    };
-    let standing = render_folded_png(&fold_card(card, &cp, 90.0).state, &view)?;
+    let view = super::popup::card_view(width.min(640));
+    let held = |angle: f64| foldcam::design::popup::as_held(&fold_card(card, &cp, angle).state);
+    let standing = render_folded_png(&held(90.0), &view)?;
     write_atomic(&dir.join(format!("{name}.png")), &standing).context("png")?;
     let frames: Vec<_> = (0..=12)
-        .map(|k| fold_card(card, &cp, 10.0 + 80.0 * f64::from(k) / 12.0).state)
+        .map(|k| held(10.0 + 80.0 * f64::from(k) / 12.0))
         .collect();
     let gif = render_gif(&frames, &view, 100)?;
     write_atomic(&dir.join(format!("{name}.gif")), &gif).context("gif")?;

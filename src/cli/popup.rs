@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
 use clap::Subcommand;
+use foldcam::design::popup::as_held;
 use foldcam::design::popup::voxel::format_voxel_card;
 use foldcam::design::source::{DesignFile, DesignKind, read_design_file, voxel};
 use foldcam::formats::OutputSet;
@@ -32,11 +33,12 @@ pub enum Command {
                   paper's mesh conversion: bumps smaller than the structuring element are removed, voxels \
                   are added under overhangs until every slice is a staircase, windows \
                   open where they were added and thin top faces are left out, each only where \
-                  the card still pops up. Checks that the card pops up (every front face \
-                  held from both the base and the back sheet), writes the crease pattern \
+                  the card still pops up. Checks that the card pops up (every vertical face, \
+                  a piece of the back sheet cut free of it included, joined by folds to both \
+                  the base and the back sheet), writes the crease pattern \
                   (valleys +90°, mountains −90°, cuts) or, with --machine and --material, the \
                   cutting job, and on request a preview of the standing card and a GIF of it \
-                  opening.\n\nExit status: 0 written, 1 the card would not pop up (the failing \
+                  opening, seen from the front (the design's left on the picture's left).\n\nExit status: 0 written, 1 the card would not pop up (the failing \
                   cells are listed and nothing is written), 2 bad input.",
     after_help = "Examples:\n  foldcam popup voxel examples/popup/house.voxel.txt -o house.fold --png house.png --gif house.gif\n  \
                   foldcam popup voxel examples/popup/building.obj --resolution 120 --card-width 180 -o building.fold --png building.png\n  \
@@ -121,8 +123,20 @@ fn voxel(args: VoxelArgs) -> Result<Outcome> {
     Ok(Outcome::Done)
 }
 
+/// The camera of the card previews, `width` pixels wide: from the front of the card, a little
+/// to its left and above. Meant for states turned by [`as_held`], whose front faces −y, the
+/// camera's azimuth 0.
+pub fn card_view(width: u32) -> View3d {
+    View3d {
+        azimuth_deg: -20.0,
+        elevation_deg: 28.0,
+        ..View3d::with_width(width)
+    }
+}
+
 /// The PNG of a card standing at 90° and the GIF of it opening, as asked for, rendered
-/// before anything is written. `fold(angle)` gives the card's folded state at an opening angle
+/// before anything is written, both as seen from the front of the card (the folded states
+/// turned by [`as_held`], so the design's left is the picture's left). `fold(angle)` gives the card's folded state at an opening angle
 /// in degrees. Shared by the voxel and polygon cards.
 pub fn card_previews(
     outputs: &mut OutputSet,
@@ -131,13 +145,8 @@ pub fn card_previews(
     width: u32,
     fold: impl Fn(f64) -> foldcam::pattern::FoldedState,
 ) -> Result<()> {
-    // The card's base runs towards +y (the paper's axes) and the renderer's azimuth 0 looks
-    // from −y: look from the front-left, above, at the front of the pop-up.
-    let view = View3d {
-        azimuth_deg: 200.0,
-        elevation_deg: 28.0,
-        ..View3d::with_width(width)
-    };
+    let view = card_view(width);
+    let fold = |angle| as_held(&fold(angle));
     if let Some(png) = png {
         let bytes =
             render_folded_png(&fold(90.0), &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;

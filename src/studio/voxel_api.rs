@@ -158,7 +158,10 @@ fn faults(card: &VoxelCard, v: &CardVerdict) -> Vec<FaultView> {
             let row = p.z + card.ny() - p.depth;
             FaultView {
                 kind: "popup",
-                message: format!("the card would not pop up: {p}"),
+                message: format!(
+                    "the card would not pop up: {}",
+                    p.describe_at(card.cell_mm())
+                ),
                 faces: vec![face_view(&PatternCell {
                     x: p.x,
                     row,

@@ -113,6 +113,65 @@ fn floating_block_is_rejected() {
     );
 }
 
+/// Three columns one cell deep and four rows high; column 1's rows 0–2 are windows. By §2.3 its
+/// row 0 shows on the base and rows 1–2 on the back sheet, between the solid fronts of
+/// columns 0 and 2 and under the front of row 3: a strip of back sheet cut free on three
+/// sides and hinged only at the central fold.
+fn strip_card(margin: f64) -> VoxelCard {
+    let mut card = VoxelCard::new(3, 2, 6, 5.0).unwrap();
+    card.set_margin_mm(margin).unwrap();
+    for x in 0..3 {
+        card.add(x, 0, 3).unwrap();
+    }
+    for z in 0..3 {
+        card.set_hole(1, z, true).unwrap();
+    }
+    card
+}
+
+#[test]
+fn a_back_sheet_strip_hinged_only_at_the_central_fold_is_rejected() {
+    for margin in [0.0, 4.0] {
+        let card = strip_card(margin);
+        let report = check_popup(&card);
+        let named: Vec<_> = report
+            .problems
+            .iter()
+            .map(|p| (p.x, p.depth, p.z, p.problem))
+            .collect();
+        let base_only = PopupProblem::HeldFromBaseOnly;
+        assert_eq!(named, vec![(1, 0, 0, base_only), (1, 0, 1, base_only)]);
+        assert_eq!(
+            report.problems[1].describe_at(card.cell_mm()),
+            "back-sheet cell (x 1, z 1), part of a piece cut free of the back sheet, is held \
+             from the base sheet only (on the pattern x 5.0–10.0 mm from the cells' left edge, \
+             5.0–10.0 mm above the central fold)"
+        );
+    }
+    // Without the windows the column is solid and the card pops up.
+    let mut solid = strip_card(0.0);
+    for z in 0..3 {
+        solid.set_hole(1, z, false).unwrap();
+    }
+    assert!(check_popup(&solid).passed());
+}
+
+#[test]
+fn back_sheet_paper_beside_a_margin_is_the_back_sheet() {
+    // The same window strip in the first column: cut free of the cells' back sheet but joined
+    // to the margin's, so it is the back sheet itself when the card has a margin.
+    let mut card = VoxelCard::new(3, 2, 6, 5.0).unwrap();
+    for x in 0..3 {
+        card.add(x, 0, 3).unwrap();
+    }
+    for z in 0..3 {
+        card.set_hole(0, z, true).unwrap();
+    }
+    assert!(!check_popup(&card).passed());
+    card.set_margin_mm(4.0).unwrap();
+    assert!(check_popup(&card).passed(), "{:?}", check_popup(&card));
+}
+
 #[test]
 fn same_block_without_windows_passes() {
     assert!(check_popup(&column_card(&[2, 2, 2, 2], &[])).passed());
@@ -351,8 +410,9 @@ proptest! {
         ops in prop::collection::vec((any::<bool>(), 0..5usize, 0..5usize, 0..5usize), 1..14),
         windows in prop::collection::vec((0..5usize, 0..5usize), 0..6),
         tops in prop::collection::vec((0..5usize, 0..5usize), 0..4),
+        margin in prop::sample::select(vec![0.0, 2.0]),
     ) {
-        let card = random_card(&ops, &windows, &tops, 0.0);
+        let card = random_card(&ops, &windows, &tops, margin);
         prop_assert_eq!(check_popup(&card).problems, cell_flood_problems(&card));
     }
 }

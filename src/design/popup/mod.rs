@@ -6,7 +6,8 @@
 //!   transform (eq. 6).
 //! - [`polygon`]: the polygon model of Mitani & Suzuki (2004).
 //! - [`opening`]: opening and closing either model (the papers' shared transform), the folded
-//!   card with vertices split on cuts.
+//!   card with vertices split on cuts; [`as_held`], the folded card as the reader holds it (the
+//!   papers' axes give its mirror image), for pictures.
 //! - [`problem`]: what both models' pop-up checks report about a face that does not stand up.
 //! - [`integrity`]: whether a finished card holds together and closes within its outline.
 //! - [`fit`]: `--fit`, more paper above the model until the closed card holds every face.
@@ -19,4 +20,5 @@ pub(crate) mod problem;
 pub mod voxel;
 
 pub use integrity::{loose_pieces, loose_pieces_where};
+pub use opening::as_held;
 pub use problem::PopupProblem;

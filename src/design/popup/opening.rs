@@ -48,6 +48,33 @@ pub(crate) fn clamp_opening(opening_deg: f64) -> f64 {
     }
 }
 
+/// The folded card `state` (as the voxel and polygon `fold_card` make it, millimetres) as the
+/// reader holds it, for pictures: reflected through the back sheet's plane, `(x, y, z) ↦ (x,
+/// −y, z)`, with every face cycle reversed so that its Newell normal still points to the
+/// paper's front side.
+///
+/// The papers' axes (Mitani, Suzuki & Uno 2003, eq. 6; Mitani & Suzuki 2004, eq. 7) put the
+/// base in front of the back sheet at +y with z up, so a viewer in front of the card (at +y)
+/// sees x run from right to left, while the pattern, the README and the cut sheet have x from
+/// the card's left edge as seen from the front (the pattern's valleys fold towards the printed
+/// side, which becomes the card's inside). The folded states are the mirror image of the card
+/// in the reader's hands; this reflection gives the card itself, its front towards −y, the
+/// front of the 3D previews' camera (`render::View3d`, azimuth 0), x from left to right. Lengths, edges and fold
+/// angles are unchanged.
+pub fn as_held(state: &FoldedState) -> FoldedState {
+    let mut held = state.clone();
+    for p in &mut held.positions {
+        p.y = -p.y;
+    }
+    for face in held.faces.iter_mut().flatten() {
+        face.outer.reverse();
+        for hole in &mut face.holes {
+            hole.reverse();
+        }
+    }
+    held
+}
+
 /// How a model stands its pattern up: the card point (at 90°, in the model's unit) of every
 /// pattern position on each face, and the sizes of that unit.
 pub(crate) struct Standing<F> {

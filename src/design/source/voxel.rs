@@ -278,17 +278,21 @@ pub fn finish_card(
 ) -> Result<VoxelDesign, SourceError> {
     let report = check_popup(&card);
     if !report.passed() {
-        let mut lines = vec![format!("{}: the card would not pop up", name.display())];
+        let mut lines = vec![format!(
+            "{}: the card would not pop up: Mitani, Suzuki & Uno (2003) require every vertical \
+             face to be joined by folds to both the back sheet and the base",
+            name.display()
+        )];
         lines.extend(
             report
                 .problems
                 .iter()
                 .take(PROBLEMS_SHOWN)
-                .map(|p| format!("  {p}")),
+                .map(|p| format!("  {}", p.describe_at(card.cell_mm()))),
         );
         if report.problems.len() > PROBLEMS_SHOWN {
             lines.push(format!(
-                "  … and {} more front faces",
+                "  … and {} more vertical faces",
                 report.problems.len() - PROBLEMS_SHOWN
             ));
         }

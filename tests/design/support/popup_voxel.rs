@@ -136,10 +136,38 @@ pub fn assert_faces_on_solid(card: &VoxelCard, cp: &CreasePattern) {
 
 /// The pop-up check of §2.6 done literally, cell by cell over the public [`Surface`]: flood
 /// (a) from the top-left cell moving left, down and right, flood (b) from the bottom-left cell
-/// moving left, up and right, never across a cut. Returns the failing front cells by column
-/// then row, as `check_popup` reports them.
+/// moving left, up and right, never across a cut. Checked: the front cells and the back-sheet
+/// cells not joined, across flat lines, to a back-sheet cell in the top row or (with a margin)
+/// above the fold in the first or last column. Returns the failing cells by column then row,
+/// as `check_popup` reports them.
 pub fn cell_flood_problems(card: &VoxelCard) -> Vec<FrontCellProblem> {
     let s = Surface::new(card);
+    let back = Plane::Vertical(0);
+    let mut proper = vec![false; s.planes.len()];
+    let mut stack: Vec<(usize, usize)> = Vec::new();
+    for x in 0..s.nx {
+        for r in 0..s.rows {
+            let edge = r + 1 == s.rows
+                || (card.margin_mm() > 0.0 && (x == 0 || x + 1 == s.nx) && r >= s.ny);
+            if edge && s.plane(x as i64, r as i64) == back {
+                proper[x * s.rows + r] = true;
+                stack.push((x, r));
+            }
+        }
+    }
+    while let Some((x, r)) = stack.pop() {
+        for (dx, dr) in [(-1i64, 0i64), (1, 0), (0, -1), (0, 1)] {
+            let (nx, nr) = (x as i64 + dx, r as i64 + dr);
+            if !(0..s.nx as i64).contains(&nx) || !(0..s.rows as i64).contains(&nr) {
+                continue;
+            }
+            let i = nx as usize * s.rows + nr as usize;
+            if s.plane(nx, nr) == back && !proper[i] {
+                proper[i] = true;
+                stack.push((nx as usize, nr as usize));
+            }
+        }
+    }
     let flood = |start: (usize, usize), dr: i64| {
         let mut seen = vec![false; s.planes.len()];
         let mut stack = vec![start];
@@ -174,7 +202,7 @@ pub fn cell_flood_problems(card: &VoxelCard) -> Vec<FrontCellProblem> {
             };
             let i = x * s.rows + r;
             let problem = match (a[i], b[i]) {
-                _ if depth == 0 => continue,
+                _ if depth == 0 && proper[i] => continue,
                 (true, true) => continue,
                 (false, false) => PopupProblem::Floating,
                 (true, false) => PopupProblem::HeldFromBackOnly,

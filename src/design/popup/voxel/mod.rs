@@ -8,7 +8,9 @@
 //!   neighbouring cells (Table 1).
 //! - [`crease_pattern`] (`crease.rs`): the planarised [`CreasePattern`] with merged lines,
 //!   ±90° fold angles and the outline (§2.5).
-//! - [`check_popup`] (`check.rs`): the two floods of §2.6.
+//! - [`check_popup`] (`check.rs`): the two floods of §2.6, over the front faces and over any
+//!   piece of the back sheet's plane cut free of the back sheet (each vertical face needs both
+//!   flags, a and b).
 //! - [`fold_card`] (`fold.rs`): the open/close transform of eq. 6 as a [`FoldedState`].
 //! - [`parse_voxel_card`], [`format_voxel_card`] (`format.rs`): the text format; samples in
 //!   `examples/popup/`.

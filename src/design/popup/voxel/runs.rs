@@ -9,6 +9,17 @@
 //! runs of neighbouring columns are found by one merge of the two columns per check. A column can be rebuilt alone after an edit
 //! ([`ColumnRuns::update_column`]), which is what the window and thin-face searches of §3.2 c)
 //! and §3.3 use.
+//!
+//! # Detached pieces of the back sheet
+//! The paper checks the front faces (y > 0) only: the back sheet (y = 0) is one face, held by
+//! the reader. A window shown on the back sheet (§2.3) or a top face left out (§3.3) can make
+//! a piece of paper that lies in the back sheet's plane but is cut free of it on every side but
+//! one fold, such as a strip hinged at the central fold or the disk inside a ring. Such a piece
+//! is a vertical face of its own, and, as Mitani, Suzuki & Uno (2003) require of every vertical
+//! face, it must be joined to the back (flood (a)) and to the base (flood (b)). So the check
+//! also covers every back-sheet run that is not joined, across flat lines, to the back sheet
+//! proper: the back-sheet runs reaching the top edge of the cells or, on a card with a margin,
+//! the margin beside them above the fold.
 
 use super::VoxelCard;
 use super::check::{FrontCellProblem, PopupProblem};
@@ -27,6 +38,10 @@ struct Run {
 #[derive(Clone, Debug)]
 pub(super) struct ColumnRuns {
     rows: usize,
+    /// Base depth in cells (pattern row `ny` is the first above the central fold).
+    ny: usize,
+    /// The card has flat paper around the cells (joined to the back sheet above the fold).
+    margin: bool,
     columns: Vec<Vec<Run>>,
     scratch: Vec<Plane>,
 }
@@ -37,6 +52,8 @@ impl ColumnRuns {
         let rows = card.ny() + card.nz();
         let mut runs = ColumnRuns {
             rows,
+            ny: card.ny(),
+            margin: card.margin_mm() > 0.0,
             columns: vec![Vec::new(); card.nx()],
             scratch: vec![Plane::Vertical(0); rows],
         };
@@ -71,28 +88,31 @@ impl ColumnRuns {
         }
     }
 
-    /// True when every front cell is reached by both floods.
+    /// True when every vertical cell the check covers (front cells and detached back-sheet
+    /// cells, see the module docs) is reached by both floods.
     pub(super) fn passes(&self) -> bool {
         let graph = Graph::new(&self.columns);
         let (from_back, from_base) = (
             graph.flood_from_back(self.rows),
             graph.flood_from_base(self.rows),
         );
-        graph.front_runs().all(|(id, _)| {
+        graph.checked_runs(self.ny, self.margin).all(|(id, _)| {
             let run = graph.runs[id];
             from_back[id] >= run.hi as i64 && from_base[id] <= run.lo as i64
         })
     }
 
-    /// The failing front cells, by column then row.
-    pub(super) fn problems(&self, ny: usize) -> Vec<FrontCellProblem> {
+    /// The failing vertical cells (front cells and detached back-sheet cells), by column then
+    /// row.
+    pub(super) fn problems(&self) -> Vec<FrontCellProblem> {
+        let ny = self.ny;
         let graph = Graph::new(&self.columns);
         let (from_back, from_base) = (
             graph.flood_from_back(self.rows),
             graph.flood_from_base(self.rows),
         );
         let mut problems = Vec::new();
-        for (id, depth) in graph.front_runs() {
+        for (id, depth) in graph.checked_runs(ny, self.margin) {
             let run = graph.runs[id];
             let x = graph.column_of(id);
             let (top, bottom) = (from_back[id], from_base[id]);
@@ -173,15 +193,55 @@ impl Graph {
         &self.links[self.link_start[id]..self.link_start[id + 1]]
     }
 
-    /// (run, depth) of every run on a front plane (y > 0), by column then row.
-    fn front_runs(&self) -> impl Iterator<Item = (usize, u32)> + '_ {
+    /// (run, depth) of every run the check covers, by column then row: the runs on a front
+    /// plane (y > 0) and the back-sheet runs detached from the back sheet proper (see the
+    /// module docs). `ny`: the base depth; `margin`: the card has flat paper around the cells.
+    fn checked_runs(&self, ny: usize, margin: bool) -> impl Iterator<Item = (usize, u32)> + '_ {
+        let proper = self.back_sheet_proper(ny, margin);
         self.runs
             .iter()
             .enumerate()
-            .filter_map(|(id, run)| match run.plane {
-                Plane::Vertical(depth) if depth > 0 => Some((id, depth)),
-                _ => None,
+            .filter_map(move |(id, run)| match run.plane {
+                Plane::Vertical(0) if proper[id] => None,
+                Plane::Vertical(depth) => Some((id, depth)),
+                Plane::Horizontal(_) => None,
             })
+    }
+
+    /// Per run: true for the back-sheet runs joined across flat lines to a back-sheet run on
+    /// the cells' top edge or, with a margin, to the margin above the central fold (pattern
+    /// rows `ny..`) beside the first or last column.
+    fn back_sheet_proper(&self, ny: usize, margin: bool) -> Vec<bool> {
+        let n = self.runs.len();
+        let columns = self.start.len() - 1;
+        let top = self.runs.iter().map(|r| r.hi).max().unwrap_or(0);
+        let on_back = |id: usize| self.runs[id].plane == Plane::Vertical(0);
+        let mut proper = vec![false; n];
+        let edge_column = |x: usize| margin && (x == 0 || x + 1 == columns);
+        let mut stack: Vec<usize> = (0..columns)
+            .flat_map(|x| (self.start[x]..self.start[x + 1]).map(move |id| (x, id)))
+            .filter(|&(x, id)| {
+                let run = self.runs[id];
+                let beside_margin = edge_column(x) && run.hi as usize >= ny;
+                on_back(id) && (run.hi == top || beside_margin)
+            })
+            .map(|(_, id)| id)
+            .collect();
+        for &id in &stack {
+            proper[id] = true;
+        }
+        // Runs of one column never share a plane with their neighbours in the column, so
+        // back-sheet paper spreads only through the sideways links.
+        while let Some(id) = stack.pop() {
+            for &(other, _, _) in self.links(id) {
+                let other = other as usize;
+                if !proper[other] {
+                    proper[other] = true;
+                    stack.push(other);
+                }
+            }
+        }
+        proper
     }
 
     /// Flood (a) from the top-left cell: per run, the highest row reached (−1: none). Runs

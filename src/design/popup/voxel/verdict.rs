@@ -2,8 +2,9 @@
 //! pattern at fault and the voxel faces they become, so an editor can mark them.
 //!
 //! Three faults, as `foldcam popup voxel` finds them:
-//! - **no pop-up**: a front face not reached by both floods of Mitani, Suzuki & Uno (2003),
-//!   §2.6 ([`super::check_popup`]); the card is refused.
+//! - **no pop-up**: a vertical face (a front face, or a piece of the back sheet's plane cut
+//!   free of the back sheet) not reached by both floods of Mitani, Suzuki & Uno (2003), §2.6
+//!   ([`super::check_popup`]); the card is refused.
 //! - **loose pieces**: pattern cells cut free on every side (windows and left-out tops can do
 //!   it). Cells are joined across every line but a cut (Table 1); the part of largest area is
 //!   the card, every other part falls out. The card is refused.
@@ -101,7 +102,7 @@ pub struct BeyondCell {
 /// Every fault of a card, each at its place.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct CardVerdict {
-    /// Front faces that do not pop up (§2.6).
+    /// Vertical faces that do not pop up (§2.6; see [`super::check_popup`]).
     pub popup: Vec<FrontCellProblem>,
     /// Parts that fall out when the card is cut, the largest first.
     pub loose: Vec<LooseCells>,
