@@ -237,44 +237,50 @@ fn manifest(rel: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(rel)
 }
 
+/// The bundled dome, saddle and bell, tessellated at the stainless limits and folded from flat
+/// by `fold3d`, land within 2% of the bounding-box diagonal of the form the tessellation
+/// solver computed (after rigid alignment); measured 0.56%, 1.65% and 0.43%. (The bundled
+/// 60° cap does not yet: 27% off, with 86 creases folded the wrong way.)
 #[test]
 fn tessellation_from_flat_reaches_the_solved_form() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("dome.fold");
-    let status = foldcam()
-        .arg("tessellate")
-        .arg(manifest("examples/tessellation/dome.obj"))
-        .args(["-x", "stainless-0.5", "-o"])
-        .arg(&out)
-        .output()
+    for mesh in ["dome", "saddle", "bell"] {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join(format!("{mesh}.fold"));
+        let status = foldcam()
+            .arg("tessellate")
+            .arg(manifest(&format!("examples/tessellation/{mesh}.obj")))
+            .args(["-x", "stainless-0.5", "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(
+            status.status.success(),
+            "{mesh}: {}",
+            String::from_utf8_lossy(&status.stderr)
+        );
+        let imported = foldcam::formats::load(&out).unwrap();
+        let solved = imported.folded.expect("the tessellation's folded form");
+        let cp = imported.pattern;
+        let mut worst = 0.0f64;
+        let f = fold_with(&cp, &FoldOptions::default(), |model, x| {
+            worst = worst.max(max_bar_strain(model, x));
+        })
         .unwrap();
-    assert!(
-        status.status.success(),
-        "{}",
-        String::from_utf8_lossy(&status.stderr)
-    );
-    let imported = foldcam::formats::load(&out).unwrap();
-    let solved = imported.folded.expect("the tessellation's folded form");
-    let cp = imported.pattern;
-    let mut worst = 0.0f64;
-    let f = fold_with(&cp, &FoldOptions::default(), |model, x| {
-        worst = worst.max(max_bar_strain(model, x));
-    })
-    .unwrap();
-    assert_eq!(f.report.stop, Stop::Settled);
-    assert!(f.report.wrong_sign.is_empty());
-    // Rigid-foldable: isometric all the way.
-    assert!(worst < 0.01, "largest strain on the way: {worst}");
-    let n = cp.vertices.len();
-    let sim = &f.folded.positions[..n];
-    let moved = align(sim, &solved.positions);
-    let diag = diagonal(&solved.positions);
-    let off = moved
-        .iter()
-        .zip(&solved.positions)
-        .map(|(p, q)| p.distance(*q))
-        .fold(0.0, f64::max);
-    assert!(off < 0.02 * diag, "{off} vs diagonal {diag}");
+        assert_eq!(f.report.stop, Stop::Settled, "{mesh}");
+        assert!(f.report.wrong_sign.is_empty(), "{mesh}");
+        // Rigid-foldable: isometric all the way.
+        assert!(worst < 0.01, "{mesh}: largest strain on the way: {worst}");
+        let n = cp.vertices.len();
+        let sim = &f.folded.positions[..n];
+        let moved = align(sim, &solved.positions);
+        let diag = diagonal(&solved.positions);
+        let off = moved
+            .iter()
+            .zip(&solved.positions)
+            .map(|(p, q)| p.distance(*q))
+            .fold(0.0, f64::max);
+        assert!(off < 0.02 * diag, "{mesh}: {off} vs diagonal {diag}");
+    }
 }
 
 #[test]
