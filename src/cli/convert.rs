@@ -30,6 +30,8 @@ pub struct Args {
     pub tolerance: Option<f64>,
     #[command(flatten)]
     pub scale: ScaleArgs,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Runs the conversion.

@@ -54,6 +54,8 @@ pub struct Args {
     /// (0 to 1; default 0: off), at the material's mark speed. Ignored by pen plotters.
     #[arg(long, value_name = "SHARE", requires = "frame", value_parser = frame_power)]
     pub frame_power: Option<f64>,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 impl Args {

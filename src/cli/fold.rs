@@ -44,6 +44,8 @@ pub struct Args {
     /// Width of one step's picture, pixels.
     #[arg(long, default_value_t = 320)]
     pub width: u32,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Runs `foldcam fold`.

@@ -73,6 +73,8 @@ pub struct Args {
     /// Picture width, pixels.
     #[arg(long, default_value_t = 800)]
     pub width: u32,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 fn percent(s: &str) -> Result<f64, String> {

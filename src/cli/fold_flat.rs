@@ -56,6 +56,8 @@ pub struct Args {
     /// nothing written).
     #[arg(long, value_name = "SECONDS", value_parser = super::args::time_limit)]
     pub time_limit: Option<f64>,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Folds and writes.

@@ -55,6 +55,8 @@ pub struct Args {
     /// FOLD's edges_foldAngle and to SVG stroke opacity.
     #[arg(long, value_parser = super::args::degrees, default_value_t = foldcam::design::classic::FOLD_ANGLE_DEG)]
     pub fold_angle: f64,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Builds the pattern the arguments describe.

@@ -21,6 +21,9 @@ pub struct FrameArg {
     /// dash-dot mountain; or valley, mountain, cut, flat, unassigned, boundary).
     #[arg(long, value_name = "MEANING", default_value = "auto")]
     pub dashed: formats::DashedAs,
+    /// Format of an input given as `-` (standard input): fold, svg, cp, opx or dxf.
+    #[arg(long, value_name = "FORMAT")]
+    pub from: Option<String>,
 }
 
 impl FrameArg {
@@ -37,9 +40,11 @@ impl FrameArg {
 /// and returns the import.
 pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
     let imported = match frame.fold_frame {
-        _ if super::pipe::is_stdio(path) => {
-            super::pipe::load_stdin(frame.fold_frame, &frame.read_options())?
-        }
+        _ if super::pipe::is_stdio(path) => super::pipe::load_stdin(
+            frame.from.as_deref(),
+            frame.fold_frame,
+            &frame.read_options(),
+        )?,
         None | Some(0) => formats::load_with(path, &frame.read_options())?,
         Some(n) => load_frame(path, n)?,
     };

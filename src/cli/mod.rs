@@ -77,13 +77,6 @@ struct Cli {
     /// Also say how long the command took and every cause of an error.
     #[arg(long, short, global = true, conflicts_with = "quiet")]
     verbose: bool,
-    /// Format of an input given as `-` (standard input): fold, svg, cp, opx or dxf.
-    #[arg(long, global = true, value_name = "FORMAT")]
-    from: Option<String>,
-    /// Format of an output given as `-` (standard output), by its extension: fold, svg, cp,
-    /// opx; gcode, nc, ngc, dxf, svg, lbrn2 for jobs; png for pictures.
-    #[arg(long, global = true, value_name = "FORMAT")]
-    to: Option<String>,
 }
 
 #[derive(Subcommand)]
@@ -129,6 +122,35 @@ enum Command {
     Man(shell::ManArgs),
 }
 
+impl Command {
+    /// `--to` of the commands that write files.
+    fn to(&self) -> Option<String> {
+        let to = match self {
+            Command::Convert(a) => &a.stdout,
+            Command::Cut(a) => &a.stdout,
+            Command::Fold(a) => &a.stdout,
+            Command::Fold3d(a) => &a.stdout,
+            Command::FoldFlat(a) => &a.stdout,
+            Command::Generate(a) => &a.stdout,
+            Command::Papercraft(a) => &a.stdout,
+            Command::Preview(a) => &a.stdout,
+            Command::Simulate(a) => &a.stdout,
+            Command::Tessellate(a) => &a.stdout,
+            Command::Testgrid(a) => &a.stdout,
+            Command::Popup(popup::Command::Voxel(a)) => &a.stdout,
+            Command::Popup(popup::Command::Poly(a)) => &a.stdout,
+            Command::Check(_)
+            | Command::Plan(_)
+            | Command::Demo(_)
+            | Command::List(_)
+            | Command::Serve(_)
+            | Command::Completions(_)
+            | Command::Man(_) => return None,
+        };
+        to.to.clone()
+    }
+}
+
 /// Parses the command line, runs the subcommand and returns its exit code.
 pub fn run() -> ExitCode {
     pipe::quiet_on_broken_pipe();
@@ -140,7 +162,7 @@ pub fn run() -> ExitCode {
     });
     let cli = Cli::parse();
     say::set(cli.quiet, cli.verbose);
-    pipe::set_formats(cli.from, cli.to);
+    pipe::set_to(cli.command.to());
     let started = std::time::Instant::now();
     let result = match cli.command {
         Command::Convert(a) => convert::run(a),

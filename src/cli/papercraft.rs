@@ -58,6 +58,8 @@ pub struct Args {
     /// than 0.1 mm or 0.1%): the parts are written either way, and such seams are named.
     #[arg(long)]
     pub allow_mismatch: bool,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// The plan options for the sheets' jobs: `cut`'s, with the edge numbers (flat lines) marked

@@ -18,16 +18,26 @@ use foldcam::formats::{self, Format, Imported};
 /// What `-` stands for in file arguments.
 pub const STDIO: &str = "-";
 
-/// `--from` and `--to` as given.
-static FORMATS: OnceLock<(Option<String>, Option<String>)> = OnceLock::new();
+/// `--to` as given.
+static TO: OnceLock<Option<String>> = OnceLock::new();
 /// The name standing for standard output once an output `-` was resolved (`-.EXT`).
 static STDOUT_NAME: OnceLock<PathBuf> = OnceLock::new();
 /// Whether standard output carries a file (then messages go to standard error).
 static STDOUT_TAKEN: AtomicBool = AtomicBool::new(false);
 
-/// Records `--from` and `--to` (once, at start-up).
-pub fn set_formats(from: Option<String>, to: Option<String>) {
-    let _ = FORMATS.set((from, to));
+/// `--to`, for the commands that write files (`--from` is read with the input, in
+/// `input::FrameArg`).
+#[derive(clap::Args, Clone, Debug, Default)]
+pub struct ToArg {
+    /// Format of an output given as `-` (standard output), by its extension: fold, svg, cp,
+    /// opx; gcode, nc, ngc, dxf, svg, lbrn2 for jobs; png for pictures.
+    #[arg(long, value_name = "FORMAT")]
+    pub to: Option<String>,
+}
+
+/// Records `--to` (once, at start-up).
+pub fn set_to(to: Option<String>) {
+    let _ = TO.set(to);
 }
 
 /// Whether `path` is `-`.
@@ -46,7 +56,7 @@ pub fn output(path: &Path) -> Result<PathBuf> {
     if !is_stdio(path) {
         return Ok(path.to_path_buf());
     }
-    let to = FORMATS.get().and_then(|f| f.1.clone()).ok_or_else(|| {
+    let to = TO.get().cloned().flatten().ok_or_else(|| {
         anyhow!(
             "-: writing to standard output needs --to FORMAT (the extension the file would \
              have: fold, svg, cp, opx, gcode, nc, ngc, dxf, lbrn2, png)"
@@ -76,8 +86,8 @@ pub fn write_stdout(bytes: &[u8]) -> Result<()> {
 }
 
 /// The pattern format `--from` names.
-fn from_format() -> Result<Format> {
-    let from = FORMATS.get().and_then(|f| f.0.clone()).ok_or_else(|| {
+fn from_format(from: Option<&str>) -> Result<Format> {
+    let from = from.ok_or_else(|| {
         anyhow!("-: reading standard input needs --from FORMAT (fold, svg, cp, opx or dxf)")
     })?;
     Format::from_path(Path::new(&format!("x.{from}")))
@@ -96,8 +106,12 @@ pub fn read_stdin_text() -> Result<String> {
 
 /// Reads a pattern from standard input in the `--from` format (frame `fold_frame` of a FOLD
 /// file when given), validated as a file would be.
-pub fn load_stdin(fold_frame: Option<usize>, options: &formats::ReadOptions) -> Result<Imported> {
-    let format = from_format()?;
+pub fn load_stdin(
+    from: Option<&str>,
+    fold_frame: Option<usize>,
+    options: &formats::ReadOptions,
+) -> Result<Imported> {
+    let format = from_format(from)?;
     let text = read_stdin_text()?;
     let imported = match fold_frame {
         Some(n) if n > 0 => {

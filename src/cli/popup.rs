@@ -69,6 +69,8 @@ pub struct VoxelArgs {
     /// when more paper cannot hold it.
     #[arg(long)]
     pub fit: bool,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Runs a popup subcommand.

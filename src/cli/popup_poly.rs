@@ -45,6 +45,8 @@ pub struct PolyArgs {
     /// 1) with the place when more paper cannot hold it.
     #[arg(long)]
     pub fit: bool,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Runs `popup poly`.

@@ -39,6 +39,8 @@ pub struct Args {
     pub check: bool,
     #[command(flatten)]
     pub limits: CheckArgs,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Renders the preview.

@@ -58,6 +58,8 @@ pub struct Args {
     pub frame: FrameArg,
     #[command(flatten)]
     pub scale: ScaleArgs,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Runs the simulation and prints the report.

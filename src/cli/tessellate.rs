@@ -129,6 +129,8 @@ pub struct Args {
     /// After solving, simulate rigid folding from flat to the result in STEPS increments.
     #[arg(long, value_name = "STEPS", num_args = 0..=1, default_missing_value = "100")]
     pub rigid: Option<usize>,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Runs `foldcam tessellate`.

@@ -105,6 +105,8 @@ pub struct Args {
     /// one shape per dash.
     #[arg(long)]
     pub lightburn_perforation: bool,
+    #[command(flatten)]
+    pub stdout: super::pipe::ToArg,
 }
 
 /// Builds, writes and describes the grid.

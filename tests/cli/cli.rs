@@ -881,9 +881,12 @@ fn serve_open_without_a_browser_says_so_once() {
     let start = std::time::Instant::now();
     let mut said = Vec::new();
     let mut buf = [0u8; 4096];
-    while !String::from_utf8_lossy(&said).contains("could not open a browser")
-        && start.elapsed() < std::time::Duration::from_secs(20)
-    {
+    let whole_line = |said: &[u8]| {
+        let text = String::from_utf8_lossy(said);
+        text.split_once("could not open a browser")
+            .is_some_and(|(_, rest)| rest.contains('\n'))
+    };
+    while !whole_line(&said) && start.elapsed() < std::time::Duration::from_secs(20) {
         let n = stderr.read(&mut buf).unwrap();
         if n == 0 {
             break;
@@ -945,4 +948,56 @@ fn every_import_says_the_size_it_read() {
         dir.path(),
     );
     assert!(!String::from_utf8_lossy(&quiet.stderr).contains("read "));
+}
+
+/// `--from` is offered by the commands that read a pattern, `--to` by those that write
+/// files, and neither by the others (they were listed under every command).
+#[test]
+fn stdin_and_stdout_formats_are_offered_where_they_apply() {
+    let dir = tempfile::tempdir().unwrap();
+    let help = |command: &[&str]| {
+        let mut args = command.to_vec();
+        args.push("--help");
+        let out = foldcam(&args, dir.path());
+        assert!(out.status.success(), "{command:?}");
+        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        (
+            text.contains("--from <FORMAT>"),
+            text.contains("--to <FORMAT>"),
+        )
+    };
+    // `simulate --pattern` reads a pattern too.
+    for command in [
+        &["convert"][..],
+        &["preview"],
+        &["cut"],
+        &["fold3d"],
+        &["fold-flat"],
+        &["simulate"],
+    ] {
+        assert_eq!(help(command), (true, true), "{command:?}");
+    }
+    for command in [&["check"][..], &["plan"]] {
+        assert_eq!(help(command), (true, false), "{command:?}");
+    }
+    for command in [
+        &["generate"][..],
+        &["fold"],
+        &["tessellate"],
+        &["papercraft"],
+        &["testgrid"],
+        &["popup", "voxel"],
+        &["popup", "poly"],
+    ] {
+        assert_eq!(help(command), (false, true), "{command:?}");
+    }
+    for command in [
+        &["list"][..],
+        &["serve"],
+        &["demo"],
+        &["man"],
+        &["completions"],
+    ] {
+        assert_eq!(help(command), (false, false), "{command:?}");
+    }
 }
