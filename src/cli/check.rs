@@ -34,7 +34,7 @@ use super::input;
                   foldcam check twist.fold --layers --json"
 )]
 pub struct Args {
-    /// Input file (.fold, .svg or .cp).
+    #[arg(help = input::pattern_help("Input file"))]
     pub input: PathBuf,
     #[command(flatten)]
     pub frame: input::FrameArg,

@@ -15,11 +15,11 @@ use super::{input, outputs};
     foldcam convert bird.fold bird.svg --size 150\n  foldcam convert drawing.svg clean.fold --planarize\n  \
     foldcam convert animation.fold frame3.svg --fold-frame 3")]
 pub struct Args {
-    /// Input file (.fold, .svg, .cp or .dxf).
+    #[arg(help = input::pattern_help("Input file"))]
     pub input: PathBuf,
     #[command(flatten)]
     pub frame: input::FrameArg,
-    /// Output file (.fold, .svg or .cp); written atomically.
+    #[arg(help = format!("Output file ({}); written atomically", foldcam::formats::Format::WRITABLE))]
     pub output: PathBuf,
     /// Clean the pattern into a planar graph (split crossings, merge close vertices, drop
     /// duplicates) and compute its faces. SVG and .cp inputs are always cleaned.

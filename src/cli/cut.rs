@@ -28,9 +28,11 @@ use super::fab_args::PlanRequest;
 pub struct Args {
     #[command(flatten)]
     pub request: PlanRequest,
-    /// Job file: .gcode/.nc/.ngc (G-code), .dxf, .svg or .lbrn2 (LightBurn project, one
-    /// layer per operation with the material's settings); written atomically.
-    #[arg(short, long)]
+    #[arg(short, long, help = format!(
+        "Job file ({}; .lbrn2 is a LightBurn project, one layer per operation with the \
+         material's settings); written atomically",
+        foldcam::job::JOB_EXTENSIONS
+    ))]
     pub output: PathBuf,
     /// Write DXF R12 (LINE/POLYLINE) instead of R2000.
     #[arg(long)]

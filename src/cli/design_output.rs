@@ -15,9 +15,12 @@ use super::fab_args::FabArgs;
 /// `-o`, and the machine job options.
 #[derive(Args, Clone, Debug)]
 pub struct DesignOutput {
-    /// Crease pattern to write (.fold, .svg or .cp, millimetres); with --machine and
-    /// --material, the machine job (.gcode/.nc/.ngc, .dxf, .svg or .lbrn2).
-    #[arg(short, long)]
+    #[arg(short, long, help = format!(
+        "Crease pattern to write ({}, millimetres); with --machine and --material, the \
+         machine job ({})",
+        foldcam::formats::Format::WRITABLE,
+        foldcam::job::JOB_EXTENSIONS
+    ))]
     pub output: PathBuf,
     /// Cut or plot the design directly: machine profile (a shipped name or a TOML path);
     /// needs --material.

@@ -216,7 +216,7 @@ pub fn load_pattern(
 /// A pattern file and everything needed to plan it: what `cut` and `plan` share.
 #[derive(Args, Clone, Debug)]
 pub struct PlanRequest {
-    /// Pattern file (.fold, .svg or .cp).
+    #[arg(help = super::input::pattern_help("Pattern file"))]
     pub input: std::path::PathBuf,
     #[command(flatten)]
     pub frame: super::input::FrameArg,

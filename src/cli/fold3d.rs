@@ -45,7 +45,7 @@ const GIF_FRAMES: usize = 30;
                   foldcam fold3d tess.svg -o tess3d.fold --png tess3d.png --strain --steps 50000"
 )]
 pub struct Args {
-    /// Input pattern (.fold, .svg or .cp).
+    #[arg(help = input::pattern_help("Input pattern"))]
     pub input: PathBuf,
     #[command(flatten)]
     pub frame: input::FrameArg,

@@ -25,7 +25,7 @@ use super::{input, outputs};
                   foldcam fold-flat twist.fold -o twist-folded.fold --state 1"
 )]
 pub struct Args {
-    /// Input file (.fold, .svg or .cp).
+    #[arg(help = input::pattern_help("Input file"))]
     pub input: PathBuf,
     #[command(flatten)]
     pub frame: input::FrameArg,

@@ -6,6 +6,12 @@ use anyhow::{Result, bail};
 use foldcam::formats::{self, Imported};
 use foldcam::pattern::{PlanarizeOptions, PlanarizeReport, Units, planarize};
 
+/// The help of a pattern input, `what` followed by every extension the readers take
+/// ([`formats::Format::EXTENSIONS`]).
+pub fn pattern_help(what: &str) -> String {
+    format!("{what} ({})", formats::Format::EXTENSIONS)
+}
+
 /// Choosing a frame of a FOLD file, and how drawings (SVG, DXF) are read.
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct FrameArg {

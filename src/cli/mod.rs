@@ -81,7 +81,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Convert between FOLD, SVG and ORIPA .cp (formats from the extensions).
+    /// Convert between FOLD, SVG, ORIPA .cp and .opx, and from DXF (formats from the extensions).
     Convert(convert::Args),
     /// Check flat-foldability (Kawasaki, Maekawa) and fabrication limits.
     Check(check::Args),
@@ -89,7 +89,7 @@ enum Command {
     Preview(preview::Args),
     /// Generate a classic pattern: Miura-ori (or a square grid), square twist, waterbomb, Yoshimura.
     Generate(generate::Args),
-    /// Plan a pattern for a machine and material and write G-code, DXF or SVG.
+    /// Plan a pattern for a machine and material and write G-code, DXF, SVG or a LightBurn project.
     Cut(cut::Args),
     /// Print what cutting a pattern would do: lengths, pierces, travel, time.
     Plan(plan::Args),

@@ -24,7 +24,7 @@ use super::input;
                   foldcam preview tess.svg -o tess.png --width 2400 --check --min-vertex-angle 30"
 )]
 pub struct Args {
-    /// Input file (.fold, .svg or .cp).
+    #[arg(help = input::pattern_help("Input file"))]
     pub input: PathBuf,
     #[command(flatten)]
     pub frame: input::FrameArg,

@@ -59,11 +59,12 @@ impl Format {
         }
     }
 
-    /// Extensions accepted, for help and error text.
-    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp, .opx, .dxf (read only)";
+    /// Extensions read, for help and error text (each one [`Format::from_path`] takes; DXF
+    /// is read only).
+    pub const EXTENSIONS: &'static str = ".fold, .svg, .cp, .opx or .dxf";
 
     /// Extensions that can be written.
-    pub const WRITABLE: &'static str = ".fold, .svg, .cp, .opx";
+    pub const WRITABLE: &'static str = ".fold, .svg, .cp or .opx";
 
     /// True for formats [`save`] can write.
     pub fn writable(self) -> bool {
@@ -349,4 +350,46 @@ pub fn save(
         path: path.to_path_buf(),
         source,
     })
+}
+
+#[cfg(test)]
+mod table_tests {
+    use super::Format;
+    use std::path::Path;
+
+    /// The extensions help and errors list, split at ", " and " or ".
+    fn listed(text: &str) -> Vec<String> {
+        text.replace(" or ", ", ")
+            .split(", ")
+            .map(|e| e.trim_start_matches('.').to_string())
+            .collect()
+    }
+
+    /// The lists that help text is made from name exactly what the readers and writers take.
+    #[test]
+    fn the_listed_extensions_are_the_ones_read_and_written() {
+        let read = listed(Format::EXTENSIONS);
+        let formats: Vec<Format> = read
+            .iter()
+            .map(|e| Format::from_path(Path::new(&format!("x.{e}"))).expect(e))
+            .collect();
+        for f in [
+            Format::Fold,
+            Format::Svg,
+            Format::Cp,
+            Format::Dxf,
+            Format::Opx,
+        ] {
+            assert!(formats.contains(&f), "{f:?} is not listed");
+        }
+        let written: Vec<Format> = listed(Format::WRITABLE)
+            .iter()
+            .map(|e| Format::from_path(Path::new(&format!("x.{e}"))).expect(e))
+            .collect();
+        let writable: Vec<Format> = formats.iter().copied().filter(|f| f.writable()).collect();
+        assert_eq!(written, writable);
+        for e in listed(crate::job::JOB_EXTENSIONS) {
+            assert!(crate::job::JobFormat::from_extension(&e).is_some(), "{e}");
+        }
+    }
 }

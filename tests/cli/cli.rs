@@ -1001,3 +1001,40 @@ fn stdin_and_stdout_formats_are_offered_where_they_apply() {
         assert_eq!(help(command), (false, false), "{command:?}");
     }
 }
+
+/// Every command's help names the formats from the one table the readers and writers use
+/// (`convert` left out `.opx`, `cut` `.lbrn2`).
+#[test]
+fn help_lists_the_formats_of_the_format_table() {
+    use foldcam::formats::Format;
+    let dir = tempfile::tempdir().unwrap();
+    let help = |command: &[&str]| {
+        let mut args = command.to_vec();
+        args.push("--help");
+        let out = foldcam(&args, dir.path());
+        assert!(out.status.success(), "{command:?}");
+        // Long help wraps lines: join them.
+        String::from_utf8_lossy(&out.stdout)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    for command in [
+        "check",
+        "convert",
+        "preview",
+        "cut",
+        "plan",
+        "fold3d",
+        "fold-flat",
+    ] {
+        assert!(help(&[command]).contains(Format::EXTENSIONS), "{command}");
+    }
+    assert!(help(&["convert"]).contains(Format::WRITABLE));
+    assert!(help(&["cut"]).contains(foldcam::job::JOB_EXTENSIONS));
+    for command in [&["generate"][..], &["popup", "voxel"], &["tessellate"]] {
+        let text = help(command);
+        assert!(text.contains(Format::WRITABLE), "{command:?}");
+        assert!(text.contains(foldcam::job::JOB_EXTENSIONS), "{command:?}");
+    }
+}
