@@ -34,7 +34,7 @@ pub struct ScaleArgs {
     #[arg(long, value_parser = positive, conflicts_with = "size")]
     pub scale: Option<f64>,
     /// Scale so the longer side of the pattern's bounding box is this many millimetres.
-    #[arg(long, value_parser = positive)]
+    #[arg(value_name = "MM", long, value_parser = positive)]
     pub size: Option<f64>,
 }
 

@@ -26,7 +26,7 @@ pub struct Args {
     #[arg(long)]
     pub planarize: bool,
     /// Merge tolerance for --planarize, in the pattern's unit (default 1e-7 of the diagonal).
-    #[arg(long, value_parser = |s: &str| foldcam::limits::TOLERANCE.parse(s), requires = "planarize")]
+    #[arg(value_name = "LEN", long, value_parser = |s: &str| foldcam::limits::TOLERANCE.parse(s), requires = "planarize")]
     pub tolerance: Option<f64>,
     #[command(flatten)]
     pub scale: ScaleArgs,

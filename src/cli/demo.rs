@@ -43,10 +43,10 @@ const SAMPLES: &[(&str, &str)] = &[
 #[command(after_help = "Example:\n  foldcam demo --out demo-out")]
 pub struct Args {
     /// Folder for the results (created if missing).
-    #[arg(long, default_value = "foldcam-demo")]
+    #[arg(value_name = "DIR", long, default_value = "foldcam-demo")]
     pub out: PathBuf,
     /// Preview width in pixels.
-    #[arg(long, default_value_t = 900)]
+    #[arg(value_name = "PX", long, default_value_t = 900)]
     pub width: u32,
 }
 

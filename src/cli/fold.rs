@@ -42,7 +42,7 @@ pub struct Args {
     #[arg(long)]
     pub gif: Option<PathBuf>,
     /// Width of one step's picture, pixels.
-    #[arg(long, default_value_t = 320)]
+    #[arg(value_name = "PX", long, default_value_t = 320)]
     pub width: u32,
     #[command(flatten)]
     pub stdout: super::pipe::ToArg,

@@ -65,13 +65,13 @@ pub struct Args {
     #[arg(long)]
     pub strain: bool,
     /// Most solver steps.
-    #[arg(long, default_value_t = 200_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+    #[arg(value_name = "N", long, default_value_t = 200_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
     pub steps: u64,
     /// Longest solver run, seconds.
-    #[arg(long, default_value_t = 60.0, value_parser = super::args::positive)]
+    #[arg(value_name = "SECONDS", long, default_value_t = 60.0, value_parser = super::args::positive)]
     pub time_limit: f64,
     /// Picture width, pixels.
-    #[arg(long, default_value_t = 800)]
+    #[arg(value_name = "PX", long, default_value_t = 800)]
     pub width: u32,
     #[command(flatten)]
     pub stdout: super::pipe::ToArg,

@@ -36,13 +36,13 @@ pub struct Args {
     #[arg(long, value_name = "PNG")]
     pub png: Option<PathBuf>,
     /// Which valid state to write, from 0 (states are numbered across independent components).
-    #[arg(long, value_name = "K", default_value_t = 0)]
+    #[arg(long, value_name = "N", default_value_t = 0)]
     pub state: u64,
     /// Shade the picture by layer count only (X-ray view).
     #[arg(long, requires = "png")]
     pub xray: bool,
     /// Picture width in pixels.
-    #[arg(long, default_value_t = 1200, requires = "png")]
+    #[arg(value_name = "PX", long, default_value_t = 1200, requires = "png")]
     pub width: u32,
     /// Stop counting each component at N states (states beyond are not reachable).
     #[arg(long, value_name = "N", default_value_t = 1_000_000)]

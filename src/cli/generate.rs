@@ -34,26 +34,26 @@ pub struct Args {
     #[command(flatten)]
     pub out: super::design_output::DesignOutput,
     /// Cells along x (Miura, waterbomb, Yoshimura).
-    #[arg(long)]
+    #[arg(value_name = "N", long)]
     pub columns: Option<usize>,
     /// Cells along y (Miura, waterbomb, Yoshimura).
-    #[arg(long)]
+    #[arg(value_name = "N", long)]
     pub rows: Option<usize>,
     /// Cell width in mm (Miura, Yoshimura), base size (waterbomb), sheet side (square twist).
-    #[arg(long, value_parser = positive)]
+    #[arg(value_name = "MM", long, value_parser = positive)]
     pub width: Option<f64>,
     /// Cell height in mm (Miura, Yoshimura), central square side (square twist).
-    #[arg(long, value_parser = positive)]
+    #[arg(value_name = "MM", long, value_parser = positive)]
     pub height: Option<f64>,
     /// Miura zigzag offset in mm.
-    #[arg(long)]
+    #[arg(value_name = "MM", long)]
     pub shear: Option<f64>,
     /// Square-twist angle in degrees (0 to 45).
-    #[arg(long)]
+    #[arg(value_name = "DEG", long)]
     pub twist: Option<f64>,
     /// Target fold angle of the mountain and valley creases in degrees (0 to 180), written to
     /// FOLD's edges_foldAngle and to SVG stroke opacity.
-    #[arg(long, value_parser = super::args::degrees, default_value_t = foldcam::design::classic::FOLD_ANGLE_DEG)]
+    #[arg(value_name = "DEG", long, value_parser = super::args::degrees, default_value_t = foldcam::design::classic::FOLD_ANGLE_DEG)]
     pub fold_angle: f64,
     #[command(flatten)]
     pub stdout: super::pipe::ToArg,

@@ -47,7 +47,7 @@ pub struct Args {
     #[arg(long)]
     pub png: Option<PathBuf>,
     /// PNG width in pixels.
-    #[arg(long, default_value_t = 1200)]
+    #[arg(value_name = "PX", long, default_value_t = 1200)]
     pub width: u32,
     /// Write the machine job of every sheet here (.gcode/.nc/.ngc, .dxf, .svg, .lbrn2;
     /// sheet n > 1 to NAME-n.EXT) and keep -o for the crease pattern; needs --machine and

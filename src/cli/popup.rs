@@ -62,7 +62,7 @@ pub struct VoxelArgs {
     #[arg(long)]
     pub gif: Option<PathBuf>,
     /// Image width in pixels for --png and --gif.
-    #[arg(long, default_value_t = 640)]
+    #[arg(value_name = "PX", long, default_value_t = 640)]
     pub width: u32,
     /// Grow the card's margin so that, folded shut, it holds every face (a card that reaches
     /// beyond its outline is otherwise only warned about); refuse (exit 1) with the place

@@ -28,7 +28,7 @@ pub struct ModelArgs {
     pub up: Up,
     /// Mesh: part of the model's depth, from its front, that stands out of the card (the
     /// paper kept the front half).
-    #[arg(long, value_name = "FRACTION", default_value_t = 0.5)]
+    #[arg(long, value_name = "SHARE", default_value_t = 0.5)]
     pub keep_depth: f64,
     /// Height map: depth of the base in cells (white = this far out).
     #[arg(long, value_name = "CELLS", default_value_t = 40)]
@@ -50,11 +50,11 @@ pub struct ModelArgs {
     pub no_windows: bool,
     /// Open a window only where the overhang stands out at least this part of the base
     /// depth in front of what is below it (0 = wherever voxels were added, as Mitani, Suzuki & Uno 2003 do).
-    #[arg(long, value_name = "FRACTION", default_value_t = 0.25)]
+    #[arg(long, value_name = "SHARE", default_value_t = 0.25)]
     pub window_gap: f64,
     /// Leave out top faces at most this many columns wide where the card still pops up
     /// (0 = keep all).
-    #[arg(long, value_name = "COLUMNS", default_value_t = 1)]
+    #[arg(long, value_name = "N", default_value_t = 1)]
     pub thin_top: usize,
 }
 

@@ -38,7 +38,7 @@ pub struct PolyArgs {
     #[arg(long)]
     pub gif: Option<PathBuf>,
     /// Image width in pixels for --png and --gif.
-    #[arg(long, default_value_t = 640)]
+    #[arg(value_name = "PX", long, default_value_t = 640)]
     pub width: u32,
     /// Grow the back sheet (`[card] height`) so that, folded shut, the card holds every face
     /// (a card that reaches beyond its outline is otherwise only warned about); refuse (exit

@@ -32,7 +32,7 @@ pub struct Args {
     #[arg(short, long)]
     pub output: PathBuf,
     /// Image width in pixels (16 to 16384); the height follows the pattern's aspect ratio.
-    #[arg(long, default_value_t = 1200)]
+    #[arg(value_name = "PX", long, default_value_t = 1200)]
     pub width: u32,
     /// Run the checks and ring every fault on the image.
     #[arg(long)]

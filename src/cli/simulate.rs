@@ -37,13 +37,13 @@ pub struct Args {
     #[arg(long)]
     pub png: Option<PathBuf>,
     /// Width of the PNG in pixels.
-    #[arg(long, default_value_t = 1200)]
+    #[arg(value_name = "PX", long, default_value_t = 1200)]
     pub width: u32,
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
     /// Pattern the job was made from, for the coverage check.
-    #[arg(long, requires = "material")]
+    #[arg(value_name = "FILE", long, requires = "material")]
     pub pattern: Option<PathBuf>,
     /// Material the job was planned for (with --pattern).
     #[arg(long, short = 'x')]

@@ -81,29 +81,29 @@ pub struct Args {
     pub layout: Option<Layout>,
     /// Face shrink s in (0, 1]: smaller opens the tucks more. Without it, 0.8, 0.7, 0.6, 0.5,
     /// 0.45 and 0.4 are tried in turn until the result converges without face collisions.
-    #[arg(long)]
+    #[arg(value_name = "SHARE", long)]
     pub shrink: Option<f64>,
     /// Truncated star and twist fold: initial size of the flat n-gon, the fraction in (0, 1)
     /// of the way from the key vertex towards each face corner (the solver then adapts it)
     /// [default: 0.3].
-    #[arg(long)]
+    #[arg(value_name = "SHARE", long)]
     pub truncation: Option<f64>,
     /// Twisted star and twist fold: initial twist about the vertex normal, degrees (non-zero,
     /// within ±90; the sign picks the handedness) [default: 15].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(value_name = "DEG", long, allow_negative_numbers = true)]
     pub twist: Option<f64>,
     /// Largest fold angle, degrees (180 − δ_fold).
-    #[arg(long, value_parser = degrees)]
+    #[arg(value_name = "DEG", long, value_parser = degrees)]
     pub max_fold_angle: Option<f64>,
     /// Smallest angle between neighbouring creases, degrees (δ_corner).
-    #[arg(long, value_parser = degrees)]
+    #[arg(value_name = "DEG", long, value_parser = degrees)]
     pub min_vertex_angle: Option<f64>,
     /// Ground contact: every boundary vertex on the horizontal plane (z) through the lowest
     /// one, so the shell stands on a table.
     #[arg(long)]
     pub ground: bool,
     /// Surface fit after solving (Tachi 2014), with this tangential weight w in [0, 1].
-    #[arg(long, value_name = "W")]
+    #[arg(long, value_name = "SHARE")]
     pub fit: Option<f64>,
     /// Re-triangulate the surface near-regularly (valence 6, no pole fans) before
     /// tessellating, with about FACES faces (default: as many as the input has). Without it
@@ -115,19 +115,19 @@ pub struct Args {
     #[arg(long, value_name = "FACES", num_args = 0..=1, default_missing_value = "0")]
     pub remesh: Option<usize>,
     /// Newton iteration cap [default: 200].
-    #[arg(long)]
+    #[arg(value_name = "N", long)]
     pub max_iterations: Option<usize>,
     /// Write a preview of the folded form.
     #[arg(long)]
     pub png: Option<PathBuf>,
     /// Write a preview of the crease pattern.
-    #[arg(long)]
+    #[arg(value_name = "PNG", long)]
     pub cp_png: Option<PathBuf>,
     /// Image width in pixels for the previews.
-    #[arg(long, default_value_t = 800)]
+    #[arg(value_name = "PX", long, default_value_t = 800)]
     pub width: u32,
     /// After solving, simulate rigid folding from flat to the result in STEPS increments.
-    #[arg(long, value_name = "STEPS", num_args = 0..=1, default_missing_value = "100")]
+    #[arg(long, value_name = "N", num_args = 0..=1, default_missing_value = "100")]
     pub rigid: Option<usize>,
     #[command(flatten)]
     pub stdout: super::pipe::ToArg,

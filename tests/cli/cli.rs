@@ -1038,3 +1038,63 @@ fn help_lists_the_formats_of_the_format_table() {
         assert!(text.contains(foldcam::job::JOB_EXTENSIONS), "{command:?}");
     }
 }
+
+/// Option placeholders name a unit or a kind of thing, one style throughout (`<MM>`, `<DEG>`,
+/// `<N>`, `<PX>`, `<SECONDS>`, `<SHARE>` for 0 to 1, `<PNG>`, …), never a field name such
+/// as `<TIME_LIMIT>` or `<MAX_FOLD_ANGLE>`.
+#[test]
+fn option_placeholders_share_one_style() {
+    const UNITS: [&str; 12] = [
+        "MM", "LEN", "DEG", "N", "SHARE", "PX", "SECONDS", "PERCENT", "CELLS", "FACES", "MIB",
+        "SCALE",
+    ];
+    const KINDS: [&str; 21] = [
+        "X,Y", "OP", "FORMAT", "OUTPUT", "MATERIAL", "MACHINE", "PNG", "GIF", "SVG", "FILE", "DIR",
+        "PATH", "ORIGIN", "MEANING", "VALUES", "UP", "TUCK", "SIDE", "PORT", "HOST", "LAYOUT",
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let commands: [&[&str]; 18] = [
+        &["convert"],
+        &["check"],
+        &["preview"],
+        &["generate"],
+        &["cut"],
+        &["plan"],
+        &["simulate"],
+        &["popup", "voxel"],
+        &["popup", "poly"],
+        &["fold-flat"],
+        &["fold"],
+        &["fold3d"],
+        &["papercraft"],
+        &["demo"],
+        &["tessellate"],
+        &["list"],
+        &["testgrid"],
+        &["serve"],
+    ];
+    for command in commands {
+        let mut args = command.to_vec();
+        args.push("--help");
+        let out = foldcam(&args, dir.path());
+        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        for line in text
+            .lines()
+            .map(str::trim_start)
+            .filter(|l| l.starts_with('-'))
+        {
+            let Some(start) = line.find('<') else {
+                continue;
+            };
+            // Only the option's own placeholder, before its help text.
+            if line[..start].contains("  ") {
+                continue;
+            }
+            let name = &line[start + 1..start + line[start..].find('>').unwrap()];
+            assert!(
+                UNITS.contains(&name) || KINDS.contains(&name),
+                "{command:?}: {line}"
+            );
+        }
+    }
+}
