@@ -27,6 +27,7 @@ mod profile;
 mod read_machine;
 mod read_material;
 mod shipped;
+pub(crate) mod sync_links;
 
 pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use load::{

@@ -215,13 +215,7 @@ fn field<'a>(line: &'a str, key: &str) -> &'a str {
 }
 
 /// Jobs of issue 35 on the shipped fiber laser, on 0.5 mm stainless: the Miura-ori and the
-/// bird base (150 mm). Curved designs (Origami Simulator's `HexSpiralTess.svg` at 200 mm)
-/// still run markedly slower on LinuxCNC than planned (88.9 s against 43 s): LinuxCNC's blend
-/// arcs may not consume a segment that carries a synchronised output change (`M67`), and a
-/// power change next to a short piece of a curve's polyline then slows nearly to a stop
-/// (the power-on lines alone cost 28 s; without any `M67` the job runs 48.5 s). On a 30 mm
-/// circle of 0.5 mm chords, a power change splitting a chord into halves runs at full speed
-/// and one splitting it 0.05 : 0.45 stops. Neither is modelled yet.
+/// bird base (150 mm).
 fn fiber_jobs() -> Vec<(&'static str, CreasePattern)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     vec![
@@ -233,15 +227,14 @@ fn fiber_jobs() -> Vec<(&'static str, CreasePattern)> {
     ]
 }
 
-#[test]
-#[ignore = "needs ../shared oracles and linuxcnc-uspace (.ci/run installs it)"]
-fn linuxcnc_runs_the_miura_and_bird_base_within_five_percent_of_plan() {
-    let _alone = post_common::external_tools_alone();
+/// Seconds LinuxCNC runs each of `jobs` on `linuxcnc-fiber` and 0.5 mm stainless, with
+/// `plan`'s estimate: (name, plan s, LinuxCNC s), all in one LinuxCNC session.
+fn fiber_times(jobs: Vec<(&'static str, CreasePattern)>) -> Vec<(&'static str, f64, f64)> {
     let machine = load_machine("linuxcnc-fiber").expect("shipped");
     let mut texts = Vec::new();
     let mut owners = Vec::new();
     let mut planned_s = Vec::new();
-    for (name, cp) in fiber_jobs() {
+    for (name, cp) in jobs {
         let p = planned(&cp, &machine, "stainless-0.5");
         for job in 0..p.jobs.len() {
             texts.push(written(&p, job, &machine));
@@ -252,8 +245,41 @@ fn linuxcnc_runs_the_miura_and_bird_base_within_five_percent_of_plan() {
     for (t, &i) in linuxcnc_seconds(&texts).iter().zip(&owners) {
         planned_s[i].2 += t;
     }
-    for (name, plan_s, lcnc_s) in planned_s {
+    planned_s
+}
+
+#[test]
+#[ignore = "needs ../shared oracles and linuxcnc-uspace (.ci/run installs it)"]
+fn linuxcnc_runs_the_miura_and_bird_base_within_five_percent_of_plan() {
+    let _alone = post_common::external_tools_alone();
+    for (name, plan_s, lcnc_s) in fiber_times(fiber_jobs()) {
         assert_close(name, "LinuxCNC", lcnc_s, plan_s, LINUXCNC_TOLERANCE);
+    }
+}
+
+/// How far LinuxCNC's planner may run a curved job from `plan` (relative to LinuxCNC's time):
+/// not issue 35's 5% yet, a guard on what the tangent links gained (see below).
+const LINUXCNC_CURVED_TOLERANCE: f64 = 0.40;
+
+/// A curved design: Origami Simulator's `HexSpiralTess.svg` at 200 mm, 933 dashes along
+/// polylines of 0.2-0.5 mm chords. LinuxCNC 2.9 does not blend at speed into a move that
+/// switches a synchronised output (`M67`) at a corner, and a short piece beside the switch
+/// slows it too (a blend arc may not consume a move whose `syncdio` changed, `tcCanConsume`),
+/// so the writer links the dashes of a curve tangentially (`foldcam::machine` `sync_links`).
+/// Measured (LinuxCNC against `plan`): with straight links 88.8 s against 43.2 s; with the
+/// tangent links 71.4 s against 44.5 s; the same job with every `M67` taken out runs 48.5 s
+/// against 43.2 s. What is left is about 11 ms per switch that LinuxCNC spends even at a
+/// tangent switch between chords of a curve (on a 15 mm circle of 0.5 mm chords, `M67` at the
+/// middle of a chord costs 9 ms, at a vertex 76 ms), which `plan` does not model yet, and
+/// 5 s that LinuxCNC spends on the chords themselves.
+#[test]
+#[ignore = "needs ../shared oracles and linuxcnc-uspace (.ci/run installs it)"]
+fn linuxcnc_runs_a_curved_job_within_forty_percent_of_plan() {
+    let _alone = post_common::external_tools_alone();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let curved = load_sized(&root.join("tests/data/HexSpiralTess.svg"), 200.0);
+    for (name, plan_s, lcnc_s) in fiber_times(vec![("HexSpiralTess", curved)]) {
+        assert_close(name, "LinuxCNC", lcnc_s, plan_s, LINUXCNC_CURVED_TOLERANCE);
     }
 }
 
