@@ -39,6 +39,8 @@ pub fn job_time(
         timeline: Timeline::new(Kinematics::of(machine), DVec2::ZERO),
         seconds: 0.0,
         machine,
+        switches_sync: machine.links_burns_with_feed_moves(),
+        sync: false,
     };
     let cost = machine.switch_cost();
     let pen = machine.pen_tool();
@@ -51,6 +53,8 @@ pub fn job_time(
     let tangent = sync_links::tangent_limit_rad(machine);
     // Arming: the laser at zero (a stop) or the pen up with its delay.
     clock.switch(pen, &machine.pen_up, cost.dwell_s, true);
+    // The arming zero is an immediate output (`M68`, `M65`), not a synchronised one.
+    clock.sync = false;
     clock.lines(&machine.preamble);
     let mut group: Option<Operation> = None;
     let mut air = false;
@@ -117,7 +121,7 @@ fn as_written(stroke: &[DVec2], machine: &MachineProfile) -> Vec<(i64, i64)> {
         sync_links::tidy_ends(
             &mut out,
             sync_links::MIN_PIECE_MM / step,
-            sync_links::MAX_DEVIATION_MM / step,
+            sync_links::max_deviation_mm(machine) / step,
         );
     }
     out
@@ -128,6 +132,11 @@ struct Clock<'a> {
     timeline: Timeline,
     seconds: f64,
     machine: &'a MachineProfile,
+    /// The laser switches on a synchronised output (a LinuxCNC `M62`/`M63`/`M67`, which the
+    /// next move carries: [`Move::sync`]).
+    switches_sync: bool,
+    /// A switch waits for the next move.
+    sync: bool,
 }
 
 impl Clock<'_> {
@@ -145,11 +154,16 @@ impl Clock<'_> {
             to,
             feed_mm_min,
             rapid,
+            sync: std::mem::take(&mut self.sync),
         });
     }
 
-    /// A tool switch: a pen's command lines and delay, or a laser's stop when `stops`.
+    /// A tool switch: a pen's command lines and delay, a laser's stop when `stops`, or a
+    /// synchronised output that the next move carries.
     fn switch(&mut self, pen: bool, pen_lines: &[String], delay_s: f64, stops: bool) {
+        if !pen && self.switches_sync {
+            self.sync = true;
+        }
         if pen {
             self.lines(pen_lines);
             if delay_s > 0.0 {

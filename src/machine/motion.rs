@@ -28,6 +28,20 @@
 //!   rapid and a feed move is a stop ([`Kinematics::stops_between_rapid_and_feed`]). GRBL and
 //!   Marlin plan rapids and feed moves alike.
 //!
+//! - **Blends beside a switch** (LinuxCNC only): LinuxCNC joins moves with blend arcs that
+//!   leave the path by at most `G64 P` and take at most half of each neighbouring move
+//!   (`BLEND_DIST_FRACTION` 0.5 in `tc.h`), with a normal acceleration of √3/2 · a
+//!   (`BLEND_ACC_RATIO_NORMAL`): an arc of half-angle θ' = θ/2 cut back by d along each move has
+//!   radius tan θ' · d and runs at up to √(√3/2 · a · tan θ' · d). A short move is usually
+//!   consumed whole by the arc (`blendCheckConsume`), but not a move that switches a
+//!   synchronised output (`tcCanConsume`), nor the move before it when that switch continues
+//!   it without a corner (LinuxCNC's tangent case, no arc). So at a corner beside such a move
+//!   ([`Move::sync`]; the corner sharper than LinuxCNC's tangent limit,
+//!   [`Kinematics::switch_blends`]) the junction speed is also capped by that arc with d half
+//!   of that move. Measured on LinuxCNC 2.9 with `linuxcnc-fiber`'s limits, this is a lower
+//!   bound: the 933 dashes of `HexSpiralTess.svg` at 200 mm run 51.3 s where this model says
+//!   48.8 s (46.9 s without the cap).
+//!
 //! - **Stops.** When the moves come to rest with nothing queued (a spindle or pen word, a
 //!   dwell, a pause waits for that), GRBL's stepper goes idle and holds the motors for its step
 //!   idle delay `$1` (25 ms by default) before the next line runs (`st_go_idle` in
@@ -62,6 +76,9 @@ pub struct Move {
     pub feed_mm_min: f64,
     /// A rapid (tool-off travel) move.
     pub rapid: bool,
+    /// The move switches a synchronised output as it starts (LinuxCNC `M62`/`M63`/`M67` before
+    /// it; see the module docs on blends beside a switch).
+    pub sync: bool,
 }
 
 /// The speed limits and acceleration of one run of moves, in mm and seconds.
@@ -85,6 +102,10 @@ pub struct Kinematics {
     /// along a diagonal gets more than along an axis; see the module docs), rather than
     /// along the path.
     pub per_axis: bool,
+    /// LinuxCNC: corners beside a move that switches a synchronised output are blend arcs
+    /// that take at most half of that move; the value is LinuxCNC's tangent limit (radians),
+    /// the turn below which there is no corner (see the module docs). `None` elsewhere.
+    pub switch_blends: Option<f64>,
 }
 
 impl Kinematics {
@@ -108,6 +129,7 @@ impl Kinematics {
                 machine.dialect,
                 super::Dialect::Grbl | super::Dialect::Plotter
             ),
+            switch_blends: linuxcnc.then(|| super::sync_links::tangent_limit_rad(machine)),
         }
     }
 
@@ -201,6 +223,8 @@ struct Block {
     max_entry: f64,
     /// Planned entry speed.
     entry: f64,
+    /// The move switches a synchronised output.
+    sync: bool,
 }
 
 /// Seconds each move of `moves` takes from `start`, at rest before the first move and after
@@ -233,11 +257,14 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
     let mut at = start;
     let mut out: Vec<Block> = Vec::with_capacity(moves.len());
     let mut index = Vec::with_capacity(moves.len());
+    // A switch on a move that does not move waits for the next move that does.
+    let mut sync = false;
     for (i, m) in moves.iter().enumerate() {
         let delta = m.to - at;
         let length = delta.length();
         let dir = delta / length;
         let nominal = kin.nominal_speed(m, dir);
+        sync |= m.sync;
         if !(length.is_finite() && length > 0.0 && nominal > 0.0) {
             at = if m.to.is_finite() { m.to } else { at };
             continue;
@@ -262,11 +289,47 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
             nominal,
             max_entry,
             entry: 0.0,
+            sync: std::mem::take(&mut sync),
         });
         index.push(i);
         at = m.to;
     }
+    if let Some(tangent_rad) = kin.switch_blends {
+        cap_blends_beside_switches(&mut out, kin.accel_mm_s2, tangent_rad);
+    }
     (out, index)
+}
+
+/// Caps each corner beside a move that switches a synchronised output, or beside the move
+/// before one, by LinuxCNC's blend arc taking at most half of that move (see the module docs);
+/// `tangent_rad` is LinuxCNC's tangent limit (no corner below it).
+fn cap_blends_beside_switches(blocks: &mut [Block], accel_mm_s2: f64, tangent_rad: f64) {
+    // Moves a blend arc cannot consume: a switch, and the move before it.
+    let pinned: Vec<bool> = (0..blocks.len())
+        .map(|i| blocks[i].sync || blocks.get(i + 1).is_some_and(|b| b.sync))
+        .collect();
+    let normal_accel = accel_mm_s2 * 0.75_f64.sqrt();
+    for i in 1..blocks.len() {
+        let (prev, this) = (&blocks[i - 1], &blocks[i]);
+        // sin and cos of θ' (half the angle between the reversed incoming and the outgoing
+        // move): θ' is 90° for a straight continuation.
+        let sin_half = ((1.0 + prev.dir.dot(this.dir)) / 2.0)
+            .clamp(0.0, 1.0)
+            .sqrt();
+        let cos_half = (1.0 - sin_half * sin_half).max(0.0).sqrt();
+        let turn = prev.dir.perp_dot(this.dir).abs();
+        let corner = turn > tangent_rad || prev.dir.dot(this.dir) <= 0.0;
+        let halves = [(pinned[i - 1], prev.length), (pinned[i], this.length)]
+            .iter()
+            .filter(|(p, _)| *p)
+            .map(|&(_, l)| l / 2.0)
+            .fold(f64::INFINITY, f64::min);
+        if !corner || !halves.is_finite() || cos_half <= 0.0 {
+            continue;
+        }
+        let v = (normal_accel * sin_half / cos_half * halves).sqrt();
+        blocks[i].max_entry = blocks[i].max_entry.min(v);
+    }
 }
 
 /// Entry speeds after the backward (can stop in time) and forward (can get there) passes.

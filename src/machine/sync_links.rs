@@ -17,18 +17,21 @@
 //! ([`super::MachineProfile::links_burns_with_feed_moves`]), the writer and the time estimate
 //! both:
 //!
-//! - **tidy the ends of each burn** ([`tidy_ends`]): a first or last piece shorter than
-//!   [`MIN_PIECE_MM`] loses its inner point when that point is within [`MAX_DEVIATION_MM`] of
-//!   the line that replaces it (the dash keeps its ends; the path moves by at most that much,
-//!   half the profile's `G64 P` of 0.01 mm, well inside LinuxCNC's own blending);
+//! - **tidy the ends of each burn** ([`tidy_ends`]): while a first or last piece is shorter
+//!   than [`MIN_PIECE_MM`], its inner point is dropped if it lies within the profile's `G64 P`
+//!   ([`max_deviation_mm`]) of the line that replaces the two pieces (the dash keeps its ends;
+//!   the path moves by no more than LinuxCNC's own blending moves it at every corner), so the
+//!   moves beside a switch are as long as the curve allows;
 //! - **link tangentially** ([`link`]): the beam-off travel leaves a burn along its last piece
 //!   and reaches the next burn along its first piece, turning once where the two lines meet
-//!   (a grid point whose legs follow them within a third of LinuxCNC's tangent limit,
+//!   (a grid point whose legs follow them within three quarters of LinuxCNC's tangent limit,
 //!   [`tangent_limit_rad`]), so the move that carries the
 //!   switch continues its predecessor without a corner. A link whose ends already continue
 //!   the burns (a straight crease) stays one move. Measured on LinuxCNC 2.9: Origami
 //!   Simulator's `HexSpiralTess.svg` at 200 mm on `linuxcnc-fiber` and 0.5 mm stainless runs
-//!   88.8 s with straight links and 71.4 s with these (48.5 s with no power changes at all).
+//!   88.8 s with straight links, 71.4 s with these links alone, and 51.3 s with the ends also
+//!   tidied (48.5 s with no power changes at all; merging end pieces under 0.45 mm only:
+//!   55.1 s, under 0.7 mm: 53.0 s).
 //!
 //! All points are grid counts of the machine's resolution (what the writer prints), so the
 //! collinearity is exact in the numbers LinuxCNC reads.
@@ -38,14 +41,17 @@ use glam::DVec2;
 /// A point in grid counts (multiples of the machine's resolution).
 pub(crate) type Counts = (i64, i64);
 
-/// A burn's first or last piece shorter than this (mm) is merged with its neighbour when the
-/// path allows ([`tidy_ends`]): at 10 m/min, LinuxCNC's 1 ms servo period runs 0.17 mm, the
-/// most a piece that is not consumed may be shorter than before it limits the speed.
-pub(crate) const MIN_PIECE_MM: f64 = 0.25;
+/// A burn's first or last piece shorter than this (mm) is merged with its neighbour while the
+/// path allows ([`tidy_ends`]). Measured on LinuxCNC (see the module docs), longer pieces
+/// beside a switch run faster, up to about this length.
+pub(crate) const MIN_PIECE_MM: f64 = 1.0;
 
-/// How far (mm) the path of a burn may move when a short end piece is merged: half of
-/// `linuxcnc-fiber`'s `G64 P0.01`.
-pub(crate) const MAX_DEVIATION_MM: f64 = 0.005;
+/// How far (mm) the path of a burn may move when a short end piece is merged on `machine`:
+/// its `G64 P` (`blend_tolerance_mm`, how far LinuxCNC's blending may leave the path at a
+/// corner), or 0.005 mm without one.
+pub(crate) fn max_deviation_mm(machine: &super::MachineProfile) -> f64 {
+    machine.control.blend_tolerance_mm.unwrap_or(0.005)
+}
 
 /// LinuxCNC's servo period (s) as the oracle runs it and LinuxCNC ships it (`SERVO_PERIOD`
 /// 1,000,000 ns).
@@ -142,8 +148,8 @@ fn lead(from: Counts, dir: DVec2, lo: f64, hi: f64) -> Option<Counts> {
 ///   crease);
 /// - else one corner where the line of `prev`'s last piece meets the line of `next`'s first,
 ///   when that point lies in the middle of the gap (from 0.2 to 0.8 of it along each line):
-///   the grid point near it whose two legs are closest to those lines, within a third of
-///   `tangent_rad`;
+///   the grid point near it whose two legs are closest to those lines, within three quarters
+///   of `tangent_rad`;
 /// - else a lead-out and a lead-in, each between half and all of the smaller of a third of
 ///   the gap and `min_piece` × 2 counts, on grid points along those lines.
 pub(crate) fn link(
@@ -164,7 +170,7 @@ pub(crate) fn link(
     if !bends_out && !bends_in {
         return vec![p0];
     }
-    if let Some(x) = corner(q, out_dir, p0, in_dir, tangent_rad / 3.0) {
+    if let Some(x) = corner(q, out_dir, p0, in_dir, 0.75 * tangent_rad) {
         return vec![x, p0];
     }
     let hi = (2.0 * min_piece).min(gap.length() / 3.0);
@@ -255,10 +261,10 @@ mod tests {
         assert_eq!(points[1], next[0]);
         let d = |a: Counts, b: Counts| v(b) - v(a);
         // One corner: the first leg continues the last piece, the second leads into the
-        // first piece, each within a third of the tangent limit, and both about half the
-        // 1.05 mm gap.
-        assert!(turn(d(prev[0], prev[1]), d(prev[1], points[0])) <= LIMIT / 3.0);
-        assert!(turn(d(points[0], next[0]), d(next[0], next[1])) <= LIMIT / 3.0);
+        // first piece, each within three quarters of the tangent limit, and both about half
+        // the 1.05 mm gap.
+        assert!(turn(d(prev[0], prev[1]), d(prev[1], points[0])) <= 0.75 * LIMIT);
+        assert!(turn(d(points[0], next[0]), d(next[0], next[1])) <= 0.75 * LIMIT);
         for w in [prev[1], points[0], next[0]].windows(2) {
             assert!(v(w[0]).distance(v(w[1])) >= 400.0, "{points:?}");
         }

@@ -87,7 +87,7 @@ impl<'a> Program<'a> {
             tidy: machine.links_burns_with_feed_moves().then(|| {
                 (
                     sync_links::MIN_PIECE_MM / machine.resolution_mm,
-                    sync_links::MAX_DEVIATION_MM / machine.resolution_mm,
+                    sync_links::max_deviation_mm(machine) / machine.resolution_mm,
                     sync_links::tangent_limit_rad(machine),
                 )
             }),
