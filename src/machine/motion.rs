@@ -16,7 +16,10 @@
 //!   acceleration `v² / R` to stay within `a` gives
 //!   `v_junction² = a · δ · sin(θ/2) / (1 − sin(θ/2))`,
 //!   with `sin(θ/2) = √((1 − cos θ) / 2)`. A straight continuation has no limit, a reversal
-//!   must stop. The junction speed is further capped by both moves' nominal speeds.
+//!   must stop. The junction speed is further capped by both moves' nominal speeds. On
+//!   LinuxCNC the corner is a blend arc leaving the path by at most `G64 P` (the same circle,
+//!   δ = P) that uses √3/2 of the acceleration across the path
+//!   ([`BLEND_ACC_RATIO_NORMAL`]).
 //! - **Look-ahead.** A backward pass lowers each entry speed so the move can still slow down to
 //!   the next entry (the job ends at rest); a forward pass lowers it so it is reachable from the
 //!   previous entry. GRBL plans over a finite buffer; we plan over the whole list, which is what
@@ -39,8 +42,10 @@
 //!   ([`Move::sync`]; the corner sharper than LinuxCNC's tangent limit,
 //!   [`Kinematics::switch_blends`]) the junction speed is also capped by that arc with d half
 //!   of that move. Measured on LinuxCNC 2.9 with `linuxcnc-fiber`'s limits, this is a lower
-//!   bound: the 933 dashes of `HexSpiralTess.svg` at 200 mm run 51.3 s where this model says
-//!   48.8 s (46.9 s without the cap).
+//!   bound: the 933 dashes of `HexSpiralTess.svg` at 200 mm run 51.2 s where this model says
+//!   49.1 s (46.9 s without the cap and with the full acceleration at corners; on a 15 mm
+//!   circle of 0.5 mm chords, a switch that splits a chord costs LinuxCNC 9-18 ms and this
+//!   cap 2-11 ms).
 //!
 //! - **Stops.** When the moves come to rest with nothing queued (a spindle or pen word, a
 //!   dwell, a pause waits for that), GRBL's stepper goes idle and holds the motors for its step
@@ -66,6 +71,10 @@ use glam::DVec2;
 
 use super::MachineProfile;
 use crate::geom::tolerance::ROUNDOFF;
+
+/// The share of LinuxCNC's acceleration its blend arcs use across the path
+/// (`BLEND_ACC_RATIO_NORMAL` in `blendmath.h`: √(1 − 0.5²), 0.5 being left along the arc).
+pub const BLEND_ACC_RATIO_NORMAL: f64 = 0.866_025_403_784_438_6;
 
 /// One straight move.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -106,6 +115,10 @@ pub struct Kinematics {
     /// that take at most half of that move; the value is LinuxCNC's tangent limit (radians),
     /// the turn below which there is no corner (see the module docs). `None` elsewhere.
     pub switch_blends: Option<f64>,
+    /// The share of the acceleration a corner may use across the path: LinuxCNC's blend arcs
+    /// use √3/2 (`BLEND_ACC_RATIO_NORMAL`, the rest is left for the speed along the arc), other
+    /// controllers 1.
+    pub corner_accel_ratio: f64,
 }
 
 impl Kinematics {
@@ -130,6 +143,11 @@ impl Kinematics {
                 super::Dialect::Grbl | super::Dialect::Plotter
             ),
             switch_blends: linuxcnc.then(|| super::sync_links::tangent_limit_rad(machine)),
+            corner_accel_ratio: if linuxcnc {
+                BLEND_ACC_RATIO_NORMAL
+            } else {
+                1.0
+            },
         }
     }
 
@@ -275,7 +293,7 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
             Some(prev) => {
                 // The corner's centripetal acceleration points along the change of direction.
                 let turn = (dir - prev.dir).normalize_or_zero();
-                let accel = kin.accel_mm_s2 * kin.axis_scale(turn);
+                let accel = kin.accel_mm_s2 * kin.axis_scale(turn) * kin.corner_accel_ratio;
                 junction_speed(prev.dir, dir, accel, kin.junction_deviation_mm)
                     .min(prev.nominal)
                     .min(nominal)
@@ -295,20 +313,21 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
         at = m.to;
     }
     if let Some(tangent_rad) = kin.switch_blends {
-        cap_blends_beside_switches(&mut out, kin.accel_mm_s2, tangent_rad);
+        let normal_accel = kin.accel_mm_s2 * kin.corner_accel_ratio;
+        cap_blends_beside_switches(&mut out, normal_accel, tangent_rad);
     }
     (out, index)
 }
 
 /// Caps each corner beside a move that switches a synchronised output, or beside the move
-/// before one, by LinuxCNC's blend arc taking at most half of that move (see the module docs);
-/// `tangent_rad` is LinuxCNC's tangent limit (no corner below it).
-fn cap_blends_beside_switches(blocks: &mut [Block], accel_mm_s2: f64, tangent_rad: f64) {
+/// before one, by LinuxCNC's blend arc taking at most half of that move, with normal
+/// acceleration `normal_accel` mm/s² (see the module docs); `tangent_rad` is LinuxCNC's tangent
+/// limit (no corner below it).
+fn cap_blends_beside_switches(blocks: &mut [Block], normal_accel: f64, tangent_rad: f64) {
     // Moves a blend arc cannot consume: a switch, and the move before it.
     let pinned: Vec<bool> = (0..blocks.len())
         .map(|i| blocks[i].sync || blocks.get(i + 1).is_some_and(|b| b.sync))
         .collect();
-    let normal_accel = accel_mm_s2 * 0.75_f64.sqrt();
     for i in 1..blocks.len() {
         let (prev, this) = (&blocks[i - 1], &blocks[i]);
         // sin and cos of θ' (half the angle between the reversed incoming and the outgoing

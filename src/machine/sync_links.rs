@@ -29,7 +29,7 @@
 //!   switch continues its predecessor without a corner. A link whose ends already continue
 //!   the burns (a straight crease) stays one move. Measured on LinuxCNC 2.9: Origami
 //!   Simulator's `HexSpiralTess.svg` at 200 mm on `linuxcnc-fiber` and 0.5 mm stainless runs
-//!   88.8 s with straight links, 71.4 s with these links alone, and 51.3 s with the ends also
+//!   88.8 s with straight links, 71.4 s with these links alone, and 51.2 s with the ends also
 //!   tidied (48.5 s with no power changes at all; merging end pieces under 0.45 mm only:
 //!   55.1 s, under 0.7 mm: 53.0 s).
 //!
