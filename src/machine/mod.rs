@@ -27,6 +27,7 @@ mod profile;
 mod read_machine;
 mod read_material;
 mod shipped;
+pub(crate) mod sync_links;
 
 pub use control::{AirAssist, LaserOutput, MachineControl, SwitchCost};
 pub use load::{
@@ -36,7 +37,9 @@ pub use load::{
 pub use material::{
     DesignLimits, Material, OperationMapping, OperationSettings, Perforation, SettingsByOperation,
 };
-pub use motion::{Kinematics, Move, job_time, junction_speed, move_times};
+pub use motion::{
+    BLEND_ACC_RATIO_NORMAL, Kinematics, Move, job_time, junction_speed, move_times, trapezoid_time,
+};
 pub use operation::Operation;
 pub use profile::{
     Bed, Corner, Dialect, DwellUnit, LaserMode, MachineKind, MachineProfile, PowerRange,

@@ -16,7 +16,10 @@
 //!   acceleration `v² / R` to stay within `a` gives
 //!   `v_junction² = a · δ · sin(θ/2) / (1 − sin(θ/2))`,
 //!   with `sin(θ/2) = √((1 − cos θ) / 2)`. A straight continuation has no limit, a reversal
-//!   must stop. The junction speed is further capped by both moves' nominal speeds.
+//!   must stop. The junction speed is further capped by both moves' nominal speeds. On
+//!   LinuxCNC the corner is a blend arc leaving the path by at most `G64 P` (the same circle,
+//!   δ = P) that uses √3/2 of the acceleration across the path
+//!   ([`BLEND_ACC_RATIO_NORMAL`]).
 //! - **Look-ahead.** A backward pass lowers each entry speed so the move can still slow down to
 //!   the next entry (the job ends at rest); a forward pass lowers it so it is reachable from the
 //!   previous entry. GRBL plans over a finite buffer; we plan over the whole list, which is what
@@ -27,6 +30,22 @@
 //!   previous segment's end to an exact stop), so on a LinuxCNC machine the junction between a
 //!   rapid and a feed move is a stop ([`Kinematics::stops_between_rapid_and_feed`]). GRBL and
 //!   Marlin plan rapids and feed moves alike.
+//!
+//! - **Blends beside a switch** (LinuxCNC only): LinuxCNC joins moves with blend arcs that
+//!   leave the path by at most `G64 P` and take at most half of each neighbouring move
+//!   (`BLEND_DIST_FRACTION` 0.5 in `tc.h`), with a normal acceleration of √3/2 · a
+//!   (`BLEND_ACC_RATIO_NORMAL`): an arc of half-angle θ' = θ/2 cut back by d along each move has
+//!   radius tan θ' · d and runs at up to √(√3/2 · a · tan θ' · d). A short move is usually
+//!   consumed whole by the arc (`blendCheckConsume`), but not a move that switches a
+//!   synchronised output (`tcCanConsume`), nor the move before it when that switch continues
+//!   it without a corner (LinuxCNC's tangent case, no arc). So at a corner beside such a move
+//!   ([`Move::sync`]; the corner sharper than LinuxCNC's tangent limit,
+//!   [`Kinematics::switch_blends`]) the junction speed is also capped by that arc with d half
+//!   of that move. Measured on LinuxCNC 2.9 with `linuxcnc-fiber`'s limits, this is a lower
+//!   bound: the 933 dashes of `HexSpiralTess.svg` at 200 mm run 51.2 s where this model says
+//!   49.1 s (46.9 s without the cap and with the full acceleration at corners; on a 15 mm
+//!   circle of 0.5 mm chords, a switch that splits a chord costs LinuxCNC 9-18 ms and this
+//!   cap 2-11 ms).
 //!
 //! - **Stops.** When the moves come to rest with nothing queued (a spindle or pen word, a
 //!   dwell, a pause waits for that), GRBL's stepper goes idle and holds the motors for its step
@@ -53,6 +72,10 @@ use glam::DVec2;
 use super::MachineProfile;
 use crate::geom::tolerance::ROUNDOFF;
 
+/// The share of LinuxCNC's acceleration its blend arcs use across the path
+/// (`BLEND_ACC_RATIO_NORMAL` in `blendmath.h`: √(1 − 0.5²), 0.5 being left along the arc).
+pub const BLEND_ACC_RATIO_NORMAL: f64 = 0.866_025_403_784_438_6;
+
 /// One straight move.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Move {
@@ -62,6 +85,9 @@ pub struct Move {
     pub feed_mm_min: f64,
     /// A rapid (tool-off travel) move.
     pub rapid: bool,
+    /// The move switches a synchronised output as it starts (LinuxCNC `M62`/`M63`/`M67` before
+    /// it; see the module docs on blends beside a switch).
+    pub sync: bool,
 }
 
 /// The speed limits and acceleration of one run of moves, in mm and seconds.
@@ -85,6 +111,14 @@ pub struct Kinematics {
     /// along a diagonal gets more than along an axis; see the module docs), rather than
     /// along the path.
     pub per_axis: bool,
+    /// LinuxCNC: corners beside a move that switches a synchronised output are blend arcs
+    /// that take at most half of that move; the value is LinuxCNC's tangent limit (radians),
+    /// the turn below which there is no corner (see the module docs). `None` elsewhere.
+    pub switch_blends: Option<f64>,
+    /// The share of the acceleration a corner may use across the path: LinuxCNC's blend arcs
+    /// use √3/2 (`BLEND_ACC_RATIO_NORMAL`, the rest is left for the speed along the arc), other
+    /// controllers 1.
+    pub corner_accel_ratio: f64,
 }
 
 impl Kinematics {
@@ -108,6 +142,12 @@ impl Kinematics {
                 machine.dialect,
                 super::Dialect::Grbl | super::Dialect::Plotter
             ),
+            switch_blends: linuxcnc.then(|| super::sync_links::tangent_limit_rad(machine)),
+            corner_accel_ratio: if linuxcnc {
+                BLEND_ACC_RATIO_NORMAL
+            } else {
+                1.0
+            },
         }
     }
 
@@ -201,6 +241,8 @@ struct Block {
     max_entry: f64,
     /// Planned entry speed.
     entry: f64,
+    /// The move switches a synchronised output.
+    sync: bool,
 }
 
 /// Seconds each move of `moves` takes from `start`, at rest before the first move and after
@@ -233,11 +275,14 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
     let mut at = start;
     let mut out: Vec<Block> = Vec::with_capacity(moves.len());
     let mut index = Vec::with_capacity(moves.len());
+    // A switch on a move that does not move waits for the next move that does.
+    let mut sync = false;
     for (i, m) in moves.iter().enumerate() {
         let delta = m.to - at;
         let length = delta.length();
         let dir = delta / length;
         let nominal = kin.nominal_speed(m, dir);
+        sync |= m.sync;
         if !(length.is_finite() && length > 0.0 && nominal > 0.0) {
             at = if m.to.is_finite() { m.to } else { at };
             continue;
@@ -248,7 +293,7 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
             Some(prev) => {
                 // The corner's centripetal acceleration points along the change of direction.
                 let turn = (dir - prev.dir).normalize_or_zero();
-                let accel = kin.accel_mm_s2 * kin.axis_scale(turn);
+                let accel = kin.accel_mm_s2 * kin.axis_scale(turn) * kin.corner_accel_ratio;
                 junction_speed(prev.dir, dir, accel, kin.junction_deviation_mm)
                     .min(prev.nominal)
                     .min(nominal)
@@ -262,11 +307,48 @@ fn blocks(start: DVec2, moves: &[Move], kin: &Kinematics) -> (Vec<Block>, Vec<us
             nominal,
             max_entry,
             entry: 0.0,
+            sync: std::mem::take(&mut sync),
         });
         index.push(i);
         at = m.to;
     }
+    if let Some(tangent_rad) = kin.switch_blends {
+        let normal_accel = kin.accel_mm_s2 * kin.corner_accel_ratio;
+        cap_blends_beside_switches(&mut out, normal_accel, tangent_rad);
+    }
     (out, index)
+}
+
+/// Caps each corner beside a move that switches a synchronised output, or beside the move
+/// before one, by LinuxCNC's blend arc taking at most half of that move, with normal
+/// acceleration `normal_accel` mm/s² (see the module docs); `tangent_rad` is LinuxCNC's tangent
+/// limit (no corner below it).
+fn cap_blends_beside_switches(blocks: &mut [Block], normal_accel: f64, tangent_rad: f64) {
+    // Moves a blend arc cannot consume: a switch, and the move before it.
+    let pinned: Vec<bool> = (0..blocks.len())
+        .map(|i| blocks[i].sync || blocks.get(i + 1).is_some_and(|b| b.sync))
+        .collect();
+    for i in 1..blocks.len() {
+        let (prev, this) = (&blocks[i - 1], &blocks[i]);
+        // sin and cos of θ' (half the angle between the reversed incoming and the outgoing
+        // move): θ' is 90° for a straight continuation.
+        let sin_half = ((1.0 + prev.dir.dot(this.dir)) / 2.0)
+            .clamp(0.0, 1.0)
+            .sqrt();
+        let cos_half = (1.0 - sin_half * sin_half).max(0.0).sqrt();
+        let turn = prev.dir.perp_dot(this.dir).abs();
+        let corner = turn > tangent_rad || prev.dir.dot(this.dir) <= 0.0;
+        let halves = [(pinned[i - 1], prev.length), (pinned[i], this.length)]
+            .iter()
+            .filter(|(p, _)| *p)
+            .map(|&(_, l)| l / 2.0)
+            .fold(f64::INFINITY, f64::min);
+        if !corner || !halves.is_finite() || cos_half <= 0.0 {
+            continue;
+        }
+        let v = (normal_accel * sin_half / cos_half * halves).sqrt();
+        blocks[i].max_entry = blocks[i].max_entry.min(v);
+    }
 }
 
 /// Entry speeds after the backward (can stop in time) and forward (can get there) passes.

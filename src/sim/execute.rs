@@ -46,6 +46,9 @@ pub(crate) struct Machine<'a> {
     /// Synchronised output changes waiting for the next move (`M62`/`M63`, `M67`).
     pending_digital: Option<bool>,
     pending_analog: Option<f64>,
+    /// A synchronised output change (any output number) waits for the next move, which
+    /// carries it ([`Move::sync`]).
+    pending_sync: bool,
     /// Moves since the last stop.
     timeline: Timeline,
     /// `M2`/`M30` seen.
@@ -75,6 +78,7 @@ impl<'a> Machine<'a> {
             analog_out: 0.0,
             pending_digital: None,
             pending_analog: None,
+            pending_sync: false,
             timeline: Timeline::new(Kinematics::of(profile), DVec2::ZERO),
             ended: false,
             report: SimReport::new(&profile.name, profile.dialect, profile.power),
@@ -290,6 +294,7 @@ impl<'a> Machine<'a> {
             to,
             feed_mm_min: feed,
             rapid,
+            sync: std::mem::take(&mut self.pending_sync),
         });
         self.pos = to;
     }
@@ -354,6 +359,9 @@ impl<'a> Machine<'a> {
         } else {
             0.0
         };
+        if matches!(m, 62 | 63 | 67) {
+            self.pending_sync = true;
+        }
         if number != ours {
             return;
         }

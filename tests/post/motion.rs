@@ -26,6 +26,7 @@ fn feed(x: f64, y: f64, f: f64) -> Move {
         to: DVec2::new(x, y),
         feed_mm_min: f,
         rapid: false,
+        sync: false,
     }
 }
 
@@ -81,6 +82,7 @@ fn rapids_use_the_travel_feed() {
         to: DVec2::new(100.0, 0.0),
         feed_mm_min: 1.0,
         rapid: true,
+        sync: false,
     };
     let t = job_time(DVec2::ZERO, &[rapid], &m);
     assert!(close(t, 100.0 / 20.0 + 20.0 / 1000.0), "{t}");
@@ -191,4 +193,65 @@ fn grbl_limits_each_axis_so_diagonals_run_faster() {
     };
     let t = job_time(DVec2::ZERO, &diagonal, &lcnc);
     assert!(close(t, 1800f64.sqrt() / 100.0 + 0.1), "{t}");
+}
+
+/// LinuxCNC (`linuxcnc-fiber`: 3000 mm/s², `G64 P0.01`): a corner beside a move that switches
+/// a synchronised output runs no faster than LinuxCNC's blend arc taking half of that move,
+/// √(√3/2 · a · tan θ' · L/2) with θ' half the angle between the reversed incoming and the
+/// outgoing move; the same corner without the switch keeps the junction-deviation speed.
+#[test]
+fn linuxcnc_caps_a_corner_beside_a_switch_by_a_blend_arc_on_half_of_it() {
+    let m = foldcam::machine::load_machine("linuxcnc-fiber").unwrap();
+    let kin = Kinematics::of(&m);
+    let turn = 10f64.to_radians();
+    let out = DVec2::new(turn.cos(), turn.sin());
+    // 20 mm, a 0.2 mm move that switches, then 20 mm turned by 10°, at 10 m/min.
+    let moves = |sync: bool| {
+        let b = DVec2::new(20.2, 0.0);
+        [
+            Move {
+                to: DVec2::new(20.0, 0.0),
+                feed_mm_min: 10_000.0,
+                rapid: false,
+                sync: false,
+            },
+            Move {
+                to: b,
+                feed_mm_min: 10_000.0,
+                rapid: false,
+                sync,
+            },
+            Move {
+                to: b + out * 20.0,
+                feed_mm_min: 10_000.0,
+                rapid: false,
+                sync: false,
+            },
+        ]
+    };
+    let total = |sync| -> f64 { move_times(DVec2::ZERO, &moves(sync), &kin).iter().sum() };
+    let a = 3000.0;
+    let half = (90.0f64 - 5.0).to_radians();
+    let cap = (0.75f64.sqrt() * a * half.tan() * 0.1).sqrt();
+    // The junction-deviation speed of that corner (LinuxCNC's blend arc within `G64 P0.01`)
+    // is higher (about 82.6 mm/s).
+    let free = junction_speed(
+        DVec2::X,
+        out,
+        a * foldcam::machine::BLEND_ACC_RATIO_NORMAL,
+        0.01,
+    );
+    assert!(cap < 0.7 * free, "{cap} {free}");
+    // Entering the short move no faster than it can slow down to the cap.
+    let entry = (cap * cap + 2.0 * a * 0.2).sqrt();
+    let v = 10_000.0 / 60.0;
+    let expected = foldcam::machine::trapezoid_time(20.0, 0.0, entry, v, a)
+        + foldcam::machine::trapezoid_time(0.2, entry, cap, v, a)
+        + foldcam::machine::trapezoid_time(20.0, cap, 0.0, v, a);
+    assert!(
+        (total(true) - expected).abs() < 1e-9,
+        "{} {expected}",
+        total(true)
+    );
+    assert!(total(false) < total(true) - 1e-3);
 }

@@ -107,6 +107,7 @@ fn sim_time_is_the_planner_time_plus_dwells() {
         to: DVec2::new(x, y),
         feed_mm_min: 1800.0,
         rapid,
+        sync: false,
     };
     let moves = [
         mv(10.0, 10.0, true),

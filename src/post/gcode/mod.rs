@@ -49,7 +49,11 @@
 //!   of a toolpath (the dashes of a perforation, the strokes of one chain) is
 //!   `G1 … F<travel feed>` with the beam off, and `G0` only leads to a toolpath or a pass
 //!   ([`crate::machine::MachineProfile::links_burns_with_feed_moves`]); the profile's
-//!   `blend_tolerance_mm` is written as `G64 P<mm>` after the arming line.
+//!   `blend_tolerance_mm` is written as `G64 P<mm>` after the arming line. LinuxCNC slows
+//!   hard at a corner into a move that switches a synchronised output, so on a curve that
+//!   travel leaves each burn along its last piece and reaches the next along its first (one
+//!   corner in between), and a burn's very short end pieces are merged where the path allows
+//!   ([`crate::machine::sync_links`]).
 //! - Pen plotters ([`plotter`]), chosen by the `Plotter` dialect or by a machine that is not a
 //!   laser: the profile's `pen_up` lines before every travel (and at the start and end), its
 //!   `pen_down` lines before every stroke, each followed by `G4 P<pen delay>` in the profile's

@@ -7,6 +7,7 @@ use super::super::number::{Grid, fixed};
 use super::Flavour;
 use crate::fab::{FabPlan, Job, Operation, Toolpath};
 use crate::machine::control::AIR_OFF;
+use crate::machine::sync_links;
 use crate::machine::{MachineProfile, OperationSettings};
 
 /// Units and distance mode, written once at the top of every program.
@@ -43,6 +44,10 @@ struct Program<'a> {
     /// The feed of the moves linking two burns of one pass (`G1` with the tool off), when the
     /// machine links them so ([`MachineProfile::links_burns_with_feed_moves`]).
     link_feed: Option<String>,
+    /// Shortest end piece of a burn and how far merging one may move the path, in grid counts,
+    /// and LinuxCNC's tangent limit in radians (see [`sync_links`]), when the machine links
+    /// burns with feed moves.
+    tidy: Option<(f64, f64, f64)>,
 }
 
 /// Feed written on travel moves when the dialect shares `G0`'s feed with `G1`.
@@ -79,6 +84,13 @@ impl<'a> Program<'a> {
             link_feed: machine
                 .links_burns_with_feed_moves()
                 .then(|| travel_feed(machine)),
+            tidy: machine.links_burns_with_feed_moves().then(|| {
+                (
+                    sync_links::MIN_PIECE_MM / machine.resolution_mm,
+                    sync_links::max_deviation_mm(machine) / machine.resolution_mm,
+                    sync_links::tangent_limit_rad(machine),
+                )
+            }),
         }
     }
 }
@@ -192,7 +204,12 @@ impl Program<'_> {
         machine: &MachineProfile,
         group: &mut Option<Operation>,
     ) {
-        let strokes: Vec<_> = path.strokes.iter().filter_map(|s| self.snap(s)).collect();
+        let mut strokes: Vec<_> = path.strokes.iter().filter_map(|s| self.snap(s)).collect();
+        if let Some((min_piece, deviation, _)) = self.tidy {
+            for s in &mut strokes {
+                sync_links::tidy_ends(s, min_piece, deviation);
+            }
+        }
         if strokes.is_empty() {
             return;
         }
@@ -219,7 +236,7 @@ impl Program<'_> {
         for _ in 0..burn.passes {
             for (i, stroke) in strokes.iter().enumerate() {
                 if i > 0 && self.at != Some(stroke[0]) {
-                    self.link(stroke[0]);
+                    self.link(&strokes[i - 1], stroke);
                 }
                 self.stroke(stroke, burn);
             }
@@ -260,19 +277,24 @@ impl Program<'_> {
         self.burned += 1;
     }
 
-    /// A tool-off feed move at the travel feed to `to`, between two burns of one pass, where
-    /// the machine links burns so; elsewhere nothing (the next stroke travels there).
-    fn link(&mut self, to: (i64, i64)) {
-        let Some(feed) = self.link_feed.clone() else {
+    /// Tool-off feed moves at the travel feed from the end of burn `prev` to the start of burn
+    /// `next`, between two burns of one pass, where the machine links burns so: leaving and
+    /// arriving along the burns ([`sync_links::link`]); elsewhere nothing (the next stroke
+    /// travels there).
+    fn link(&mut self, prev: &[(i64, i64)], next: &[(i64, i64)]) {
+        let (Some(feed), Some((min_piece, _, tangent))) = (self.link_feed.clone(), self.tidy)
+        else {
             return;
         };
-        let mut line = format!("G1 {}", self.xy(to));
-        if self.feed.as_deref() != Some(feed.as_str()) {
-            line = format!("{line} F{feed}");
-            self.feed = Some(feed);
+        for to in sync_links::link(prev, next, min_piece, tangent) {
+            let mut line = format!("G1 {}", self.xy(to));
+            if self.feed.as_deref() != Some(feed.as_str()) {
+                line = format!("{line} F{feed}");
+                self.feed = Some(feed.clone());
+            }
+            self.lines.push(line);
+            self.at = Some(to);
         }
-        self.lines.push(line);
-        self.at = Some(to);
     }
 
     /// A tool-off move to `to`.
