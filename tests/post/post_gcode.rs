@@ -512,3 +512,34 @@ fn empty_jobs_are_an_error_not_a_panic() {
     let err = gcode(&dots, &dots.jobs[0], &m).unwrap_err();
     assert!(matches!(err, PostError::EmptyJob { .. }));
 }
+
+/// The header names the output the program switches, by the number its `M67` words use
+/// (it said `motion.analog-out-NN`).
+#[test]
+fn linuxcnc_header_names_the_output_the_program_switches() {
+    use foldcam::machine::{load_machine, load_material};
+    let machine = load_machine("linuxcnc-fiber").unwrap();
+    let material = load_material("stainless-0.5").unwrap();
+    let cp = foldcam::design::classic::MiuraOri::default()
+        .build()
+        .unwrap();
+    let o =
+        foldcam::fab::PlanOptions::for_machine(&machine, &material, &Default::default()).unwrap();
+    let p = foldcam::fab::plan(&cp, &machine, &material, &o).unwrap();
+    let text = foldcam::post::gcode(&p, &p.jobs[0], &machine).unwrap();
+    assert!(!text.contains("-NN"), "{}", &text[..600.min(text.len())]);
+    let pin = text
+        .split("motion.analog-out-")
+        .nth(1)
+        .and_then(|rest| rest.get(..2))
+        .expect("the header names the analog output");
+    let number: u32 = pin.parse().unwrap();
+    let switches: Vec<&str> = text.lines().filter(|l| l.starts_with("M67")).collect();
+    assert!(!switches.is_empty());
+    for line in switches {
+        assert!(
+            line.contains(&format!(" E{number} ")),
+            "{line}: not the output the header names ({pin})"
+        );
+    }
+}

@@ -17,10 +17,11 @@ impl GrblLaser {
 }
 
 impl Flavour for GrblLaser {
-    fn expectation(&self) -> Option<&'static str> {
+    fn expectation(&self) -> Option<String> {
         Some(
             "expects GRBL laser mode $32=1 (G0 blanks the beam, S changes without stopping); \
-             S scales between $31 and $30",
+             S scales between $31 and $30"
+                .to_string(),
         )
     }
     fn uses_power(&self) -> bool {

@@ -42,21 +42,22 @@ impl Flavour for LinuxCncLaser {
     fn comment(&self, text: &str) -> String {
         paren_comment(text)
     }
-    fn expectation(&self) -> Option<&'static str> {
-        match self.output {
-            LaserOutput::Spindle => Some(
-                "beam on the spindle output: LinuxCNC stops motion at every M3/M5, \
-                 set laser_output to digital or analog to switch without stopping",
+    fn expectation(&self) -> Option<String> {
+        let n = self.number;
+        Some(match self.output {
+            LaserOutput::Spindle => "beam on the spindle output: LinuxCNC stops motion at every \
+                                     M3/M5, set laser_output to digital or analog to switch \
+                                     without stopping"
+                .to_string(),
+            LaserOutput::Digital => format!(
+                "beam gated by motion.digital-out-{n:02} [M62/M63 P{n}, synchronised to motion], \
+                 power is set on the source"
             ),
-            LaserOutput::Digital => Some(
-                "beam gated by motion.digital-out-NN [M62/M63, synchronised to motion], \
-                 power is set on the source",
+            LaserOutput::Analog => format!(
+                "beam power on motion.analog-out-{n:02} [M67 E{n}, synchronised to motion], in S \
+                 units, zero is off"
             ),
-            LaserOutput::Analog => Some(
-                "beam power on motion.analog-out-NN [M67, synchronised to motion], \
-                 in S units, zero is off",
-            ),
-        }
+        })
     }
     fn uses_power(&self) -> bool {
         self.output != LaserOutput::Digital

@@ -24,10 +24,11 @@ impl MarlinLaser {
 }
 
 impl Flavour for MarlinLaser {
-    fn expectation(&self) -> Option<&'static str> {
+    fn expectation(&self) -> Option<String> {
         Some(
             "expects Marlin with LASER_FEATURE: 2.1 reads M3 I as continuous inline power; \
-             2.0.x also needs LASER_POWER_INLINE and LASER_MOVE_POWER",
+             2.0.x also needs LASER_POWER_INLINE and LASER_MOVE_POWER"
+                .to_string(),
         )
     }
     fn uses_power(&self) -> bool {

@@ -79,7 +79,7 @@ pub trait Flavour {
         format!("; {}", one_line(text))
     }
     /// What the firmware must be set to for this program, for the header comment.
-    fn expectation(&self) -> Option<&'static str> {
+    fn expectation(&self) -> Option<String> {
         None
     }
     /// Whether burns use the `S` (power) word.

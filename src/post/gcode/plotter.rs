@@ -50,11 +50,12 @@ impl Flavour for Pen {
             format!("; {}", super::one_line(text))
         }
     }
-    fn expectation(&self) -> Option<&'static str> {
-        self.grbl_style.then_some(
+    fn expectation(&self) -> Option<String> {
+        self.grbl_style.then(|| {
             "expects GRBL laser mode off, $32=0: in laser mode G0 blanks the spindle output \
-             that drives the pen",
-        )
+             that drives the pen"
+                .to_string()
+        })
     }
     fn uses_power(&self) -> bool {
         false

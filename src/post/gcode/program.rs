@@ -169,7 +169,7 @@ impl Program<'_> {
         let title = format!("foldcam: job {} for machine {}", job.name, machine.name);
         self.lines.push(self.flavour.comment(&title));
         if let Some(note) = self.flavour.expectation() {
-            self.lines.push(self.flavour.comment(note));
+            self.lines.push(self.flavour.comment(&note));
         }
         let mut written: Vec<String> = HEADER.iter().map(|s| s.to_string()).collect();
         written.extend(self.flavour.start());
