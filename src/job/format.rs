@@ -77,3 +77,16 @@ pub fn job_paths(output: &Path, plan: &FabPlan) -> Vec<PathBuf> {
         .map(|j| output.with_file_name(format!("{stem}.{}.{ext}", j.name)))
         .collect()
 }
+
+#[cfg(test)]
+mod table_tests {
+    /// Every extension the help and messages list is one the job writers take.
+    #[test]
+    fn the_listed_job_extensions_are_the_ones_written() {
+        let listed = super::JOB_EXTENSIONS.replace(" or ", ", ");
+        for e in listed.split(", ") {
+            let e = e.trim_start_matches('.');
+            assert!(super::JobFormat::from_extension(e).is_some(), "{e}");
+        }
+    }
+}

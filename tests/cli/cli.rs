@@ -950,17 +950,22 @@ fn every_import_says_the_size_it_read() {
     assert!(!String::from_utf8_lossy(&quiet.stderr).contains("read "));
 }
 
+/// `foldcam COMMAND --help`, which must succeed.
+fn help_text(command: &[&str], dir: &Path) -> String {
+    let mut args = command.to_vec();
+    args.push("--help");
+    let out = foldcam(&args, dir);
+    assert!(out.status.success(), "{command:?}");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
 /// `--from` is offered by the commands that read a pattern, `--to` by those that write
 /// files, and neither by the others (they were listed under every command).
 #[test]
 fn stdin_and_stdout_formats_are_offered_where_they_apply() {
     let dir = tempfile::tempdir().unwrap();
     let help = |command: &[&str]| {
-        let mut args = command.to_vec();
-        args.push("--help");
-        let out = foldcam(&args, dir.path());
-        assert!(out.status.success(), "{command:?}");
-        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        let text = help_text(command, dir.path());
         (
             text.contains("--from <FORMAT>"),
             text.contains("--to <FORMAT>"),
@@ -1008,13 +1013,9 @@ fn stdin_and_stdout_formats_are_offered_where_they_apply() {
 fn help_lists_the_formats_of_the_format_table() {
     use foldcam::formats::Format;
     let dir = tempfile::tempdir().unwrap();
+    // Long help wraps lines: join them.
     let help = |command: &[&str]| {
-        let mut args = command.to_vec();
-        args.push("--help");
-        let out = foldcam(&args, dir.path());
-        assert!(out.status.success(), "{command:?}");
-        // Long help wraps lines: join them.
-        String::from_utf8_lossy(&out.stdout)
+        help_text(command, dir.path())
             .split_whitespace()
             .collect::<Vec<_>>()
             .join(" ")
@@ -1074,10 +1075,7 @@ fn option_placeholders_share_one_style() {
         &["serve"],
     ];
     for command in commands {
-        let mut args = command.to_vec();
-        args.push("--help");
-        let out = foldcam(&args, dir.path());
-        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        let text = help_text(command, dir.path());
         for line in text
             .lines()
             .map(str::trim_start)

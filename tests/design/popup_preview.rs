@@ -61,15 +61,16 @@ fn block_top_across(png: &[u8]) -> (f64, usize) {
     (sum / n.max(1) as f64 / f64::from(w), n)
 }
 
-#[test]
-fn the_card_preview_has_the_design_left_on_the_image_left() {
+/// Where the block's lit top lands across the preview `foldcam popup KIND FILE --png` draws
+/// of the design `text`: its share of the width, and how many pixels it covers.
+fn preview_across(kind: &str, file: &str, text: &str) -> (f64, usize) {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("left.voxel.txt"), LEFT_BLOCK).unwrap();
+    std::fs::write(dir.path().join(file), text).unwrap();
     let out = foldcam(
         &[
             "popup",
-            "voxel",
-            "left.voxel.txt",
+            kind,
+            file,
             "-o",
             "left.fold",
             "--png",
@@ -84,8 +85,12 @@ fn the_card_preview_has_the_design_left_on_the_image_left() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let png = std::fs::read(dir.path().join("left.png")).unwrap();
-    let (across, pixels) = block_top_across(&png);
+    block_top_across(&std::fs::read(dir.path().join("left.png")).unwrap())
+}
+
+#[test]
+fn the_card_preview_has_the_design_left_on_the_image_left() {
+    let (across, pixels) = preview_across("voxel", "left.voxel.txt", LEFT_BLOCK);
     assert!(pixels > 200, "{pixels} pixels of the block's top");
     // Columns 1–4 of 16, seen a little from the left: well inside the left half.
     assert!(
@@ -117,29 +122,7 @@ polygon = [[2, 0], [6, 0], [6, 4], [2, 4]]
 
 #[test]
 fn the_polygon_card_preview_has_the_design_left_on_the_image_left() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("left.popup.toml"), LEFT_BOX).unwrap();
-    let out = foldcam(
-        &[
-            "popup",
-            "poly",
-            "left.popup.toml",
-            "-o",
-            "left.fold",
-            "--png",
-            "left.png",
-            "--width",
-            "400",
-        ],
-        dir.path(),
-    );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let png = std::fs::read(dir.path().join("left.png")).unwrap();
-    let (across, pixels) = block_top_across(&png);
+    let (across, pixels) = preview_across("poly", "left.popup.toml", LEFT_BOX);
     assert!(pixels > 200, "{pixels} pixels of the box's roof");
     assert!(
         across < 0.4,

@@ -117,7 +117,7 @@ fn floating_block_is_rejected() {
 /// row 0 shows on the base and rows 1–2 on the back sheet, between the solid fronts of
 /// columns 0 and 2 and under the front of row 3: a strip of back sheet cut free on three
 /// sides and hinged only at the central fold.
-fn strip_card(margin: f64) -> VoxelCard {
+pub(crate) fn strip_card(margin: f64) -> VoxelCard {
     let mut card = VoxelCard::new(3, 2, 6, 5.0).unwrap();
     card.set_margin_mm(margin).unwrap();
     for x in 0..3 {

@@ -285,24 +285,10 @@ fn the_bunny_card_at_resolution_80_has_no_vertical_face_held_from_one_side() {
     assert!(found.one_sided.is_empty(), "{:?}", found.one_sided);
 }
 
-/// Three columns one cell deep, four rows high, column 1's lowest three rows windows: a strip
-/// of back sheet hinged only at the central fold (see `popup_voxel.rs`).
-fn strip_card() -> VoxelCard {
-    let mut card = VoxelCard::new(3, 2, 6, 5.0).unwrap();
-    card.set_margin_mm(5.0).unwrap();
-    for x in 0..3 {
-        card.add(x, 0, 3).unwrap();
-    }
-    for z in 0..3 {
-        card.set_hole(1, z, true).unwrap();
-    }
-    card
-}
-
 #[test]
 fn the_oracle_finds_a_strip_hinged_only_at_the_central_fold() {
     // The library still creases such a card; written out, the oracle sees the strip.
-    let cp = crease_pattern(&strip_card()).unwrap();
+    let cp = crease_pattern(&crate::popup_voxel::strip_card(5.0)).unwrap();
     let found = standing(&foldcam::formats::fold::write_string(&cp, None));
     let strip = (50.0, [5.0, 10.0, 0.0, 10.0]);
     assert_eq!(found.one_sided, vec![strip]);
@@ -312,7 +298,8 @@ fn the_oracle_finds_a_strip_hinged_only_at_the_central_fold() {
 #[test]
 fn popup_voxel_refuses_the_strip_naming_the_cell_the_place_and_the_paper() {
     let dir = tempfile::tempdir().unwrap();
-    let text = foldcam::design::popup::voxel::format_voxel_card(&strip_card());
+    let text =
+        foldcam::design::popup::voxel::format_voxel_card(&crate::popup_voxel::strip_card(5.0));
     std::fs::write(dir.path().join("strip.voxel.txt"), text).unwrap();
     let out = foldcam(
         &["popup", "voxel", "strip.voxel.txt", "-o", "strip.fold"],

@@ -666,10 +666,11 @@ fn the_flat_folded_view_keeps_the_paper_area_and_counts_as_fold_flat() {
     );
     assert_eq!(out.status.code(), Some(1));
     let cli = String::from_utf8_lossy(&out.stderr);
+    // The error line (after the note of the size read).
     let cli = cli
         .lines()
-        .next()
-        .unwrap()
+        .find(|l| l.ends_with("nothing written"))
+        .unwrap_or_else(|| panic!("{cli}"))
         .strip_prefix("foldcam: ")
         .unwrap();
     assert_eq!(
