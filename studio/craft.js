@@ -161,6 +161,8 @@ export class CraftView {
     const geometry = this.surface.geometry;
     geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
     geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    // computeVertexNormals refills an existing normal buffer of the old length: start anew.
+    geometry.deleteAttribute('normal');
     geometry.computeVertexNormals();
     this.surface.userData.pieces = pieces.regions.length;
   }

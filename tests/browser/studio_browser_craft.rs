@@ -166,8 +166,12 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
                const k = 3 * (kept + i); \
                return r >= 0 && Math.abs(colour.getX(k) - want.r) + Math.abs(colour.getY(k) - want.g) \
                  + Math.abs(colour.getZ(k) - want.b) > 1e-6; }).length; \
+             const normal = g.getAttribute('normal'); let unlit = 0; \
+             for (let i = 0; i < g.getAttribute('position').count; i += 1) { \
+               if (Math.hypot(normal.getX(i), normal.getY(i), normal.getZ(i)) < 0.5) unlit += 1; } \
              return [v.pieces.regions.length, new Set(v.pieces.regions).size, \
-               g.getAttribute('position').count, 3 * (kept + v.pieces.regions.length), wrong];",
+               g.getAttribute('position').count, 3 * (kept + v.pieces.regions.length), wrong, \
+               normal.count, unlit];",
             vec![],
         )
         .await
@@ -181,6 +185,10 @@ async fn clicking_a_cut_line_on_the_mesh_gives_the_parts_the_cli_makes() {
         "the surface is the whole triangles and the pieces: {painted}"
     );
     assert_eq!(n(4), 0, "pieces in another region's colour: {painted}");
+    // Every corner has a normal (the pieces were drawn dark, unlit, when the normals of the
+    // previous, shorter surface were refilled).
+    assert_eq!(n(5), n(2), "normals for every corner: {painted}");
+    assert_eq!(n(6), 0, "corners without a normal: {painted}");
     // Glued cut lines whose two sides differ are listed under the regions, by number.
     let unglued: Vec<String> = {
         let items = c

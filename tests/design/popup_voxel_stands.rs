@@ -15,7 +15,7 @@
 use std::collections::{HashMap, VecDeque};
 use std::path::Path;
 
-use foldcam::design::popup::voxel::{VoxelCard, crease_pattern};
+use foldcam::design::popup::voxel::crease_pattern;
 use serde_json::Value;
 
 use crate::bin::foldcam;
