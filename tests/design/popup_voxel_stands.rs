@@ -271,8 +271,8 @@ fn a_torus_card_at_resolution_80_has_no_vertical_face_held_from_one_side() {
 }
 
 /// The Stanford bunny (npm `bunny` 1.0.1, Stanford 3D Scanning Repository) is not kept in the
-/// repository: its source asks for research use. Give its OBJ in `FOLDCAM_BUNNY_OBJ` and run
-/// with `--ignored` (`node -e` over the package's `positions` and `cells` writes one).
+/// repository: its source asks for research use. `.ci/run` fetches the package, writes its
+/// `positions` and `cells` as an OBJ and names it in `FOLDCAM_BUNNY_OBJ`.
 #[test]
 #[ignore = "needs the Stanford bunny as an OBJ in FOLDCAM_BUNNY_OBJ"]
 fn the_bunny_card_at_resolution_80_has_no_vertical_face_held_from_one_side() {
