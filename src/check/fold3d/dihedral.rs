@@ -20,23 +20,66 @@ use glam::DVec3;
 /// gives a zero gradient.
 #[inline]
 pub fn fold_angle_gradient(j: DVec3, k: DVec3, i: DVec3, l: DVec3) -> (f64, [DVec3; 4]) {
+    match fold_turn_gradient(j, k, i, l) {
+        Some((sin, cos, g)) => (sin.atan2(cos), g),
+        None => (0.0, [DVec3::ZERO; 4]),
+    }
+}
+
+/// `sin φ`, `cos φ` of the fold angle and its gradient with respect to `[j, k, i, l]`; `None`
+/// for a degenerate triangle (zero area or zero-length edge). The angle itself is left to the
+/// caller ([`turn_from`] follows it from step to step without an `atan2`).
+#[inline]
+pub fn fold_turn_gradient(
+    j: DVec3,
+    k: DVec3,
+    i: DVec3,
+    l: DVec3,
+) -> Option<(f64, f64, [DVec3; 4])> {
     let e = k - j;
     let na = e.cross(i - j);
     let nb = (j - k).cross(l - k);
     let (na2, nb2, e2) = (na.length_squared(), nb.length_squared(), e.length_squared());
     if na2 <= 0.0 || nb2 <= 0.0 || e2 <= 0.0 {
-        return (0.0, [DVec3::ZERO; 4]);
+        return None;
     }
+    // Two square roots and two divisions (this runs for every hinge at every step):
+    // `inv = 1/(|nA| |nB|)`, `1/|nA|² = |nB|² inv²`, `1/|e| = |e|/|e|²`.
     let el = e2.sqrt();
-    let (ua, ub) = (na / na2.sqrt(), nb / nb2.sqrt());
-    let phi = (ub.cross(ua).dot(e / el)).atan2(ua.dot(ub));
-    let gi = na * (el / na2);
-    let gl = nb * (el / nb2);
-    let ti = (i - j).dot(e) / e2;
-    let tl = (l - j).dot(e) / e2;
+    let inv_e2 = 1.0 / e2;
+    let inv = 1.0 / (na2 * nb2).sqrt();
+    let cos = na.dot(nb) * inv;
+    let sin = nb.cross(na).dot(e) * (inv * el * inv_e2);
+    let inv2 = inv * inv;
+    let gi = na * (el * nb2 * inv2);
+    let gl = nb * (el * na2 * inv2);
+    let ti = (i - j).dot(e) * inv_e2;
+    let tl = (l - j).dot(e) * inv_e2;
     let gj = -(1.0 - ti) * gi - (1.0 - tl) * gl;
     let gk = -ti * gi - tl * gl;
-    (phi, [gj, gk, gi, gl])
+    Some((sin, cos, [gj, gk, gi, gl]))
+}
+
+/// Below this `|sin Δ|` a turn `Δ` is summed from its series (error under 10⁻²³ rad).
+const SERIES_TURN: f64 = 0.01;
+
+/// The turn `Δ` in (−π, π] from an angle with sine and cosine `from` to one with `to` (both
+/// unit pairs): `sin Δ = s₁c₀ − c₁s₀`, `cos Δ = c₁c₀ + s₁s₀`. A small turn (every step of a
+/// settling fold) is `asin(sin Δ)` from its Taylor series, `x + x³/6 + 3x⁵/40 + 5x⁷/112 +
+/// 35x⁹/1152`, which is several times cheaper than `atan2`; a large one is `atan2`.
+#[inline]
+pub fn turn_from(from: (f64, f64), to: (f64, f64)) -> f64 {
+    let (s0, c0) = from;
+    let (s1, c1) = to;
+    let sin = s1 * c0 - c1 * s0;
+    let cos = c1 * c0 + s1 * s0;
+    if cos > 0.0 && sin.abs() < SERIES_TURN {
+        let x2 = sin * sin;
+        sin * (1.0
+            + x2 * (1.0 / 6.0 + x2 * (3.0 / 40.0 + x2 * (5.0 / 112.0 + x2 * (35.0 / 1152.0)))))
+    } else {
+        sin.atan2(cos)
+    }
 }
 
 #[cfg(test)]
@@ -64,6 +107,24 @@ mod tests {
         }
         // Valley: the wing rose to +z, the front side.
         assert!(hinge(0.4)[3].z > 0.0);
+    }
+
+    #[test]
+    fn a_turn_followed_from_step_to_step_is_the_turn() {
+        // Small steps (the series) and large ones (atan2), across ±π and round twice.
+        let mut angle: f64 = 0.3;
+        let mut at = (angle.sin(), angle.cos());
+        for step in [1e-7, -3e-4, 0.009, -0.0099, 0.02, 1.0, 2.9, -3.1, 0.5] {
+            for _ in 0..7 {
+                let next = angle + step;
+                let to = (next.sin(), next.cos());
+                let turn = turn_from(at, to);
+                assert!((turn - step).abs() < 1e-14, "{turn} vs {step}");
+                angle = next;
+                at = to;
+            }
+        }
+        assert!(turn_from((0.0, 1.0), (0.0, -1.0)) == std::f64::consts::PI);
     }
 
     #[test]

@@ -24,15 +24,20 @@
 //! damping), over the axial stiffness `EA`, falls below the tolerance, or a step or time cap
 //! stops it.
 //!
-//! **Parallelism.** Each step is three passes: bars, hinges (each writing only its own
-//! forces) and vertices (each gathering the forces of the elements it belongs to through a
-//! compressed incidence list, then integrating). Large models run the passes on rayon.
+//! **Angles.** A hinge's fold angle is followed from step to step by the turn between its
+//! last and its new `(sin φ, cos φ)` ([`super::dihedral::turn_from`]: a series for the small
+//! turns of every step instead of an `atan2`), which also unwraps it.
+//!
+//! **Parallelism.** Each step is three passes: bars and hinges side by side (each writing
+//! only its own forces), then vertices (each gathering the forces of the elements it belongs
+//! to through a compressed incidence list, then integrating). Large models run the passes on
+//! rayon.
 
 use glam::DVec3;
 use rayon::prelude::*;
 
 use super::FoldOptions;
-use super::dihedral::fold_angle_gradient;
+use super::dihedral::{fold_angle_gradient, fold_turn_gradient, turn_from};
 use super::model::{BarHingeModel, HingeKind};
 
 /// Fraction of the stability limit used as the time step.
@@ -41,11 +46,24 @@ pub const STEP_SAFETY: f64 = 0.9;
 /// Elements (bars + hinges) from which the passes run in parallel.
 const PARALLEL_MIN: usize = 12_000;
 
-/// Hinge output of one step: forces on `[j, k, i, l]` and the unwrapped fold angle.
-#[derive(Clone, Copy, Debug, Default)]
+/// Hinge output of one step: forces on `[j, k, i, l]`, the unwrapped fold angle and its
+/// sine and cosine.
+#[derive(Clone, Copy, Debug)]
 struct HingeOut {
     force: [DVec3; 4],
     angle: f64,
+    turn: (f64, f64),
+}
+
+impl Default for HingeOut {
+    /// Flat: no force, angle 0.
+    fn default() -> Self {
+        HingeOut {
+            force: [DVec3::ZERO; 4],
+            angle: 0.0,
+            turn: (0.0, 1.0),
+        }
+    }
 }
 
 /// The state of a running simulation.
@@ -57,7 +75,10 @@ pub struct Solver<'m> {
     bar_k: Vec<f64>,
     bar_c: Vec<f64>,
     hinge_k: Vec<f64>,
-    hinge_target: Vec<f64>,
+    /// Every hinge's angle at 100 % (0 for facet and free hinges), radians.
+    hinge_full: Vec<f64>,
+    /// The fraction of [`Self::hinge_full`] the hinges are driven to.
+    fraction: f64,
     bar_out: Vec<DVec3>,
     hinge_out: Vec<HingeOut>,
     /// Per vertex, the range of its slots in `slots`.
@@ -103,7 +124,15 @@ impl<'m> Solver<'m> {
             bar_k,
             bar_c,
             hinge_k,
-            hinge_target: vec![0.0; model.hinges.len()],
+            hinge_full: model
+                .hinges
+                .iter()
+                .map(|h| match h.kind {
+                    HingeKind::Crease(a) => a,
+                    _ => 0.0,
+                })
+                .collect(),
+            fraction: 0.0,
             bar_out: vec![DVec3::ZERO; model.bars.len()],
             hinge_out: vec![HingeOut::default(); model.hinges.len()],
             slot_start,
@@ -119,12 +148,7 @@ impl<'m> Solver<'m> {
 
     /// Sets every crease hinge's target to `fraction ×` its 100 % angle.
     pub fn set_fraction(&mut self, fraction: f64) {
-        for (t, h) in self.hinge_target.iter_mut().zip(&self.model.hinges) {
-            *t = match h.kind {
-                HingeKind::Crease(a) => fraction * a,
-                _ => 0.0,
-            };
-        }
+        self.fraction = fraction;
     }
 
     /// The unwrapped fold angle of every hinge after the last step, radians.
@@ -184,28 +208,38 @@ impl<'m> Solver<'m> {
             };
             *out = spring + (v[q] - v[p]) * bar_c[b];
         };
-        let (hinge_k, target) = (&self.hinge_k, &self.hinge_target);
+        let (hinge_k, full, fraction) = (&self.hinge_k, &self.hinge_full, self.fraction);
         let hinge = |h: usize, out: &mut HingeOut| {
             let hg = &model.hinges[h];
             let [j, k] = hg.edge.map(|e| x[e as usize]);
             let [i, l] = hg.wings.map(|e| x[e as usize]);
-            let (raw, g) = fold_angle_gradient(j, k, i, l);
-            let turns = ((out.angle - raw) / std::f64::consts::TAU).round();
-            out.angle = raw + turns * std::f64::consts::TAU;
-            let torque = -hinge_k[h] * (out.angle - target[h]);
-            out.force = g.map(|gc| gc * torque);
+            // A degenerate triangle keeps its last angle and pulls nothing.
+            out.force = [DVec3::ZERO; 4];
+            if let Some((sin, cos, g)) = fold_turn_gradient(j, k, i, l) {
+                out.angle += turn_from(out.turn, (sin, cos));
+                out.turn = (sin, cos);
+                let torque = -hinge_k[h] * (out.angle - fraction * full[h]);
+                out.force = g.map(|gc| gc * torque);
+            }
         };
         if self.parallel {
-            self.bar_out
-                .par_iter_mut()
-                .enumerate()
-                .with_min_len(1024)
-                .for_each(|(b, o)| bar(b, o));
-            self.hinge_out
-                .par_iter_mut()
-                .enumerate()
-                .with_min_len(512)
-                .for_each(|(h, o)| hinge(h, o));
+            let (bar_out, hinge_out) = (&mut self.bar_out, &mut self.hinge_out);
+            rayon::join(
+                || {
+                    bar_out
+                        .par_iter_mut()
+                        .enumerate()
+                        .with_min_len(1024)
+                        .for_each(|(b, o)| bar(b, o))
+                },
+                || {
+                    hinge_out
+                        .par_iter_mut()
+                        .enumerate()
+                        .with_min_len(512)
+                        .for_each(|(h, o)| hinge(h, o))
+                },
+            );
         } else {
             self.bar_out
                 .iter_mut()
@@ -290,7 +324,7 @@ impl<'m> Solver<'m> {
             let last = self.hinge_out[h].angle;
             let angle =
                 raw + ((last - raw) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
-            let torque = -self.hinge_k[h] * (angle - self.hinge_target[h]);
+            let torque = -self.hinge_k[h] * (angle - self.fraction * self.hinge_full[h]);
             let corners = [hinge.edge[0], hinge.edge[1], hinge.wings[0], hinge.wings[1]];
             for (c, v) in corners.iter().enumerate() {
                 f[*v as usize] += g[c] * torque;
