@@ -392,8 +392,14 @@ export class PopupView {
 
   setupThree(container) {
     this.container = container;
-    // Seen from in front of the card and above it (z up), turned a little to one side.
-    Object.assign(this, makeScene(container, { sun: [-1, 3, 2], zUp: true }));
+    // Seen from in front of the card and above it (z up), turned a little to one side. The
+    // server's card is in the papers' axes (Mitani & Suzuki 2004), base in front at +y, which
+    // a viewer in front sees mirrored; reflected through the back sheet's plane (y ↦ −y, as
+    // the CLI's pictures are) it is the card in the reader's hands, front towards −y, x from
+    // its left edge. three.js keeps the faces' sides right under a negative scale.
+    Object.assign(this, makeScene(container, { sun: [-1, -3, 2], zUp: true }));
+    this.model.scale.y = -1;
+    container.cardView = this;
     onDrag(this.renderer.domElement, (dx, dy) => {
       this.model.rotation.z += dx * 0.01;
       this.model.rotation.x += dy * 0.01;
@@ -430,6 +436,7 @@ export class PopupView {
 
   /** Builds the card's faces: each triangulated on the pattern, placed in space. */
   showCard(card) {
+    this.card = card;
     this.model.clear();
     const positions = [];
     for (const f of card.faces) {
@@ -453,7 +460,7 @@ export class PopupView {
       new THREE.LineBasicMaterial({ color: 0x444444, transparent: true, opacity: 0.5 }));
     this.model.add(new THREE.Mesh(geometry, inside), new THREE.Mesh(geometry, outside), edges);
     const radius = Math.hypot(w, depth, height) / 2 || 1;
-    this.camera.position.set(-0.9 * radius, 2.6 * radius, 1.7 * radius);
+    this.camera.position.set(-0.9 * radius, -2.6 * radius, 1.7 * radius);
     this.camera.lookAt(0, 0, 0);
     this.camera.near = radius * 0.01;
     this.camera.far = radius * 20;

@@ -32,7 +32,13 @@ const post = (url, body) => call(url, {
 class CardView3d {
   constructor(container) {
     this.container = container;
-    Object.assign(this, makeScene(container, { sun: [-1, 2, 3], light: [1.3, 1.8], zUp: true }));
+    // The card reflected through the back sheet's plane (y ↦ −y), as the reader holds it and
+    // the CLI's pictures show it: the papers' axes (Mitani, Suzuki & Uno 2003) put the base in
+    // front at +y, which a viewer in front sees mirrored. three.js keeps the faces' sides
+    // right under a negative scale.
+    Object.assign(this, makeScene(container, { sun: [-1, -2, 3], light: [1.3, 1.8], zUp: true }));
+    this.model.scale.y = -1;
+    container.cardView = this;
     this.turn = [-0.6, 0.45];
     onDrag(this.renderer.domElement, (dx, dy) => {
       this.turn[0] -= dx * 0.01;
@@ -62,7 +68,8 @@ class CardView3d {
       this.model.add(new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color: FAULT, side: THREE.DoubleSide,
         transparent: true, opacity: 0.85 })));
     }
-    this.centre = new THREE.Vector3(sheet[0] / 2, sheet[1] / 4, sheet[1] / 4);
+    this.open = open;
+    this.centre = new THREE.Vector3(sheet[0] / 2, -sheet[1] / 4, sheet[1] / 4);
     this.radius = Math.max(sheet[0], sheet[1]) * 0.75;
     this.draw();
   }
@@ -75,7 +82,7 @@ class CardView3d {
     const [az, el] = this.turn;
     const d = this.radius * 3;
     this.camera.position.set(this.centre.x + d * Math.sin(az) * Math.cos(el),
-      this.centre.y + d * Math.cos(az) * Math.cos(el), this.centre.z + d * Math.sin(el));
+      this.centre.y - d * Math.cos(az) * Math.cos(el), this.centre.z + d * Math.sin(el));
     this.camera.near = this.radius * 0.01;
     this.camera.far = this.radius * 20;
     this.camera.lookAt(this.centre);

@@ -11,7 +11,8 @@ use crate::studio;
 
 use bin::foldcam;
 use browser::{
-    click, download_text, keep_screenshot, open_studio, pointer_drag, screen_in, text, wait_until,
+    card_sides, click, download_text, keep_screenshot, open_studio, pointer_drag, screen_in, text,
+    wait_until,
 };
 use fantoccini::{Client, Locator};
 use lines::{Lines, fold_lines, line};
@@ -111,6 +112,14 @@ async fn a_wall_and_its_roof_drawn_with_the_mouse_save_as_the_cli_builds_them() 
     )
     .await;
     keep_screenshot(&c, "studio-popup.png").await;
+    // Seen from the front, as the reader holds it: the card's left edge on the left (the
+    // papers' axes, drawn as they are, show it mirrored).
+    let (left, right, front) = card_sides(&c, "popup-3d").await;
+    assert!(front, "the camera is behind the card's back sheet");
+    assert!(
+        left < right,
+        "the card's left edge is drawn at screen x {left:.2}, right of its right edge at {right:.2}"
+    );
 
     // Saved and built by the CLI: the pattern the page draws, line for line.
     let saved = download_text(&c, "#popup-save").await;

@@ -12,7 +12,7 @@ use crate::browser;
 use crate::studio;
 
 use bin::{foldcam, repo_file};
-use browser::{click, keep_screenshot, open_studio, text, wait_until};
+use browser::{card_sides, click, keep_screenshot, open_studio, text, wait_until};
 use fantoccini::{Client, Locator};
 use serde_json::Value;
 use studio::Server;
@@ -129,6 +129,14 @@ async fn clicking_voxels_in_saves_a_card_the_command_creases_as_the_page_does() 
     let opened = canvas.screenshot().await.unwrap();
     assert_ne!(standing, opened, "the 3D view did not change");
     keep_screenshot(&c, "studio-voxel.png").await;
+    // Seen from the front, as the reader holds it: the card's left edge on the left (the
+    // papers' axes, drawn as they are, show it mirrored).
+    let (left, right, front) = card_sides(&c, "voxel-3d").await;
+    assert!(front, "the camera is behind the card's back sheet");
+    assert!(
+        left < right,
+        "the card's left edge is drawn at screen x {left:.2}, right of its right edge at {right:.2}"
+    );
 
     // The saved design holds the clicked voxels, and the command creases it.
     let saved = c

@@ -377,3 +377,33 @@ pub async fn pattern_ink(c: &Client, points: &[(f64, f64)]) -> Vec<[u8; 4]> {
         .unwrap();
     serde_json::from_value(ink).unwrap()
 }
+
+/// How the studio's 3D card view in the element `container` shows the card: the screen x
+/// (normalised, −1 left to 1 right) of the card's leftmost and rightmost corner (smallest and
+/// largest x on the card, where the pattern and the cut sheet put x = 0 at the card's left
+/// edge), and whether the camera is in front of the card, on the base's side of the back
+/// sheet (the papers' +y).
+pub async fn card_sides(c: &Client, container: &str) -> (f64, f64, bool) {
+    let script = r#"
+const view = document.getElementById(arguments[0]).cardView;
+const mesh = view.model.children.find((m) => m.isMesh);
+view.scene.updateMatrixWorld(true);
+const V = view.camera.position.constructor;
+const pos = mesh.geometry.getAttribute('position');
+let left = null, right = null, ymin = Infinity, ymax = -Infinity;
+for (let i = 0; i < pos.count; i += 1) {
+  const v = new V(pos.getX(i), pos.getY(i), pos.getZ(i));
+  if (!left || v.x < left.x) left = v;
+  if (!right || v.x > right.x) right = v;
+  ymin = Math.min(ymin, v.y); ymax = Math.max(ymax, v.y);
+}
+const screen = (v) => v.clone().applyMatrix4(mesh.matrixWorld).project(view.camera).x;
+const camera = view.camera.position.clone().applyMatrix4(mesh.matrixWorld.clone().invert());
+return [screen(left), screen(right), camera.y > (ymin + ymax) / 2];"#;
+    let got = c.execute(script, vec![json!(container)]).await.unwrap();
+    (
+        got[0].as_f64().unwrap(),
+        got[1].as_f64().unwrap(),
+        got[2].as_bool().unwrap(),
+    )
+}
