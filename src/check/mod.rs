@@ -61,7 +61,7 @@ use crate::pattern::faces::find_faces_with;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, FoldedState, VertexId};
 
-pub use applies::CheckRun;
+pub use applies::{CheckRun, fold_angles_lost};
 pub use report::{
     AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
     finding_line,
