@@ -13,6 +13,10 @@ use super::{CheckReport, Finding, FindingKind, Quantity};
 use crate::limits::KAWASAKI_TOLERANCE;
 use crate::pattern::{Assignment, CreasePattern, EdgeId, VertexId};
 
+/// The largest Kawasaki error, in degrees, that the verdict calls a drawing's rounding when it
+/// names the tolerance accepting it; beyond it the verdict says the errors are more than that.
+const ROUNDING_SIZED_DEG: f64 = 1.0;
+
 /// Findings of each kind listed by [`CheckReport::to_text`]; the rest are counted.
 pub const TEXT_FINDINGS_PER_KIND: usize = 50;
 
@@ -270,8 +274,9 @@ impl CheckReport {
         }
     }
 
-    /// `; --kawasaki-tolerance T accepts every Kawasaki finding (…)` when the Kawasaki errors
-    /// are all measured in degrees and some tolerance within the option's range accepts them.
+    /// The --kawasaki-tolerance that accepts every Kawasaki finding (all measured in degrees,
+    /// within the option's range): offered as the drawing's precision up to
+    /// [`ROUNDING_SIZED_DEG`], named as more than rounding beyond it; else nothing.
     fn tolerance_note(&self) -> String {
         let mut errors = self
             .of_kind(FindingKind::Kawasaki)
@@ -283,14 +288,21 @@ impl CheckReport {
             return String::new();
         };
         let worst = errors.try_fold(first, |w, e| e.map(|e| w.max(e)));
-        match worst.and_then(accepting_tolerance) {
-            Some(t) => format!(
+        let (Some(worst), Some(t)) = (worst, worst.and_then(accepting_tolerance)) else {
+            return String::new();
+        };
+        if worst <= ROUNDING_SIZED_DEG {
+            format!(
                 "; if the drawing is only this precise, {} {t:.4} accepts every Kawasaki error \
-                 (the largest {:.4}°)",
-                KAWASAKI_TOLERANCE.option,
-                worst.unwrap_or(t)
-            ),
-            None => String::new(),
+                 (the largest {worst:.4}°)",
+                KAWASAKI_TOLERANCE.option
+            )
+        } else {
+            format!(
+                "; the Kawasaki errors reach {worst:.4}°, more than a drawing's rounding ({} \
+                 {t:.4} would accept them all)",
+                KAWASAKI_TOLERANCE.option
+            )
         }
     }
 

@@ -717,3 +717,12 @@ proptest::proptest! {
         proptest::prop_assert_eq!(report.of_kind(FindingKind::Maekawa).count(), 0);
     }
 }
+
+#[test]
+fn a_small_kawasaki_error_is_offered_as_the_drawings_precision() {
+    let v = check(&miura(60.0, 0.05), &CheckOptions::default()).verdict();
+    assert!(
+        v.contains("; if the drawing is only this precise, --kawasaki-tolerance 0.05"),
+        "{v}"
+    );
+}

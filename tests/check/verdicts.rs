@@ -30,6 +30,11 @@ fn a_kawasaki_failure_names_the_tolerance_that_would_pass_it() {
     let o = foldcam(&["check", &file], dir.path());
     assert_eq!(o.status.code(), Some(1));
     let verdict = last_line(&o);
+    // A 5° error is no rounding: the verdict says so while naming the value.
+    assert!(
+        verdict.contains("the Kawasaki errors reach 5.0000°, more than a drawing's rounding"),
+        "{verdict}"
+    );
     let option = "--kawasaki-tolerance ";
     let at = verdict.find(option).expect(&verdict) + option.len();
     let value = verdict[at..].split_whitespace().next().unwrap();
