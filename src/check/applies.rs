@@ -37,6 +37,22 @@ pub fn vertex_folds_flat(cp: &CreasePattern, fan: &[Spoke]) -> bool {
     fan.iter().all(|s| folds_flat(&cp.edges[s.edge.index()]))
 }
 
+/// What a file format without fold angles (ORIPA's `.cp` and `.opx`) loses of `cp`, or `None`
+/// when nothing: its creases that fold to less than 180° (a 3D target) read back as creases
+/// without an angle, which fold flat, so `check` holds their vertices to Kawasaki and Maekawa
+/// there and its findings differ from the original's.
+pub fn fold_angles_lost(cp: &CreasePattern) -> Option<String> {
+    let short = cp.edges.iter().filter(|e| !folds_flat(e)).count();
+    (short > 0).then(|| {
+        format!(
+            "{short} creases fold to less than 180° (a 3D target), and this format carries no \
+             fold angles: they read back as folding flat, so a check of this file holds their \
+             vertices to Kawasaki and Maekawa and may find more than a check of the original \
+             (keep FOLD or SVG for the 3D target)"
+        )
+    })
+}
+
 /// One family of checks in the report: whether it ran, over how many elements, and why.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct CheckRun {

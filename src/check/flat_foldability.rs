@@ -10,6 +10,7 @@
 use std::f64::consts::TAU;
 
 use super::{Finding, FindingKind, MvCounts, Quantity};
+use crate::limits::KAWASAKI_TOLERANCE;
 use crate::pattern::vertex_fan::Spoke;
 use crate::pattern::{Assignment, CreasePattern, VertexId};
 
@@ -66,13 +67,10 @@ pub(super) fn kawasaki(
     if error_deg <= tolerance_deg {
         return None;
     }
-    // The option that would change the verdict, named in words both front ends use (the
-    // CLI's `--kawasaki-tolerance`, the studio's Kawasaki tolerance field).
     let hint = format!(
-        "{} (or, if the drawing is only this precise, a Kawasaki tolerance of {:.4}° or more \
-         accepts it)",
+        "{} ({})",
         rotation_hint(cp, v, fan, sum),
-        error_deg
+        tolerance_hint(error_deg)
     );
     Some(Finding {
         kind: FindingKind::Kawasaki,
@@ -93,6 +91,32 @@ pub(super) fn kawasaki(
         ),
         hint,
     })
+}
+
+/// The smallest Kawasaki tolerance, rounded up to the four decimals the report prints, that
+/// accepts an error of `error_deg`; `None` beyond [`KAWASAKI_TOLERANCE`]'s range (an error
+/// that large is no rounding).
+pub(super) fn accepting_tolerance(error_deg: f64) -> Option<f64> {
+    let t = (error_deg * 1e4).ceil() / 1e4;
+    let t = if t < error_deg { t + 1e-4 } else { t };
+    (t <= KAWASAKI_TOLERANCE.max).then_some(t.max(KAWASAKI_TOLERANCE.min))
+}
+
+/// The option that would change the verdict, named for both front ends (the CLI's
+/// `--kawasaki-tolerance`, the studio's Kawasaki tolerance field), with the value that passes.
+fn tolerance_hint(error_deg: f64) -> String {
+    match accepting_tolerance(error_deg) {
+        Some(t) => format!(
+            "or, if the drawing is only this precise, accept it with a Kawasaki tolerance of \
+             {t:.4}°: {} {t:.4} on the command line, the Kawasaki tolerance field in the studio",
+            KAWASAKI_TOLERANCE.option
+        ),
+        None => format!(
+            "no Kawasaki tolerance accepts it: {} takes at most {}°, an error this large is no \
+             rounding",
+            KAWASAKI_TOLERANCE.option, KAWASAKI_TOLERANCE.max
+        ),
+    }
 }
 
 fn odd_degree(v: VertexId, position: glam::DVec2, n: usize) -> Finding {

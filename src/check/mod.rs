@@ -61,7 +61,7 @@ use crate::pattern::faces::find_faces_with;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, FoldedState, VertexId};
 
-pub use applies::CheckRun;
+pub use applies::{CheckRun, fold_angles_lost};
 pub use report::{
     AssignmentCounts, CheckSummary, EdgeMeasure, TEXT_FINDINGS_PER_KIND, VertexMeasure,
     finding_line,
@@ -228,7 +228,9 @@ pub struct CheckReport {
     pub runs: Vec<applies::CheckRun>,
     /// Interior vertices whose foldability no check judged: a crease there folds to less
     /// than 180° (Kawasaki and Maekawa describe folding flat only) and no 3D frame was
-    /// compared for developability. A report that passes with such vertices has not shown
+    /// compared for developability. Vertices where Kawasaki and Maekawa hold all the same
+    /// ([`CheckSummary::vertices_3d_flat`]) count too: their creases fold flat, but whether
+    /// they reach the 3D form the file asks for was not checked. A report that passes with such vertices has not shown
     /// that the pattern folds ([`CheckReport::checked_folding`]).
     pub unchecked_vertices: usize,
 }
@@ -331,7 +333,7 @@ pub fn check_with_frame(
         unchecked_vertices: if developed || !opts.flat_foldability {
             0
         } else {
-            summary.vertices_3d - summary.vertices_3d_flat
+            summary.vertices_3d
         },
         summary,
         options: opts.clone(),

@@ -8,8 +8,14 @@ use std::fmt::Write as _;
 use glam::DVec2;
 use serde::Serialize;
 
-use super::{CheckReport, Finding, FindingKind};
+use super::flat_foldability::accepting_tolerance;
+use super::{CheckReport, Finding, FindingKind, Quantity};
+use crate::limits::KAWASAKI_TOLERANCE;
 use crate::pattern::{Assignment, CreasePattern, EdgeId, VertexId};
+
+/// The largest Kawasaki error, in degrees, that the verdict calls a drawing's rounding when it
+/// names the tolerance accepting it; beyond it the verdict says the errors are more than that.
+const ROUNDING_SIZED_DEG: f64 = 1.0;
 
 /// Findings of each kind listed by [`CheckReport::to_text`]; the rest are counted.
 pub const TEXT_FINDINGS_PER_KIND: usize = 50;
@@ -120,7 +126,8 @@ pub struct CheckSummary {
     /// folds to less than 180° (a 3D target).
     pub vertices_3d: usize,
     /// Of [`Self::vertices_3d`], those whose creases satisfy Kawasaki and Maekawa all the
-    /// same: they would fold flat, so folding there is checked.
+    /// same: they would fold flat; whether they reach the 3D form is still not checked
+    /// without a 3D frame ([`CheckReport::unchecked_vertices`]).
     pub vertices_3d_flat: usize,
     /// The largest relative distance change within a face between the pattern and its 3D
     /// frame, when a frame was checked.
@@ -233,50 +240,109 @@ impl CheckReport {
         )
     }
 
-    fn verdict(&self) -> String {
-        if self.passed() && !self.checked_folding() {
+    /// The final line: `PASS (checked: …)`, `PASS, but NOT CHECKED at …` when some interior
+    /// vertices' folding was not judged ([`CheckReport::checked_folding`]), or `FAIL: …`.
+    pub fn verdict(&self) -> String {
+        let unchecked = self.not_checked();
+        if !self.passed() {
+            let counts: Vec<String> = FindingKind::ALL
+                .iter()
+                .filter_map(|&k| {
+                    let n = self.of_kind(k).count();
+                    (n > 0).then(|| format!("{} {n}", k.name()))
+                })
+                .collect();
+            let tail = unchecked.map_or(String::new(), |u| format!("; NOT CHECKED at {u}"));
             return format!(
-                "NOT CHECKED: at {} interior vertices a crease folds to less than 180° and no 3D \
-                 frame came to compare, so whether the pattern folds there was not checked (a \
-                 FOLD file with its folded frame is checked for developability); the checks that \
-                 ran found nothing",
-                self.unchecked_vertices
+                "FAIL: {} findings ({}){}{tail}",
+                self.findings.len(),
+                counts.join(", "),
+                self.tolerance_note()
             );
         }
-        if self.passed() {
-            let mut ran: Vec<String> = (self.runs.iter())
-                .filter(|r| r.ran)
-                .map(|r| format!("{} ({})", r.name, r.count))
-                .collect();
-            if self.summary.vertices_3d_flat > 0 {
-                ran.push(format!(
-                    "Kawasaki and Maekawa hold at {} vertices folding to 3D targets, so they fold \
-                     flat too",
-                    self.summary.vertices_3d_flat
-                ));
+        let ran = self.ran_list();
+        let warned = match self.warnings.len() {
+            0 => String::new(),
+            n => format!(" with {n} warning(s)"),
+        };
+        match unchecked {
+            Some(u) => {
+                let ran = ran.replace("checked: nothing applied", "nothing else was checked");
+                format!("PASS{warned}, but NOT CHECKED at {u}; {ran}")
             }
-            let ran = if ran.is_empty() {
-                "nothing applied".to_string()
-            } else {
-                format!("checked: {}", ran.join(", "))
-            };
-            return match self.warnings.len() {
-                0 => format!("PASS ({ran})"),
-                n => format!("PASS with {n} warning(s) ({ran})"),
-            };
+            None => format!("PASS{warned} ({ran})"),
         }
-        let counts: Vec<String> = FindingKind::ALL
-            .iter()
-            .filter_map(|&k| {
-                let n = self.of_kind(k).count();
-                (n > 0).then(|| format!("{} {n}", k.name()))
-            })
+    }
+
+    /// The --kawasaki-tolerance that accepts every Kawasaki finding (all measured in degrees,
+    /// within the option's range): offered as the drawing's precision up to
+    /// [`ROUNDING_SIZED_DEG`], named as more than rounding beyond it; else nothing.
+    fn tolerance_note(&self) -> String {
+        let mut errors = self
+            .of_kind(FindingKind::Kawasaki)
+            .map(|f| match f.quantity {
+                Quantity::Degrees => Some(f.value),
+                _ => None,
+            });
+        let Some(Some(first)) = errors.next() else {
+            return String::new();
+        };
+        let worst = errors.try_fold(first, |w, e| e.map(|e| w.max(e)));
+        let (Some(worst), Some(t)) = (worst, worst.and_then(accepting_tolerance)) else {
+            return String::new();
+        };
+        if worst <= ROUNDING_SIZED_DEG {
+            format!(
+                "; if the drawing is only this precise, {} {t:.4} accepts every Kawasaki error \
+                 (the largest {worst:.4}°)",
+                KAWASAKI_TOLERANCE.option
+            )
+        } else {
+            format!(
+                "; the Kawasaki errors reach {worst:.4}°, more than a drawing's rounding ({} \
+                 {t:.4} would accept them all)",
+                KAWASAKI_TOLERANCE.option
+            )
+        }
+    }
+
+    /// `checked: name (count), …` over the families that ran, or `checked: nothing applied`.
+    fn ran_list(&self) -> String {
+        let ran: Vec<String> = (self.runs.iter())
+            .filter(|r| r.ran)
+            .map(|r| format!("{} ({})", r.name, r.count))
             .collect();
-        format!(
-            "FAIL: {} findings ({})",
-            self.findings.len(),
-            counts.join(", ")
-        )
+        if ran.is_empty() {
+            "checked: nothing applied".to_string()
+        } else {
+            format!("checked: {}", ran.join(", "))
+        }
+    }
+
+    /// `N of M interior vertices: …why…` when some vertices' folding was not judged.
+    fn not_checked(&self) -> Option<String> {
+        if self.checked_folding() {
+            return None;
+        }
+        let s = &self.summary;
+        let interior = s.interior_vertices_checked + s.vertices_3d;
+        let flat_anyway = match s.vertices_3d_flat {
+            0 => String::new(),
+            n if n == self.unchecked_vertices => "; Kawasaki and Maekawa hold there all the \
+                                                  same (the creases fold flat; the 3D form is \
+                                                  not checked)"
+                .to_string(),
+            n => format!(
+                "; Kawasaki and Maekawa hold at {n} of them all the same (their creases fold \
+                 flat; the 3D form is not checked)"
+            ),
+        };
+        Some(format!(
+            "{} of {interior} interior vertices: they are 3D targets (a crease folds to less \
+             than 180°) and no 3D frame came to compare{flat_anyway}; a FOLD file with its \
+             folded frame is checked, --allow-unchecked accepts this",
+            self.unchecked_vertices
+        ))
     }
 }
 

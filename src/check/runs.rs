@@ -95,14 +95,13 @@ fn flat_foldability(opts: &CheckOptions, v: &Tally) -> CheckRun {
     )
 }
 
-/// `; at N of them the creases satisfy both all the same (they fold flat, so they fold)`,
-/// or nothing.
+/// `; at N of them the creases satisfy both all the same (…)`, or nothing.
 fn flat_anyway(v: &Tally) -> String {
     match v.vertices_3d_flat {
         0 => String::new(),
         n => format!(
-            "; at {n} of them the creases satisfy both all the same (they would fold flat, so \
-             they fold)"
+            "; at {n} of them the creases satisfy both all the same (they would fold flat; \
+             whether they reach the 3D form is not checked without a 3D frame)"
         ),
     }
 }

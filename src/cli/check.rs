@@ -42,7 +42,8 @@ pub struct Args {
     #[arg(long)]
     pub json: bool,
     /// Exit 0 when nothing failed although whether the pattern folds was not checked at some
-    /// vertices (3D targets without a 3D frame); the report still says NOT CHECKED.
+    /// vertices (3D targets: a crease folds to less than 180° and no 3D frame came, e.g. a
+    /// Miura-ori generated at 170°); the verdict still says NOT CHECKED.
     #[arg(long)]
     pub allow_unchecked: bool,
     #[command(flatten)]
@@ -67,6 +68,9 @@ pub fn run(args: Args) -> Result<Outcome> {
     };
     if args.json {
         let mut value = serde_json::to_value(&report).context("encoding the report")?;
+        if let Some(map) = value.as_object_mut() {
+            map.insert("verdict".into(), report.verdict().into());
+        }
         if let (Some(l), Some(map)) = (&layers, value.as_object_mut()) {
             map.insert(
                 "layers".into(),

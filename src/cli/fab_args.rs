@@ -43,10 +43,32 @@ pub struct ProfileArgs {
     /// grbl-pen-plotter, lightburn) or a path to a TOML file.
     #[arg(long, short = 'm')]
     pub machine: String,
-    /// Material profile: a shipped name (stainless-0.5, stainless-0.3, card-300gsm,
-    /// paper-160gsm, polypropylene-0.5) or a path to a TOML file.
-    #[arg(long, short = 'x')]
+    #[arg(
+        long,
+        short = 'x',
+        help = "Material profile: a shipped name (stainless-0.5, stainless-0.3, card-300gsm, \
+                paper-160gsm, polypropylene-0.5) or a path to a TOML file; it sets the defaults \
+                of the options below (operations, kerf, perforation, design limits)",
+        long_help = material_long_help()
+    )]
     pub material: String,
+}
+
+/// The --material help with every shipped material's defaults (card scores its creases,
+/// paper and stainless perforate them), read from the profiles themselves.
+fn material_long_help() -> String {
+    let shipped = foldcam::machine::profile_catalogue(foldcam::machine::ProfileKind::Material)
+        .unwrap_or_default();
+    let lines: Vec<String> = shipped
+        .iter()
+        .map(|e| format!("  {}: {}", e.name, e.defaults))
+        .collect();
+    format!(
+        "Material profile: a shipped name or a path to a TOML file. It sets the defaults of the \
+         options below (operations per line kind, kerf, perforation, design limits); the shipped \
+         materials' (`foldcam list materials`):\n{}",
+        lines.join("\n")
+    )
 }
 
 impl ProfileArgs {

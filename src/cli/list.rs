@@ -37,7 +37,16 @@ pub fn run(args: Args) -> Result<Outcome> {
     let entries = profile_catalogue(kind)?;
     let width = entries.iter().map(|e| e.name.len()).max().unwrap_or(0);
     for e in entries {
-        outln!("{:width$}  {}  [{}]", e.name, e.description, e.source);
+        let defaults = match e.defaults.as_str() {
+            "" => String::new(),
+            d => format!("; by default {d}"),
+        };
+        outln!(
+            "{:width$}  {}{defaults}  [{}]",
+            e.name,
+            e.description,
+            e.source
+        );
     }
     Ok(Outcome::Done)
 }

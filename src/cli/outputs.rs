@@ -76,6 +76,13 @@ pub fn stage(
     folded: Option<&FoldedState>,
 ) -> Result<()> {
     outputs.add(path, formats::encode(path, cp, folded)?);
+    let drops_angles = formats::Format::from_path(path).is_some_and(|f| !f.keeps_fold_angles());
+    if let Some(lost) = drops_angles
+        .then(|| foldcam::check::fold_angles_lost(cp))
+        .flatten()
+    {
+        errln!("foldcam: warning: {}: {lost}", path.display());
+    }
     Ok(())
 }
 

@@ -22,7 +22,7 @@ use super::sides::{mirror, registration_marks, split};
 use super::stats::{perforated_crease_mm, plan_stats};
 use super::{FabError, FabPlan, Job, PlanOptions, Side, Toolpath, geometry, order};
 use crate::check::{CheckOptions, FindingKind, check};
-use crate::machine::{Bed, MachineProfile, Material};
+use crate::machine::{Bed, MachineProfile, Material, load_material, shipped_materials};
 use crate::pattern::CreasePattern;
 
 /// Plans `cp` (millimetres) for `machine` and `material`. The warnings list the design
@@ -100,6 +100,7 @@ pub fn plan_toolpaths(
         return Err(FabError::NothingToDo);
     }
     let mut warnings = design_limit_warnings(cp, material);
+    warnings.extend(design_limit_advice(cp, material, &warnings));
     let (jobs, naive) = if opts.two_sided {
         two_sided_jobs(cp, paths, &machine.bed, opts, &mut warnings)?
     } else {
@@ -195,13 +196,63 @@ fn content_extent(cp: &CreasePattern, paths: &[Toolpath]) -> Result<(DVec2, DVec
     union(cp.bounds(), bounds_of(paths)).ok_or(FabError::NothingToDo)
 }
 
-/// One warning per design limit of `material` that `cp` exceeds, with counts.
-pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<String> {
+/// The check options of `material`'s design limits alone (no flat-foldability).
+fn limit_options(material: &Material) -> CheckOptions {
     let mut opts = CheckOptions {
         flat_foldability: false,
         ..CheckOptions::default()
     };
     material.limits.apply_to(&mut opts);
+    opts
+}
+
+/// Whether `cp` keeps within `material`'s design limits.
+pub fn meets_design_limits(cp: &CreasePattern, material: &Material) -> bool {
+    check(cp, &limit_options(material)).passed()
+}
+
+/// What to do about the limit warnings `warnings` (from [`design_limit_warnings`]; `None`
+/// when there are none): the limits only warn, so the job is written; the shipped materials
+/// whose limits the pattern meets; and how to see the creases and vertices beyond the limits
+/// (`check` lists them, `preview --check` rings them).
+pub fn design_limit_advice(
+    cp: &CreasePattern,
+    material: &Material,
+    warnings: &[String],
+) -> Option<String> {
+    if warnings.is_empty() {
+        return None;
+    }
+    let fitting: Vec<&str> = shipped_materials()
+        .into_iter()
+        .filter(|&name| name != material.name)
+        .filter(|&name| load_material(name).is_ok_and(|m| meets_design_limits(cp, &m)))
+        .collect();
+    let others = match fitting.as_slice() {
+        [] => "change the pattern (no shipped material's limits allow it)".to_string(),
+        names => format!(
+            "change the pattern or take a shipped material whose limits it meets: {} (`foldcam \
+             list materials`)",
+            names.join(", ")
+        ),
+    };
+    let l = &material.limits;
+    let limits = format!(
+        "--min-vertex-angle {} --max-fold-angle {}",
+        l.min_vertex_angle_deg, l.max_fold_angle_deg
+    );
+    Some(format!(
+        "{}'s limits only warn, so the job was written all the same (no option is needed to \
+         allow them); to keep within them, {others}; `foldcam check PATTERN {limits}` lists the \
+         vertices and creases beyond them, `foldcam preview PATTERN --check {limits} -o PNG` \
+         rings them on a picture",
+        material.name
+    ))
+}
+
+/// One warning per design limit of `material` that `cp` exceeds, with counts.
+pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<String> {
+    let opts = limit_options(material);
     let report = check(cp, &opts);
     let mut out = Vec::new();
     let angles = report.of_kind(FindingKind::VertexAngle).count();

@@ -66,6 +66,13 @@ impl Format {
     /// Extensions that can be written.
     pub const WRITABLE: &'static str = ".fold, .svg, .cp or .opx";
 
+    /// True for formats that store fold angles (FOLD's `edges_foldAngle`, the SVG's stroke
+    /// opacity); ORIPA's `.cp` and `.opx` do not, so a 3D target written to them reads back
+    /// as folding flat.
+    pub fn keeps_fold_angles(self) -> bool {
+        matches!(self, Format::Fold | Format::Svg)
+    }
+
     /// True for formats [`save`] can write.
     pub fn writable(self) -> bool {
         self != Format::Dxf

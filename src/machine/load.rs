@@ -220,6 +220,9 @@ pub struct CatalogueEntry {
     pub description: String,
     /// Where it comes from, e.g. `shipped: machines/grbl-diode.toml`.
     pub source: String,
+    /// For a material, what it sets when nothing overrides it ([`Material::defaults`]); empty
+    /// for a machine.
+    pub defaults: String,
 }
 
 /// The shipped profiles of `kind`, sorted by name, each read and checked.
@@ -236,6 +239,7 @@ pub fn profile_catalogue(kind: ProfileKind) -> Result<Vec<CatalogueEntry>, Profi
                     name: name.to_string(),
                     description: m.description,
                     source: format!("shipped: machines/{name}.toml"),
+                    defaults: String::new(),
                 })
             })
             .collect(),
@@ -245,6 +249,7 @@ pub fn profile_catalogue(kind: ProfileKind) -> Result<Vec<CatalogueEntry>, Profi
                 let m = load_material(name)?;
                 Ok(CatalogueEntry {
                     name: name.to_string(),
+                    defaults: m.defaults(),
                     description: m.description,
                     source: format!("shipped: machines/materials/{name}.toml"),
                 })

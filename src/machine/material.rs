@@ -189,6 +189,27 @@ pub struct Material {
     pub limits: DesignLimits,
 }
 
+impl Material {
+    /// What the material sets when nothing overrides it, in a line: the operation for each
+    /// line kind and the design limits, e.g. `mountain score, valley score, unassigned score,
+    /// flat skip, boundary cut; creases at least 20° apart, folds up to 180°`.
+    pub fn defaults(&self) -> String {
+        let m = &self.mapping;
+        let op = |o: Option<Operation>| o.map_or("skip", Operation::name);
+        format!(
+            "mountain {}, valley {}, unassigned {}, flat {}, boundary {}; creases at least {}° \
+             apart, folds up to {}°",
+            op(m.mountain),
+            op(m.valley),
+            op(m.unassigned),
+            op(m.flat),
+            op(m.boundary),
+            self.limits.min_vertex_angle_deg,
+            self.limits.max_fold_angle_deg
+        )
+    }
+}
+
 impl OperationMapping {
     /// The operation for an edge assignment (cut edges follow the boundary; joins are never
     /// machined), or `None` when the assignment is skipped.

@@ -444,8 +444,9 @@ fn a_pass_says_what_was_checked_and_not_checked_exits_1() {
         text.trim_end().lines().last().unwrap_or("").to_string()
     };
     // A Miura-ori sheared by 4 mm with its creases at 170°: 3D targets, where Kawasaki and
-    // Maekawa do not have to hold; they hold all the same at its 11 × 7 interior vertices, so
-    // the pass says so rather than a plain PASS.
+    // Maekawa do not decide. They hold all the same at its 11 × 7 interior vertices (the
+    // creases fold flat), but whether they reach the 170° form was not checked: not a plain
+    // PASS, and exit 1 unless --allow-unchecked.
     let made = run(&[
         "generate",
         "miura",
@@ -465,13 +466,54 @@ fn a_pass_says_what_was_checked_and_not_checked_exits_1() {
     let report = check(&pattern, &CheckOptions::default());
     assert_eq!(report.summary.vertices_3d, 77);
     assert_eq!(report.summary.vertices_3d_flat, 77);
-    assert!(report.passed() && report.checked_folding());
+    assert_eq!(report.unchecked_vertices, 77);
+    assert!(report.passed() && !report.checked_folding());
     let o = run(&["check", "m.fold"]);
+    assert_eq!(o.status.code(), Some(1));
+    let verdict = last_line(&o);
+    assert!(
+        verdict.starts_with(
+            "PASS, but NOT CHECKED at 77 of 77 interior vertices: they are 3D targets"
+        ),
+        "{verdict}"
+    );
+    assert!(
+        verdict.contains("Kawasaki and Maekawa hold there all the same"),
+        "{verdict}"
+    );
+    assert!(verdict.contains("--allow-unchecked"), "{verdict}");
+    assert_eq!(verdict, report.verdict());
+    let allowed = run(&["check", "m.fold", "--allow-unchecked"]);
+    assert_eq!(allowed.status.code(), Some(0));
+    assert_eq!(last_line(&allowed), verdict);
+    // The JSON report says the same.
+    let o = run(&["check", "m.fold", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["unchecked_vertices"], 77);
+    assert_eq!(v["verdict"], verdict.as_str());
+    // Folded fully (180°), the same Miura-ori is checked flat and passes plainly.
+    let flat = run(&[
+        "generate",
+        "miura",
+        "--columns",
+        "12",
+        "--rows",
+        "8",
+        "--shear",
+        "4",
+        "--fold-angle",
+        "180",
+        "-o",
+        "flat.fold",
+    ]);
+    assert!(flat.status.success());
+    let o = run(&["check", "flat.fold"]);
     assert_eq!(o.status.code(), Some(0));
-    assert_eq!(
-        last_line(&o),
-        "PASS (checked: Kawasaki and Maekawa hold at 77 vertices folding to 3D targets, so \
-         they fold flat too)"
+    assert!(
+        last_line(&o).starts_with("PASS (checked: flat_foldability (77)"),
+        "{}",
+        last_line(&o)
     );
     // One crease of it turned by 2° no longer folds flat: at a 3D target that fails nothing,
     // but the vertex is then not checked at all.
@@ -500,7 +542,7 @@ fn a_pass_says_what_was_checked_and_not_checked_exits_1() {
     assert_eq!(o.status.code(), Some(1));
     assert!(
         last_line(&o).starts_with(&format!(
-            "NOT CHECKED: at {} interior vertices",
+            "PASS, but NOT CHECKED at {} of 77 interior vertices",
             report.unchecked_vertices
         )),
         "{}",
@@ -594,12 +636,26 @@ fn following_the_kawasaki_hint_repairs_the_vertex() {
             .expect("finding");
         let hint = &finding.hint;
         let (edge, degrees) = parse_rotation(hint).expect(hint);
-        // The hint also names the setting that would pass the vertex as drawn.
+        // The hint also names the option that would pass the vertex as drawn, with its value.
+        let option = "--kawasaki-tolerance ";
+        let at = hint.find(option).expect(hint) + option.len();
+        let value: f64 = hint[at..]
+            .split_whitespace()
+            .next()
+            .unwrap()
+            .parse()
+            .expect(hint);
         assert!(
-            hint.contains(&format!(
-                "Kawasaki tolerance of {:.4}° or more",
-                finding.value
-            )),
+            value >= finding.value && value < finding.value + 1e-4 + 1e-12,
+            "{hint}"
+        );
+        let accepted = CheckOptions {
+            kawasaki_tolerance_deg: value,
+            ..CheckOptions::default()
+        };
+        assert_eq!(
+            check(&cp, &accepted).of_kind(FindingKind::Kawasaki).count(),
+            0,
             "{hint}"
         );
         // Rotate the crease's far end about the centre (vertex 0).
@@ -660,4 +716,13 @@ proptest::proptest! {
         }
         proptest::prop_assert_eq!(report.of_kind(FindingKind::Maekawa).count(), 0);
     }
+}
+
+#[test]
+fn a_small_kawasaki_error_is_offered_as_the_drawings_precision() {
+    let v = check(&miura(60.0, 0.05), &CheckOptions::default()).verdict();
+    assert!(
+        v.contains("; if the drawing is only this precise, --kawasaki-tolerance 0.05"),
+        "{v}"
+    );
 }

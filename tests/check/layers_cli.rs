@@ -47,7 +47,8 @@ fn generated_square_twist_folds_and_fold_flat_writes_orders() {
     let png = dir.path().join("folded.png");
     let t = twist.to_str().expect("utf-8");
     assert!(
-        foldcam(&["generate", "square-twist", "-o", t])
+        // Folded flat (180°): a flat target the local check and the layer order judge.
+        foldcam(&["generate", "square-twist", "--fold-angle", "180", "-o", t])
             .status
             .success()
     );

@@ -10,3 +10,4 @@ mod isometry;
 mod layers;
 mod layers_cli;
 mod planarize;
+mod verdicts;

@@ -74,7 +74,16 @@ fn convert_round_trips_through_every_format() {
 #[test]
 fn check_exit_codes_follow_the_verdict() {
     let dir = tempfile::tempdir().expect("temp dir");
+    // flat-vertex.fold's creases are stored at ±150°, a 3D target without a 3D frame: its
+    // vertex passes Kawasaki and Maekawa, but the pass says NOT CHECKED and exits 1 unless
+    // --allow-unchecked accepts that.
     let good = foldcam(&["check", &example("flat-vertex.fold")], dir.path());
+    assert_eq!(good.status.code(), Some(1), "{}", text(&good.stdout));
+    assert!(text(&good.stdout).contains("PASS, but NOT CHECKED at 1 of 1 interior vertices"));
+    let good = foldcam(
+        &["check", "--allow-unchecked", &example("flat-vertex.fold")],
+        dir.path(),
+    );
     assert_eq!(good.status.code(), Some(0), "{}", text(&good.stdout));
     let bad = foldcam(&["check", &example("broken-vertex.fold")], dir.path());
     assert_eq!(bad.status.code(), Some(1));
@@ -101,10 +110,11 @@ fn check_exit_codes_follow_the_verdict() {
 #[test]
 fn vertex_angle_limit_fails_the_check() {
     let dir = tempfile::tempdir().expect("temp dir");
-    // flat-vertex.fold's smallest sector is 60°.
+    // flat-vertex.fold's smallest sector is 60° (its ±150° creases, a 3D target, accepted).
     let ok = foldcam(
         &[
             "check",
+            "--allow-unchecked",
             "--min-vertex-angle",
             "50",
             &example("flat-vertex.fold"),
@@ -174,11 +184,47 @@ fn preview_check_exit_status_follows_the_faults() {
 #[test]
 fn generated_patterns_pass_their_check() {
     let dir = tempfile::tempdir().expect("temp dir");
+    let last = |o: &std::process::Output| {
+        text(&o.stdout)
+            .trim_end()
+            .lines()
+            .last()
+            .unwrap_or("")
+            .to_string()
+    };
     for kind in ["miura", "square-twist", "waterbomb", "yoshimura"] {
+        // Folded flat (180°), Kawasaki and Maekawa decide: a plain pass.
+        let flat = format!("{kind}-flat.fold");
+        let o = foldcam(
+            &["generate", kind, "--fold-angle", "180", "-o", &flat],
+            dir.path(),
+        );
+        assert!(o.status.success(), "{kind}: {}", text(&o.stderr));
+        let c = foldcam(&["check", &flat], dir.path());
+        assert_eq!(c.status.code(), Some(0), "{kind}: {}", text(&c.stdout));
+        assert!(
+            last(&c).starts_with("PASS (checked: flat_foldability ("),
+            "{kind}: {}",
+            last(&c)
+        );
+        // At the default 170° the creases are a 3D target that no frame shows: Kawasaki and
+        // Maekawa hold, but the pass says what was not checked and exits 1 unless accepted.
         let out = format!("{kind}.fold");
         let o = foldcam(&["generate", kind, "-o", &out], dir.path());
         assert!(o.status.success(), "{kind}: {}", text(&o.stderr));
         let c = foldcam(&["check", &out], dir.path());
+        assert_eq!(c.status.code(), Some(1), "{kind}: {}", text(&c.stdout));
+        assert!(
+            last(&c).starts_with("PASS, but NOT CHECKED at "),
+            "{kind}: {}",
+            last(&c)
+        );
+        assert!(
+            last(&c).contains("Kawasaki and Maekawa hold there all the same"),
+            "{kind}: {}",
+            last(&c)
+        );
+        let c = foldcam(&["check", &out, "--allow-unchecked"], dir.path());
         assert_eq!(c.status.code(), Some(0), "{kind}: {}", text(&c.stdout));
     }
 }

@@ -347,3 +347,96 @@ fn papercraft_jobs_mark_edge_numbers_where_the_material_can_mark() {
     .burn_length_mm;
     assert!((first - cut_and_score - labels).abs() < 0.01 * labels);
 }
+
+#[test]
+fn materials_show_their_defaults_and_card_folds_flat() {
+    let out = foldcam()
+        .args(["list", "materials"])
+        .output()
+        .expect("runs");
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    let card = text
+        .lines()
+        .find(|l| l.starts_with("card-300gsm "))
+        .expect("card listed");
+    assert!(
+        card.contains("by default mountain score, valley score, unassigned score")
+            && card.contains("folds up to 180°"),
+        "{card}"
+    );
+    let help = foldcam().args(["cut", "--help"]).output().expect("runs");
+    let help = String::from_utf8(help.stdout).expect("UTF-8");
+    assert!(
+        help.contains("card-300gsm: mountain score, valley score"),
+        "{help}"
+    );
+    assert!(help.contains("paper-160gsm: mountain perforate"), "{help}");
+    // The README's bird base, folded flat, is within card's limits: no warning.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let bird = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/examples/patterns/bird-base.cp"
+    );
+    let o = run_in(
+        dir.path(),
+        &[
+            "cut",
+            bird,
+            "--size",
+            "150",
+            "-m",
+            "grbl-diode",
+            "-x",
+            "card-300gsm",
+            "-o",
+            "b.gcode",
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let said = format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(!said.contains("fold further"), "{said}");
+}
+
+#[test]
+fn a_job_beyond_the_material_limits_says_what_to_do() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    assert!(
+        run_in(d, &["generate", "miura", "-o", "m.fold"])
+            .status
+            .success()
+    );
+    // The Miura-ori's 170° creases fold further than 0.5 mm stainless allows (165°).
+    let o = run_in(
+        d,
+        &[
+            "cut",
+            "m.fold",
+            "-m",
+            "linuxcnc-fiber",
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "m.ngc",
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(said.contains("fold further than 165°"), "{said}");
+    assert!(
+        said.contains(
+            "take a shipped material whose limits it meets: card-300gsm, paper-160gsm, \
+             polypropylene-0.5, stainless-0.3"
+        ),
+        "{said}"
+    );
+    assert!(
+        said.contains("`foldcam check PATTERN --min-vertex-angle 30 --max-fold-angle 165`"),
+        "{said}"
+    );
+    assert!(said.contains("no option is needed"), "{said}");
+}

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::rounding::{KawasakiTolerance, local_faults};
 use super::{LayerError, LayerOptions, LayerReport, LayerSolver};
-use crate::check::{CheckReport, Finding, FindingKind, Quantity};
+use crate::check::{CheckReport, CheckRun, Finding, FindingKind, Quantity};
 use crate::pattern::CreasePattern;
 
 /// The outcome of the layer check: a report, or why there is none.
@@ -102,7 +102,9 @@ pub fn check_layers(
     };
     let faults = local_faults(cp, opts.kawasaki);
     if let Some(f) = faults.first_refusal() {
-        out.skipped = Some(refusal(f));
+        let why = refusal(f);
+        local.runs.push(CheckRun::skipped(LAYER_ORDER, why.clone()));
+        out.skipped = Some(why);
         return Ok(out);
     }
     out.rounding = faults.rounding.len();
@@ -119,6 +121,15 @@ pub fn check_layers(
                     ));
                 }
             }
+            local.runs.push(CheckRun::ran(
+                LAYER_ORDER,
+                report.faces,
+                format!(
+                    "a global layer order of the faces folded flat (Flat-Folder's method): {} \
+                     states",
+                    report.states
+                ),
+            ));
             out.report = Some(report);
         }
         Err(
@@ -133,6 +144,11 @@ pub fn check_layers(
             );
             f.vertex = Some(vertex);
             out.findings.push(f);
+            local.runs.push(CheckRun::ran(
+                LAYER_ORDER,
+                0,
+                "stopped: the creases do not fold flat",
+            ));
             out.error = Some(e.to_string());
         }
         Err(e) => return Err(e),
@@ -140,6 +156,9 @@ pub fn check_layers(
     local.findings.extend(out.findings.iter().cloned());
     Ok(out)
 }
+
+/// The name of the layer-order family in [`CheckReport::runs`].
+const LAYER_ORDER: &str = "layer_order";
 
 /// Why the layer solver did not run: the local fault that stops it, with its vertex.
 pub fn refusal(f: &Finding) -> String {

@@ -67,9 +67,11 @@ fn count(parameter: &'static str, value: usize, max: usize) -> Result<usize, Cla
 
 /// Target fold angle of the generated mountain and valley creases, in degrees: folded nearly
 /// flat. A real sheet does not fold to a full 180° (its thickness and spring-back leave a few
-/// degrees), and 170° lies within the largest fold angle of card and paper (175°, 180°), so
-/// a generated pattern cut on them raises no fold-angle warning; thick sheets that allow less
-/// (0.5 mm stainless: 165°) still warn.
+/// degrees), and 170° lies within the largest fold angle of card and paper (180°: they fold
+/// flat), so a generated pattern cut on them raises no fold-angle warning; thick sheets that
+/// allow less (0.5 mm stainless: 165°) still warn. Being short of 180°, the generated creases
+/// are a 3D target that `check` does not judge without a 3D frame (`--fold-angle 180` gives
+/// a flat target that it does).
 pub const FOLD_ANGLE_DEG: f64 = 170.0;
 
 /// Sets every mountain crease to −`degrees` and every valley crease to +`degrees` (FOLD's

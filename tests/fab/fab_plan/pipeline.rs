@@ -67,7 +67,7 @@ fn miura_plans_on_every_bed_one_and_two_sided() {
                 let s = &plan.stats;
                 assert!(s.travel_mm < s.naive_travel_mm, "{s:?}");
                 assert!(s.time_s > 0.0);
-                // The Miura-ori's creases carry the generators' 170°, within the card's 175°:
+                // The Miura-ori's creases carry the generators' 170°, within the card's 180°:
                 // no design limit is exceeded.
                 assert!(
                     cp.edges
