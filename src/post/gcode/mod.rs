@@ -5,8 +5,8 @@
 //! options, LinuxCNC's output), one naming the source (the pattern's title, as generators and
 //! most files give one) and the material, and one per operation with its settings (power as a
 //! fraction and as the `S` written, speed, passes; dash and gap for a perforation), all in
-//! ASCII without `;` or `%` inside, then millimetres (`G21`) and absolute (`G90`) once, the dialect's arming line (laser
-//! at zero power, or pen up), then the machine's preamble without the lines already written,
+//! ASCII without `;` or `%` inside, then millimetres (`G21`) and absolute (`G90`) once, the
+//! dialect's arming line (laser at zero power, or pen up), then the machine's preamble without the lines already written,
 //! then one comment per group of toolpaths of one operation (`; cut`, or `(cut)` on LinuxCNC)
 //! with the air-assist word when it changes (`M7`/`M8`/`M9`, see
 //! [`crate::machine::MachineControl`]) and, on a plotter, the pen-change lines (`M0`) between
