@@ -12,15 +12,12 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use foldcam::check::{CheckOptions, check};
 use foldcam::design::classic::{MiuraOri, SquareTwist, Waterbomb, Yoshimura};
-use foldcam::fab::PlanOverrides;
 use foldcam::formats::{self, Format, write_atomic};
-use foldcam::job::{Job, JobFormat};
-use foldcam::machine::{load_machine, load_material};
 use foldcam::pattern::{Assignment, CreasePattern, PlanarizeOptions, Units, planarize};
 use foldcam::render::{PreviewOptions, preview_png};
-use foldcam::sim;
 
 use super::Outcome;
+use super::demo_jobs::{DemoIndex, WrittenJob, write_job};
 
 /// Sample files compiled into the binary, so the demo runs from any folder.
 const SAMPLES: &[(&str, &str)] = &[
@@ -125,12 +122,24 @@ pub fn run(args: Args) -> Result<Outcome> {
     if !failures.is_empty() {
         bail!("round trip lost data for: {}", failures.join(", "));
     }
-    machine_jobs(&args.out, &cases)?;
-    popup_card(&args.out, args.width)?;
-    super::demo_tessellation::dome(&args.out, args.width)?;
-    super::demo_tessellation::mask(&args.out, args.width)?;
-    super::demo_papercraft::vase(&args.out, args.width)?;
-    super::demo_fold3d::miura(&args.out, args.width)?;
+    let mut index = DemoIndex::default();
+    for (name, _) in &cases {
+        index.picture(
+            format!("{name}.png"),
+            format!("{name}: crease pattern, faults ringed"),
+        );
+    }
+    machine_jobs(&args.out, &mut index, &cases)?;
+    popup_card(&args.out, &mut index, args.width)?;
+    super::demo_tessellation::dome(&args.out, &mut index, args.width)?;
+    super::demo_tessellation::mask(&args.out, &mut index, args.width)?;
+    super::demo_papercraft::vase(&args.out, &mut index, args.width)?;
+    super::demo_fold3d::miura(&args.out, &mut index, args.width)?;
+    index.write(&args.out)?;
+    outln!(
+        "{}: every job with its machine, material, time and toolpath, and every picture",
+        args.out.join("index.html").display()
+    );
     Ok(Outcome::Done)
 }
 
@@ -193,44 +202,17 @@ fn compare(a: &CreasePattern, b: &CreasePattern, cp_vocabulary: bool) -> String 
     }
 }
 
-/// A pattern's first machine job on a shipped machine and material: planned (adapted to the
-/// machine), posted as G-code and run on the simulated machine.
-pub(super) struct CheckedJob {
-    /// The G-code.
-    pub gcode: String,
-    /// What the simulated machine found.
-    pub run: sim::SimReport,
-    /// No violations, and every crease and cut covered as planned.
-    pub clean: bool,
-    /// Edges not covered as planned.
-    pub edges_off: usize,
-}
-
-/// Plans `cp` for `machine` and `material` (shipped names) and checks its first job.
-pub(super) fn checked_job(cp: &CreasePattern, machine: &str, material: &str) -> Result<CheckedJob> {
-    let machine = load_machine(machine)?;
-    let material = load_material(material)?;
-    let job = Job::plan(cp, &machine, &material, &PlanOverrides::default())?
-        .post(JobFormat::Gcode)?
-        .verify()?;
-    let clean = job.is_clean();
-    let gcode = String::from_utf8(job.outputs[0].clone())?;
-    let first = job.readback.into_iter().next().context("no job planned")?;
-    Ok(CheckedJob {
-        clean,
-        edges_off: first.coverage.failed_edges().count(),
-        gcode,
-        run: first.sim,
-    })
-}
-
-/// Machine jobs for the first two classics: planned, written, read back by the simulated
-/// machine and checked against the pattern; the toolpath drawn.
-fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
+/// Machine jobs for three classics: planned, written, read back by the simulated machine and
+/// checked against the pattern; the toolpath drawn.
+fn machine_jobs(
+    dir: &Path,
+    index: &mut DemoIndex,
+    cases: &[(String, CreasePattern)],
+) -> Result<()> {
     let jobs = [
-        ("miura-ori", "grbl-diode", "card-300gsm", "gcode"),
-        ("square-twist", "linuxcnc-fiber", "stainless-0.5", "ngc"),
-        ("yoshimura", "grbl-pen-plotter", "paper-160gsm", "gcode"),
+        ("miura-ori", "grbl-diode", "card-300gsm"),
+        ("square-twist", "linuxcnc-fiber", "stainless-0.5"),
+        ("yoshimura", "grbl-pen-plotter", "paper-160gsm"),
     ];
     outln!(
         "\n{:<14} {:<17} {:<15} {:>9} {:>8} {:>9}  sim / coverage",
@@ -241,22 +223,16 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
         "pierces",
         "time"
     );
-    for (name, machine_name, material_name, ext) in jobs {
+    for (name, machine_name, material_name) in jobs {
         let Some((_, cp)) = cases.iter().find(|(n, _)| n == name) else {
             continue;
         };
-        let CheckedJob {
-            gcode,
+        let WrittenJob {
             run,
             clean,
             edges_off,
-        } = checked_job(cp, machine_name, material_name)?;
-        let machine = load_machine(machine_name)?;
-        let path = dir.join(format!("{name}.{machine_name}.{ext}"));
-        write_atomic(&path, gcode.as_bytes()).with_context(|| path.display().to_string())?;
-        let png = dir.join(format!("{name}.{machine_name}.toolpath.png"));
-        let image = sim::render_png(&run, &machine, 900).map_err(|e| anyhow::anyhow!("{e}"))?;
-        write_atomic(&png, &image).with_context(|| png.display().to_string())?;
+            ..
+        } = write_job(dir, index, name, cp, machine_name, material_name)?;
         let verdict = if clean {
             "clean / all edges as planned".to_string()
         } else {
@@ -277,7 +253,7 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
         }
     }
     outln!(
-        "machine jobs and toolpath previews are in {}/",
+        "machine jobs and toolpath pictures are in {}/",
         dir.display()
     );
     Ok(())
@@ -286,13 +262,13 @@ fn machine_jobs(dir: &Path, cases: &[(String, CreasePattern)]) -> Result<()> {
 /// The bundled voxel house and building mesh (Mitani, Suzuki & Uno 2003): made into cards (the mesh
 /// through the paper's mesh conversion), checked, unfolded into crease patterns, drawn standing and opening, and cut from card
 /// on the diode laser through the simulated machine.
-fn popup_card(dir: &Path, width: u32) -> Result<()> {
+fn popup_card(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
     use foldcam::design::popup::voxel::{
         ConvertOptions, MeshPlacement, card_from_depths, depth_field_from_mesh, parse_voxel_card,
     };
     let text = include_str!("../../examples/popup/house.voxel.txt");
     let house = parse_voxel_card(text).map_err(|e| anyhow::anyhow!("house.voxel.txt: {e}"))?;
-    show_card(dir, width, "popup-house", &house)?;
+    show_card(dir, index, width, "popup-house", &house)?;
     let obj = include_bytes!("../../examples/popup/building.obj");
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow::anyhow!("building.obj: {e}"))?;
     let (field, _) = depth_field_from_mesh(&mesh, &MeshPlacement::default())
@@ -307,11 +283,12 @@ fn popup_card(dir: &Path, width: u32) -> Result<()> {
         report.window_rows,
         report.tops_omitted
     );
-    show_card(dir, width, "popup-building", &building)
+    show_card(dir, index, width, "popup-building", &building)
 }
 
 fn show_card(
     dir: &Path,
+    index: &mut DemoIndex,
     width: u32,
     name: &str,
     card: &foldcam::design::popup::voxel::VoxelCard,
@@ -332,20 +309,18 @@ fn show_card(
         .collect();
     let gif = render_gif(&frames, &view, 100)?;
     write_atomic(&dir.join(format!("{name}.gif")), &gif).context("gif")?;
-    let job = checked_job(&cp, "grbl-diode", "card-300gsm")?;
-    write_atomic(
-        &dir.join(format!("{name}.grbl-diode.gcode")),
-        job.gcode.as_bytes(),
-    )
-    .context("gcode")?;
+    index.picture(format!("{name}.png"), format!("{name}: the card standing"));
+    index.picture(format!("{name}.gif"), format!("{name}: the card opening"));
+    let job = write_job(dir, index, name, &cp, "grbl-diode", "card-300gsm")?;
     let clean = job.clean;
     outln!(
         "\n{name} (voxel pop-up, Mitani, Suzuki & Uno 2003): {} × {} × {} voxels, pops up; {} creases and cuts; \
-         grbl-diode/card-300gsm job {}; {name}.png and .gif show it standing and opening",
+         {} {}; {name}.png and .gif show it standing and opening",
         card.nx(),
         card.ny(),
         card.nz(),
         cp.edges.len(),
+        job.file,
         if clean { "clean" } else { "NOT clean" }
     );
     if !clean {

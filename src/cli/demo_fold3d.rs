@@ -17,7 +17,7 @@ const PERCENT: f64 = 90.0;
 const STRAIN_LIMIT: f64 = 0.01;
 
 /// Folds `miura-ori.svg` from `dir` and writes `fold3d-miura.{fold,png,gif}` there.
-pub fn miura(dir: &Path, width: u32) -> Result<()> {
+pub fn miura(dir: &Path, index: &mut super::demo_jobs::DemoIndex, width: u32) -> Result<()> {
     let svg = dir.join("miura-ori.svg");
     let mut imported = formats::load(&svg)?;
     let cp = &mut imported.pattern;
@@ -46,9 +46,16 @@ pub fn miura(dir: &Path, width: u32) -> Result<()> {
     states.extend(f.frames.iter().map(|x| f.state_at(x)));
     let gif = render_gif(&states, &view, 80)?;
     formats::save(&dir.join(format!("{name}.fold")), cp, Some(&f.folded))?;
-    for (ext, bytes) in [("png", png), ("gif", gif)] {
+    for (ext, bytes, shows) in [
+        ("png", png, format!("folded to {PERCENT}%")),
+        ("gif", gif, "folding".into()),
+    ] {
         let path = dir.join(format!("{name}.{ext}"));
         write_atomic(&path, &bytes).with_context(|| path.display().to_string())?;
+        index.picture(
+            format!("{name}.{ext}"),
+            format!("{name}: the Miura-ori {shows} in 3D"),
+        );
     }
     let r = &f.report;
     outln!(

@@ -10,9 +10,11 @@ use foldcam::design::papercraft::parse_design;
 use foldcam::formats::{self, write_atomic};
 use foldcam::render::{PreviewOptions, preview_png};
 
+use super::demo_jobs::{DemoIndex, write_job};
+
 /// Builds the bundled vase, writes `papercraft-vase-N.fold`, a preview and the diode-laser job
 /// of every sheet into `dir`.
-pub fn vase(dir: &Path, width: u32) -> Result<()> {
+pub fn vase(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
     let design = parse_design(include_str!("../../examples/papercraft/vase.craft.toml"))
         .map_err(|e| anyhow!("vase.craft.toml: {e}"))?;
     let obj = include_bytes!("../../examples/papercraft/vase.obj");
@@ -33,9 +35,11 @@ pub fn vase(dir: &Path, width: u32) -> Result<()> {
         };
         let png = preview_png(cp, &options, &[]).map_err(|e| anyhow!("{name}: {e}"))?;
         write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;
-        let job = super::demo::checked_job(cp, machine, material)?;
-        let path = dir.join(format!("{name}.{machine}.gcode"));
-        write_atomic(&path, job.gcode.as_bytes()).with_context(|| path.display().to_string())?;
+        index.picture(
+            format!("{name}.png"),
+            format!("{name}: sheet {} of the vase's parts", s + 1),
+        );
+        let job = write_job(dir, index, &name, cp, machine, material)?;
         clean &= job.clean;
     }
     let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();

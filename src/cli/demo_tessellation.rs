@@ -14,6 +14,8 @@ use foldcam::machine::load_material;
 use foldcam::mesh::PolyMesh;
 use foldcam::render::{View3d, render_folded_png};
 
+use super::demo_jobs::{DemoIndex, write_job};
+
 /// The face shrink the default ladder reaches on the mask (0.8 and 0.7 leave limits unmet):
 /// starting there saves the demo two failing solves (about 5 s of a release build).
 const MASK_FIRST_SHRINK: f64 = 0.6;
@@ -29,7 +31,7 @@ fn stainless() -> Result<TessellateOptions> {
 
 /// Tessellates the bundled dome, writes `tessellation-dome.fold` (pattern and folded form),
 /// its preview and the fiber-laser job into `dir`.
-pub fn dome(dir: &Path, width: u32) -> Result<()> {
+pub fn dome(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
     let obj = include_bytes!("../../examples/tessellation/dome.obj");
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("dome.obj: {e}"))?;
     let mut opts = stainless()?;
@@ -40,7 +42,15 @@ pub fn dome(dir: &Path, width: u32) -> Result<()> {
         elevation_deg: 35.0,
         ..View3d::with_width(width.min(800))
     };
-    cut(dir, "tessellation-dome", &mesh, &t, &view, "truncated star")
+    cut(
+        dir,
+        index,
+        "tessellation-dome",
+        &mesh,
+        &t,
+        &view,
+        "truncated star",
+    )
 }
 
 /// Tessellates the bundled face mask as `foldcam tessellate` does by default (star tucks, the
@@ -48,7 +58,7 @@ pub fn dome(dir: &Path, width: u32) -> Result<()> {
 /// the ladder at [`MASK_FIRST_SHRINK`], writes
 /// `tessellation-mask.fold`, its preview (seen from in front, slightly below) and the
 /// fiber-laser job into `dir`.
-pub fn mask(dir: &Path, width: u32) -> Result<()> {
+pub fn mask(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
     let obj = include_bytes!("../../examples/tessellation/mask.obj");
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("mask.obj: {e}"))?;
     let mut schedule = default_schedule();
@@ -60,7 +70,7 @@ pub fn mask(dir: &Path, width: u32) -> Result<()> {
         elevation_deg: 60.0,
         ..View3d::with_width(width.min(800))
     };
-    cut(dir, "tessellation-mask", &mesh, &t, &view, "star")
+    cut(dir, index, "tessellation-mask", &mesh, &t, &view, "star")
 }
 
 /// Writes `NAME.fold`, `NAME.png` (the folded form seen through `view`) and the checked
@@ -69,6 +79,7 @@ pub fn mask(dir: &Path, width: u32) -> Result<()> {
 /// problem.
 fn cut(
     dir: &Path,
+    index: &mut DemoIndex,
     name: &str,
     mesh: &PolyMesh,
     t: &Tessellation,
@@ -86,9 +97,15 @@ fn cut(
     )?;
     let png = render_folded_png(&u.folded, view)?;
     write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;
-    let job = super::demo::checked_job(&u.pattern, "linuxcnc-fiber", "stainless-0.5")?;
-    let path = dir.join(format!("{name}.linuxcnc-fiber.ngc"));
-    write_atomic(&path, job.gcode.as_bytes()).with_context(|| path.display().to_string())?;
+    index.picture(format!("{name}.png"), format!("{name}: the folded form"));
+    let job = write_job(
+        dir,
+        index,
+        name,
+        &u.pattern,
+        "linuxcnc-fiber",
+        "stainless-0.5",
+    )?;
     let clean = job.clean;
     let r = &t.report.last;
     let distance = corner_distance(mesh, &t.mesh).map_or(String::new(), |d| {

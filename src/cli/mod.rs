@@ -12,6 +12,7 @@ mod convert;
 mod cut;
 mod demo;
 mod demo_fold3d;
+mod demo_jobs;
 mod demo_papercraft;
 mod demo_tessellation;
 mod design_output;

@@ -144,6 +144,22 @@ pub struct FabPlan {
     /// Settings of their own for some edges' toolpaths (the cells of a calibration grid,
     /// [`testgrid`]); empty for an ordinary plan. Writers give each entry a layer of its own.
     pub overrides: Vec<SettingsOverride>,
+    /// Where the plan came from, for the files' headers.
+    pub about: PlanAbout,
+}
+
+/// What a plan's files say about it in their headers: the source and the material.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct PlanAbout {
+    /// The pattern's name: its title (a generator's or design's, or the file's own title);
+    /// `None` when the pattern has none.
+    pub source: Option<String>,
+    /// The material profile's name.
+    pub material: String,
+    /// Perforation dash length the plan was made with, mm.
+    pub dash_mm: f64,
+    /// Perforation bridge (the gap between dashes), mm.
+    pub bridge_mm: f64,
 }
 
 /// Speed, power and passes of their own for the toolpaths of some edges, instead of their

@@ -20,7 +20,7 @@ use glam::{DAffine2, DVec2};
 use super::placement::{bounds_of, place_with, transform_paths, union};
 use super::sides::{mirror, registration_marks, split};
 use super::stats::{perforated_crease_mm, plan_stats};
-use super::{FabError, FabPlan, Job, PlanOptions, Side, Toolpath, geometry, order};
+use super::{FabError, FabPlan, Job, PlanAbout, PlanOptions, Side, Toolpath, geometry, order};
 use crate::check::{CheckOptions, FindingKind, check};
 use crate::machine::{Bed, MachineProfile, Material, load_material, shipped_materials};
 use crate::pattern::CreasePattern;
@@ -113,6 +113,12 @@ pub fn plan_toolpaths(
         warnings,
         mapping: opts.mapping,
         overrides: Vec::new(),
+        about: PlanAbout {
+            source: cp.meta.title.clone(),
+            material: material.name.clone(),
+            dash_mm: opts.perforation.cut_mm,
+            bridge_mm: opts.perforation.bridge_mm,
+        },
     };
     let crease_mm = perforated_crease_mm(cp, &opts.mapping);
     plan.stats = plan_stats(&plan, naive, crease_mm, machine);

@@ -1,8 +1,10 @@
-//! Machine-job file formats, chosen by extension, and the file names of multi-job plans.
+//! Machine-job file formats, chosen by extension, and the file names of jobs: multi-job plans
+//! (`NAME.JOB.EXT`) and jobs named by what they are (`PATTERN.MACHINE.MATERIAL.EXT`).
 
 use std::path::{Path, PathBuf};
 
 use crate::fab::FabPlan;
+use crate::machine::{Dialect, MachineProfile, Material};
 use crate::post::{DxfVersion, LbrnPerforation};
 
 /// A machine-job file format.
@@ -76,6 +78,35 @@ pub fn job_paths(output: &Path, plan: &FabPlan) -> Vec<PathBuf> {
         .iter()
         .map(|j| output.with_file_name(format!("{stem}.{}.{ext}", j.name)))
         .collect()
+}
+
+/// The file name of a job of `pattern` on `machine` in `material`:
+/// `PATTERN.MACHINE.MATERIAL.EXT` (the profiles' names), with the job's name before the
+/// extension when the plan has several (`card.grbl-diode.card-300gsm.back.gcode`); G-code for
+/// LinuxCNC ends in `.ngc`, LinuxCNC's own. What the demo writes and the studio offers for
+/// download.
+///
+/// ```
+/// use foldcam::job::{JobFormat, job_file_name};
+/// use foldcam::machine::{load_machine, load_material};
+/// let (diode, card) = (load_machine("grbl-diode")?, load_material("card-300gsm")?);
+/// let name = job_file_name("miura-ori", &diode, &card, None, JobFormat::Gcode);
+/// assert_eq!(name, "miura-ori.grbl-diode.card-300gsm.gcode");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn job_file_name(
+    pattern: &str,
+    machine: &MachineProfile,
+    material: &Material,
+    job: Option<&str>,
+    format: JobFormat,
+) -> String {
+    let job = job.map_or(String::new(), |j| format!(".{j}"));
+    let ext = match (format, machine.dialect) {
+        (JobFormat::Gcode, Dialect::LinuxCnc) => "ngc",
+        _ => format.extension(),
+    };
+    format!("{pattern}.{}.{}{job}.{ext}", machine.name, material.name)
 }
 
 #[cfg(test)]

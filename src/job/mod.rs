@@ -25,10 +25,12 @@
 //! ```
 
 mod format;
+mod index;
 
 use std::path::{Path, PathBuf};
 
-pub use format::{JOB_EXTENSIONS, JobFormat, job_paths};
+pub use format::{JOB_EXTENSIONS, JobFormat, job_file_name, job_paths};
+pub use index::{IndexJob, IndexPicture, index_html};
 
 use crate::fab::{FabError, FabPlan, PlanOptions, PlanOverrides};
 use crate::formats::OutputSet;

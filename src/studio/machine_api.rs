@@ -18,7 +18,7 @@ use super::api::{
 };
 use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
-use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file};
+use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file, job_file_name};
 use crate::machine::{ProfileKind, load_machine, profile_catalogue};
 
 pub(super) async fn plan(
@@ -110,11 +110,8 @@ pub(super) async fn cut(
         let stem = std::path::Path::new(&doc.name)
             .file_stem()
             .map_or_else(|| "job".to_string(), |s| s.to_string_lossy().into_owned());
-        let file = if p.plan.jobs.len() > 1 {
-            format!("{stem}.{}.{}", job.name, kind.extension())
-        } else {
-            format!("{stem}.{}", kind.extension())
-        };
+        let several = (p.plan.jobs.len() > 1).then_some(job.name.as_str());
+        let file = job_file_name(&stem, &p.machine, &choice.material, several, kind);
         Ok(download("application/octet-stream", &file, bytes))
     })
     .await

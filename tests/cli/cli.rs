@@ -256,12 +256,12 @@ fn demo_runs_end_to_end() {
     // machine job (the demo fails when the simulated machine finds a problem in one).
     for name in [
         "tessellation-dome.fold",
-        "tessellation-dome.linuxcnc-fiber.ngc",
+        "tessellation-dome.linuxcnc-fiber.stainless-0.5.ngc",
         "tessellation-mask.fold",
-        "tessellation-mask.linuxcnc-fiber.ngc",
+        "tessellation-mask.linuxcnc-fiber.stainless-0.5.ngc",
         "papercraft-vase-1.fold",
         "papercraft-vase-1.png",
-        "papercraft-vase-1.grbl-diode.gcode",
+        "papercraft-vase-1.grbl-diode.paper-160gsm.gcode",
         "fold3d-miura.fold",
         "fold3d-miura.png",
         "fold3d-miura.gif",
@@ -287,15 +287,18 @@ fn demo_runs_end_to_end() {
     // model lets bars strain a little).
     crate::isometry::assert_isometric(&miura.pattern, &folded, 0.01, "folded Miura-ori");
     // Every machine job the demo wrote runs clean on the simulated machine it names
-    // (`STEM.MACHINE.EXT`), and burns or draws something.
+    // (`PATTERN.MACHINE.MATERIAL.EXT`), names a shipped material, burns or draws something
+    // and has its toolpath picture.
     let mut jobs = 0;
     for name in &files {
-        let parts: Vec<&str> = name.split('.').collect();
-        if parts.len() < 3 || !matches!(parts[parts.len() - 1], "gcode" | "ngc" | "nc") {
+        let Some((_, machine, material, stem)) = job_name_parts(name) else {
             continue;
-        }
-        let machine = foldcam::machine::load_machine(parts[parts.len() - 2])
-            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        };
+        foldcam::machine::load_material(material).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let picture = format!("{stem}.toolpath.png");
+        assert!(files.contains(&picture), "{picture} missing from {files:?}");
+        let machine =
+            foldcam::machine::load_machine(machine).unwrap_or_else(|e| panic!("{name}: {e}"));
         let program = std::fs::read_to_string(dir.path().join("d").join(name)).expect("job");
         let run = foldcam::sim::run(&program, &machine).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(run.is_clean(), "{name}: {:?}", run.violations.first());
@@ -306,7 +309,98 @@ fn demo_runs_end_to_end() {
         );
         jobs += 1;
     }
-    assert!(jobs >= 4, "{jobs} jobs in {files:?}");
+    assert!(jobs >= 8, "{jobs} jobs in {files:?}");
+    demo_index_lists_every_job_and_picture(&dir.path().join("d"), &files);
+}
+
+/// A G-code job's name `PATTERN.MACHINE.MATERIAL.EXT` split at the shipped machine it names
+/// (material names hold dots, `stainless-0.5`), with the name without its extension.
+fn job_name_parts(name: &str) -> Option<(&str, &str, &str, &str)> {
+    let (stem, ext) = name.rsplit_once('.')?;
+    if !matches!(ext, "gcode" | "ngc" | "nc") {
+        return None;
+    }
+    foldcam::machine::shipped_machines()
+        .into_iter()
+        .find_map(|m| {
+            let (pattern, material) = stem.split_once(&format!(".{m}."))?;
+            Some((pattern, m, material, stem))
+        })
+}
+
+/// The demo's `index.html` (parsed as the XML it is written as) lists every job file of the
+/// folder in its table, and every picture or file it links exists there.
+fn demo_index_lists_every_job_and_picture(dir: &Path, files: &[String]) {
+    let html = std::fs::read_to_string(dir.join("index.html")).expect("the demo writes index.html");
+    let doc = roxmltree::Document::parse_with_options(
+        &html,
+        roxmltree::ParsingOptions {
+            allow_dtd: true,
+            ..Default::default()
+        },
+    )
+    .unwrap_or_else(|e| panic!("index.html: {e}"));
+    let linked = |tag: &str, attr: &str| -> Vec<String> {
+        doc.descendants()
+            .filter(|n| n.has_tag_name(tag))
+            .filter_map(|n| n.attribute(attr).map(str::to_string))
+            .collect()
+    };
+    let (links, images) = (linked("a", "href"), linked("img", "src"));
+    for target in links.iter().chain(&images) {
+        assert!(
+            !target.contains('/') && !target.contains(':'),
+            "{target}: not a relative link in the folder"
+        );
+        assert!(
+            files.contains(target),
+            "index.html links {target}, not in {files:?}"
+        );
+    }
+    let rows: Vec<_> = doc.descendants().filter(|n| n.has_tag_name("tr")).collect();
+    for name in files {
+        let Some((pattern, machine, material, _)) = job_name_parts(name) else {
+            continue;
+        };
+        let row = rows
+            .iter()
+            .find(|r| {
+                r.descendants()
+                    .any(|a| a.attribute("href") == Some(name.as_str()))
+            })
+            .unwrap_or_else(|| panic!("index.html does not list {name}"));
+        let cells: Vec<String> = row
+            .children()
+            .filter(|c| c.has_tag_name("td"))
+            .map(|c| {
+                c.descendants()
+                    .filter(|t| t.is_text())
+                    .filter_map(|t| t.text())
+                    .collect()
+            })
+            .collect();
+        assert_eq!(&cells[..3], [pattern, machine, material], "{name}");
+        assert!(
+            cells[3].ends_with(" s"),
+            "{name}: planned time {:?}",
+            cells[3]
+        );
+        assert!(
+            cells[4].ends_with(" s"),
+            "{name}: simulated time {:?}",
+            cells[4]
+        );
+        assert!(
+            row.descendants().any(|i| i.has_tag_name("img")),
+            "{name}: no toolpath picture"
+        );
+    }
+    for preview in ["miura-ori.png", "popup-house.gif", "fold3d-miura.png"] {
+        assert!(
+            images.iter().any(|i| i == preview),
+            "index.html shows no {preview}"
+        );
+    }
 }
 
 /// Malformed inputs: exit 2, the message names the file, no panic, and no output file (nor

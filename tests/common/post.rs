@@ -85,6 +85,7 @@ pub fn plan(job: Job) -> FabPlan {
     FabPlan {
         jobs: vec![job],
         settings: settings(),
+        about: Default::default(),
         stats: PlanStats::default(),
         warnings: Vec::new(),
         // Nothing beyond the job's own toolpaths is expected.

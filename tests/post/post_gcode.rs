@@ -543,3 +543,56 @@ fn linuxcnc_header_names_the_output_the_program_switches() {
         );
     }
 }
+
+/// Every dialect's header names the source, the machine and the material, and the settings of
+/// each operation, in comments of the dialect's own syntax (no `;` or `%` inside LinuxCNC's
+/// parentheses), and the simulated machine still reads the program clean.
+#[test]
+fn gcode_headers_name_source_machine_material_and_settings() {
+    use foldcam::machine::{load_machine, load_material};
+    let mut cp = foldcam::design::classic::MiuraOri::default()
+        .build()
+        .unwrap();
+    cp.meta.title = Some("crane; 22.5° 100% ×".into());
+    for (machine, material, comment) in [
+        ("grbl-diode", "card-300gsm", ";"),
+        ("marlin-laser", "card-300gsm", ";"),
+        ("linuxcnc-fiber", "stainless-0.5", "("),
+        ("grbl-pen-plotter", "paper-160gsm", ";"),
+    ] {
+        let m = load_machine(machine).unwrap();
+        let x = load_material(material).unwrap();
+        let o = foldcam::fab::PlanOptions::for_machine(&m, &x, &Default::default()).unwrap();
+        let p = foldcam::fab::plan(&cp, &m, &x, &o).unwrap();
+        let text = gcode(&p, &p.jobs[0], &m).unwrap();
+        let header: Vec<&str> = text
+            .lines()
+            .take_while(|l| l.starts_with(comment))
+            .collect();
+        let all = header.join("\n");
+        assert!(all.contains(machine), "{machine}: {all}");
+        assert!(
+            all.contains(&format!("material: {material}")),
+            "{machine}: {all}"
+        );
+        assert!(
+            all.contains("source: crane, 22.5d 100? x"),
+            "{machine}: {all}"
+        );
+        assert!(
+            all.contains("speed ") && all.contains("pass"),
+            "{machine}: {all}"
+        );
+        if !m.pen_tool() {
+            assert!(all.contains("power "), "{machine}: {all}");
+        }
+        if comment == "(" {
+            for line in &header {
+                assert!(line.ends_with(')'), "{line}");
+                assert!(!line.contains(';') && !line.contains('%'), "{line}");
+            }
+        }
+        let run = foldcam::sim::run(&text, &m).unwrap();
+        assert!(run.is_clean(), "{machine}: {:?}", run.violations.first());
+    }
+}

@@ -1,9 +1,12 @@
 //! G-code writers: GRBL, Marlin, LinuxCNC and pen plotters.
 //!
-//! Every program opens with a title comment and a comment saying what the firmware must be set
-//! to (GRBL laser mode `$32=1`, a plotter's `$32=0`, Marlin's build options, LinuxCNC's
-//! output), then millimetres (`G21`) and absolute (`G90`) once, the dialect's arming line (laser
-//! at zero power, or pen up), then the machine's preamble without the lines already written,
+//! Every program opens with a title comment (job and machine), a comment saying what the
+//! firmware must be set to (GRBL laser mode `$32=1`, a plotter's `$32=0`, Marlin's build
+//! options, LinuxCNC's output), one naming the source (the pattern's title, as generators and
+//! most files give one) and the material, and one per operation with its settings (power as a
+//! fraction and as the `S` written, speed, passes; dash and gap for a perforation), all in
+//! ASCII without `;` or `%` inside, then millimetres (`G21`) and absolute (`G90`) once, the
+//! dialect's arming line (laser at zero power, or pen up), then the machine's preamble without the lines already written,
 //! then one comment per group of toolpaths of one operation (`; cut`, or `(cut)` on LinuxCNC)
 //! with the air-assist word when it changes (`M7`/`M8`/`M9`, see
 //! [`crate::machine::MachineControl`]) and, on a plotter, the pen-change lines (`M0`) between
@@ -159,7 +162,7 @@ pub fn frame(
             expected: "a fraction from 0 to 1",
         });
     }
-    program::write_frame(job, &outline, lit, machine, flavour.as_ref(), grid)
+    program::write_frame(plan, job, &outline, lit, machine, flavour.as_ref(), grid)
 }
 
 /// The writer for the machine's dialect and kind.

@@ -104,7 +104,7 @@ pub fn write(
     grid: Grid,
 ) -> Result<String, PostError> {
     let mut p = Program::new(flavour, grid, machine);
-    p.header(job, machine);
+    p.header(plan, job, machine, true);
     let mut group = None;
     for path in &job.paths {
         let burn = burn(plan.settings_of(path, machine), machine);
@@ -123,6 +123,7 @@ pub fn write(
 /// its first point, then its points burned at `lit` (speed and power; one pass) or, when
 /// `lit` is `None`, visited with travel moves (tool off), then the trailer.
 pub fn write_frame(
+    plan: &FabPlan,
     job: &Job,
     outline: &[DVec2],
     lit: Option<OperationSettings>,
@@ -131,7 +132,7 @@ pub fn write_frame(
     grid: Grid,
 ) -> Result<String, PostError> {
     let mut p = Program::new(flavour, grid, machine);
-    p.header(job, machine);
+    p.header(plan, job, machine, false);
     let Some(points) = p.snap(outline) else {
         return Err(PostError::EmptyJob {
             job: job.name.clone(),
@@ -151,6 +152,76 @@ pub fn write_frame(
     Ok(p.lines.join("\n") + "\n")
 }
 
+/// The header's lines about the plan: its source and material, then one line per operation of
+/// `job` with the settings it runs with (power when the dialect burns with it, speed, passes,
+/// and dash and gap for a perforation), and how many toolpaths run with settings of their own.
+fn about(plan: &FabPlan, job: &Job, machine: &MachineProfile, power: bool) -> Vec<String> {
+    let source = plan
+        .about
+        .source
+        .as_deref()
+        .unwrap_or("a pattern without a name");
+    let material = match plan.about.material.as_str() {
+        "" => "not named",
+        m => m,
+    };
+    let mut lines = vec![plain(&format!("source: {source}, material: {material}"))];
+    let mut seen: Vec<Operation> = Vec::new();
+    let mut own = 0;
+    for path in &job.paths {
+        if plan.override_of(path).is_some() {
+            own += 1;
+            continue;
+        }
+        if seen.contains(&path.op) {
+            continue;
+        }
+        seen.push(path.op);
+        let s = plan.settings_of(path, machine);
+        let mut line = format!("{}:", path.op.name());
+        if power {
+            let b = burn(s, machine);
+            line += &format!(" power {} (S{}),", fixed(s.power, 3), b.power);
+        }
+        line += &format!(
+            " speed {} mm/min, {} pass{}",
+            fixed(s.speed_mm_min.min(machine.max_feed_mm_min), WORD_DECIMALS),
+            s.passes,
+            if s.passes == 1 { "" } else { "es" }
+        );
+        if path.op == Operation::Perforate {
+            line += &format!(
+                ", dash {} mm, gap {} mm",
+                fixed(plan.about.dash_mm, WORD_DECIMALS),
+                fixed(plan.about.bridge_mm, WORD_DECIMALS)
+            );
+        }
+        lines.push(line);
+    }
+    if own > 0 {
+        lines.push(format!(
+            "{own} toolpath(s) with settings of their own, see their layers"
+        ));
+    }
+    lines
+}
+
+/// `text` as every dialect's comment reader takes it: ASCII (`×` becomes `x`, `°` `d`, any other
+/// character beyond ASCII `?`), without `;` (a comment of its own on GRBL and Marlin, and
+/// where LinuxCNC would end a parenthesised one) or `%` (LinuxCNC's program delimiter).
+fn plain(text: &str) -> String {
+    text.chars()
+        .map(|c| match c {
+            '×' => 'x',
+            '°' => 'd',
+            ';' => ',',
+            '%' => '?',
+            c if c.is_ascii() => c,
+            _ => '?',
+        })
+        .collect()
+}
+
 /// Feed and power of settings `s` on `machine`.
 fn burn(s: OperationSettings, machine: &MachineProfile) -> Burn {
     let feed = s.speed_mm_min.min(machine.max_feed_mm_min);
@@ -163,13 +234,22 @@ fn burn(s: OperationSettings, machine: &MachineProfile) -> Burn {
 }
 
 impl Program<'_> {
-    /// Title comment, what the firmware must be set to, units, absolute mode, arming (laser
-    /// at zero or pen up), then the profile's preamble without the lines already written.
-    fn header(&mut self, job: &Job, machine: &MachineProfile) {
+    /// Title comment, what the firmware must be set to, the source and material, the settings
+    /// of each operation, units, absolute mode, arming (laser at zero or pen up), then
+    /// the profile's preamble without the lines already written. A framing job (`settings`
+    /// false) names the source and material only.
+    fn header(&mut self, plan: &FabPlan, job: &Job, machine: &MachineProfile, settings: bool) {
         let title = format!("foldcam: job {} for machine {}", job.name, machine.name);
         self.lines.push(self.flavour.comment(&title));
         if let Some(note) = self.flavour.expectation() {
             self.lines.push(self.flavour.comment(&note));
+        }
+        let mut about = about(plan, job, machine, self.flavour.uses_power());
+        if !settings {
+            about.truncate(1);
+        }
+        for line in about {
+            self.lines.push(self.flavour.comment(&line));
         }
         let mut written: Vec<String> = HEADER.iter().map(|s| s.to_string()).collect();
         written.extend(self.flavour.start());

@@ -78,6 +78,7 @@ fn plan(job: Job) -> FabPlan {
             mark: settings(0.1),
             plot: settings(0.0),
         },
+        about: Default::default(),
         stats: PlanStats::default(),
         warnings: Vec::new(),
         // Nothing beyond the job's own toolpaths is expected.
