@@ -40,7 +40,7 @@ const GIF_FRAMES: usize = 30;
                   Exit status: 0 settled, 1 stopped by the step or time cap before settling \
                   (the files are still written) or diverged (nothing is written), 2 bad input \
                   (nothing is written).",
-    after_help = "Examples:\n  foldcam generate miura -o miura.fold && foldcam fold3d miura.fold -o folded.fold --percent 90 --png folded.png\n  \
+    after_help = "Examples:\n  foldcam generate miura -o miura.fold && foldcam fold3d miura.fold -o folded.fold \\\n      --percent 90 --png folded.png\n  \
                   foldcam fold3d bird.cp -o bird3d.fold --percent 50 --gif bird.gif\n  \
                   foldcam fold3d tess.svg -o tess3d.fold --png tess3d.png --strain --steps 50000"
 )]

@@ -32,7 +32,7 @@ use super::progress::DesignProgress;
                   machine can mark the material (a pen, or a laser whose mark power is above \
                   0); --flat skip leaves them out.",
     after_help = "Examples:\n  foldcam papercraft examples/papercraft/vase.craft.toml -o vase.fold --svg vase.svg --png vase.png\n  \
-                  foldcam papercraft examples/papercraft/vase.craft.toml -o vase.fold --job vase.gcode -m grbl-diode -x paper-160gsm\n  \
+                  foldcam papercraft examples/papercraft/vase.craft.toml -o vase.fold --job vase.gcode \\\n      -m grbl-diode -x paper-160gsm\n  \
                   foldcam cut vase.fold --machine grbl-diode --material paper-160gsm --flat mark -o vase.gcode"
 )]
 pub struct Args {

@@ -41,7 +41,7 @@ pub enum Command {
                   opening, seen from the front (the design's left on the picture's left).\n\nExit status: 0 written, 1 the card would not pop up (the failing \
                   cells are listed and nothing is written), 2 bad input.",
     after_help = "Examples:\n  foldcam popup voxel examples/popup/house.voxel.txt -o house.fold --png house.png --gif house.gif\n  \
-                  foldcam popup voxel examples/popup/building.obj --resolution 120 --card-width 180 -o building.fold --png building.png\n  \
+                  foldcam popup voxel examples/popup/building.obj --resolution 120 --card-width 180 \\\n      -o building.fold --png building.png\n  \
                   foldcam popup voxel examples/popup/building.obj -m grbl-diode -x card-300gsm -o building.gcode\n  \
                   foldcam popup voxel relief.png --cell-mm 1 --depth 40 -o relief.svg"
 )]

@@ -23,7 +23,7 @@ use super::progress::DesignProgress;
                   status: 0 written, 1 the card would not pop up (the operation after which it \
                   became invalid and the failing faces are listed, nothing is written), 2 bad \
                   input.",
-    after_help = "Examples:\n  foldcam popup poly examples/popup/house-door.popup.toml -o house.fold --png house.png --gif house.gif\n  \
+    after_help = "Examples:\n  foldcam popup poly examples/popup/house-door.popup.toml -o house.fold \\\n      --png house.png --gif house.gif\n  \
                   foldcam popup poly examples/popup/taj-mahal.popup.toml -o taj.svg --width 800"
 )]
 pub struct PolyArgs {

@@ -63,7 +63,7 @@ fn parse_values(s: &str) -> Result<Vec<f64>, String> {
                   extension: .gcode/.nc/.ngc (read back by the simulated machine first), .dxf, \
                   .svg, .lbrn2 (one LightBurn layer per cell).",
     after_help = "Examples:\n  foldcam testgrid -m grbl-diode -x card-300gsm -o grid.gcode\n  \
-                  foldcam testgrid -m linuxcnc-fiber -x stainless-0.5 -o grid.ngc --dash 2:4:3 --bridge 0.6,0.8,1 --power 1\n  \
+                  foldcam testgrid -m linuxcnc-fiber -x stainless-0.5 -o grid.ngc \\\n      --dash 2:4:3 --bridge 0.6,0.8,1 --power 1\n  \
                   foldcam testgrid -m lightburn -x paper-160gsm -o grid.lbrn2 --speed 1500:2500:3"
 )]
 pub struct Args {

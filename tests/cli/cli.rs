@@ -1099,6 +1099,52 @@ fn help_text(command: &[&str], dir: &Path) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
+/// Every example in every command's help is a whole command line: it starts with `foldcam` (or
+/// `cargo`), or continues one that ends with ` \\`; none is wrapped mid-command.
+#[test]
+fn help_examples_are_whole_command_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let top = help_text(&[], dir.path());
+    let commands: Vec<String> = top
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        // A command's line, not its description's wrapped continuation.
+        .filter(|l| !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next().map(str::to_string))
+        .filter(|c| c != "help")
+        .collect();
+    assert!(commands.len() > 15, "{top}");
+    let mut examples = 0;
+    for command in &commands {
+        let mut texts = vec![help_text(&[command.as_str()], dir.path())];
+        if command == "popup" {
+            for sub in ["voxel", "poly"] {
+                texts.push(help_text(&["popup", sub], dir.path()));
+            }
+        }
+        for text in texts {
+            let mut continued = false;
+            for line in text
+                .lines()
+                .skip_while(|l| !l.starts_with("Example"))
+                .skip(1)
+                .take_while(|l| !l.trim().is_empty())
+            {
+                let whole = line.starts_with("  foldcam ") || line.starts_with("  cargo ");
+                assert!(
+                    whole || (continued && line.starts_with("      ")),
+                    "`{command} --help`: an example wrapped mid-command: {line:?}"
+                );
+                examples += usize::from(whole);
+                continued = line.ends_with(" \\");
+            }
+        }
+    }
+    assert!(examples > 30, "{examples} examples");
+}
+
 /// `--from` is offered by the commands that read a pattern, `--to` by those that write
 /// files, and neither by the others (they were listed under every command).
 #[test]
