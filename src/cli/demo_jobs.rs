@@ -70,7 +70,10 @@ pub(super) fn write_job(
         .verify()?;
     let clean = job.is_clean();
     let file = job_file_name(name, &machine, &material, None, JobFormat::Gcode);
-    let picture = format!("{name}.{}.{}.toolpath.png", machine.name, material.name);
+    let picture = Path::new(&file)
+        .with_extension("toolpath.png")
+        .to_string_lossy()
+        .into_owned();
     let first = job.readback.first().context("no job planned")?;
     let path = dir.join(&file);
     write_atomic(&path, &job.outputs[0]).with_context(|| path.display().to_string())?;
@@ -78,13 +81,9 @@ pub(super) fn write_job(
         sim::render_png(&first.sim, &machine, TOOLPATH_WIDTH).map_err(|e| anyhow!("{e}"))?;
     let png = dir.join(&picture);
     write_atomic(&png, &image).with_context(|| png.display().to_string())?;
-    index.jobs.push(IndexJob::of(
-        &job,
-        name,
-        &material.name,
-        &file,
-        Some(&picture),
-    ));
+    index
+        .jobs
+        .push(IndexJob::of(&job, name, &file, Some(&picture)));
     Ok(WrittenJob {
         clean,
         edges_off: first.coverage.failed_edges().count(),

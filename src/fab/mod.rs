@@ -33,7 +33,7 @@ pub use options::PlanOverrides;
 pub use order::{order, ranks, travel_mm};
 pub use placement::{Placement, bed_to_machine, bounds_of, place};
 pub use plan::plan;
-pub use plan::{design_limit_advice, design_limit_warnings, meets_design_limits, plan_toolpaths};
+pub use plan::{design_limit_warnings, plan_toolpaths};
 pub use sides::{mirror, registration_marks, split};
 
 use glam::{DAffine2, DVec2};

@@ -204,16 +204,14 @@ fn content_extent(cp: &CreasePattern, paths: &[Toolpath]) -> Result<(DVec2, DVec
 
 /// The check options of `material`'s design limits alone (no flat-foldability).
 fn limit_options(material: &Material) -> CheckOptions {
-    let mut opts = CheckOptions {
+    CheckOptions {
         flat_foldability: false,
-        ..CheckOptions::default()
-    };
-    material.limits.apply_to(&mut opts);
-    opts
+        ..material.check_options()
+    }
 }
 
 /// Whether `cp` keeps within `material`'s design limits.
-pub fn meets_design_limits(cp: &CreasePattern, material: &Material) -> bool {
+fn meets_design_limits(cp: &CreasePattern, material: &Material) -> bool {
     check(cp, &limit_options(material)).passed()
 }
 
@@ -221,7 +219,7 @@ pub fn meets_design_limits(cp: &CreasePattern, material: &Material) -> bool {
 /// when there are none): the limits only warn, so the job is written; the shipped materials
 /// whose limits the pattern meets; and how to see the creases and vertices beyond the limits
 /// (`check` lists them, `preview --check` rings them).
-pub fn design_limit_advice(
+fn design_limit_advice(
     cp: &CreasePattern,
     material: &Material,
     warnings: &[String],

@@ -30,19 +30,13 @@ pub struct IndexJob {
 }
 
 impl IndexJob {
-    /// The index entry of the first job of a planned `job` of `pattern` in `material`, written
-    /// as `file` with its toolpath drawn in `picture`; the simulated time when it was verified.
-    pub fn of(
-        job: &Job<'_>,
-        pattern: &str,
-        material: &str,
-        file: &str,
-        picture: Option<&str>,
-    ) -> Self {
+    /// The index entry of the first job of a planned `job` of `pattern`, written as `file`
+    /// with its toolpath drawn in `picture`; the simulated time when it was verified.
+    pub fn of(job: &Job<'_>, pattern: &str, file: &str, picture: Option<&str>) -> Self {
         IndexJob {
             pattern: pattern.to_string(),
             machine: job.machine.name.clone(),
-            material: material.to_string(),
+            material: job.plan.about.material.clone(),
             planned_s: job.plan.stats.time_s,
             simulated_s: job.readback.first().map(|r| r.sim.time_s),
             file: file.to_string(),

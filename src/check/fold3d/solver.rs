@@ -320,10 +320,12 @@ impl<'m> Solver<'m> {
         for (h, hinge) in model.hinges.iter().enumerate() {
             let [j, k] = hinge.edge.map(|e| x[e as usize]);
             let [i, l] = hinge.wings.map(|e| x[e as usize]);
-            let (raw, g) = fold_angle_gradient(j, k, i, l);
-            let last = self.hinge_out[h].angle;
-            let angle =
-                raw + ((last - raw) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+            // The angle followed from the last step as the step follows it.
+            let Some((sin, cos, g)) = fold_turn_gradient(j, k, i, l) else {
+                continue;
+            };
+            let last = &self.hinge_out[h];
+            let angle = last.angle + turn_from(last.turn, (sin, cos));
             let torque = -self.hinge_k[h] * (angle - self.fraction * self.hinge_full[h]);
             let corners = [hinge.edge[0], hinge.edge[1], hinge.wings[0], hinge.wings[1]];
             for (c, v) in corners.iter().enumerate() {

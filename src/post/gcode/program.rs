@@ -178,16 +178,16 @@ fn about(plan: &FabPlan, job: &Job, machine: &MachineProfile, power: bool) -> Ve
         }
         seen.push(path.op);
         let s = plan.settings_of(path, machine);
+        let b = burn(s, machine);
         let mut line = format!("{}:", path.op.name());
         if power {
-            let b = burn(s, machine);
             line += &format!(" power {} (S{}),", fixed(s.power, 3), b.power);
         }
         line += &format!(
             " speed {} mm/min, {} pass{}",
-            fixed(s.speed_mm_min.min(machine.max_feed_mm_min), WORD_DECIMALS),
-            s.passes,
-            if s.passes == 1 { "" } else { "es" }
+            b.feed,
+            b.passes,
+            if b.passes == 1 { "" } else { "es" }
         );
         if path.op == Operation::Perforate {
             line += &format!(
