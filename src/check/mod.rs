@@ -220,6 +220,12 @@ pub struct CheckReport {
     /// drawing's rounding ([`layers::check_layers`]); empty after the local checks alone.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<Finding>,
+    /// Kawasaki and Maekawa faults at the 3D-target vertices no check judged (see
+    /// [`CheckReport::unchecked_vertices`]): not failures, as a 3D target need not fold flat,
+    /// but the same faults a check of the pattern finds when a format without fold angles
+    /// (`.cp`, `.opx`) reads every crease as folding flat. Empty when a 3D frame was checked.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub unchecked_faults: Vec<Finding>,
     /// Counts and extremes of the whole pattern.
     pub summary: CheckSummary,
     /// The options the checks ran with.
@@ -290,6 +296,7 @@ pub fn check_with_frame(
         fans: &fans,
         interior: &interior,
         opts,
+        framed: folded.is_some(),
     };
     let mut vertices = (0..cp.vertices.len())
         .into_par_iter()
@@ -299,6 +306,8 @@ pub fn check_with_frame(
         .reduce(vertex::Tally::default, vertex::Tally::merge);
     let edge_tally = edges::check_edges(cp, opts);
     let mut findings = std::mem::take(&mut vertices.findings);
+    let mut unchecked_faults = std::mem::take(&mut vertices.faults_3d);
+    sort_findings(&mut unchecked_faults);
     findings.extend(edge_tally.findings);
     let develop = folded.map(|f| {
         let faces = match (&f.faces, &cp.faces) {
@@ -330,6 +339,7 @@ pub fn check_with_frame(
     CheckReport {
         findings,
         warnings: Vec::new(),
+        unchecked_faults,
         unchecked_vertices: if developed || !opts.flat_foldability {
             0
         } else {

@@ -171,6 +171,16 @@ impl CheckReport {
                 self.warnings.len() - TEXT_FINDINGS_PER_KIND
             );
         }
+        for (i, f) in (self.unchecked_faults.iter().enumerate()).take(TEXT_FINDINGS_PER_KIND) {
+            let _ = writeln!(out, "3D target {}", finding_line(i + 1, f));
+        }
+        if self.unchecked_faults.len() > TEXT_FINDINGS_PER_KIND {
+            let _ = writeln!(
+                out,
+                "  … and {} more at 3D targets",
+                self.unchecked_faults.len() - TEXT_FINDINGS_PER_KIND
+            );
+        }
         out.push_str(&self.verdict());
         out.push('\n');
         out
@@ -326,6 +336,13 @@ impl CheckReport {
         }
         let s = &self.summary;
         let interior = s.interior_vertices_checked + s.vertices_3d;
+        let faults = match self.unchecked_faults.len() {
+            0 => String::new(),
+            n => format!(
+                "; the \"3D target\" lines list {n} Kawasaki or Maekawa fault(s) there, no \
+                 failure for a 3D target, a failure if it were to fold flat"
+            ),
+        };
         let flat_anyway = match s.vertices_3d_flat {
             0 => String::new(),
             n if n == self.unchecked_vertices => "; Kawasaki and Maekawa hold there all the \
@@ -339,7 +356,7 @@ impl CheckReport {
         };
         Some(format!(
             "{} of {interior} interior vertices: they are 3D targets (a crease folds to less \
-             than 180°) and no 3D frame came to compare{flat_anyway}; a FOLD file with its \
+             than 180°) and no 3D frame came to compare{flat_anyway}{faults}; a FOLD file with its \
              folded frame is checked, --allow-unchecked accepts this",
             self.unchecked_vertices
         ))

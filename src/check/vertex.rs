@@ -22,6 +22,9 @@ pub(super) struct Context<'a> {
     pub interior: &'a [bool],
     /// The options.
     pub opts: &'a CheckOptions,
+    /// Whether a 3D frame will judge the 3D-target vertices; without one, their Kawasaki and
+    /// Maekawa faults are listed in [`Tally::faults_3d`].
+    pub framed: bool,
 }
 
 /// Accumulated results of the vertex pass.
@@ -40,6 +43,10 @@ pub(super) struct Tally {
     /// the tolerance, every crease assigned): they fold flat, so they fold at all, and their
     /// folding counts as checked; the others fail nothing, as a 3D target need not fold flat.
     pub vertices_3d_flat: usize,
+    /// Kawasaki and Maekawa faults at 3D-target vertices when no 3D frame judges them: not
+    /// failures, listed so the report names the same vertices as one of a format without fold
+    /// angles (which reads every crease as folding flat).
+    pub faults_3d: Vec<Finding>,
     /// The narrowest crease sector seen.
     pub smallest_angle: Option<VertexMeasure>,
 }
@@ -75,26 +82,21 @@ impl Tally {
         if degree == 0 {
             return;
         }
+        let tol = ctx.opts.kawasaki_tolerance_deg;
         if !vertex_folds_flat(ctx.cp, fan) {
             self.vertices_3d += 1;
-            if flat_foldability::creases_fold_flat(ctx.cp, fan, ctx.opts.kawasaki_tolerance_deg) {
+            if flat_foldability::creases_fold_flat(ctx.cp, fan, tol) {
                 self.vertices_3d_flat += 1;
+            } else if !ctx.framed {
+                let (faults, _) = flat_foldability_faults(ctx.cp, v, fan, degree, tol);
+                self.faults_3d.extend(faults);
             }
             return;
         }
         self.checked += 1;
-        let tol = ctx.opts.kawasaki_tolerance_deg;
-        if let Some(f) = flat_foldability::kawasaki(ctx.cp, v, fan, tol) {
-            self.findings.push(f);
-        }
-        if degree % 2 == 1 {
-            return;
-        }
-        match flat_foldability::maekawa(ctx.cp, v, fan) {
-            Maekawa::Pass => {}
-            Maekawa::Skipped => self.maekawa_skipped += 1,
-            Maekawa::Fail(f) => self.findings.push(*f),
-        }
+        let (faults, maekawa_skipped) = flat_foldability_faults(ctx.cp, v, fan, degree, tol);
+        self.findings.extend(faults);
+        self.maekawa_skipped += usize::from(maekawa_skipped);
     }
 
     /// Combines two tallies (order-preserving: `self` came first).
@@ -104,11 +106,37 @@ impl Tally {
         self.maekawa_skipped += other.maekawa_skipped;
         self.vertices_3d += other.vertices_3d;
         self.vertices_3d_flat += other.vertices_3d_flat;
+        self.faults_3d.extend(other.faults_3d);
         self.smallest_angle = match (self.smallest_angle, other.smallest_angle) {
             (Some(a), Some(b)) => Some(if b.degrees < a.degrees { b } else { a }),
             (a, b) => a.or(b),
         };
         self
+    }
+}
+
+/// Kawasaki's condition at `v`, then Maekawa's at an even crease `degree`: the findings, and
+/// whether Maekawa was skipped for an unassigned crease.
+fn flat_foldability_faults(
+    cp: &CreasePattern,
+    v: VertexId,
+    fan: &[Spoke],
+    degree: usize,
+    tolerance_deg: f64,
+) -> (Vec<Finding>, bool) {
+    let mut found: Vec<Finding> = flat_foldability::kawasaki(cp, v, fan, tolerance_deg)
+        .into_iter()
+        .collect();
+    if degree % 2 == 1 {
+        return (found, false);
+    }
+    match flat_foldability::maekawa(cp, v, fan) {
+        Maekawa::Pass => (found, false),
+        Maekawa::Skipped => (found, true),
+        Maekawa::Fail(f) => {
+            found.push(*f);
+            (found, false)
+        }
     }
 }
 

@@ -45,16 +45,23 @@ fn a_kawasaki_failure_names_the_tolerance_that_would_pass_it() {
     assert_eq!(last_line(&o), "FAIL: 1 findings (maekawa 1)");
 }
 
+type Listed = Vec<(String, i64, i64, i64)>;
+
 /// The findings of `foldcam check --json FILE` as (kind, x, y, value) rounded to 1e-3, sorted:
 /// comparable across formats, which number vertices and edges differently.
-fn findings(file: &str, dir: &Path) -> Vec<(String, i64, i64, i64)> {
+fn findings(file: &str, dir: &Path) -> Listed {
+    listed(file, dir, &["findings"])
+}
+
+/// The entries of the report's lists `keys` (e.g. `findings`, `unchecked_faults`), as
+/// [`findings`] gives them.
+fn listed(file: &str, dir: &Path, keys: &[&str]) -> Listed {
     let o = foldcam(&["check", file, "--json"], dir);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect(file);
     let round = |x: &serde_json::Value| (x.as_f64().unwrap() * 1e3).round() as i64;
-    let mut out: Vec<_> = v["findings"]
-        .as_array()
-        .unwrap()
-        .iter()
+    let empty = Vec::new();
+    let mut out: Vec<_> = (keys.iter())
+        .flat_map(|k| v[k].as_array().unwrap_or(&empty))
         .map(|f| {
             (
                 f["kind"].as_str().unwrap().to_string(),
@@ -113,4 +120,32 @@ fn the_crane_gives_the_same_findings_from_every_format_that_keeps_its_target() {
         assert!(!String::from_utf8_lossy(&o.stderr).contains("fold angles"));
         assert_eq!(findings(&out, d), reference, "{ext}");
     }
+}
+
+#[test]
+fn the_crane_names_the_same_faults_from_svg_and_cp() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::copy(repo("tests/data/traditionalCrane.svg"), d.join("crane.svg")).unwrap();
+    let o = foldcam(&["convert", "crane.svg", "crane.cp"], d);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // .cp reads every crease as folding flat: each fault is a failure there. The SVG keeps the
+    // 3D target: the faults at its 3D-target vertices are listed apart, not as failures.
+    let from_cp = findings("crane.cp", d);
+    let from_svg = listed("crane.svg", d, &["findings", "unchecked_faults"]);
+    assert_eq!(from_svg, from_cp);
+    let failures = findings("crane.svg", d);
+    assert!(!failures.is_empty() && failures.len() < from_cp.len());
+    // The text report says so, line by line and in the verdict.
+    let o = foldcam(&["check", "crane.svg"], d);
+    let text = String::from_utf8_lossy(&o.stdout);
+    let listed_apart = text
+        .lines()
+        .filter(|l| l.starts_with("3D target #"))
+        .count();
+    assert_eq!(listed_apart, from_cp.len() - failures.len(), "{text}");
+    assert!(
+        last_line(&o).contains("the \"3D target\" lines list"),
+        "{text}"
+    );
 }
