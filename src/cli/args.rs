@@ -64,11 +64,12 @@ impl ScaleArgs {
 /// Limits for `check` and `preview --check`.
 #[derive(Args, Clone, Debug)]
 pub struct CheckArgs {
-    /// Smallest allowed angle between neighbouring creases at a vertex, degrees (Tachi's
-    /// δ_corner; 30 for 0.5 mm stainless is a common choice).
+    /// Smallest allowed angle between neighbouring creases at a vertex, degrees (Tachi 2014
+    /// calls it δ_corner; 30 for 0.5 mm stainless is a common choice).
     #[arg(long, value_name = "DEG", value_parser = degrees)]
     pub min_vertex_angle: Option<f64>,
-    /// Largest allowed |fold angle|, degrees (180 − δ_fold).
+    /// Largest allowed |fold angle|, degrees: 180 minus the opening a fold must keep (Tachi
+    /// 2014's δ_fold).
     #[arg(long, value_name = "DEG", value_parser = degrees)]
     pub max_fold_angle: Option<f64>,
     /// Shortest allowed edge, in the pattern's unit (mm unless unitless).

@@ -92,10 +92,11 @@ pub struct Args {
     /// within ±90; the sign picks the handedness) [default: 15].
     #[arg(value_name = "DEG", long, allow_negative_numbers = true)]
     pub twist: Option<f64>,
-    /// Largest fold angle, degrees (180 − δ_fold).
+    /// Largest fold angle, degrees: 180 minus the opening a fold must keep (Tachi 2014's
+    /// δ_fold).
     #[arg(value_name = "DEG", long, value_parser = degrees)]
     pub max_fold_angle: Option<f64>,
-    /// Smallest angle between neighbouring creases, degrees (δ_corner).
+    /// Smallest angle between neighbouring creases, degrees (Tachi 2014 calls it δ_corner).
     #[arg(value_name = "DEG", long, value_parser = degrees)]
     pub min_vertex_angle: Option<f64>,
     /// Ground contact: every boundary vertex on the horizontal plane (z) through the lowest

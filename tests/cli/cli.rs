@@ -1099,12 +1099,9 @@ fn help_text(command: &[&str], dir: &Path) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
-/// Every example in every command's help is a whole command line: it starts with `foldcam` (or
-/// `cargo`), or continues one that ends with ` \\`; none is wrapped mid-command.
-#[test]
-fn help_examples_are_whole_command_lines() {
-    let dir = tempfile::tempdir().unwrap();
-    let top = help_text(&[], dir.path());
+/// The help of every command and of `popup`'s subcommands, as (command, text).
+fn every_help_text(dir: &Path) -> Vec<(String, String)> {
+    let top = help_text(&[], dir);
     let commands: Vec<String> = top
         .lines()
         .skip_while(|l| !l.starts_with("Commands:"))
@@ -1116,15 +1113,26 @@ fn help_examples_are_whole_command_lines() {
         .filter(|c| c != "help")
         .collect();
     assert!(commands.len() > 15, "{top}");
-    let mut examples = 0;
-    for command in &commands {
-        let mut texts = vec![help_text(&[command.as_str()], dir.path())];
+    let mut texts = Vec::new();
+    for command in commands {
+        texts.push((command.clone(), help_text(&[command.as_str()], dir)));
         if command == "popup" {
             for sub in ["voxel", "poly"] {
-                texts.push(help_text(&["popup", sub], dir.path()));
+                texts.push((format!("popup {sub}"), help_text(&["popup", sub], dir)));
             }
         }
-        for text in texts {
+    }
+    texts
+}
+
+/// Every example in every command's help is a whole command line: it starts with `foldcam` (or
+/// `cargo`), or continues one that ends with ` \\`; none is wrapped mid-command.
+#[test]
+fn help_examples_are_whole_command_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut examples = 0;
+    for (command, text) in every_help_text(dir.path()) {
+        {
             let mut continued = false;
             for line in text
                 .lines()
@@ -1143,6 +1151,61 @@ fn help_examples_are_whole_command_lines() {
         }
     }
     assert!(examples > 30, "{examples} examples");
+}
+
+/// Symbols from the papers are said in plain words where they appear: Tachi's δ's in the help,
+/// the layer solver's constraint names, the bar stiffness EA of `fold3d`; the tessellation
+/// solver's ρ and θ are no longer printed by name.
+#[test]
+fn symbols_come_with_plain_words() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (command, text) in every_help_text(d) {
+        let flat = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        for (symbol, plain) in [
+            ("δ_corner", "Tachi 2014 calls it δ_corner"),
+            (
+                "δ_fold",
+                "180 minus the opening a fold must keep (Tachi 2014's δ_fold)",
+            ),
+        ] {
+            let uses = flat.matches(symbol).count();
+            assert_eq!(
+                flat.matches(plain).count(),
+                uses,
+                "`{command} --help`: {symbol} without its plain words"
+            );
+        }
+        for bare in ["|rho|", "theta", "EA "] {
+            assert!(!flat.contains(bare), "`{command} --help` says {bare}");
+        }
+    }
+    let bird = example("bird-base.cp");
+    let o = foldcam(&["check", &bird, "--layers"], d);
+    let text = String::from_utf8_lossy(&o.stdout);
+    for plain in [
+        "taco-taco ",
+        " (two creases along one line), taco-tortilla ",
+        " (a crease across a face), tortilla-tortilla ",
+        " (faces sharing an overlap), transitivity ",
+        " (three faces stacked)",
+    ] {
+        assert!(text.contains(plain), "{plain:?} not in\n{text}");
+    }
+    let o = foldcam(
+        &["fold3d", &bird, "-o", "bird3d.fold", "--percent", "30"],
+        d,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let both = format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        both.contains("of a bar's stiffness EA (Young's modulus × cross-section)"),
+        "{both}"
+    );
 }
 
 /// `--from` is offered by the commands that read a pattern, `--to` by those that write

@@ -108,8 +108,17 @@ fn every_readme_command_runs_with_its_documented_status() {
         &std::env::var_os("PATH").unwrap_or_default(),
     )))
     .expect("PATH");
+    // The README tells users to run these lines in a scratch folder beside `examples/`: no
+    // line may write outside it.
+    assert!(readme.contains("mkdir -p try && cd try && ln -s ../examples examples`"));
     let mut failures = Vec::new();
     for line in &lines {
+        if line.command.contains("../") || line.command.contains(" /") {
+            failures.push(format!(
+                "README.md:{}: `{}` reaches outside the scratch folder",
+                line.number, line.command
+            ));
+        }
         let out = Command::new("sh")
             .arg("-c")
             .arg(&line.command)

@@ -59,8 +59,9 @@ impl LayerCheck {
             let _ = writeln!(
                 out,
                 "layer order: {} state(s){} in {} component(s); {} faces, {} overlapping pairs, \
-                 constraints: taco-taco {}, taco-tortilla {}, tortilla-tortilla {}, \
-                 transitivity {}",
+                 constraints: taco-taco {} (two creases along one line), taco-tortilla {} \
+                 (a crease across a face), tortilla-tortilla {} (faces sharing an overlap), \
+                 transitivity {} (three faces stacked)",
                 r.states,
                 if r.exact {
                     ""

@@ -101,11 +101,12 @@ impl SolveReport {
     pub fn summary(&self) -> String {
         let deg = |r: f64| r.to_degrees();
         format!(
-            "{} after {} iterations\n  developability: max |2pi - sum theta| = {:.3e} rad \
-             (start {:.3e})\n  fold angles: max |rho| = {:.2} deg, limit {:.2} deg; \
-             wrong-sign folds: {}\n  vertex angles: min theta = {:.2} deg, limit {:.2} deg\n  \
-             flat diagonals: max |rho| = {:.1e} rad\n  \
-             boundary: min turning of a boundary run + pi = {:.2} deg (>= 0)\n  \
+            "{} after {} iterations\n  developability: largest angle defect (2 pi minus the \
+             face angles around a vertex) = {:.3e} rad (start {:.3e})\n  fold angles: largest \
+             |fold angle| = {:.2} deg, limit {:.2} deg; folds of the wrong sign: {}\n  vertex \
+             angles: smallest angle between neighbouring creases = {:.2} deg, limit {:.2} deg\n  \
+             flat diagonals: largest fold of a diagonal meant to stay flat = {:.1e} rad\n  \
+             boundary: smallest turn of a boundary run + pi = {:.2} deg (>= 0)\n  \
              vertex-adjacent faces (Tachi 2014 corner penalty{}): illegal creases {} (start {}), max penalty {:.2e}",
             if self.converged {
                 "converged"
