@@ -76,17 +76,30 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
     Ok(imported)
 }
 
-/// The size a pattern was read at: "read 343.0 × 343.0 mm, 120 lines" (the bounding box, as
-/// the file's units and the reader's scale made it; a unitless pattern says how to size it).
+/// The size a pattern was read at and where it lies, in the frame every position printed
+/// later uses: "read 343.0 × 343.0 mm, 120 lines; x 0.0 to 343.0, y -343.0 to 0.0 (y up: an
+/// SVG's page, whose y runs down, lies below y = 0)" (the bounding box, as the file's units
+/// and the reader's scale made it; a unitless pattern says how to size it).
 pub fn size_read(cp: &foldcam::pattern::CreasePattern) -> String {
-    let (w, h) = cp
-        .bounds()
-        .map_or((0.0, 0.0), |(lo, hi)| ((hi - lo).x, (hi - lo).y));
+    let (lo, hi) = cp.bounds().unwrap_or_default();
+    let (w, h) = ((hi - lo).x, (hi - lo).y);
     let unit = match cp.units {
         Units::Millimetres => "mm",
         Units::Unitless => "units (no physical size: --size MM gives one)",
     };
-    format!("read {w:.1} × {h:.1} {unit}, {} lines", cp.edges.len())
+    let below = if hi.y <= 0.0 && lo.y < 0.0 {
+        " (y up: an SVG's page, whose y runs down, lies below y = 0)"
+    } else {
+        " (y up)"
+    };
+    format!(
+        "read {w:.1} × {h:.1} {unit}, {} lines; x {:.1} to {:.1}, y {:.1} to {:.1}{below}",
+        cp.edges.len(),
+        lo.x,
+        hi.x,
+        lo.y,
+        hi.y
+    )
 }
 
 fn load_frame(path: &Path, n: usize) -> Result<Imported> {

@@ -1073,14 +1073,22 @@ fn every_import_says_the_size_it_read() {
         .iter()
         .map(|v| [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()])
         .collect();
-    let extent = |k: usize| {
-        let (lo, hi) = coords.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| {
+    let range = |k: usize| {
+        coords.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| {
             (lo.min(p[k]), hi.max(p[k]))
-        });
-        hi - lo
+        })
     };
+    let ((x0, x1), (y0, y1)) = (range(0), range(1));
     let lines = fold["edges_vertices"].as_array().unwrap().len();
-    let want = format!("read {:.1} × {:.1} mm, {lines} lines", extent(0), extent(1));
+    // The size, then where it lies in the frame the findings' positions use: y up, so the
+    // SVG's page (y down from its top) lies below y = 0.
+    let want = format!(
+        "read {:.1} × {:.1} mm, {lines} lines; x {x0:.1} to {x1:.1}, y {y0:.1} to {y1:.1} (y up: \
+         an SVG's page, whose y runs down, lies below y = 0)",
+        x1 - x0,
+        y1 - y0
+    );
+    assert!(y1 <= 0.0);
     assert!(stderr.contains(&want), "{want} not in\n{stderr}");
     // Quiet runs say only results and warnings.
     let quiet = foldcam(
