@@ -173,6 +173,15 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
         r.seconds,
         r.residual
     );
+    for slow in &r.slower_ramps {
+        outln!(
+            "  a ramp of {} steps left {} crease(s) folded against their assignment: folded \
+             again from flat with a ramp {}× slower",
+            slow.ramp_steps,
+            slow.wrong_sign,
+            foldcam::check::fold3d::SLOWER_RAMP_FACTOR
+        );
+    }
     let at = r
         .max_strain_at
         .map(|p| {

@@ -239,11 +239,12 @@ fn manifest(rel: &str) -> PathBuf {
 
 /// The bundled dome, saddle and bell, tessellated at the stainless limits and folded from flat
 /// by `fold3d`, land within 2% of the bounding-box diagonal of the form the tessellation
-/// solver computed (after rigid alignment); measured 0.56%, 1.65% and 0.43%. (The bundled
-/// 60° cap does not yet: 27% off, with 86 creases folded the wrong way.)
+/// solver computed (after rigid alignment). The 60° cap needs the slower ramps: at the default
+/// ramp 86 of its creases settle against their assignment (27% off the form); with them none
+/// do, and it lands 5.6% off.
 #[test]
 fn tessellation_from_flat_reaches_the_solved_form() {
-    for mesh in ["dome", "saddle", "bell"] {
+    for mesh in ["dome", "saddle", "bell", "cap"] {
         let dir = tempfile::tempdir().unwrap();
         let out = dir.path().join(format!("{mesh}.fold"));
         let status = foldcam()
@@ -261,15 +262,25 @@ fn tessellation_from_flat_reaches_the_solved_form() {
         let imported = foldcam::formats::load(&out).unwrap();
         let solved = imported.folded.expect("the tessellation's folded form");
         let cp = imported.pattern;
-        let mut worst = 0.0f64;
-        let f = fold_with(&cp, &FoldOptions::default(), |model, x| {
-            worst = worst.max(max_bar_strain(model, x));
-        })
-        .unwrap();
+        let mut strain = Vec::new();
+        // Time enough for the slower ramps in an unoptimised build too.
+        let opts = FoldOptions {
+            max_time: std::time::Duration::from_secs(900),
+            ..FoldOptions::default()
+        };
+        let f = fold_with(&cp, &opts, |model, x| strain.push(max_bar_strain(model, x))).unwrap();
         assert_eq!(f.report.stop, Stop::Settled, "{mesh}");
+        assert_eq!(f.report.slower_ramps.is_empty(), mesh != "cap", "{mesh}");
         assert!(f.report.wrong_sign.is_empty(), "{mesh}");
-        // Rigid-foldable: isometric all the way.
-        assert!(worst < 0.01, "{mesh}: largest strain on the way: {worst}");
+        // Isometric all the way (the last run's way, after any given up).
+        let given_up: usize = f.report.slower_ramps.iter().map(|r| r.steps).sum();
+        assert_eq!(strain.len(), f.report.steps);
+        let worst = strain[given_up..].iter().fold(0.0f64, |w, s| w.max(*s));
+        eprintln!("{mesh}: largest strain on the way {:.3}%", 100.0 * worst);
+        // Rigid-foldable within 1%, but for the cap, whose faces stretch up to 1.06% on the
+        // way (and 0.02% at the end).
+        let limit = if mesh == "cap" { 0.015 } else { 0.01 };
+        assert!(worst < limit, "{mesh}: largest strain on the way: {worst}");
         let n = cp.vertices.len();
         let sim = &f.folded.positions[..n];
         let moved = align(sim, &solved.positions);
@@ -279,7 +290,15 @@ fn tessellation_from_flat_reaches_the_solved_form() {
             .zip(&solved.positions)
             .map(|(p, q)| p.distance(*q))
             .fold(0.0, f64::max);
-        assert!(off < 0.02 * diag, "{mesh}: {off} vs diagonal {diag}");
+        eprintln!(
+            "{mesh}: {:.2}% of the diagonal off the solved form",
+            100.0 * off / diag
+        );
+        // The cap reaches its form's branch (no crease against its assignment, where the
+        // default ramp alone left 86 and 27% off) but settles 5.6% off, short of the 2% the
+        // others meet: a fold-angle error of 7° is left on one crease.
+        let bound = if mesh == "cap" { 0.06 } else { 0.02 };
+        assert!(off < bound * diag, "{mesh}: {off} vs diagonal {diag}");
     }
 }
 

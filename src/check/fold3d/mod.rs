@@ -208,6 +208,9 @@ pub struct FoldReport {
     pub seconds: f64,
     /// Triangles of the model.
     pub triangles: usize,
+    /// Runs given up for creases settled against their assignment, each followed by a run
+    /// with a slower ramp (see [`fold_with`]); [`Self::steps`] counts their steps too.
+    pub slower_ramps: Vec<SlowerRamp>,
 }
 
 /// A reached angle this close to 0 has no sign, degrees.
@@ -253,6 +256,15 @@ pub fn fold(cp: &CreasePattern, opts: &FoldOptions) -> Result<Fold, FoldError> {
 }
 
 /// [`fold`], calling `observe` with the model and the positions after every step.
+///
+/// **Slower ramps.** A sheet that is not rigid-foldable from flat (a tessellation of a curved
+/// surface) can pick the other branch where its faces bend through, and settle with creases
+/// folded against their assignment when the target rises too fast for it. When a settled run
+/// ends with such creases, the fold starts again from flat with a ramp
+/// [`SLOWER_RAMP_FACTOR`] times longer, at most [`SLOWER_RAMPS`] times, within the step and
+/// time caps ([`FoldReport::slower_ramps`] lists the runs given up). A continuation that
+/// shortens its load step on failure; a pattern whose assignment cannot be reached keeps its
+/// wrong signs after the last run, and the report names them.
 pub fn fold_with(
     cp: &CreasePattern,
     opts: &FoldOptions,
@@ -262,62 +274,48 @@ pub fn fold_with(
     let start = Stopwatch::start();
     let model = BarHingeModel::build(cp)?;
     let fraction = opts.percent / 100.0;
-    let mut solver = Solver::new(&model, opts);
-    let mut frames = Vec::new();
-    let ramp = opts.ramp_steps.min(opts.max_steps);
-    let frame_every = ramp
-        .checked_div(opts.frames)
-        .map_or(usize::MAX, |every| every.max(1));
-    let mut last_good = solver.positions.clone();
-    let mut steps = 0;
-    let stop = loop {
-        if steps >= opts.max_steps {
-            break Stop::StepCap;
-        }
-        let progress = if ramp == 0 {
-            1.0
-        } else {
-            ((steps + 1) as f64 / ramp as f64).min(1.0)
+    let mut ramp = opts.ramp_steps.min(opts.max_steps);
+    let mut slower_ramps = Vec::new();
+    let mut total_steps = 0;
+    let (mut solver, stop, frames) = loop {
+        let budget = Budget {
+            steps: opts.max_steps - total_steps,
+            start: &start,
         };
-        solver.set_fraction(fraction * progress);
-        solver.step();
-        steps += 1;
-        observe(&model, &solver.positions);
-        if steps <= ramp && steps % frame_every == 0 && frames.len() < opts.frames {
-            frames.push(solver.positions.clone());
+        let (solver, steps, stop, frames) = run(&model, opts, ramp, &budget, &mut observe);
+        total_steps += steps;
+        let wrong = wrong_signs(&model, &solver.angles(), fraction);
+        let room = opts.max_steps - total_steps > ramp * SLOWER_RAMP_FACTOR
+            && start.elapsed() < opts.max_time;
+        let retry = wrong > 0 && stop == Stop::Settled && ramp > 0 && room;
+        if !retry || slower_ramps.len() == SLOWER_RAMPS {
+            break (solver, stop, frames);
         }
-        if steps % CHECK_EVERY == 0 {
-            if !solver.finite() {
-                break Stop::Diverged;
-            }
-            last_good.clone_from(&solver.positions);
-            if steps >= ramp && solver.residual() < opts.tolerance {
-                break Stop::Settled;
-            }
-            if start.elapsed() > opts.max_time {
-                break Stop::TimeCap;
-            }
-        }
+        slower_ramps.push(SlowerRamp {
+            ramp_steps: ramp,
+            steps,
+            wrong_sign: wrong,
+        });
+        ramp *= SLOWER_RAMP_FACTOR;
     };
-    if !solver.finite() {
-        solver.positions = last_good;
-    }
+    let mut frames = frames;
     let residual = solver.residual();
     let angles = solver.angles();
     let positions = std::mem::take(&mut solver.positions);
-    let report = report(
+    let mut report = report(
         cp,
         &model,
         &positions,
         &angles,
         Run {
-            steps,
+            steps: total_steps,
             stop,
             residual,
             percent: opts.percent,
             seconds: start.elapsed().as_secs_f64(),
         },
     );
+    report.slower_ramps = slower_ramps;
     frames.push(positions.clone());
     let mut edges = model.edges.clone();
     for (e, a) in report.fold_angles.iter().enumerate() {
@@ -337,6 +335,94 @@ pub fn fold_with(
         frames,
         report,
     })
+}
+
+/// Times a run given up for creases folded against their assignment is retried with a slower
+/// ramp (see [`fold_with`]).
+pub const SLOWER_RAMPS: usize = 2;
+
+/// How many times longer each slower ramp is.
+pub const SLOWER_RAMP_FACTOR: usize = 3;
+
+/// A run given up because creases settled against their assignment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct SlowerRamp {
+    /// Its ramp, steps.
+    pub ramp_steps: usize,
+    /// Steps it took.
+    pub steps: usize,
+    /// Creases it left folded against their assignment.
+    pub wrong_sign: usize,
+}
+
+/// What is left of the caps for one run.
+struct Budget<'a> {
+    steps: usize,
+    start: &'a Stopwatch,
+}
+
+/// One run from flat: the target rises over `ramp` steps, then holds until the residual
+/// settles or the budget ends. Returns the solver, its steps, why it stopped and the frames.
+fn run<'m>(
+    model: &'m BarHingeModel,
+    opts: &FoldOptions,
+    ramp: usize,
+    budget: &Budget<'_>,
+    observe: &mut impl FnMut(&BarHingeModel, &[DVec3]),
+) -> (Solver<'m>, usize, Stop, Vec<Vec<DVec3>>) {
+    let fraction = opts.percent / 100.0;
+    let mut solver = Solver::new(model, opts);
+    let mut frames = Vec::new();
+    let frame_every = ramp
+        .checked_div(opts.frames)
+        .map_or(usize::MAX, |every| every.max(1));
+    let mut last_good = solver.positions.clone();
+    let mut steps = 0;
+    let stop = loop {
+        if steps >= budget.steps {
+            break Stop::StepCap;
+        }
+        let progress = if ramp == 0 {
+            1.0
+        } else {
+            ((steps + 1) as f64 / ramp as f64).min(1.0)
+        };
+        solver.set_fraction(fraction * progress);
+        solver.step();
+        steps += 1;
+        observe(model, &solver.positions);
+        if steps <= ramp && steps % frame_every == 0 && frames.len() < opts.frames {
+            frames.push(solver.positions.clone());
+        }
+        if steps % CHECK_EVERY == 0 {
+            if !solver.finite() {
+                break Stop::Diverged;
+            }
+            last_good.clone_from(&solver.positions);
+            if steps >= ramp && solver.residual() < opts.tolerance {
+                break Stop::Settled;
+            }
+            if budget.start.elapsed() > opts.max_time {
+                break Stop::TimeCap;
+            }
+        }
+    };
+    if !solver.finite() {
+        solver.positions = last_good;
+    }
+    (solver, steps, stop, frames)
+}
+
+/// Crease hinges whose angle has the opposite sign of their target at `fraction` (by more
+/// than [`SIGN_TOLERANCE_DEG`]).
+fn wrong_signs(model: &BarHingeModel, angles: &[f64], fraction: f64) -> usize {
+    let tolerance = SIGN_TOLERANCE_DEG.to_radians();
+    (model.hinges.iter().zip(angles))
+        .filter(|(h, a)| match h.kind {
+            HingeKind::Crease(full) => full * fraction * **a < 0.0 && a.abs() > tolerance,
+            _ => false,
+        })
+        .count()
 }
 
 /// Steps between checks of divergence, residual and time.
@@ -462,5 +548,6 @@ fn report(
         crossing_faces,
         seconds: run.seconds,
         triangles: model.triangles.len(),
+        slower_ramps: Vec::new(),
     }
 }
