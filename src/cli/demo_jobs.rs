@@ -65,6 +65,10 @@ pub(super) fn write_job(
 ) -> Result<WrittenJob> {
     let machine = load_machine(machine)?;
     let material = load_material(material)?;
+    // A design's pattern has no title of its own: its job names the demo's name as source.
+    let mut titled = cp.clone();
+    titled.meta.title.get_or_insert_with(|| name.to_string());
+    let cp = &titled;
     let job = Job::plan(cp, &machine, &material, &PlanOverrides::default())?
         .post(JobFormat::Gcode)?
         .verify()?;

@@ -300,6 +300,23 @@ fn demo_runs_end_to_end() {
         let machine =
             foldcam::machine::load_machine(machine).unwrap_or_else(|e| panic!("{name}: {e}"));
         let program = std::fs::read_to_string(dir.path().join("d").join(name)).expect("job");
+        // Its header names the pattern it came from, designs included, and its material.
+        let (pattern, _, material, _) = job_name_parts(name).unwrap();
+        let source = program
+            .lines()
+            .find_map(|l| {
+                l.split_once("source: ")
+                    .map(|(_, s)| s.trim_end_matches(')').to_string())
+            })
+            .unwrap_or_else(|| panic!("{name}: no source line"));
+        assert!(
+            source.ends_with(&format!("material: {material}")),
+            "{name}: {source}"
+        );
+        assert!(!source.contains("without a name"), "{name}: {source}");
+        if pattern.starts_with("popup-") || pattern.starts_with("tessellation-") {
+            assert!(source.starts_with(pattern), "{name}: {source}");
+        }
         let run = foldcam::sim::run(&program, &machine).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(run.is_clean(), "{name}: {:?}", run.violations.first());
         assert!(
@@ -311,6 +328,54 @@ fn demo_runs_end_to_end() {
     }
     assert!(jobs >= 8, "{jobs} jobs in {files:?}");
     demo_index_lists_every_job_and_picture(&dir.path().join("d"), &files);
+}
+
+/// A design made into a job by its command names the design file as the job's source.
+#[test]
+fn design_jobs_name_their_design_file_as_source() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let house = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/popup/house.voxel.txt");
+    let taj = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/popup/taj-mahal.popup.toml");
+    for (design, out, want) in [
+        (
+            &house,
+            "house.gcode",
+            "; source: house, material: card-300gsm",
+        ),
+        (
+            &taj,
+            "taj.gcode",
+            "; source: taj-mahal, material: card-300gsm",
+        ),
+    ] {
+        let command = if design == &house { "voxel" } else { "poly" };
+        let o = foldcam(
+            &[
+                "popup",
+                command,
+                design.to_str().unwrap(),
+                "-m",
+                "grbl-diode",
+                "-x",
+                "card-300gsm",
+                "-o",
+                out,
+            ],
+            d,
+        );
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let program = std::fs::read_to_string(d.join(out)).unwrap();
+        assert!(program.lines().any(|l| l == want), "{out}: {program:.600}");
+    }
+    assert_eq!(
+        foldcam::design::source::design_title(Path::new("a/vase.craft.toml")).as_deref(),
+        Some("vase")
+    );
+    assert_eq!(
+        foldcam::design::source::design_title(Path::new("scan.v2.OBJ")).as_deref(),
+        Some("scan.v2")
+    );
 }
 
 /// A G-code job's name `PATTERN.MACHINE.MATERIAL.EXT` split at the shipped machine it names

@@ -136,6 +136,10 @@ pub fn build(
         made.parts.len(),
         made.sheets.len()
     )];
+    let mut made = made;
+    for sheet in &mut made.sheets {
+        super::title_from(sheet, &name);
+    }
     Ok(CraftDesign {
         design,
         made,

@@ -431,6 +431,29 @@ pub fn build_design(
     }
 }
 
+/// The title a design file gives the patterns made of it when they have none of their own:
+/// its file name without the design ending (`house.voxel.txt` → `house`, `dome.obj` →
+/// `dome`) or, for another name, without its last extension. Machine jobs name their source
+/// by it (the G-code header's `source:`).
+pub fn design_title(name: &Path) -> Option<String> {
+    let file = name.file_name()?.to_string_lossy().into_owned();
+    let lower = file.to_ascii_lowercase();
+    let stem = match DesignKind::EXTENSIONS.iter().find(|e| lower.ends_with(*e)) {
+        Some(e) => &file[..file.len() - e.len()],
+        None => file
+            .rsplit_once('.')
+            .map_or(file.as_str(), |(stem, _)| stem),
+    };
+    (!stem.is_empty()).then(|| stem.to_string())
+}
+
+/// Gives `pattern` the title of the design file `name` unless it has one.
+pub(crate) fn title_from(pattern: &mut CreasePattern, name: &Path) {
+    if pattern.meta.title.is_none() {
+        pattern.meta.title = design_title(name);
+    }
+}
+
 /// The last component of a mesh path a design names (what an upload of it is called).
 pub fn mesh_file_name(mesh: &Path) -> Option<std::ffi::OsString> {
     mesh.file_name().map(|n| n.to_os_string())

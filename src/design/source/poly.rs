@@ -80,7 +80,8 @@ pub fn build(
         });
     }
     let card = replay.card;
-    let pattern = crease_pattern(&card).map_err(|e| SourceError::input(path, e))?;
+    let mut pattern = crease_pattern(&card).map_err(|e| SourceError::input(path, e))?;
+    super::title_from(&mut pattern, path);
     let closed = fold_card(&card, &pattern, 0.0).state;
     let hint = "join every face to the card through a fold (move or grow the face that is cut \
                 free)";

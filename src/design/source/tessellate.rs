@@ -365,7 +365,8 @@ pub fn tessellate_outcome(
     }
     let problem = t.problem();
     let design = match (problem, t.unfolded) {
-        (None, Ok(unfolded)) => {
+        (None, Ok(mut unfolded)) => {
+            super::title_from(&mut unfolded.pattern, name);
             lines.push(format!(
                 "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
                 unfolded.max_length_error

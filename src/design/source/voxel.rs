@@ -310,7 +310,8 @@ pub fn finish_card(
     } else {
         card
     };
-    let pattern = crease_pattern(&card).map_err(|e| SourceError::input(name, e))?;
+    let mut pattern = crease_pattern(&card).map_err(|e| SourceError::input(name, e))?;
+    super::title_from(&mut pattern, name);
     let closed = fold_card(&card, &pattern, 0.0).state;
     let hint = "try another --resolution, a larger --thin-top (or 0 to keep every top), or a \
                 smaller --morphology";
