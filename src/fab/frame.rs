@@ -8,11 +8,11 @@
 
 use glam::DVec2;
 
-use super::Job;
+use super::Setup;
 
 /// Lower-left and upper-right corners of every stroke point of `job`, mm; `None` when it has
 /// no point or a coordinate is not finite.
-pub fn bounds(job: &Job) -> Option<(DVec2, DVec2)> {
+pub fn bounds(job: &Setup) -> Option<(DVec2, DVec2)> {
     let mut points = job.paths.iter().flat_map(|p| p.strokes.iter().flatten());
     let first = *points.next()?;
     let (lo, hi) = points.fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
@@ -21,7 +21,7 @@ pub fn bounds(job: &Job) -> Option<(DVec2, DVec2)> {
 
 /// The frame of `job`: its [`bounds`] as a closed polyline of five points, lower-left,
 /// lower-right, upper-right, upper-left, lower-left.
-pub fn outline(job: &Job) -> Option<Vec<DVec2>> {
+pub fn outline(job: &Setup) -> Option<Vec<DVec2>> {
     let (lo, hi) = bounds(job)?;
     Some(vec![
         lo,

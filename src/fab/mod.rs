@@ -84,9 +84,10 @@ pub enum Side {
     Back,
 }
 
-/// One job: what the machine does without the sheet being turned.
+/// One setup: what the machine does without the sheet being turned (a one-sided job has one,
+/// a two-sided job a front and a back; [`crate::job::Job`] posts and checks each).
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Job {
+pub struct Setup {
     /// Name for files and messages, e.g. `front`.
     pub name: String,
     /// Which side faces the tool.
@@ -130,7 +131,7 @@ impl PlanStats {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FabPlan {
     /// One job, or two for two-sided work (front, then back).
-    pub jobs: Vec<Job>,
+    pub jobs: Vec<Setup>,
     /// Speed, power and passes per operation.
     pub settings: SettingsByOperation,
     /// Totals.

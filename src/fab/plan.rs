@@ -6,7 +6,7 @@
 //!    (mountains and everything else) and a `back` job (valleys, then all cuts), mirrored
 //!    about the sheet's vertical centre line, both with registration marks.
 //! 2. **Placement** ([`super::placement`]): the content's bounding box plus the margin, in the
-//!    bed's origin corner, converted to machine coordinates; stored in [`Job::to_machine`].
+//!    bed's origin corner, converted to machine coordinates; stored in [`Setup::to_machine`].
 //! 3. **Order** ([`super::order`](mod@super::order)): precedence groups, nearest neighbour, 2-opt/Or-opt,
 //!    joining, each job from the machine origin.
 //! 4. **Statistics** ([`super::stats`]) and **warnings** (the material's design limits,
@@ -20,7 +20,7 @@ use glam::{DAffine2, DVec2};
 use super::placement::{bounds_of, place_with, transform_paths, union};
 use super::sides::{mirror, registration_marks, split};
 use super::stats::{perforated_crease_mm, plan_stats};
-use super::{FabError, FabPlan, Job, PlanAbout, PlanOptions, Side, Toolpath, geometry, order};
+use super::{FabError, FabPlan, PlanAbout, PlanOptions, Setup, Side, Toolpath, geometry, order};
 use crate::check::{CheckOptions, FindingKind, check};
 use crate::machine::{Bed, MachineProfile, Material, load_material, shipped_materials};
 use crate::pattern::CreasePattern;
@@ -131,7 +131,7 @@ fn one_sided_job(
     paths: Vec<Toolpath>,
     bed: &Bed,
     opts: &PlanOptions,
-) -> Result<(Vec<Job>, f64), FabError> {
+) -> Result<(Vec<Setup>, f64), FabError> {
     let extent = content_extent(cp, &paths)?;
     let to_machine = place_with(extent, bed, opts.margin_mm, opts.placement)?;
     let (job, naive) = make_job("front", Side::Front, to_machine, paths, opts);
@@ -145,7 +145,7 @@ fn two_sided_jobs(
     bed: &Bed,
     opts: &PlanOptions,
     warnings: &mut Vec<String>,
-) -> Result<(Vec<Job>, f64), FabError> {
+) -> Result<(Vec<Setup>, f64), FabError> {
     let extent = content_extent(cp, &paths)?;
     let marks = registration_marks(extent);
     let sheet = union(Some(extent), bounds_of(&marks)).unwrap_or(extent);
@@ -184,10 +184,10 @@ fn make_job(
     to_machine: DAffine2,
     mut paths: Vec<Toolpath>,
     opts: &PlanOptions,
-) -> (Job, f64) {
+) -> (Setup, f64) {
     transform_paths(&mut paths, &to_machine);
     let naive = order::travel_mm(&paths, DVec2::ZERO);
-    let job = Job {
+    let job = Setup {
         name: name.to_owned(),
         side,
         to_machine,

@@ -21,7 +21,7 @@
 
 use glam::DVec2;
 
-use super::{Job, Operation, Toolpath};
+use super::{Operation, Setup, Toolpath};
 use crate::machine::commands::{Effect, effects};
 use crate::machine::motion::{Kinematics, Move, Timeline};
 use crate::machine::sync_links;
@@ -31,7 +31,7 @@ use crate::machine::{MachineProfile, OperationSettings};
 /// gives it (as the writer takes them: [`super::FabPlan::settings_of`]), from rest at the
 /// machine origin.
 pub fn job_time(
-    job: &Job,
+    job: &Setup,
     settings: &dyn Fn(&Toolpath) -> OperationSettings,
     machine: &MachineProfile,
 ) -> f64 {

@@ -207,7 +207,7 @@ impl<'a> Job<'a> {
 pub fn job_file(
     format: JobFormat,
     plan: &FabPlan,
-    job: &crate::fab::Job,
+    job: &crate::fab::Setup,
     machine: &MachineProfile,
 ) -> Result<Vec<u8>, JobError> {
     let bytes = render(format, plan, job, machine)?;
@@ -239,7 +239,7 @@ pub fn check_gcode(text: &str, machine: &MachineProfile) -> Result<SimReport, Jo
 fn render(
     format: JobFormat,
     plan: &FabPlan,
-    job: &crate::fab::Job,
+    job: &crate::fab::Setup,
     machine: &MachineProfile,
 ) -> Result<Vec<u8>, PostError> {
     Ok(match format {

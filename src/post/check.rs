@@ -7,7 +7,7 @@
 
 use super::PostError;
 use super::number::Grid;
-use crate::fab::{Job, Operation};
+use crate::fab::{Operation, Setup};
 use crate::machine::{MachineProfile, OperationSettings};
 
 /// Largest coordinate magnitude written, mm.
@@ -20,7 +20,7 @@ pub const MIN_RESOLUTION_MM: f64 = 1e-6;
 pub const MAX_RESOLUTION_MM: f64 = 10.0;
 
 /// Every coordinate of `job` is finite and within ±[`MAX_COORD_MM`].
-pub fn job(job: &Job) -> Result<(), PostError> {
+pub fn job(job: &Setup) -> Result<(), PostError> {
     for (path, toolpath) in job.paths.iter().enumerate() {
         for (stroke, points) in toolpath.strokes.iter().enumerate() {
             let bad = points.iter().any(|p| {

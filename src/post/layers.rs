@@ -8,7 +8,7 @@
 //! DXF names are the same in upper case with every character outside `A–Z 0–9 - _` made `_`
 //! (R12 symbol-table names allow no more).
 
-use crate::fab::{FabPlan, Job, Operation, Toolpath};
+use crate::fab::{FabPlan, Operation, Setup, Toolpath};
 use crate::machine::{MachineProfile, OperationSettings};
 
 /// One layer of a job.
@@ -42,7 +42,7 @@ impl Layer {
 }
 
 /// The layers of `job` that hold at least one toolpath with a stroke, in order.
-pub fn layers(plan: &FabPlan, job: &Job) -> Vec<Layer> {
+pub fn layers(plan: &FabPlan, job: &Setup) -> Vec<Layer> {
     let mut keys: Vec<(Operation, Option<usize>)> = job
         .paths
         .iter()

@@ -44,7 +44,7 @@ use glam::DVec2;
 use super::PostError;
 use super::layers::{Layer, layers};
 use super::number::fixed;
-use crate::fab::{FabPlan, Job, Operation};
+use crate::fab::{FabPlan, Operation, Setup};
 use crate::machine::MachineProfile;
 
 /// The LightBurn version whose project format is written.
@@ -91,7 +91,7 @@ struct Setting<'a> {
 /// The LightBurn project of `job` on `machine`, perforations drawn as `perforation` says.
 pub fn write(
     plan: &FabPlan,
-    job: &Job,
+    job: &Setup,
     machine: &MachineProfile,
     perforation: LbrnPerforation,
 ) -> Result<String, PostError> {

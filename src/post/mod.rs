@@ -26,7 +26,7 @@ pub use check::{MAX_COORD_MM, MAX_RESOLUTION_MM, MIN_RESOLUTION_MM};
 pub use lbrn::{LbrnPerforation, PERFORATION_TOLERANCE_MM};
 pub use style::{LayerStyle, layer_style};
 
-use crate::fab::{FabPlan, Job};
+use crate::fab::{FabPlan, Setup};
 use crate::machine::{Bed, MachineProfile};
 
 /// Why a file could not be written.
@@ -133,7 +133,7 @@ pub enum DxfVersion {
 /// [`PostError::NoGcode`] for a file-only machine; [`PostError::BadMachine`],
 /// [`PostError::BadSetting`] or [`PostError::BadCoordinate`] for numbers that cannot be
 /// written; [`PostError::EmptyJob`] when nothing is left to burn after rounding.
-pub fn gcode(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
+pub fn gcode(plan: &FabPlan, job: &Setup, machine: &MachineProfile) -> Result<String, PostError> {
     gcode::write(plan, job, machine)
 }
 
@@ -143,7 +143,7 @@ pub fn gcode(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
 ///
 /// # Errors
 /// [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
-pub fn dxf(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
+pub fn dxf(plan: &FabPlan, job: &Setup, version: DxfVersion) -> Result<Vec<u8>, PostError> {
     check::job(job)?;
     dxf::write(plan, job, version)
 }
@@ -160,7 +160,7 @@ pub fn dxf(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, Po
 /// with LightBurn's perforation mode, [`PostError::TooManyDashPatterns`].
 pub fn lbrn2(
     plan: &FabPlan,
-    job: &Job,
+    job: &Setup,
     machine: &MachineProfile,
     perforation: LbrnPerforation,
 ) -> Result<String, PostError> {
@@ -177,7 +177,7 @@ pub fn lbrn2(
 ///
 /// # Errors
 /// [`PostError::BadBed`], [`PostError::BadCoordinate`] or [`PostError::EmptyJob`].
-pub fn svg(plan: &FabPlan, job: &Job, bed: &Bed, dasharray: bool) -> Result<String, PostError> {
+pub fn svg(plan: &FabPlan, job: &Setup, bed: &Bed, dasharray: bool) -> Result<String, PostError> {
     check::job(job)?;
     svg::write(plan, job, bed, dasharray)
 }

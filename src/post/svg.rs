@@ -28,7 +28,7 @@ use glam::DVec2;
 use super::layers::{Layer, layers};
 use super::number::{Grid, fixed};
 use super::{PostError, layer_style};
-use crate::fab::{FabPlan, Job, Operation, Toolpath};
+use crate::fab::{FabPlan, Operation, Setup, Toolpath};
 use crate::machine::Bed;
 
 /// Decimals of printed SVG coordinates (a 0.001 mm grid).
@@ -44,7 +44,7 @@ struct Page {
 }
 
 /// The SVG document of `job`.
-pub fn write(plan: &FabPlan, job: &Job, bed: &Bed, dasharray: bool) -> Result<String, PostError> {
+pub fn write(plan: &FabPlan, job: &Setup, bed: &Bed, dasharray: bool) -> Result<String, PostError> {
     let sane = |v: f64| v.is_finite() && v > 0.0 && v <= super::MAX_COORD_MM;
     if !(sane(bed.width_mm) && sane(bed.height_mm)) {
         return Err(PostError::BadBed {

@@ -45,7 +45,7 @@ use super::grid::{SegmentGrid, covered_interval, union_length};
 use super::report::SimReport;
 use crate::fab::operations::operation_for;
 use crate::fab::sides::edge_on_back;
-use crate::fab::{ContourRole, FabPlan, Job, Operation, Side};
+use crate::fab::{ContourRole, FabPlan, Operation, Setup, Side};
 use crate::geom::Segment;
 use crate::geom::segment::distance_to_point;
 use crate::geom::tolerance::RELATIVE;
@@ -151,7 +151,7 @@ impl CoverageReport {
 pub fn coverage(
     report: &SimReport,
     pattern: &CreasePattern,
-    job: &Job,
+    job: &Setup,
     plan: &FabPlan,
 ) -> CoverageReport {
     coverage_with(report, pattern, job, plan, &CoverageOptions::default())
@@ -169,7 +169,7 @@ struct Seg {
 pub fn coverage_with(
     report: &SimReport,
     pattern: &CreasePattern,
-    job: &Job,
+    job: &Setup,
     plan: &FabPlan,
     opts: &CoverageOptions,
 ) -> CoverageReport {
@@ -276,7 +276,7 @@ fn judge(op: Operation, planned: f64, burned: f64, opts: &CoverageOptions) -> bo
 }
 
 /// The pattern edges of the job's toolpaths, with their operation, in machine coordinates.
-fn job_edges(pattern: &CreasePattern, job: &Job) -> Vec<(EdgeId, Seg)> {
+fn job_edges(pattern: &CreasePattern, job: &Setup) -> Vec<(EdgeId, Seg)> {
     let mut out: Vec<(EdgeId, Seg)> = Vec::new();
     let mut seen: HashSet<(EdgeId, Operation)> = HashSet::new();
     for tp in &job.paths {
@@ -300,7 +300,7 @@ fn job_edges(pattern: &CreasePattern, job: &Job) -> Vec<(EdgeId, Seg)> {
 /// `op`: the first job on the side the edge would be machined from (the two-sided rule of
 /// [`crate::fab::sides::edge_on_back`]), or the first job when the plan has none on that side
 /// (a one-sided plan). A job outside the plan's list (a caller's own) reports it too.
-fn reports_left_out(plan: &FabPlan, job: &Job, assignment: Assignment, op: Operation) -> bool {
+fn reports_left_out(plan: &FabPlan, job: &Setup, assignment: Assignment, op: Operation) -> bool {
     let side = if edge_on_back(assignment, op) {
         Side::Back
     } else {
@@ -317,7 +317,7 @@ fn reports_left_out(plan: &FabPlan, job: &Job, assignment: Assignment, op: Opera
 /// The pattern edges the plan's mapping gives an operation but that no toolpath of any job
 /// realises with that operation, in `job`'s machine coordinates; each is reported by one job
 /// only ([`reports_left_out`]), so a two-sided plan lists it once, on the side it belongs to.
-fn left_out_edges(pattern: &CreasePattern, job: &Job, plan: &FabPlan) -> Vec<(EdgeId, Seg)> {
+fn left_out_edges(pattern: &CreasePattern, job: &Setup, plan: &FabPlan) -> Vec<(EdgeId, Seg)> {
     let realised: HashSet<(EdgeId, Operation)> = plan
         .jobs
         .iter()
@@ -351,7 +351,7 @@ fn edge_segment(pattern: &CreasePattern, e: EdgeId) -> Option<Segment> {
 }
 
 /// Every straight piece of the job's strokes.
-fn job_strokes(job: &Job) -> Vec<Seg> {
+fn job_strokes(job: &Setup) -> Vec<Seg> {
     job.paths
         .iter()
         .flat_map(|tp| {
@@ -368,7 +368,7 @@ fn job_strokes(job: &Job) -> Vec<Seg> {
 
 /// Twice the median distance from the midpoints of the pieces of offset cut contours to their
 /// pattern edges (the median ignores lead-ins and corner pieces); 0 without offset contours.
-fn estimate_kerf(pattern: &CreasePattern, job: &Job) -> f64 {
+fn estimate_kerf(pattern: &CreasePattern, job: &Setup) -> f64 {
     let mut d: Vec<f64> = Vec::new();
     for tp in job
         .paths

@@ -69,7 +69,7 @@ impl JobQuery {
 fn pick_job<'a>(
     plan: &'a crate::fab::FabPlan,
     job: Option<&str>,
-) -> ApiResult<&'a crate::fab::Job> {
+) -> ApiResult<&'a crate::fab::Setup> {
     match job {
         None => plan.jobs.first(),
         Some(name) => plan.jobs.iter().find(|j| j.name == name),

@@ -118,8 +118,8 @@ struct JobState {
     outcome: Option<Arc<TessellationOutcome>>,
 }
 
-/// One solve.
-struct Job {
+/// One solve, run in the background (the studio calls it a job: `/api/tess/jobs/{id}`).
+struct Solve {
     mesh: Arc<MeshEntry>,
     options: TessellationOptions,
     material: Option<String>,
@@ -131,7 +131,7 @@ struct Job {
     state: Mutex<JobState>,
 }
 
-impl Job {
+impl Solve {
     fn state(&self) -> std::sync::MutexGuard<'_, JobState> {
         self.state.lock().unwrap_or_else(PoisonError::into_inner)
     }
@@ -182,13 +182,13 @@ impl Job {
 /// Reports a solve's progress into its job, with where the schedule stands and the time
 /// left as `foldcam tessellate`'s bar says it ([`SolveTracker`]).
 struct JobProgress {
-    job: Arc<Job>,
+    job: Arc<Solve>,
     tracker: SolveTracker,
     started: Instant,
 }
 
 impl JobProgress {
-    fn new(job: Arc<Job>, plan: SolvePlan) -> JobProgress {
+    fn new(job: Arc<Solve>, plan: SolvePlan) -> JobProgress {
         JobProgress {
             job,
             tracker: SolveTracker::new(plan),
@@ -269,7 +269,7 @@ pub(super) struct Tessellations {
 struct Items {
     next: u64,
     meshes: VecDeque<(u64, Arc<MeshEntry>)>,
-    jobs: VecDeque<(u64, Arc<Job>)>,
+    jobs: VecDeque<(u64, Arc<Solve>)>,
 }
 
 impl Tessellations {
@@ -299,7 +299,7 @@ impl Tessellations {
         })
     }
 
-    fn add_job(&self, job: Arc<Job>) -> u64 {
+    fn add_job(&self, job: Arc<Solve>) -> u64 {
         let mut items = self.items();
         let id = items.next;
         items.next += 1;
@@ -312,7 +312,7 @@ impl Tessellations {
         id
     }
 
-    fn job(&self, id: u64) -> ApiResult<Arc<Job>> {
+    fn job(&self, id: u64) -> ApiResult<Arc<Solve>> {
         let items = self.items();
         find(&items.jobs, id).ok_or_else(|| {
             ApiError::new(
@@ -563,7 +563,7 @@ async fn solve(
         &format!("{}: the solve", mesh.name),
         solve_estimate(faces).bytes as u64,
     )?;
-    let job = Arc::new(Job {
+    let job = Arc::new(Solve {
         mesh,
         options,
         material: request.material,
@@ -588,7 +588,7 @@ async fn solve(
 }
 
 /// Solves, recording progress and the end in the job.
-fn run_job(job: &Arc<Job>) {
+fn run_job(job: &Arc<Solve>) {
     let name = PathBuf::from(&job.mesh.name);
     let result = solve_plan(&job.mesh.mesh, &job.options).and_then(|plan| {
         let mut progress = JobProgress::new(Arc::clone(job), plan);
@@ -656,7 +656,7 @@ async fn result(
 
 /// The folded form measured against the limits (see [`limit_map`]), the crease pattern when
 /// there is one, and the report.
-fn result_view(job: &Job, outcome: &TessellationOutcome) -> Value {
+fn result_view(job: &Solve, outcome: &TessellationOutcome) -> Value {
     let surface = &outcome.surface;
     let map = limit_map(
         surface,

@@ -1,7 +1,7 @@
 //! Plans, jobs and machines built as literals for the post-processor tests.
 #![allow(dead_code)]
 
-use foldcam::fab::{ContourRole, FabPlan, Job, Operation, PlanStats, Side, Toolpath};
+use foldcam::fab::{ContourRole, FabPlan, Operation, PlanStats, Setup, Side, Toolpath};
 use foldcam::machine::{
     Bed, Corner, Dialect, MachineKind, MachineProfile, OperationSettings, SettingsByOperation,
 };
@@ -30,7 +30,7 @@ pub fn dashes() -> Vec<Vec<DVec2>> {
 
 /// A job with a mark, a score polyline, a perforation of three dashes and a closed cut
 /// (with float noise), plus a stroke that rounds to nothing.
-pub fn job() -> Job {
+pub fn job() -> Setup {
     let square = vec![
         dvec2(5.0, 5.0),
         dvec2(56.74400000000002, 5.0),
@@ -38,7 +38,7 @@ pub fn job() -> Job {
         dvec2(5.0, 40.300000000000004),
         dvec2(5.0, 5.0),
     ];
-    Job {
+    Setup {
         name: "front".into(),
         side: Side::Front,
         to_machine: DAffine2::IDENTITY,
@@ -81,7 +81,7 @@ pub fn settings() -> SettingsByOperation {
 }
 
 /// A plan of one job.
-pub fn plan(job: Job) -> FabPlan {
+pub fn plan(job: Setup) -> FabPlan {
     FabPlan {
         jobs: vec![job],
         settings: settings(),

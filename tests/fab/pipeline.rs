@@ -76,7 +76,7 @@ fn patterns() -> Vec<(String, CreasePattern)> {
 /// operation's layer, every point on the bed, and as many SVG paths as strokes.
 fn assert_file_outputs_hold_the_job(
     what: &str,
-    job: &foldcam::fab::Job,
+    job: &foldcam::fab::Setup,
     dxf: &[u8],
     svg: &[u8],
     machine: &MachineProfile,

@@ -2,7 +2,7 @@
 //! their lines, units and modes, dwell units, pen states, malformed text, coverage and the
 //! PNG.
 
-use foldcam::fab::{ContourRole, FabPlan, Job, Operation, PlanStats, Side, Toolpath};
+use foldcam::fab::{ContourRole, FabPlan, Operation, PlanStats, Setup, Side, Toolpath};
 use foldcam::machine::{
     Bed, Corner, Dialect, MachineKind, MachineProfile, OperationSettings, SettingsByOperation,
 };

@@ -23,7 +23,7 @@ use glam::DVec2;
 
 use super::number::Grid;
 use super::{DxfVersion, PostError, layer_style, layers};
-use crate::fab::{FabPlan, Job};
+use crate::fab::{FabPlan, Setup};
 
 /// Decimals of printed DXF coordinates (a 1e-6 mm grid).
 const DXF_DECIMALS: usize = 6;
@@ -47,7 +47,7 @@ struct LayerName {
 }
 
 /// The job's drawing in `version`.
-pub fn write(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, PostError> {
+pub fn write(plan: &FabPlan, job: &Setup, version: DxfVersion) -> Result<Vec<u8>, PostError> {
     let grid = Grid::decimal(DXF_DECIMALS);
     let layers = layers::layers(plan, job);
     let shapes = shapes(plan, job, &layers, &grid);
@@ -82,7 +82,7 @@ pub fn write(plan: &FabPlan, job: &Job, version: DxfVersion) -> Result<Vec<u8>, 
 }
 
 /// Every stroke of the job with a length, in order, on its layer.
-fn shapes(plan: &FabPlan, job: &Job, layers: &[layers::Layer], grid: &Grid) -> Vec<Shape> {
+fn shapes(plan: &FabPlan, job: &Setup, layers: &[layers::Layer], grid: &Grid) -> Vec<Shape> {
     let strokes = job.paths.iter().flat_map(|p| {
         let layer = layers::layer_of(layers, plan, p);
         p.strokes.iter().map(move |s| (layer, s))

@@ -72,7 +72,7 @@ pub(crate) mod plotter;
 mod program;
 
 use super::{PostError, check};
-use crate::fab::{FabPlan, Job};
+use crate::fab::{FabPlan, Setup};
 use crate::machine::{Dialect, MachineKind, MachineProfile};
 
 /// What differs between dialects: arming, switching the tool, comments, the program end.
@@ -111,7 +111,7 @@ pub trait Flavour {
 }
 
 /// The G-code of `job` on `machine` (see the module docs).
-pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<String, PostError> {
+pub fn write(plan: &FabPlan, job: &Setup, machine: &MachineProfile) -> Result<String, PostError> {
     let flavour = flavour(machine)?;
     let grid = check::machine(machine, flavour.uses_power(), flavour.travel_sets_feed())?;
     check::job(job)?;
@@ -135,7 +135,7 @@ pub fn write(plan: &FabPlan, job: &Job, machine: &MachineProfile) -> Result<Stri
 /// As [`write`](fn@write); [`PostError::BadSetting`] for a power outside 0..=1.
 pub fn frame(
     plan: &FabPlan,
-    job: &Job,
+    job: &Setup,
     machine: &MachineProfile,
     power: f64,
 ) -> Result<String, PostError> {

@@ -5,7 +5,7 @@ use glam::DVec2;
 use super::super::PostError;
 use super::super::number::{Grid, fixed};
 use super::Flavour;
-use crate::fab::{FabPlan, Job, Operation, Toolpath};
+use crate::fab::{FabPlan, Operation, Setup, Toolpath};
 use crate::machine::control::AIR_OFF;
 use crate::machine::sync_links;
 use crate::machine::{MachineProfile, OperationSettings};
@@ -98,7 +98,7 @@ impl<'a> Program<'a> {
 /// The whole program for `job`; inputs already validated.
 pub fn write(
     plan: &FabPlan,
-    job: &Job,
+    job: &Setup,
     machine: &MachineProfile,
     flavour: &dyn Flavour,
     grid: Grid,
@@ -124,7 +124,7 @@ pub fn write(
 /// `lit` is `None`, visited with travel moves (tool off), then the trailer.
 pub fn write_frame(
     plan: &FabPlan,
-    job: &Job,
+    job: &Setup,
     outline: &[DVec2],
     lit: Option<OperationSettings>,
     machine: &MachineProfile,
@@ -155,7 +155,7 @@ pub fn write_frame(
 /// The header's lines about the plan: its source and material, then one line per operation of
 /// `job` with the settings it runs with (power when the dialect burns with it, speed, passes,
 /// and dash and gap for a perforation), and how many toolpaths run with settings of their own.
-fn about(plan: &FabPlan, job: &Job, machine: &MachineProfile, power: bool) -> Vec<String> {
+fn about(plan: &FabPlan, job: &Setup, machine: &MachineProfile, power: bool) -> Vec<String> {
     let source = plan
         .about
         .source
@@ -238,7 +238,7 @@ impl Program<'_> {
     /// of each operation, units, absolute mode, arming (laser at zero or pen up), then
     /// the profile's preamble without the lines already written. A framing job (`settings`
     /// false) names the source and material only.
-    fn header(&mut self, plan: &FabPlan, job: &Job, machine: &MachineProfile, settings: bool) {
+    fn header(&mut self, plan: &FabPlan, job: &Setup, machine: &MachineProfile, settings: bool) {
         let title = format!("foldcam: job {} for machine {}", job.name, machine.name);
         self.lines.push(self.flavour.comment(&title));
         if let Some(note) = self.flavour.expectation() {

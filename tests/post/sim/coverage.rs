@@ -33,7 +33,7 @@ fn pattern() -> CreasePattern {
 
 /// The pattern placed at (10, 10): perforation dashes of 4 mm with 2 mm bridges (1 mm
 /// clearance at the start, 60 % duty), then the outline offset by half the kerf.
-fn job() -> Job {
+fn job() -> Setup {
     let to_machine = DAffine2::from_translation(DVec2::new(10.0, 10.0));
     let dashes = (0..6)
         .map(|k| {
@@ -52,7 +52,7 @@ fn job() -> Job {
         container: None,
         edges: edges.into_iter().map(EdgeId).collect(),
     };
-    Job {
+    Setup {
         name: "front".into(),
         side: Side::Front,
         to_machine,
@@ -68,7 +68,7 @@ fn job() -> Job {
     }
 }
 
-fn plan(job: Job) -> FabPlan {
+fn plan(job: Setup) -> FabPlan {
     FabPlan {
         jobs: vec![job],
         settings: SettingsByOperation {
@@ -94,7 +94,7 @@ fn plan(job: Job) -> FabPlan {
 }
 
 /// A minimal GRBL writer for the test: M4 once, each stroke as G0 then G1 with inline S.
-fn gcode(job: &Job) -> String {
+fn gcode(job: &Setup) -> String {
     let mut out = vec!["G21 G90".to_string(), "M4 S0".to_string()];
     for tp in &job.paths {
         let s = if tp.op == Operation::Cut {
@@ -113,7 +113,7 @@ fn gcode(job: &Job) -> String {
     out.join("\n")
 }
 
-fn check(written: &Job) -> sim::CoverageReport {
+fn check(written: &Setup) -> sim::CoverageReport {
     let report = run(&gcode(written), &laser(Dialect::Grbl));
     assert!(report.is_clean(), "{:?}", report.violations);
     sim::coverage(&report, &pattern(), &job(), &plan(job()))
