@@ -38,11 +38,12 @@ use crate::pattern::CreasePattern;
 pub use animation::render_gif;
 pub use heat::heat_color;
 pub use layout::{MAX_SIZE, MIN_SIZE};
+pub use legend::{ColourScale, short_number as legend_number};
 pub use preview::render_pixmap;
 pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
 pub use step_sheet::{step_sheet_png, step_sheet_rgba};
 pub use top_view::render_top_view_png;
-pub use view3d::View3d;
+pub use view3d::{View3d, ViewKey};
 
 /// Options of [`preview_png`].
 #[derive(Clone, Debug, PartialEq)]
