@@ -130,7 +130,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         ..View3d::with_width(args.width)
     };
     let unit = input::unit_label(cp.units);
-    let percent = foldcam::render::legend_number(args.percent);
+    let percent = args.percent;
     if let Some(png) = &png {
         let shows = if args.strain {
             format!("folded to {percent}%, faces coloured by their bars' strain")

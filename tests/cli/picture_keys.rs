@@ -723,4 +723,14 @@ fn paper_craft_edge_numbers_read_upright() {
     read.sort_unstable();
     let expected: Vec<u32> = (0..8).flat_map(|i| [i, i]).collect();
     assert_eq!(read, expected);
+    // The fish: small parts and two-digit numbers; every digit still reads upright.
+    let design = example("papercraft/fish.craft.toml");
+    ok(&foldcam(&["papercraft", &design, "-o", "f.fold"], d));
+    let text = std::fs::read_to_string(d.join("f.fold")).expect("sheet");
+    let json: serde_json::Value = serde_json::from_str(&text).expect("FOLD");
+    let digits = digit_strokes(&json);
+    assert!(digits.len() >= 36, "{} digits", digits.len());
+    for s in &digits {
+        assert!(read_digit(s).is_some(), "not an upright digit: {s:?}");
+    }
 }
