@@ -96,7 +96,7 @@ fn cut(
         Some(&u.folded),
     )?;
     let view = view.clone().with_key(
-        &format!("{tucks} tucks folded"),
+        &format!("the folded form with {tucks} tucks"),
         super::input::unit_label(u.pattern.units),
     );
     let png = render_folded_png(&u.folded, &view)?;

@@ -133,7 +133,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let percent = args.percent;
     if let Some(png) = &png {
         let shows = if args.strain {
-            format!("folded to {percent}%, faces coloured by their bars' strain")
+            format!("folded to {percent}%, coloured by bar strain")
         } else {
             format!("folded to {percent}%")
         };
