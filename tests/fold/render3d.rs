@@ -414,14 +414,21 @@ fn the_key_band_adds_to_the_height_and_its_scale_bar_matches_the_drawing() {
     let run = |y: u32, x0: u32, x1: u32| {
         let (mut best, mut cur) = (0u32, 0u32);
         for x in x0..x1 {
-            cur = if dark(img.get_pixel(x, y)) { cur + 1 } else { 0 };
+            cur = if dark(img.get_pixel(x, y)) {
+                cur + 1
+            } else {
+                0
+            };
             best = best.max(cur);
         }
         best
     };
     // The square's dark outline: its widest dark row in the drawing.
     let square = (0..300).map(|y| run(y, 0, 300)).max().unwrap_or(0);
-    let bar = (300..img.height()).map(|y| run(y, 0, 300)).max().unwrap_or(0);
+    let bar = (300..img.height())
+        .map(|y| run(y, 0, 300))
+        .max()
+        .unwrap_or(0);
     let mm = 100.0 * f64::from(bar) / f64::from(square);
     assert!(
         [10.0, 20.0, 50.0].iter().any(|r| (mm - r).abs() < 1.5),
