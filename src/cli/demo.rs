@@ -302,11 +302,15 @@ fn show_card(
     formats::save(&dir.join(format!("{name}.fold")), &cp, None)?;
     let view = super::popup::card_view(width.min(640));
     let held = |angle: f64| foldcam::design::popup::as_held(&fold_card(card, &cp, angle).state);
-    let standing = render_folded_png(&held(90.0), &view)?;
+    let standing = render_folded_png(
+        &held(90.0),
+        &view.clone().with_key("card opened to 90°", "mm"),
+    )?;
     write_atomic(&dir.join(format!("{name}.png")), &standing).context("png")?;
     let frames: Vec<_> = (0..=12)
         .map(|k| held(10.0 + 80.0 * f64::from(k) / 12.0))
         .collect();
+    let view = view.with_key("card opening from 10° to 90°", "mm");
     let gif = render_gif(&frames, &view, 100)?;
     write_atomic(&dir.join(format!("{name}.gif")), &gif).context("gif")?;
     index.picture(format!("{name}.png"), format!("{name}: the card standing"));

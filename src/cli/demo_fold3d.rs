@@ -41,10 +41,15 @@ pub fn miura(dir: &Path, index: &mut super::demo_jobs::DemoIndex, width: u32) ->
         ..View3d::with_width(width.min(800))
     };
     let name = "fold3d-miura";
-    let png = render_folded_png(&f.folded, &view)?;
+    let unit = super::input::unit_label(cp.units);
+    let shown = view
+        .clone()
+        .with_key(&format!("Miura-ori folded to {PERCENT}%"), unit);
+    let png = render_folded_png(&f.folded, &shown)?;
     let mut states = vec![f.state_at(&f.model.rest)];
     states.extend(f.frames.iter().map(|x| f.state_at(x)));
-    let gif = render_gif(&states, &view, 80)?;
+    let folding = format!("Miura-ori folding from flat to {PERCENT}%");
+    let gif = render_gif(&states, &view.with_key(&folding, unit), 80)?;
     formats::save(&dir.join(format!("{name}.fold")), cp, Some(&f.folded))?;
     for (ext, bytes, shows) in [
         ("png", png, format!("folded to {PERCENT}%")),

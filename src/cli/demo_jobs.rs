@@ -81,8 +81,12 @@ pub(super) fn write_job(
     let first = job.readback.first().context("no job planned")?;
     let path = dir.join(&file);
     write_atomic(&path, &job.outputs[0]).with_context(|| path.display().to_string())?;
-    let image =
-        sim::render_png(&first.sim, &machine, TOOLPATH_WIDTH).map_err(|e| anyhow!("{e}"))?;
+    let names = sim::JobNames {
+        file: Some(&file),
+        material: Some(&material.name),
+    };
+    let image = sim::render_png(&first.sim, &machine, TOOLPATH_WIDTH, &names)
+        .map_err(|e| anyhow!("{e}"))?;
     let png = dir.join(&picture);
     write_atomic(&png, &image).with_context(|| png.display().to_string())?;
     index

@@ -95,7 +95,11 @@ fn cut(
         &u.pattern,
         Some(&u.folded),
     )?;
-    let png = render_folded_png(&u.folded, view)?;
+    let view = view.clone().with_key(
+        &format!("the folded form with {tucks} tucks"),
+        super::input::unit_label(u.pattern.units),
+    );
+    let png = render_folded_png(&u.folded, &view)?;
     write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;
     index.picture(format!("{name}.png"), format!("{name}: the folded form"));
     let job = write_job(

@@ -90,6 +90,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     if let Some(gif) = &gif {
         check_picture_size(shown.len(), view.width, "animation")?;
+        let unit = super::input::unit_label(design.sheet.pattern.units);
+        let view = view.clone().with_key("folding step by step", unit);
         let bytes =
             render_gif(&shown, &view, 700).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
         super::outputs::stage_image(&mut outputs, gif, bytes, "gif")?;

@@ -8,7 +8,7 @@ use anyhow::{Result, anyhow};
 use foldcam::check::fold3d::{Fold, FoldOptions, Stop, fold};
 use foldcam::formats::OutputSet;
 use foldcam::formats::fold::write_string;
-use foldcam::render::heat_color;
+use foldcam::render::{ColourScale, heat_color};
 use foldcam::render::{View3d, render_folded_png, render_gif};
 
 use super::Outcome;
@@ -129,12 +129,27 @@ pub fn run(args: Args) -> Result<Outcome> {
         elevation_deg: 35.0,
         ..View3d::with_width(args.width)
     };
+    let unit = input::unit_label(cp.units);
+    let percent = args.percent;
     if let Some(png) = &png {
-        let mut v = view.clone();
+        let shows = if args.strain {
+            format!("folded to {percent}%, coloured by bar strain")
+        } else {
+            format!("folded to {percent}%")
+        };
+        let mut v = view.clone().with_key(&shows, unit);
         if args.strain {
             let r = &result.report;
             let top = r.max_strain.max(STRAIN_SCALE_MIN);
             v.face_colors = Some(r.face_strain.iter().map(|&s| heat_color(s, top)).collect());
+            if let Some(key) = &mut v.key {
+                key.colour_scale = Some(ColourScale {
+                    label: "bar strain".into(),
+                    low: 0.0,
+                    high: 100.0 * top,
+                    unit: "%".into(),
+                });
+            }
         }
         let bytes =
             render_folded_png(&result.folded, &v).map_err(|e| anyhow!("{}: {e}", png.display()))?;
@@ -143,6 +158,9 @@ pub fn run(args: Args) -> Result<Outcome> {
     if let Some(gif) = &gif {
         let mut states = vec![result.state_at(&result.model.rest)];
         states.extend(result.frames.iter().map(|x| result.state_at(x)));
+        let view = view
+            .clone()
+            .with_key(&format!("folding from flat to {percent}%"), unit);
         let bytes =
             render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
         staged.add(gif, bytes);

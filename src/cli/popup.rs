@@ -150,6 +150,7 @@ pub fn card_previews(
     let view = card_view(width);
     let fold = |angle| as_held(&fold(angle));
     if let Some(png) = png {
+        let view = view.clone().with_key("card opened to 90°", "mm");
         let bytes =
             render_folded_png(&fold(90.0), &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
         super::outputs::stage_image(outputs, png, bytes, "png")?;
@@ -159,6 +160,7 @@ pub fn card_previews(
         let states: Vec<_> = (0..=24)
             .map(|k| fold(5.0 + 85.0 * f64::from(k) / 24.0))
             .collect();
+        let view = view.with_key("card opening from 5° to 90°", "mm");
         let bytes =
             render_gif(&states, &view, 80).map_err(|e| anyhow!("{}: {e}", gif.display()))?;
         super::outputs::stage_image(outputs, gif, bytes, "gif")?;

@@ -90,7 +90,14 @@ pub fn run(args: Args) -> Result<Outcome> {
         _ => None,
     };
     if let Some(png) = &png {
-        let bytes = sim::render_png(&report, &machine, args.width)
+        let file = args.job.file_name().map(|f| f.to_string_lossy());
+        let names = sim::JobNames {
+            file: file
+                .as_deref()
+                .filter(|_| !super::pipe::is_stdio(&args.job)),
+            material: args.material.as_deref(),
+        };
+        let bytes = sim::render_png(&report, &machine, args.width, &names)
             .map_err(|e| anyhow!("{}: {e}", png.display()))?;
         super::outputs::write_one(png, bytes, &[&args.job])?;
     }

@@ -199,7 +199,11 @@ pub fn run(args: Args) -> Result<Outcome> {
             azimuth_deg: 30.0,
             elevation_deg: 35.0,
             ..View3d::with_width(args.width)
-        };
+        }
+        .with_key(
+            "the tessellation folded",
+            super::input::unit_label(unfolded.pattern.units),
+        );
         let bytes = render_folded_png(&unfolded.folded, &view)
             .map_err(|e| anyhow!("{}: {e}", png.display()))?;
         super::outputs::stage_image(&mut outputs, png, bytes, "png")?;

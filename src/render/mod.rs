@@ -13,7 +13,8 @@
 //! of each straight crease line chained into one polyline so dashes run on across vertices.
 //!
 //! 3D views of a [`FoldedState`](crate::pattern::FoldedState) ([`render_folded_png`],
-//! [`render_gif`]): orthographic camera and framing in [`view3d`], flat two-sided shading in
+//! [`render_gif`]), with a key band under the drawing when [`View3d::key`] asks for one:
+//! orthographic camera and framing in [`view3d`], flat two-sided shading in
 //! [`shade`], the painter's order in [`depth_order`], animations in [`animation`], fold-step
 //! sheets with captions at one scale in [`step_sheet`].
 
@@ -38,11 +39,12 @@ use crate::pattern::CreasePattern;
 pub use animation::render_gif;
 pub use heat::heat_color;
 pub use layout::{MAX_SIZE, MIN_SIZE};
+pub use legend::ColourScale;
 pub use preview::render_pixmap;
 pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
 pub use step_sheet::{step_sheet_png, step_sheet_rgba};
 pub use top_view::render_top_view_png;
-pub use view3d::View3d;
+pub use view3d::{View3d, ViewKey};
 
 /// Options of [`preview_png`].
 #[derive(Clone, Debug, PartialEq)]

@@ -102,7 +102,11 @@ fn preview_key(
             });
         }
     }
-    Key { scale_bar, entries }
+    Key {
+        scale_bar,
+        entries,
+        ..Key::default()
+    }
 }
 
 fn check_options(opts: &PreviewOptions) -> Result<(), RenderError> {

@@ -21,6 +21,12 @@
 //! flat light grey and thin, unassigned magenta, join orange (the colours of [`super::style`],
 //! solid); a side with no edge is drawn as boundary. Faces with holes are filled with the
 //! even-odd rule.
+//!
+//! **Key.** With [`View3d::key`] set, the image grows by a band under the drawing holding
+//! the caption, a scale bar at the framing's scale (the projection is orthographic: exact
+//! for lengths parallel to the image plane), the colour scale if any, and a sample of each
+//! colour used: the paper's front and back tints (unscaled by the light) unless every face
+//! has a colour of its own, and, with outlines, each kind of line present.
 
 use std::collections::HashMap;
 
@@ -31,6 +37,7 @@ use tiny_skia::{
 
 use super::RenderError;
 use super::depth_order::{FaceGeometry, paint_order};
+use super::legend::{self, Key, LegendEntry, ScaleBar};
 use super::style::line_style;
 use super::view3d::{Camera, Framing, View3d, drawable_faces};
 use crate::pattern::{Assignment, Face, FoldedState, VertexId};
@@ -44,11 +51,19 @@ pub const AMBIENT: f64 = 0.45;
 /// Colour of boundary and cut outlines, RGBA.
 const OUTLINE_DARK: [u8; 4] = [35, 35, 35, 255];
 
-/// Draws a folded state as PNG bytes.
+/// Share of the drawing's width the scale bar may take at most.
+const SCALE_BAR_SHARE: f64 = 0.25;
+
+/// Draws a folded state as PNG bytes; with a key, its caption is stored as the PNG's
+/// `Description` text too.
 pub fn render_folded_png(state: &FoldedState, view: &View3d) -> Result<Vec<u8>, RenderError> {
-    render_folded_pixmap(state, view)?
-        .encode_png()
-        .map_err(|e| RenderError::Encode(e.to_string()))
+    let pixmap = render_folded_pixmap(state, view)?;
+    match &view.key {
+        Some(key) => legend::png_with_text(&pixmap, &[("Description", &key.caption)]),
+        None => pixmap
+            .encode_png()
+            .map_err(|e| RenderError::Encode(e.to_string())),
+    }
 }
 
 /// Draws a folded state as an RGBA image (not premultiplied).
@@ -80,7 +95,20 @@ pub(crate) fn draw_state(
     framing: &Framing,
 ) -> Result<Pixmap, RenderError> {
     let faces = drawable_faces(state)?;
-    let (width, height) = (framing.width, framing.height);
+    let width = framing.width;
+    let font_px = legend::font_px_for(width);
+    let margin = view.margin.min(width / 8);
+    let inner = width.saturating_sub(2 * margin).max(1);
+    let key = view.key.as_ref().map(|k| key(state, view, framing, k));
+    let band = key.as_ref().map_or(0, |k| k.height(inner, font_px));
+    let height = framing.height.saturating_add(band);
+    if height > super::MAX_SIZE {
+        return Err(RenderError::Option {
+            name: "height",
+            value: height.to_string(),
+            expected: "a drawing and key band within 16384 pixels",
+        });
+    }
     let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::Allocation { width, height })?;
     let [r, g, b, a] = view.background;
     pixmap.fill(Color::from_rgba8(r, g, b, a));
@@ -106,7 +134,58 @@ pub(crate) fn draw_state(
             outline_face(&mut pixmap, face, &pos, &edges, camera, framing, view);
         }
     }
+    if let Some(key) = key {
+        let top = f64::from(framing.height);
+        let (w, h) = (f64::from(width), f64::from(band));
+        legend::fill_rect(&mut pixmap, 0.0, top, w, h, legend::PAPER);
+        key.draw(&mut pixmap, f64::from(margin), top, inner, font_px);
+    }
     Ok(pixmap)
+}
+
+/// The key of a view of `state`: caption, scale bar, colour scale, paper sides and lines.
+fn key(state: &FoldedState, view: &View3d, framing: &Framing, k: &super::view3d::ViewKey) -> Key {
+    let margin = view.margin.min(framing.width / 8);
+    let drawn = f64::from(framing.width.saturating_sub(2 * margin));
+    let mut entries = Vec::new();
+    let faces = state.faces.as_ref().map_or(0, Vec::len);
+    let own_colours = view.face_colors.as_ref().map_or(0, Vec::len);
+    if own_colours < faces {
+        let [r, g, b] = view.front_color;
+        entries.push(LegendEntry::fill("paper, front", [r, g, b, 255]));
+        let [r, g, b] = view.back_color;
+        entries.push(LegendEntry::fill("paper, back", [r, g, b, 255]));
+    }
+    if view.outline {
+        let lw = view.line_width_px.max(2.0);
+        let used = |a: Assignment| state.edges.iter().any(|e| e.assignment == a);
+        if used(Assignment::Boundary) || used(Assignment::Cut) {
+            let label = match (used(Assignment::Boundary), used(Assignment::Cut)) {
+                (true, true) => "edge or cut",
+                (false, true) => "cut",
+                _ => "edge",
+            };
+            let (color, width) = outline_style(Assignment::Boundary, lw);
+            entries.push(LegendEntry::line(label, color, width, None));
+        }
+        for a in super::style::DRAW_ORDER.iter().rev() {
+            if matches!(a, Assignment::Boundary | Assignment::Cut) || !used(*a) {
+                continue;
+            }
+            let (color, width) = outline_style(*a, lw);
+            entries.push(LegendEntry::line(a.name(), color, width, None));
+        }
+    }
+    Key {
+        caption: Some(k.caption.clone()),
+        scale_bar: Some(ScaleBar {
+            px_per_unit: framing.scale,
+            unit: k.unit,
+            max_px: drawn * SCALE_BAR_SHARE,
+        }),
+        colour_scale: k.colour_scale.clone(),
+        entries,
+    }
 }
 
 /// The assignment of the edge joining each pair of vertices (keyed smaller index first).

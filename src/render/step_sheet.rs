@@ -72,8 +72,10 @@ pub fn step_sheet_rgba(
         return Err(RenderError::NoFrames);
     }
     let side = view.width;
+    // The panels carry captions of their own, no key band.
     let view = View3d {
         height: Some(side),
+        key: None,
         ..view.clone()
     };
     let (camera, framing) = Framing::fit(states, &view)?;

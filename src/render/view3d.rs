@@ -21,12 +21,20 @@
 //! centred, so the sheet does not jump or zoom between frames. Without an explicit height the
 //! image takes the aspect ratio of that box, capped at 4 × the width and [`MAX_SIZE`] pixels.
 //!
+//! **Key.** With [`View3d::key`] set, a band under the drawing ([`super::legend`]) holds a
+//! caption line (what is shown), a scale bar, the colour scale of the faces when they are
+//! coloured by a quantity, and a sample of each colour drawn: the paper's two sides and each
+//! kind of line. The projection is orthographic, so the scale bar is exact for lengths
+//! parallel to the image plane at any depth, and shorter on screen for lengths slanting away
+//! from it. The band adds to the image's height: [`View3d::height`] is the drawing's.
+//!
 //! **Input checks.** Every position must be finite and within ±[`MAX_COORDINATE`]; every
 //! vertex a face names must have a position; at least one face needs three or more corners.
 //! Violations are [`RenderError`]s, never panics.
 
 use glam::{DVec2, DVec3};
 
+use super::legend::ColourScale;
 use super::{MAX_SIZE, MIN_SIZE, RenderError};
 use crate::pattern::{Face, FaceId, FoldedState, MAX_COORDINATE, VertexId};
 
@@ -43,7 +51,8 @@ pub struct View3d {
     pub elevation_deg: f64,
     /// Image width, pixels (16 to 16384).
     pub width: u32,
-    /// Image height, pixels (16 to 16384); `None` follows the drawing's aspect ratio.
+    /// Height of the drawing, pixels (16 to 16384), without the key's band under it; `None`
+    /// follows the drawing's aspect ratio.
     pub height: Option<u32>,
     /// Background colour, RGBA (not premultiplied).
     pub background: [u8; 4],
@@ -63,6 +72,35 @@ pub struct View3d {
     /// `front_color`/`back_color` (e.g. strain colouring, [`super::heat::heat_color`]); faces
     /// beyond its end keep the paper colours.
     pub face_colors: Option<Vec<[u8; 3]>>,
+    /// The key drawn in a band under the drawing (see the module docs); `None` draws the
+    /// drawing alone.
+    pub key: Option<ViewKey>,
+}
+
+/// What the key under a 3D view says besides the colours, which it finds in the view.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewKey {
+    /// What the picture shows, one line ("opened to 90°, seen from the front"); also stored
+    /// as the PNG's `Description` text.
+    pub caption: String,
+    /// The unit of the state's coordinates, which the scale bar is labelled in ("mm",
+    /// "units").
+    pub unit: &'static str,
+    /// What [`View3d::face_colors`] measure, when they are [`super::heat_color`]s of a
+    /// quantity: drawn as a gradient with its ends' values. With it, the key shows no paper
+    /// colours.
+    pub colour_scale: Option<ColourScale>,
+}
+
+impl ViewKey {
+    /// A key in millimetres with `caption` and no colour scale.
+    pub fn mm(caption: impl Into<String>) -> Self {
+        ViewKey {
+            caption: caption.into(),
+            unit: "mm",
+            colour_scale: None,
+        }
+    }
 }
 
 impl Default for View3d {
@@ -79,6 +117,7 @@ impl Default for View3d {
             front_color: [246, 236, 208],
             back_color: [176, 204, 236],
             face_colors: None,
+            key: None,
         }
     }
 }
@@ -89,6 +128,44 @@ impl View3d {
         View3d {
             width,
             ..View3d::default()
+        }
+    }
+
+    /// Where the eye is, in words, from the angles: "the front", "the front right", "the
+    /// back left" … (azimuth in 60° sectors about the front, back, left and right, 30° wide
+    /// at the sides' middles), then "above" or "below" for elevations beyond ±15°
+    /// ("straight above" or "straight below" beyond ±75°).
+    pub fn seen_from(&self) -> String {
+        let az = self.azimuth_deg.rem_euclid(360.0);
+        let az = if az > 180.0 { az - 360.0 } else { az };
+        let side = if az >= 0.0 { "right" } else { "left" };
+        let around = match az.abs() {
+            a if a < 15.0 => "the front".to_string(),
+            a if a < 75.0 => format!("the front {side}"),
+            a if a <= 105.0 => format!("the {side}"),
+            a if a <= 165.0 => format!("the back {side}"),
+            _ => "the back".to_string(),
+        };
+        match self.elevation_deg {
+            e if e > 75.0 => "straight above".to_string(),
+            e if e < -75.0 => "straight below".to_string(),
+            e if e > 15.0 => format!("{around}, above"),
+            e if e < -15.0 => format!("{around}, below"),
+            _ => around,
+        }
+    }
+
+    /// This view with a key (see [`ViewKey`]) captioned "`shows`, seen from …" (see
+    /// [`View3d::seen_from`]), its scale bar in `unit`.
+    pub fn with_key(self, shows: &str, unit: &'static str) -> View3d {
+        let caption = format!("{shows}, seen from {}", self.seen_from());
+        View3d {
+            key: Some(ViewKey {
+                caption,
+                unit,
+                colour_scale: None,
+            }),
+            ..self
         }
     }
 
@@ -174,7 +251,8 @@ impl Camera {
 pub(crate) struct Framing {
     pub(crate) width: u32,
     pub(crate) height: u32,
-    scale: f64,
+    /// Pixels per unit of the state's coordinates.
+    pub(crate) scale: f64,
     center: DVec2,
 }
 
@@ -309,6 +387,24 @@ mod tests {
             assert!(a.dot(b).abs() < 1e-12);
         }
         assert!((c.up.length() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_eye_is_named_from_the_angles() {
+        let at = |azimuth_deg, elevation_deg| {
+            View3d {
+                azimuth_deg,
+                elevation_deg,
+                ..View3d::default()
+            }
+            .seen_from()
+        };
+        assert_eq!(at(0.0, 0.0), "the front");
+        assert_eq!(at(30.0, 25.0), "the front right, above");
+        assert_eq!(at(-20.0, 28.0), "the front left, above");
+        assert_eq!(at(270.0, -30.0), "the left, below");
+        assert_eq!(at(180.0, 0.0), "the back");
+        assert_eq!(at(10.0, 90.0), "straight above");
     }
 
     #[test]

@@ -53,7 +53,7 @@ pub use coverage::{
     CoverageOptions, CoverageReport, EdgeCoverage, StrayBurn, coverage, coverage_with,
 };
 pub use parse::MAX_NUMBER;
-pub use render::render_png;
+pub use render::{JobNames, render_png, toolpath_title};
 pub use report::{
     Bounds, Burn, MAX_VIOLATIONS, OperationStart, PowerLength, SimReport, Travel, Violation,
     ViolationKind,

@@ -14,6 +14,10 @@
 //! Travel and burns are drawn by [`super::raster`] in time linear in the moves; the bed
 //! outline, the key and the text by tiny-skia.
 //!
+//! **Title.** A line above the bed names the job file, the machine and the material
+//! ([`toolpath_title`], from the [`JobNames`] the caller knows); it sits in the top margin
+//! (which grows to hold it in narrow pictures) and is stored in the PNG as its `Title` text.
+//!
 //! Machine x runs to the right. Machine y runs up the image unless the bed is `y_flipped`
 //! (origin at the back), when it runs down. Moves outside the bed are drawn where they go,
 //! clipped by the image.
@@ -41,6 +45,8 @@ pub const BED_COLOR: [u8; 4] = [110, 110, 110, 255];
 struct View {
     scale: f64,
     margin: f64,
+    /// Pixels above the region drawn: the top margin, holding the title.
+    top: f64,
     /// Height of the region drawn (from the bed's origin), mm.
     height: f64,
     /// Width of the region drawn, mm.
@@ -57,7 +63,7 @@ impl View {
         };
         (
             (self.margin + p.x * self.scale) as f32,
-            (self.margin + y * self.scale) as f32,
+            (self.top + y * self.scale) as f32,
         )
     }
 }
@@ -91,17 +97,42 @@ fn colouring(report: &SimReport) -> Colouring {
     }
 }
 
-/// Draws `report` on the bed of `machine` (see the module docs for the region) as PNG bytes, `width` pixels wide (16 to
-/// 16384); the height follows the bed's aspect ratio plus the key's band, at most 16384
-/// pixels.
+/// What a toolpath picture's title names besides the machine (whose profile the picture is
+/// drawn with): the job's file and the material, each when the caller knows it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct JobNames<'a> {
+    /// The job's file name as the user knows it ("miura.grbl-diode.card-300gsm.gcode").
+    pub file: Option<&'a str>,
+    /// The material's name ("card-300gsm").
+    pub material: Option<&'a str>,
+}
+
+/// The title of a toolpath picture: "job FILE, machine MACHINE, material MATERIAL", leaving
+/// out what `names` does not give.
+pub fn toolpath_title(machine: &MachineProfile, names: &JobNames) -> String {
+    let mut parts = Vec::new();
+    if let Some(file) = names.file {
+        parts.push(format!("job {file}"));
+    }
+    parts.push(format!("machine {}", machine.name));
+    if let Some(material) = names.material {
+        parts.push(format!("material {material}"));
+    }
+    parts.join(", ")
+}
+
+/// Draws `report` on the bed of `machine` (see the module docs for the region) as PNG bytes,
+/// `width` pixels wide (16 to 16384), titled with [`toolpath_title`] (in the picture and as
+/// the PNG's `Title` text); the height follows the bed's aspect ratio plus the title and the
+/// key's band, at most 16384 pixels.
 pub fn render_png(
     report: &SimReport,
     machine: &MachineProfile,
     width: u32,
+    names: &JobNames,
 ) -> Result<Vec<u8>, RenderError> {
-    render_pixmap(report, machine, width)?
-        .encode_png()
-        .map_err(|e| RenderError::Encode(e.to_string()))
+    let pixmap = render_pixmap(report, machine, width, names)?;
+    legend::png_with_text(&pixmap, &[("Title", &toolpath_title(machine, names))])
 }
 
 /// As [`render_png`], into a pixmap (premultiplied RGBA).
@@ -109,17 +140,19 @@ pub fn render_pixmap(
     report: &SimReport,
     machine: &MachineProfile,
     width: u32,
+    names: &JobNames,
 ) -> Result<Pixmap, RenderError> {
     if !(MIN_SIZE..=MAX_SIZE).contains(&width) {
         return Err(RenderError::Width(width));
     }
     let colouring = colouring(report);
     let font_px = legend::font_px_for(width);
-    let view = layout(machine, report, width)?;
+    let title = toolpath_title(machine, names);
+    let view = layout(machine, report, width, &title)?;
     let inner = (f64::from(width) - 2.0 * view.margin).max(1.0) as u32;
     let key = key(report, machine, &view, colouring);
     let band = key.height(inner, font_px);
-    let bed_h = (view.height * view.scale + 2.0 * view.margin).ceil() as u32;
+    let bed_h = (view.top + view.height * view.scale + view.margin).ceil() as u32;
     let height = (bed_h + band).clamp(1, MAX_SIZE);
     let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::Allocation { width, height })?;
     pixmap.fill(Color::WHITE);
@@ -127,6 +160,19 @@ pub fn render_pixmap(
     draw_bed(&mut pixmap, &view, machine, lw);
     draw_travel(&mut pixmap, &view, report, lw);
     draw_burns(&mut pixmap, &view, report, lw, colouring);
+    // The title, over anything drawn past the bed's top.
+    let title_h = f64::from(legend::title_height(&title, inner, font_px));
+    let title_top = ((view.top - title_h) / 2.0).floor().max(0.0);
+    let cover = title_top + title_h;
+    legend::fill_rect(
+        &mut pixmap,
+        0.0,
+        0.0,
+        f64::from(width),
+        cover,
+        legend::PAPER,
+    );
+    legend::draw_title(&mut pixmap, view.margin, title_top, &title, inner, font_px);
     // The key's band, cleared of anything drawn past the bed.
     let top = f64::from(bed_h) - view.margin / 2.0;
     legend::fill_rect(
@@ -165,7 +211,13 @@ fn region(report: &SimReport, bed: &crate::machine::Bed) -> DVec2 {
     (hi + DVec2::splat(0.05 * hi.max_element())).min(whole)
 }
 
-fn layout(machine: &MachineProfile, report: &SimReport, width: u32) -> Result<View, RenderError> {
+/// The mapping of the bed to pixels, with room for `title` at the top.
+fn layout(
+    machine: &MachineProfile,
+    report: &SimReport,
+    width: u32,
+    title: &str,
+) -> Result<View, RenderError> {
     let bed = machine.bed;
     let valid = |v: f64| v.is_finite() && v > 0.0;
     if !(valid(bed.width_mm) && valid(bed.height_mm)) {
@@ -176,13 +228,18 @@ fn layout(machine: &MachineProfile, report: &SimReport, width: u32) -> Result<Vi
         });
     }
     let margin = (f64::from(width) * MARGIN_SHARE).round();
+    let font_px = legend::font_px_for(width);
+    let inner = (f64::from(width) - 2.0 * margin).max(1.0) as u32;
+    let title = legend::title_height(title, inner, font_px) + 2 * font_px;
+    let top = margin.max(f64::from(title));
     let size = region(report, &bed);
     let scale = (f64::from(width) - 2.0 * margin) / size.x;
     // Leave a quarter of the largest height for the key.
-    let max_h = 0.75 * f64::from(MAX_SIZE) - 2.0 * margin;
+    let max_h = 0.75 * f64::from(MAX_SIZE) - top - margin;
     Ok(View {
         scale: scale.min(max_h / size.y),
         margin,
+        top,
         height: size.y,
         width: size.x,
         y_flipped: bed.y_flipped,
@@ -246,6 +303,7 @@ fn key(report: &SimReport, machine: &MachineProfile, view: &View, colouring: Col
             max_px: width * SCALE_BAR_SHARE,
         }),
         entries,
+        ..Key::default()
     }
 }
 

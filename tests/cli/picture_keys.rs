@@ -1,8 +1,10 @@
 //! Every picture carries its key: the toolpath picture (whole bed, legend, scale bar, travel
-//! and perforation in their own colours), the fold-step sheet (a caption per panel, one
-//! scale), the check rings (sized to the picture, numbered as the report numbers them) and the
-//! paper-craft sheet (edge numbers drawn dark). Each test runs the built program as a user
-//! would and reads the PNG back.
+//! and perforation in their own colours, a title naming job file, machine and material), the
+//! fold-step sheet (a caption per panel, one scale), the check rings (sized to the picture,
+//! numbered as the report numbers them), the paper-craft sheet (edge numbers drawn dark and
+//! upright), the 3D renders (caption, scale bar, colour samples; the strain picture's colour
+//! scale) and every PNG and GIF the demo writes (a key band with a scale bar). Each test runs
+//! the built program as a user would and reads the picture back.
 
 use crate::bin;
 
@@ -414,4 +416,321 @@ fn pattern_preview_has_a_legend_of_the_lines_drawn() {
         "mountain sample"
     );
     assert!(count(&img, key, all, is_dark) > 300, "scale bar and labels");
+}
+
+/// The scale bar of a key band: a dark horizontal run (the bar's foot) with a dark tick
+/// rising at each end, a clear row just above the ticks (the band is apart from the
+/// drawing) and dark label pixels right of the bar. Searched from the bottom up; returns
+/// `(top of the ticks, row of the foot, bar length in pixels)`.
+fn key_scale_bar(img: &RgbaImage) -> Option<(u32, u32, u32)> {
+    let (w, h) = img.dimensions();
+    let dark = |x: u32, y: u32| is_dark(img.get_pixel(x, y));
+    let rise = |x: u32, y: u32| (0..=y).rev().take_while(|&yy| dark(x, yy)).count() as u32;
+    for y in (h / 3..h).rev() {
+        let mut x = 0;
+        while x < w {
+            if !dark(x, y) {
+                x += 1;
+                continue;
+            }
+            let x0 = x;
+            while x < w && dark(x, y) {
+                x += 1;
+            }
+            let len = x - x0;
+            if len < (w / 60).max(12) {
+                continue;
+            }
+            let (left, right) = (rise(x0, y), rise(x - 1, y));
+            if !(5..=40).contains(&left) || left.abs_diff(right) > 1 {
+                continue;
+            }
+            let top = y + 1 - left;
+            let lo = x0.saturating_sub(3);
+            let hi = (x + 3).min(w);
+            let clear_above = top > 0 && (lo..hi).all(|xx| !dark(xx, top - 1));
+            let label = count(img, top..y + 1, x..(x + 12 * left).min(w), is_dark);
+            if clear_above && label > 10 {
+                return Some((top, y, len));
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn every_picture_the_demo_writes_carries_a_key_band() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    ok(&foldcam(&["demo", "--out", "demo"], d));
+    let out = d.join("demo");
+    let mut names: Vec<String> = std::fs::read_dir(&out)
+        .expect("listing")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".png") || n.ends_with(".gif"))
+        .collect();
+    names.sort();
+    assert!(names.len() >= 20, "{names:?}");
+    let mut missing = Vec::new();
+    for name in &names {
+        // A GIF: its first frame.
+        let img = if name.ends_with(".gif") {
+            use image::AnimationDecoder;
+            let file = std::io::BufReader::new(std::fs::File::open(out.join(name)).expect("gif"));
+            let decoder = image::codecs::gif::GifDecoder::new(file).expect("a GIF");
+            let frame = decoder
+                .into_frames()
+                .next()
+                .expect("a frame")
+                .expect("decodes");
+            frame.into_buffer()
+        } else {
+            open(&out, name)
+        };
+        match key_scale_bar(&img) {
+            Some((top, foot, len)) => {
+                // The bar is a readable length, and the band has text.
+                let w = img.width();
+                assert!(len >= w / 50 && len <= w / 2, "{name}: bar of {len} px");
+                let band = count(&img, top..img.height(), 0..w, is_dark);
+                assert!(band > 150, "{name}: {band} dark pixels in the key band");
+                assert!(foot > img.height() / 3, "{name}");
+            }
+            None => missing.push(name.clone()),
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "no key band with a scale bar: {missing:?}"
+    );
+}
+
+#[test]
+fn a_3d_render_keys_its_colours_and_captions_the_view() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    let card = example("popup/house.voxel.txt");
+    let o = foldcam(
+        &["popup", "voxel", &card, "-o", "h.fold", "--png", "h.png"],
+        d,
+    );
+    ok(&o);
+    let img = open(d, "h.png");
+    let (top, _, _) = key_scale_bar(&img).expect("a key band with a scale bar");
+    let band = top..img.height();
+    let all = 0..img.width();
+    // Samples of the paper's front and back tints (View3d's defaults) and of the mountain
+    // and valley lines, all in the band.
+    let red = |p: &Rgba<u8>| p[0] > 180 && p[1] < 80 && p[2] < 80;
+    let blue = |p: &Rgba<u8>| p[2] > 180 && p[0] < 80 && p[1] < 120;
+    assert!(
+        count(&img, band.clone(), all.clone(), red) > 10,
+        "mountain sample"
+    );
+    assert!(
+        count(&img, band.clone(), all.clone(), blue) > 10,
+        "valley sample"
+    );
+    let tinted = |c: [u8; 3]| {
+        count(&img, band.clone(), all.clone(), |p| {
+            (0..3).all(|i| p[i] <= c[i] && u16::from(p[i]) + 90 >= u16::from(c[i])) && !is_dark(p)
+        })
+    };
+    assert!(tinted([246, 236, 208]) > 40, "front side sample");
+    assert!(tinted([176, 204, 236]) > 40, "back side sample");
+    let png = std::fs::read(d.join("h.png")).expect("png");
+    let text = String::from_utf8_lossy(&png);
+    assert!(
+        text.contains("opened to 90"),
+        "the caption in the PNG's text"
+    );
+}
+
+#[test]
+fn toolpath_picture_is_titled_with_its_file_machine_and_material() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    ok(&foldcam(&["generate", "miura", "-o", "m.fold"], d));
+    let cut = [
+        "cut",
+        "m.fold",
+        "-m",
+        "grbl-diode",
+        "-x",
+        "card-300gsm",
+        "-o",
+        "m.gcode",
+    ];
+    ok(&foldcam(&cut, d));
+    let sim = [
+        "simulate",
+        "m.gcode",
+        "-m",
+        "grbl-diode",
+        "-x",
+        "card-300gsm",
+        "--png",
+        "p.png",
+        "--width",
+        "900",
+    ];
+    ok(&foldcam(&sim, d));
+    let img = open(d, "p.png");
+    // The bed's top edge: the first row holding a long grey line.
+    let grey = |p: &Rgba<u8>| {
+        p[0].abs_diff(p[1]) < 8 && p[1].abs_diff(p[2]) < 8 && (80..235).contains(&p[0])
+    };
+    let bed_top = (0..img.height())
+        .find(|&y| longest_run(&img, y, grey) > img.width() / 2)
+        .expect("bed");
+    let title = count(&img, 0..bed_top, 0..img.width(), is_dark);
+    assert!(title > 300, "a title above the bed ({title} dark pixels)");
+    let png = std::fs::read(d.join("p.png")).expect("png");
+    let text = String::from_utf8_lossy(&png);
+    for name in ["m.gcode", "grbl-diode", "card-300gsm"] {
+        assert!(text.contains(name), "the title names {name}");
+    }
+}
+
+#[test]
+fn fold3d_strain_picture_has_a_colour_scale() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    ok(&foldcam(&["generate", "miura", "-o", "m.fold"], d));
+    let args = [
+        "fold3d",
+        "m.fold",
+        "-o",
+        "f.fold",
+        "--png",
+        "f.png",
+        "--strain",
+        "--percent",
+        "60",
+    ];
+    let o = foldcam(&args, d);
+    assert!(o.status.code().is_some_and(|c| c <= 1), "{o:?}");
+    let img = open(d, "f.png");
+    let (top, _, _) = key_scale_bar(&img).expect("a key band");
+    // In one row of the band: the scale's low blue, its green middle and its top red
+    // (render::heat_color), left to right.
+    let found = (top..img.height()).any(|y| {
+        let at = |c: [u8; 3]| (0..img.width()).find(|&x| near(img.get_pixel(x, y), c, 12));
+        match (at([49, 54, 149]), at([102, 189, 99]), at([215, 48, 39])) {
+            (Some(lo), Some(mid), Some(hi)) => lo < mid && mid < hi && hi - lo >= 40,
+            _ => false,
+        }
+    });
+    assert!(found, "a blue-green-red gradient in the key band");
+}
+
+/// Flat edges of a FOLD file grouped into connected strokes (one digit each), as point pairs.
+fn digit_strokes(fold: &serde_json::Value) -> Vec<Vec<[[f64; 2]; 2]>> {
+    let coords: Vec<[f64; 2]> = fold["vertices_coords"]
+        .as_array()
+        .expect("coords")
+        .iter()
+        .map(|c| [c[0].as_f64().unwrap_or(0.0), c[1].as_f64().unwrap_or(0.0)])
+        .collect();
+    let flats: Vec<[usize; 2]> = fold["edges_vertices"]
+        .as_array()
+        .expect("edges")
+        .iter()
+        .zip(fold["edges_assignment"].as_array().expect("assignments"))
+        .filter(|(_, a)| a.as_str() == Some("F"))
+        .map(|(e, _)| [0, 1].map(|i| e[i].as_u64().unwrap_or(0) as usize))
+        .collect();
+    // Union-find over vertices.
+    let mut parent: Vec<usize> = (0..coords.len()).collect();
+    fn root(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            p[i] = p[p[i]];
+            i = p[i];
+        }
+        i
+    }
+    for &[a, b] in &flats {
+        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+        parent[ra] = rb;
+    }
+    let mut groups: std::collections::BTreeMap<usize, Vec<[[f64; 2]; 2]>> = Default::default();
+    for &[a, b] in &flats {
+        let r = root(&mut parent, a);
+        groups.entry(r).or_default().push([coords[a], coords[b]]);
+    }
+    groups.into_values().collect()
+}
+
+/// Reads a seven-segment digit drawn upright (y up): `None` if its strokes are not one.
+fn read_digit(strokes: &[[[f64; 2]; 2]]) -> Option<u32> {
+    let xs = strokes.iter().flat_map(|s| [s[0][0], s[1][0]]);
+    let ys = strokes.iter().flat_map(|s| [s[0][1], s[1][1]]);
+    let (x0, x1) = xs.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
+    let (y0, y1) = ys.fold((f64::MAX, f64::MIN), |(a, b), y| (a.min(y), b.max(y)));
+    let h = y1 - y0;
+    let tol = 0.1 * h;
+    if h <= 0.0 || x1 - x0 > 0.7 * h {
+        return None; // wider than a digit: turned or mirrored across
+    }
+    if x1 - x0 < tol {
+        return Some(1);
+    }
+    let mut lit = 0u8;
+    for s in strokes {
+        let ([ax, ay], [bx, by]) = (s[0], s[1]);
+        let (mx, my) = (0.5 * (ax + bx), 0.5 * (ay + by));
+        let bit = if (ay - by).abs() < tol {
+            // Horizontal: top a, middle g, bottom d.
+            match my {
+                _ if (my - y1).abs() < tol => 0,
+                _ if (my - y0).abs() < tol => 3,
+                _ => 6,
+            }
+        } else {
+            let upper = my > 0.5 * (y0 + y1);
+            match ((mx - x1).abs() < tol, upper) {
+                (true, true) => 1,
+                (true, false) => 2,
+                (false, false) => 4,
+                (false, true) => 5,
+            }
+        };
+        lit |= 1 << bit;
+    }
+    const DIGITS: [u8; 10] = [
+        0b011_1111, 0b000_0110, 0b101_1011, 0b100_1111, 0b110_0110, 0b110_1101, 0b111_1101,
+        0b000_0111, 0b111_1111, 0b110_1111,
+    ];
+    DIGITS.iter().position(|&d| d == lit).map(|i| i as u32)
+}
+
+#[test]
+fn paper_craft_edge_numbers_read_upright() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let d = dir.path();
+    let design = example("papercraft/vase.craft.toml");
+    ok(&foldcam(&["papercraft", &design, "-o", "v.fold"], d));
+    let text = std::fs::read_to_string(d.join("v.fold")).expect("sheet");
+    let json: serde_json::Value = serde_json::from_str(&text).expect("FOLD");
+    let digits = digit_strokes(&json);
+    assert!(digits.len() >= 16, "{} digits", digits.len());
+    // Every digit reads as one, upright on the sheet (not turned a quarter or half turn, not
+    // mirrored), and the vase's eight cut lines 0 to 7 are each numbered on both their parts.
+    let mut read: Vec<u32> = digits
+        .iter()
+        .map(|s| read_digit(s).unwrap_or_else(|| panic!("not an upright digit: {s:?}")))
+        .collect();
+    read.sort_unstable();
+    let expected: Vec<u32> = (0..8).flat_map(|i| [i, i]).collect();
+    assert_eq!(read, expected);
+    // The fish: small parts and two-digit numbers; every digit still reads upright.
+    let design = example("papercraft/fish.craft.toml");
+    ok(&foldcam(&["papercraft", &design, "-o", "f.fold"], d));
+    let text = std::fs::read_to_string(d.join("f.fold")).expect("sheet");
+    let json: serde_json::Value = serde_json::from_str(&text).expect("FOLD");
+    let digits = digit_strokes(&json);
+    assert!(digits.len() >= 36, "{} digits", digits.len());
+    for s in &digits {
+        assert!(read_digit(s).is_some(), "not an upright digit: {s:?}");
+    }
 }

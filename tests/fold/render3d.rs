@@ -385,3 +385,53 @@ fn degenerate_geometry_draws_without_panicking() {
     }
     render_folded_rgba(&far_hole, &View3d::with_width(64)).expect("rgba");
 }
+
+#[test]
+fn the_key_band_adds_to_the_height_and_its_scale_bar_matches_the_drawing() {
+    // A 100 mm square seen straight from above: the drawing is 100 mm across, so the scale
+    // bar's length in pixels over the square's must be its length in mm over 100.
+    let mut state = FoldedState::default();
+    for (x, y) in [(0.0, 0.0), (100.0, 0.0), (100.0, 100.0), (0.0, 100.0)] {
+        state.positions.push(DVec3::new(x, y, 0.0));
+    }
+    state.faces = Some(vec![Face {
+        outer: ids(&[0, 1, 2, 3]),
+        holes: vec![],
+    }]);
+    let plain = View3d {
+        azimuth_deg: 0.0,
+        elevation_deg: 90.0,
+        height: Some(300),
+        ..View3d::with_width(300)
+    };
+    let keyed = plain.clone().with_key("a square", "mm");
+    let img = render_folded_rgba(&state, &keyed).expect("rgba");
+    assert_eq!(img.width(), 300);
+    assert!(img.height() > 300 + 20, "a band under the drawing");
+    let without = render_folded_rgba(&state, &plain).expect("rgba");
+    assert_eq!(without.height(), 300, "no key, no band");
+    let dark = |p: &Rgba<u8>| p[0] < 80 && p[1] < 80 && p[2] < 80;
+    let run = |y: u32, x0: u32, x1: u32| {
+        let (mut best, mut cur) = (0u32, 0u32);
+        for x in x0..x1 {
+            cur = if dark(img.get_pixel(x, y)) {
+                cur + 1
+            } else {
+                0
+            };
+            best = best.max(cur);
+        }
+        best
+    };
+    // The square's dark outline: its widest dark row in the drawing.
+    let square = (0..300).map(|y| run(y, 0, 300)).max().unwrap_or(0);
+    let bar = (300..img.height())
+        .map(|y| run(y, 0, 300))
+        .max()
+        .unwrap_or(0);
+    let mm = 100.0 * f64::from(bar) / f64::from(square);
+    assert!(
+        [10.0, 20.0, 50.0].iter().any(|r| (mm - r).abs() < 1.5),
+        "bar {bar} px on a square of {square} px = {mm:.1} mm"
+    );
+}

@@ -341,14 +341,22 @@ impl Design {
         };
         add_tabs(&mut parts, &network, &style)?;
         let seams = super::parts::seams(&parts);
-        let unlabelled = add_labels(&mut parts, &network, self.label_height);
         let spec = SheetSpec {
             width: self.sheet.width,
             height: self.sheet.height,
             margin: self.sheet.margin,
             gap: self.sheet.gap,
         };
+        // Packed first (labels lie inside the outlines, so they do not change the packing),
+        // so that every label can be written level on its sheet.
         let placements = pack(&parts, &spec)?;
+        let mut angles = vec![0.0; parts.len()];
+        for pl in &placements {
+            if let Some(a) = angles.get_mut(pl.part) {
+                *a = pl.angle;
+            }
+        }
+        let unlabelled = add_labels(&mut parts, &network, self.label_height, &angles);
         for pl in &placements {
             make_upright(&mut parts[pl.part], pl.angle);
         }

@@ -4,8 +4,12 @@
 //!
 //! Each label is the cut-line index in the crate's single-stroke digits
 //! ([`crate::geom::stroke_digits`]: a digit is 0.5 h wide and h tall, digits advance by
-//! 0.8 h), centred next to the side's
-//! middle (half its length), offset inward by 0.5 h from it, its top towards the side. The strokes
+//! 0.8 h), written **level on its sheet** (its baseline along the sheet's +x, read left to
+//! right, never turned or mirrored: the parts are labelled after they are packed, knowing
+//! each part's turn) next to the side's middle (half its length), inside the part, its box
+//! (the text with a 0.25 h border) 0.25 h from the side. Only when no level label fits on
+//! both parts at any size or position is the label written along the side instead, its top
+//! towards the side, turned to read left to right as [`make_upright`] does. The strokes
 //! go into the crease pattern as flat (`F`) lines: the material's `flat` operation decides
 //! whether the machine marks them (a pen or a low-power laser pass) or skips them, and the
 //! SVG and PNG previews draw them.
@@ -16,9 +20,9 @@
 //! at 0.35, 0.65, 0.2 and 0.8 of its length; a cut line is labelled only at a height that
 //! fits on both of its parts; [`add_labels`] returns the cut lines left unlabelled.
 //!
-//! Once the parts are placed, [`make_upright`] turns every label whose text would read
-//! upside down on its sheet by a half turn about its centre (the same box, so it still fits),
-//! so that every baseline's direction on the sheet lies in (−90°, 90°].
+//! [`make_upright`] turns every label whose text would read upside down on its sheet by a
+//! half turn about its centre (the same box, so it still fits), so that every baseline's
+//! direction on the sheet lies in (−90°, 90°].
 
 use glam::DVec2;
 
@@ -41,14 +45,21 @@ pub struct Label {
 }
 
 /// Labels every cut line shared by two parts with its index, height `height` mm (> 0;
-/// non-positive or non-finite heights label nothing). Returns the cut lines that got no
-/// label because none fits on both parts.
+/// non-positive or non-finite heights label nothing), level on the sheet of a part placed
+/// turned by `angles[k]` (radians counter-clockwise, as [`super::layout::Placement`]; parts
+/// beyond the slice's end at 0). Returns the cut lines that got no label because none fits
+/// on both parts.
 ///
 /// Lines are labelled in index order at the largest size that fits on both parts; when
 /// some line finds no room, the parts it joins are limited to the next smaller size and
 /// every label is placed again (their larger labels may have taken its room), until every
 /// line fits or nothing is left to shrink.
-pub fn add_labels(parts: &mut [Part], network: &Network, height: f64) -> Vec<usize> {
+pub fn add_labels(
+    parts: &mut [Part],
+    network: &Network,
+    height: f64,
+    angles: &[f64],
+) -> Vec<usize> {
     if !(height.is_finite() && height > 0.0) {
         return Vec::new();
     }
@@ -56,7 +67,7 @@ pub fn add_labels(parts: &mut [Part], network: &Network, height: f64) -> Vec<usi
     let mut largest = vec![0usize; parts.len()];
     loop {
         parts.iter_mut().for_each(|p| p.labels.clear());
-        let missing = label_pass(parts, network, height, &largest);
+        let missing = label_pass(parts, network, height, &largest, angles);
         let mut shrunk = false;
         for &(_, i, j) in &missing {
             for k in [i, j] {
@@ -79,6 +90,7 @@ fn label_pass(
     network: &Network,
     height: f64,
     largest: &[usize],
+    angles: &[f64],
 ) -> Vec<(usize, usize, usize)> {
     let mut missing = Vec::new();
     let hs = network.half_edges();
@@ -98,14 +110,22 @@ fn label_pass(
         let text = e.to_string();
         let from = largest[i].max(largest[j]);
         let (path_i, path_j) = (SidePath::new(&parts[i], &si), SidePath::new(&parts[j], &sj));
-        let fitted = SIZES[from..].iter().find_map(|&f| {
-            let fit = |part: &Part, path: &SidePath| {
-                POSITIONS
-                    .iter()
-                    .find_map(|&s| place(part, path, e, &text, f * height, s))
-            };
-            Some((fit(&parts[i], &path_i)?, fit(&parts[j], &path_j)?))
-        });
+        let level = |k: usize| Facing::Level(angles.get(k).copied().unwrap_or(0.0));
+        let fitted = [(level(i), level(j)), (Facing::AlongSide, Facing::AlongSide)]
+            .into_iter()
+            .find_map(|(facing_i, facing_j)| {
+                SIZES[from..].iter().find_map(|&f| {
+                    let fit = |part: &Part, path: &SidePath, facing: Facing| {
+                        POSITIONS
+                            .iter()
+                            .find_map(|&s| place(part, path, e, &text, f * height, s, facing))
+                    };
+                    Some((
+                        fit(&parts[i], &path_i, facing_i)?,
+                        fit(&parts[j], &path_j, facing_j)?,
+                    ))
+                })
+            });
         match fitted {
             Some((a, b)) => {
                 parts[i].labels.push(a);
@@ -150,16 +170,42 @@ impl SidePath {
     }
 }
 
+/// Which way a label's text runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Facing {
+    /// Level on the sheet of a part placed turned by this angle (radians counter-clockwise).
+    Level(f64),
+    /// Along its side, its top towards the side.
+    AlongSide,
+}
+
 /// The label `text` of cut line `e` on the side `path` of `part` at height `h`, next to the
-/// point at fraction `along` of the side's length, if it fits.
-fn place(part: &Part, path: &SidePath, e: usize, text: &str, h: f64, along: f64) -> Option<Label> {
+/// point at fraction `along` of the side's length, facing `facing`, if it fits.
+fn place(
+    part: &Part,
+    path: &SidePath,
+    e: usize,
+    text: &str,
+    h: f64,
+    along: f64,
+    facing: Facing,
+) -> Option<Label> {
     let (at, total) = (|s: f64| path.at(s), path.total);
     let (from, to) = ((along - 0.1).max(0.0), (along + 0.1).min(1.0));
     let t = (at(to * total) - at(from * total)).try_normalize()?;
-    let up = DVec2::new(t.y, -t.x); // outward: the outline is counter-clockwise
-    let right = DVec2::new(up.y, -up.x);
+    let outward = DVec2::new(t.y, -t.x); // the outline is counter-clockwise
+    // The text's reading direction and its up, in part coordinates.
+    let right = match facing {
+        Facing::Level(angle) => DVec2::from_angle(-angle),
+        Facing::AlongSide => DVec2::new(outward.y, -outward.x),
+    };
+    let up = right.perp();
     let width = text_width(text, h);
-    let centre = at(along * total) - up * h;
+    // The box (text and a 0.25 h border) reaches `reach` from its centre towards the side;
+    // the centre sits so that the box stays 0.25 h from it.
+    let (box_w, box_h) = (width + 0.5 * h, 1.5 * h);
+    let reach = 0.5 * (box_w * right.dot(outward).abs() + box_h * up.dot(outward).abs());
+    let centre = at(along * total) - outward * (0.25 * h + reach);
     let origin = centre - right * (0.5 * width) - up * (0.5 * h);
     let map = |p: DVec2| origin + right * p.x + up * p.y;
     let strokes: Vec<[DVec2; 2]> = text_strokes(text, DVec2::ZERO, h)

@@ -28,7 +28,7 @@ fn burns_are_red_at_full_power_and_y_points_up() {
     let text = "G0 X10 Y180\nG0 X290 Y180\nG0 X20 Y20\nM4 S1000\nG1 X280 F1200\nM5\nM2";
     let machine = laser(Dialect::Grbl);
     let report = run(text, &machine);
-    let img = decode(&sim::render_png(&report, &machine, 600).unwrap());
+    let img = decode(&sim::render_png(&report, &machine, 600, &sim::JobNames::default()).unwrap());
     assert_eq!(img.width(), 600);
     let (bx, by) = pixel_of(600, 150.0, 20.0);
     assert!(
@@ -51,7 +51,7 @@ fn burns_are_red_at_full_power_and_y_points_up() {
 fn bad_widths_are_errors() {
     let machine = laser(Dialect::Grbl);
     let report = run("M2", &machine);
-    assert!(sim::render_png(&report, &machine, 8).is_err());
-    assert!(sim::render_png(&report, &machine, 100_000).is_err());
-    assert!(sim::render_png(&report, &machine, 16).is_ok());
+    assert!(sim::render_png(&report, &machine, 8, &sim::JobNames::default()).is_err());
+    assert!(sim::render_png(&report, &machine, 100_000, &sim::JobNames::default()).is_err());
+    assert!(sim::render_png(&report, &machine, 16, &sim::JobNames::default()).is_ok());
 }
