@@ -127,6 +127,11 @@ pub struct Args {
     /// Image width in pixels for the previews.
     #[arg(value_name = "PX", long, default_value_t = 800)]
     pub width: u32,
+    /// Exit 0 even when the folded form is partial: it covers less than 95% of the input's
+    /// area, or a face corner lies farther than 5% of the input's size from it (the files are
+    /// written either way; without this the exit status is 1).
+    #[arg(long)]
+    pub allow_partial: bool,
     /// After solving, simulate rigid folding from flat to the result in STEPS increments.
     #[arg(long, value_name = "N", num_args = 0..=1, default_missing_value = "100")]
     pub rigid: Option<usize>,
@@ -171,8 +176,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     for line in lines {
         outln!("{line}");
     }
-    let unfolded = match result {
-        Ok(t) => t.unfolded,
+    let (unfolded, fit) = match result {
+        Ok(t) => (t.unfolded, t.fit),
         Err(SourceError::NotMade { .. }) => return Ok(Outcome::CheckFailed),
         Err(e) => return Err(e.into()),
     };
@@ -218,6 +223,20 @@ pub fn run(args: Args) -> Result<Outcome> {
         super::outputs::stage_image(&mut outputs, png, bytes, "png")?;
     }
     super::outputs::commit(outputs, &[&args.mesh, &mesh_path])?;
+    if let Some(why) = fit.as_ref().and_then(|f| f.partial()) {
+        errln!(
+            "foldcam: {}: the tessellation is partial: {why}{}",
+            mesh_path.display(),
+            if args.allow_partial {
+                " (accepted: --allow-partial)"
+            } else {
+                "; written all the same, exit status 1 (--allow-partial accepts it)"
+            }
+        );
+        if !args.allow_partial {
+            return Ok(Outcome::CheckFailed);
+        }
+    }
     Ok(Outcome::Done)
 }
 

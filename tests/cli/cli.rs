@@ -1418,3 +1418,65 @@ fn option_placeholders_share_one_style() {
         }
     }
 }
+
+/// A tessellation whose folded form lies farther than 5% of the mesh's size from it is written
+/// but exits 1 and says why, unless `--allow-partial`; one that fits exits 0 and says how well.
+#[test]
+fn a_partial_tessellation_exits_1_unless_allowed() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let mesh = |name: &str| {
+        PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("examples/tessellation")
+            .join(name)
+            .to_string_lossy()
+            .into_owned()
+    };
+    let saddle = mesh("saddle.obj");
+    let run = |extra: &[&str], out: &str| {
+        let mut args = vec![
+            "tessellate",
+            saddle.as_str(),
+            "-x",
+            "stainless-0.5",
+            "-o",
+            out,
+        ];
+        args.extend_from_slice(extra);
+        foldcam(&args, d)
+    };
+    let o = run(&[], "partial.fold");
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    let err = text(&o.stderr);
+    assert!(
+        err.contains("the tessellation is partial: a face corner lies")
+            && err.contains("--allow-partial accepts it"),
+        "{err}"
+    );
+    assert!(d.join("partial.fold").exists(), "written all the same");
+    let o = run(&["--allow-partial"], "allowed.fold");
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(text(&o.stderr).contains("(accepted: --allow-partial)"));
+    // The distance it names is the largest corner distance it reports, over 5% of the size.
+    let out = text(&o.stdout);
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("fit to the input"))
+        .expect(&out);
+    assert!(line.contains("covers 99.8% of its area"), "{line}");
+    // The dome fits: exit 0, its whole area covered.
+    let dome = mesh("dome.obj");
+    let o = foldcam(
+        &[
+            "tessellate",
+            &dome,
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "dome.fold",
+        ],
+        d,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(text(&o.stdout).contains("fit to the input: covers 100.0% of its area"));
+}

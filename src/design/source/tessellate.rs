@@ -9,9 +9,9 @@ use std::path::Path;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
-    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, TessError,
-    TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind, TuckLayout, TuckShape,
-    Unfolded, curvature_advice, scheduled_passes, tessellate_passes,
+    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, SurfaceFit,
+    TessError, TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind, TuckLayout,
+    TuckShape, Unfolded, curvature_advice, scheduled_passes, surface_fit, tessellate_passes,
 };
 use crate::mesh::PolyMesh;
 
@@ -148,6 +148,9 @@ pub struct TessellationDesign {
     pub unfolded: Unfolded,
     /// What `foldcam tessellate` prints about the solve and the unfolding.
     pub summary: Vec<String>,
+    /// How well the folded form stands for the input (`None` for a degenerate surface); a
+    /// partial one ([`SurfaceFit::partial`]) fails `foldcam tessellate` unless allowed.
+    pub fit: Option<SurfaceFit>,
 }
 
 impl TessellationDesign {
@@ -371,9 +374,14 @@ pub fn tessellate_outcome(
                 "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
                 unfolded.max_length_error
             ));
+            let fit = surface_fit(mesh, &t.mesh);
+            if let Some(fit) = &fit {
+                lines.push(fit.describe());
+            }
             Ok(TessellationDesign {
                 unfolded,
                 summary: lines,
+                fit,
             })
         }
         (problem, unfolded) => {

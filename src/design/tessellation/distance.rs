@@ -35,6 +35,120 @@ pub fn corner_distance(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceDis
     })
 }
 
+/// A folded form farther than this share of the input's size (its bounding-box diagonal)
+/// from the input, at any face corner, is partial; input area beyond this reach of the form
+/// is not covered.
+pub const PARTIAL_REACH: f64 = 0.05;
+
+/// A folded form covering less than this share of the input's area is partial.
+pub const MIN_COVERED: f64 = 0.95;
+
+/// How well the folded form of a tessellation stands for its input surface: how far its face
+/// corners lie from it and how much of the input's area it covers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceFit {
+    /// Distance of the face corners to the input, mesh units.
+    pub distance: SurfaceDistance,
+    /// Share of the input's area within [`Self::reach`] of the folded form, 0 to 1.
+    pub covered: f64,
+    /// The reach: [`PARTIAL_REACH`] of [`Self::size`], mesh units.
+    pub reach: f64,
+    /// The input's size (bounding-box diagonal), mesh units.
+    pub size: f64,
+}
+
+impl SurfaceFit {
+    /// Why the form is partial (less than [`MIN_COVERED`] of the area covered, or a face corner
+    /// beyond the reach), or `None`.
+    pub fn partial(&self) -> Option<String> {
+        let mut why = Vec::new();
+        if self.covered < MIN_COVERED {
+            why.push(format!(
+                "it covers {:.1}% of the input's area (less than {:.0}%: the rest lies farther \
+                 than {:.1} mm from it)",
+                100.0 * self.covered,
+                100.0 * MIN_COVERED,
+                self.reach
+            ));
+        }
+        if self.distance.max > self.reach {
+            why.push(format!(
+                "a face corner lies {:.1} mm from the input, {:.1}% of its size (more than \
+                 {:.0}%)",
+                self.distance.max,
+                100.0 * self.distance.max / self.size,
+                100.0 * PARTIAL_REACH
+            ));
+        }
+        (!why.is_empty()).then(|| why.join("; "))
+    }
+
+    /// One line for the report.
+    pub fn describe(&self) -> String {
+        format!(
+            "fit to the input: covers {:.1}% of its area (within {:.1} mm, {:.0}% of its size), \
+             face corners within {:.1} mm of it (mean {:.1} mm)",
+            100.0 * self.covered,
+            self.reach,
+            100.0 * PARTIAL_REACH,
+            self.distance.max,
+            self.distance.mean
+        )
+    }
+}
+
+/// Sample points per side of an input triangle at most (its area is split into the square
+/// of this many pieces).
+const MAX_SAMPLES_PER_SIDE: usize = 24;
+
+/// The [`SurfaceFit`] of `solved` (a folded form) to `input`: the corner distances of
+/// [`corner_distance`], and the input's area within the reach of the form, measured on sample
+/// points spread evenly over every input triangle (the centroids of a regular split into
+/// pieces with sides under half the reach, at most [`MAX_SAMPLES_PER_SIDE`] per side), each
+/// standing for its piece's area. `None` when either surface has no triangle of positive area.
+pub fn surface_fit(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceFit> {
+    let distance = corner_distance(input, solved)?;
+    let folded = PolyMesh::new(
+        solved.positions.clone(),
+        solved.triangles.iter().map(|t| t.to_vec()).collect(),
+    )
+    .ok()?;
+    let form = ReferenceMesh::new(&folded).ok()?;
+    let (lo, hi) = input.bounds();
+    let size = (hi - lo).length();
+    let reach = PARTIAL_REACH * size;
+    let (mut total, mut covered) = (0.0, 0.0);
+    for [a, b, c] in input.triangles() {
+        let area = 0.5 * (b - a).cross(c - a).length();
+        let longest = (b - a).length().max((c - b).length()).max((a - c).length());
+        let n = ((2.0 * longest / reach).ceil() as usize).clamp(1, MAX_SAMPLES_PER_SIDE);
+        let piece = area / (n * n) as f64;
+        let at = |u: f64, v: f64| a + (b - a) * (u / n as f64) + (c - a) * (v / n as f64);
+        for i in 0..n {
+            for j in 0..n - i {
+                // The piece with a corner at (i, j) pointing up, and the one beside it pointing
+                // down (not in the last row).
+                let mut centroids = vec![at(i as f64 + 1.0 / 3.0, j as f64 + 1.0 / 3.0)];
+                if i + j + 1 < n {
+                    centroids.push(at(i as f64 + 2.0 / 3.0, j as f64 + 2.0 / 3.0));
+                }
+                for p in centroids {
+                    total += piece;
+                    if form.project(p).distance <= reach {
+                        covered += piece;
+                    }
+                }
+            }
+        }
+    }
+    Some(SurfaceFit {
+        distance,
+        covered: if total > 0.0 { covered / total } else { 0.0 },
+        reach,
+        size,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use glam::DVec3;
@@ -56,5 +170,48 @@ mod tests {
         assert!((d(0.9, 0.2, -0.5) - 0.5).abs() < 1e-12);
         assert!((d(2.0, 0.5, 0.0) - 1.0).abs() < 1e-12);
         assert!((d(2.0, 2.0, 1.0) - 3f64.sqrt()).abs() < 1e-12);
+    }
+
+    /// A form covering half of a rectangle: half its area covered, by the closed form; the
+    /// form over all of it covers it all.
+    #[test]
+    fn coverage_of_half_a_rectangle() {
+        let rect = PolyMesh::new(
+            vec![
+                DVec3::ZERO,
+                DVec3::new(100.0, 0.0, 0.0),
+                DVec3::new(100.0, 50.0, 0.0),
+                DVec3::new(0.0, 50.0, 0.0),
+            ],
+            vec![vec![0, 1, 2, 3]],
+        )
+        .expect("valid");
+        let form = |x1: f64| {
+            TessMesh::from_triangles(
+                vec![
+                    DVec3::ZERO,
+                    DVec3::new(x1, 0.0, 0.0),
+                    DVec3::new(x1, 50.0, 0.0),
+                    DVec3::new(0.0, 50.0, 0.0),
+                ],
+                vec![[0, 1, 2], [0, 2, 3]],
+                &std::collections::HashMap::new(),
+                vec![None; 4],
+                vec![0, 1, 2, 3],
+                4,
+            )
+        };
+        let whole = surface_fit(&rect, &form(100.0)).expect("a fit");
+        assert!((whole.covered - 1.0).abs() < 1e-12);
+        assert_eq!(whole.partial(), None);
+        let half = surface_fit(&rect, &form(50.0)).expect("a fit");
+        // Covered: x ≤ 50 + reach (5% of the diagonal 111.8 mm: 5.59 mm), of 100 mm.
+        let want = (50.0 + half.reach) / 100.0;
+        assert!(
+            (half.covered - want).abs() < 0.02,
+            "{} vs {want}",
+            half.covered
+        );
+        assert!(half.partial().is_some_and(|w| w.contains("covers")));
     }
 }

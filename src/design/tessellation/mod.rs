@@ -63,7 +63,9 @@ pub use constraints::{
 };
 pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
-pub use distance::{SurfaceDistance, corner_distance};
+pub use distance::{
+    MIN_COVERED, PARTIAL_REACH, SurfaceDistance, SurfaceFit, corner_distance, surface_fit,
+};
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use geometry::{Graded, fold_angle};
 pub use intersect::{folded_intersections, intersecting_triangles};
