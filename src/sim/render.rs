@@ -107,18 +107,17 @@ pub struct JobNames<'a> {
     pub material: Option<&'a str>,
 }
 
-/// The title of a toolpath picture: "job FILE, machine MACHINE, material MATERIAL", leaving
-/// out what `names` does not give.
+/// The title of a toolpath picture: "FILE: machine MACHINE, material MATERIAL", leaving out
+/// what `names` does not give (the file first, so that a long name wraps alone).
 pub fn toolpath_title(machine: &MachineProfile, names: &JobNames) -> String {
-    let mut parts = Vec::new();
-    if let Some(file) = names.file {
-        parts.push(format!("job {file}"));
-    }
-    parts.push(format!("machine {}", machine.name));
+    let mut about = format!("machine {}", machine.name);
     if let Some(material) = names.material {
-        parts.push(format!("material {material}"));
+        about.push_str(&format!(", material {material}"));
     }
-    parts.join(", ")
+    match names.file {
+        Some(file) => format!("{file}: {about}"),
+        None => about,
+    }
 }
 
 /// Draws `report` on the bed of `machine` (see the module docs for the region) as PNG bytes,

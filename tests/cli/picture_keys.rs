@@ -47,6 +47,19 @@ fn count(
         .count()
 }
 
+/// The key's mountain (red) and valley (blue) line samples: more than `min` pixels of each in
+/// rows `rows`.
+fn assert_line_samples(img: &RgbaImage, rows: std::ops::Range<u32>, min: usize) {
+    let red = |p: &Rgba<u8>| p[0] > 180 && p[1] < 80 && p[2] < 80;
+    let blue = |p: &Rgba<u8>| p[2] > 180 && p[0] < 80 && p[1] < 120;
+    let all = 0..img.width();
+    assert!(
+        count(img, rows.clone(), all.clone(), red) > min,
+        "mountain sample"
+    );
+    assert!(count(img, rows, all, blue) > min, "valley sample");
+}
+
 /// The longest run of pixels satisfying `f` in column `x`.
 fn longest_col_run(img: &RgbaImage, x: u32, f: impl Fn(&Rgba<u8>) -> bool) -> u32 {
     let (mut best, mut run) = (0, 0);
@@ -404,18 +417,11 @@ fn pattern_preview_has_a_legend_of_the_lines_drawn() {
         .max()
         .expect("outline");
     let key = bottom + 4..img.height();
-    let all = 0..img.width();
-    let blue = |p: &Rgba<u8>| p[2] > 180 && p[0] < 80 && p[1] < 120;
-    let red = |p: &Rgba<u8>| p[0] > 180 && p[1] < 80 && p[2] < 80;
+    assert_line_samples(&img, key.clone(), 20);
     assert!(
-        count(&img, key.clone(), all.clone(), blue) > 20,
-        "valley sample"
+        count(&img, key, 0..img.width(), is_dark) > 300,
+        "scale bar and labels"
     );
-    assert!(
-        count(&img, key.clone(), all.clone(), red) > 20,
-        "mountain sample"
-    );
-    assert!(count(&img, key, all, is_dark) > 300, "scale bar and labels");
 }
 
 /// The scale bar of a key band: a dark horizontal run (the bar's foot) with a dark tick
@@ -521,16 +527,7 @@ fn a_3d_render_keys_its_colours_and_captions_the_view() {
     let all = 0..img.width();
     // Samples of the paper's front and back tints (View3d's defaults) and of the mountain
     // and valley lines, all in the band.
-    let red = |p: &Rgba<u8>| p[0] > 180 && p[1] < 80 && p[2] < 80;
-    let blue = |p: &Rgba<u8>| p[2] > 180 && p[0] < 80 && p[1] < 120;
-    assert!(
-        count(&img, band.clone(), all.clone(), red) > 10,
-        "mountain sample"
-    );
-    assert!(
-        count(&img, band.clone(), all.clone(), blue) > 10,
-        "valley sample"
-    );
+    assert_line_samples(&img, band.clone(), 10);
     let tinted = |c: [u8; 3]| {
         count(&img, band.clone(), all.clone(), |p| {
             (0..3).all(|i| p[i] <= c[i] && u16::from(p[i]) + 90 >= u16::from(c[i])) && !is_dark(p)
