@@ -6,8 +6,8 @@ use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
 use foldcam::design::tessellation::{
-    Limits, TessellateOptions, Tessellation, TuckKind, corner_distance, default_schedule,
-    keep_going, keep_trying, tessellate, tessellate_scheduled,
+    Limits, TessellateOptions, Tessellation, TuckKind, default_schedule, keep_going, keep_trying,
+    surface_fit, tessellate, tessellate_scheduled,
 };
 use foldcam::formats::{self, write_atomic};
 use foldcam::machine::load_material;
@@ -112,10 +112,17 @@ fn cut(
     )?;
     let clean = job.clean;
     let r = &t.report.last;
-    let distance = corner_distance(mesh, &t.mesh).map_or(String::new(), |d| {
+    // The fit `foldcam tessellate` reports, and whether it would call the form partial.
+    let distance = surface_fit(mesh, &t.mesh).map_or(String::new(), |f| {
+        let partial = f.partial().map_or(String::new(), |why| {
+            format!(" (partial: {why}; `foldcam tessellate` exits 1 without --allow-partial)")
+        });
         format!(
-            ", face corners within {:.1} mm of the input (mean {:.1} mm)",
-            d.max, d.mean
+            ", covering {:.1}% of the input's area, face corners within {:.1} mm of it (mean \
+             {:.1} mm){partial}",
+            100.0 * f.covered,
+            f.distance.max,
+            f.distance.mean
         )
     });
     let remeshed = t.remeshed.map_or(String::new(), |r| {
