@@ -16,9 +16,14 @@ use foldcam::design::tessellation::{Remesh, TuckKind, TuckLayout};
 use foldcam::formats::OutputSet;
 use foldcam::machine::load_material;
 use foldcam::mesh::read_mesh;
-use foldcam::render::{PreviewOptions, View3d, preview_png, render_folded_png};
+use foldcam::render::{
+    PreviewOptions, View3d, preview_png, render_folded_png, with_marked_triangles,
+};
 
 use super::Outcome;
+
+/// Red, for the input's area a partial tessellation leaves uncovered.
+const MISSING_COLOUR: [u8; 3] = [214, 40, 40];
 use super::args::degrees;
 use super::progress::DesignProgress;
 
@@ -176,8 +181,8 @@ pub fn run(args: Args) -> Result<Outcome> {
     for line in lines {
         outln!("{line}");
     }
-    let (unfolded, fit) = match result {
-        Ok(t) => (t.unfolded, t.fit),
+    let (unfolded, fit, missing) = match result {
+        Ok(t) => (t.unfolded, t.fit, t.missing),
         Err(SourceError::NotMade { .. }) => return Ok(Outcome::CheckFailed),
         Err(e) => return Err(e.into()),
     };
@@ -206,11 +211,16 @@ pub fn run(args: Args) -> Result<Outcome> {
             ..View3d::with_width(args.width)
         }
         .with_key(
-            "the tessellation folded",
+            if missing.is_empty() {
+                "the tessellation folded"
+            } else {
+                "the tessellation folded, with the mesh's area it leaves uncovered in red"
+            },
             super::input::unit_label(unfolded.pattern.units),
         );
-        let bytes = render_folded_png(&unfolded.folded, &view)
-            .map_err(|e| anyhow!("{}: {e}", png.display()))?;
+        let (state, view) = with_marked_triangles(&unfolded.folded, &missing, MISSING_COLOUR, view);
+        let bytes =
+            render_folded_png(&state, &view).map_err(|e| anyhow!("{}: {e}", png.display()))?;
         super::outputs::stage_image(&mut outputs, png, bytes, "png")?;
     }
     if let Some(png) = &cp_png {

@@ -44,7 +44,7 @@ pub use preview::render_pixmap;
 pub use shade::{render_folded_pixmap, render_folded_png, render_folded_rgba};
 pub use step_sheet::{step_sheet_png, step_sheet_rgba};
 pub use top_view::render_top_view_png;
-pub use view3d::{View3d, ViewKey};
+pub use view3d::{View3d, ViewKey, with_marked_triangles};
 
 /// Options of [`preview_png`].
 #[derive(Clone, Debug, PartialEq)]

@@ -435,3 +435,36 @@ fn the_key_band_adds_to_the_height_and_its_scale_bar_matches_the_drawing() {
         "bar {bar} px on a square of {square} px = {mm:.1} mm"
     );
 }
+
+/// Marked triangles (e.g. the input area a partial tessellation leaves uncovered) are drawn
+/// in their colour where they are, beside the state's faces in paper colours.
+#[test]
+fn marked_triangles_are_drawn_in_their_colour() {
+    let state = l_fold(90.0, V);
+    // A triangle on the floor's plane beyond its far edge (x 110 to 150).
+    let beyond = [
+        DVec3::new(110.0, 0.0, 0.0),
+        DVec3::new(150.0, 0.0, 0.0),
+        DVec3::new(150.0, 40.0, 0.0),
+    ];
+    let colour = [214, 40, 40];
+    let view = View3d {
+        height: Some(300),
+        ..View3d::with_width(400)
+    };
+    let (marked, view) = foldcam::render::with_marked_triangles(&state, &[beyond], colour, view);
+    assert_eq!(marked.faces.as_ref().map(Vec::len), Some(3));
+    let png = render_folded_png(&marked, &view).expect("png");
+    let img = image::load_from_memory(&png).expect("decodes").to_rgba8();
+    let centre = (beyond[0] + beyond[1] + beyond[2]) / 3.0;
+    let at = to_px(&view, &img, &marked.positions, centre);
+    let reddish = |p: Rgba<u8>| p[0] > 120 && p[1] < 60 && p[2] < 60;
+    assert!(
+        reddish(*img.get_pixel(at.0, at.1)),
+        "{:?}",
+        img.get_pixel(at.0, at.1)
+    );
+    // The floor keeps its paper colour.
+    let floor = to_px(&view, &img, &marked.positions, centroid(&marked, 1));
+    assert!(!reddish(*img.get_pixel(floor.0, floor.1)));
+}

@@ -9,9 +9,10 @@ use std::path::Path;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
-    FitOptions, Iteration, Limits, Remesh, SHRINK_LADDER, Schedule, StarOptions, SurfaceFit,
-    TessError, TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind, TuckLayout,
-    TuckShape, Unfolded, curvature_advice, scheduled_passes, surface_fit, tessellate_passes,
+    FitOptions, Iteration, Limits, MIN_COVERED, Remesh, SHRINK_LADDER, Schedule, StarOptions,
+    SurfaceFit, TessError, TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind,
+    TuckLayout, TuckShape, Unfolded, curvature_advice, scheduled_passes, surface_fit,
+    tessellate_passes, uncovered_triangles,
 };
 use crate::mesh::PolyMesh;
 
@@ -151,6 +152,9 @@ pub struct TessellationDesign {
     /// How well the folded form stands for the input (`None` for a degenerate surface); a
     /// partial one ([`SurfaceFit::partial`]) fails `foldcam tessellate` unless allowed.
     pub fit: Option<SurfaceFit>,
+    /// The input triangles the folded form leaves mostly uncovered (empty when it covers
+    /// [`MIN_COVERED`] of the area or more): what pictures mark as missing, mesh units.
+    pub missing: Vec<[glam::DVec3; 3]>,
 }
 
 impl TessellationDesign {
@@ -378,10 +382,15 @@ pub fn tessellate_outcome(
             if let Some(fit) = &fit {
                 lines.push(fit.describe());
             }
+            let missing = match &fit {
+                Some(f) if f.covered < MIN_COVERED => uncovered_triangles(mesh, &t.mesh),
+                _ => Vec::new(),
+            };
             Ok(TessellationDesign {
                 unfolded,
                 summary: lines,
                 fit,
+                missing,
             })
         }
         (problem, unfolded) => {

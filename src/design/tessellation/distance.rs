@@ -2,6 +2,8 @@
 //! corner of the solved tessellation to the input mesh (Tachi 2014 judges the fit of §3.4 by
 //! this distance; the issue asks for it per mode and mesh).
 
+use glam::DVec3;
+
 use super::model::TessMesh;
 use crate::design::papercraft::ReferenceMesh;
 use crate::mesh::PolyMesh;
@@ -108,22 +110,62 @@ const MAX_SAMPLES_PER_SIDE: usize = 24;
 /// standing for its piece's area. `None` when either surface has no triangle of positive area.
 pub fn surface_fit(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceFit> {
     let distance = corner_distance(input, solved)?;
+    let (size, reach) = reach_of(input);
+    let pieces = coverage_by_triangle(input, solved, reach)?;
+    let total: f64 = pieces.iter().map(|p| p.area).sum();
+    let covered: f64 = pieces.iter().map(|p| p.covered).sum();
+    Some(SurfaceFit {
+        distance,
+        covered: if total > 0.0 { covered / total } else { 0.0 },
+        reach,
+        size,
+    })
+}
+
+/// The input triangles (fan triangles of its faces) that the folded form `solved` leaves
+/// mostly uncovered (over half their area beyond the reach of [`surface_fit`]): the missing
+/// region, for pictures. Empty when the form covers the input, or either surface has no
+/// triangle of positive area.
+pub fn uncovered_triangles(input: &PolyMesh, solved: &TessMesh) -> Vec<[DVec3; 3]> {
+    let (_, reach) = reach_of(input);
+    coverage_by_triangle(input, solved, reach)
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|p| p.covered < 0.5 * p.area)
+        .map(|p| p.corners)
+        .collect()
+}
+
+/// The input's size (bounding-box diagonal) and the reach, [`PARTIAL_REACH`] of it.
+fn reach_of(input: &PolyMesh) -> (f64, f64) {
+    let (lo, hi) = input.bounds();
+    let size = (hi - lo).length();
+    (size, PARTIAL_REACH * size)
+}
+
+/// One input triangle and how much of its area lies within the reach of the form.
+struct Piece {
+    corners: [DVec3; 3],
+    area: f64,
+    covered: f64,
+}
+
+/// Every fan triangle of `input` with its area within `reach` of `solved`, measured on sample
+/// points (see [`surface_fit`]).
+fn coverage_by_triangle(input: &PolyMesh, solved: &TessMesh, reach: f64) -> Option<Vec<Piece>> {
     let folded = PolyMesh::new(
         solved.positions.clone(),
         solved.triangles.iter().map(|t| t.to_vec()).collect(),
     )
     .ok()?;
     let form = ReferenceMesh::new(&folded).ok()?;
-    let (lo, hi) = input.bounds();
-    let size = (hi - lo).length();
-    let reach = PARTIAL_REACH * size;
-    let (mut total, mut covered) = (0.0, 0.0);
-    for [a, b, c] in input.triangles() {
+    let pieces = input.triangles().map(|[a, b, c]| {
         let area = 0.5 * (b - a).cross(c - a).length();
         let longest = (b - a).length().max((c - b).length()).max((a - c).length());
         let n = ((2.0 * longest / reach).ceil() as usize).clamp(1, MAX_SAMPLES_PER_SIDE);
         let piece = area / (n * n) as f64;
         let at = |u: f64, v: f64| a + (b - a) * (u / n as f64) + (c - a) * (v / n as f64);
+        let mut covered = 0.0;
         for i in 0..n {
             for j in 0..n - i {
                 // The piece with a corner at (i, j) pointing up, and the one beside it pointing
@@ -133,20 +175,19 @@ pub fn surface_fit(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceFit> {
                     centroids.push(at(i as f64 + 2.0 / 3.0, j as f64 + 2.0 / 3.0));
                 }
                 for p in centroids {
-                    total += piece;
                     if form.project(p).distance <= reach {
                         covered += piece;
                     }
                 }
             }
         }
-    }
-    Some(SurfaceFit {
-        distance,
-        covered: if total > 0.0 { covered / total } else { 0.0 },
-        reach,
-        size,
-    })
+        Piece {
+            corners: [a, b, c],
+            area,
+            covered,
+        }
+    });
+    Some(pieces.collect())
 }
 
 #[cfg(test)]
@@ -213,5 +254,12 @@ mod tests {
             half.covered
         );
         assert!(half.partial().is_some_and(|w| w.contains("covers")));
+        // The missing region: of the rectangle's two fan triangles, (0,0)-(100,0)-(100,50) has
+        // 69% of its area beyond x = 55.6 mm (closed form: (100² − 55.6²)/4 of 2500 mm²), the
+        // other 20%.
+        let missing = uncovered_triangles(&rect, &form(50.0));
+        assert!(uncovered_triangles(&rect, &form(100.0)).is_empty());
+        assert_eq!(missing.len(), 1);
+        assert!(missing[0].contains(&DVec3::new(100.0, 0.0, 0.0)));
     }
 }

@@ -65,6 +65,7 @@ pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{
     MIN_COVERED, PARTIAL_REACH, SurfaceDistance, SurfaceFit, corner_distance, surface_fit,
+    uncovered_triangles,
 };
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use geometry::{Graded, fold_angle};
