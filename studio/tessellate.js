@@ -303,8 +303,12 @@ export class TessellationView {
     document.body.dataset.tessStatus = status;
     const words = { ready: 'ready to solve', running: 'solving…', done: 'solved: within every limit',
       refused: 'solved, but refused (see the report)', cancelled: 'cancelled', failed: error ?? 'failed' };
-    this.$('tess-status').textContent = words[status] ?? status;
-    this.$('tess-status').className = made ? 'pass' : status === 'refused' || status === 'failed' ? 'fail' : '';
+    // A partial form (the command exits 1 for it unless --allow-partial) is said in amber.
+    const partial = made ? this.result?.partial : null;
+    this.$('tess-status').textContent = partial
+      ? `solved, but partial: ${partial} (the command line exits 1 without --allow-partial)`
+      : words[status] ?? status;
+    this.$('tess-status').className = partial ? 'unchecked' : made ? 'pass' : status === 'refused' || status === 'failed' ? 'fail' : '';
   }
 
   /** The latest iteration in words, the notes, and the residual per iteration (log scale). */

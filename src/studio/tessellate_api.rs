@@ -689,6 +689,11 @@ fn result_view(job: &Solve, outcome: &TessellationOutcome) -> Value {
             })
         })
         .collect();
+    // Why the command would call the form partial (and exit 1 without --allow-partial).
+    let partial = match &outcome.design {
+        Ok(d) => d.fit.as_ref().and_then(|f| f.partial()),
+        Err(_) => None,
+    };
     let (made, lines, pattern) = match &outcome.design {
         Ok(d) => {
             let p = &d.unfolded.pattern;
@@ -706,6 +711,7 @@ fn result_view(job: &Solve, outcome: &TessellationOutcome) -> Value {
     json!({
         "name": job.mesh.name,
         "made": made,
+        "partial": partial,
         "lines": lines,
         "limits": {
             "max_fold_angle": outcome.limits.max_fold.to_degrees(),

@@ -565,3 +565,40 @@ fn a_solve_whose_page_stops_asking_is_cancelled() {
         "{state}"
     );
 }
+
+/// The studio says what the command says of a partial form: the saddle's star tucks leave a
+/// face corner over 5% of its size from it (`partial` names why, as `foldcam tessellate`
+/// does before it exits 1); the dome's form is whole (`partial` null).
+#[test]
+fn a_partial_form_is_named_as_the_command_names_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = Server::start(&[], dir.path());
+    let mut why = Vec::new();
+    for example in ["saddle.obj", "dome.obj"] {
+        let mesh = ok(server.post_json(&format!("/api/tess/example/{example}"), b""))["id"]
+            .as_u64()
+            .unwrap();
+        let job = start(&server, mesh, json!({"material": "stainless-0.5"}));
+        let (state, _) = wait(&server, job);
+        assert_eq!(state["status"], "done", "{example}: {state}");
+        let result = ok(get_json(&server, &format!("/api/tess/jobs/{job}/result")));
+        why.push(result["partial"].clone());
+    }
+    let saddle = why[0].as_str().expect("the saddle is partial");
+    assert!(saddle.starts_with("a face corner lies 10.7 mm"), "{saddle}");
+    assert!(why[1].is_null(), "{}", why[1]);
+    // The command's words for the same mesh.
+    let o = foldcam(
+        &[
+            "tessellate",
+            &repo_file("examples/tessellation/saddle.obj"),
+            "-x",
+            "stainless-0.5",
+            "-o",
+            "s.fold",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains(saddle));
+}
