@@ -368,6 +368,39 @@ pub(crate) fn drawable_faces(state: &FoldedState) -> Result<Vec<(FaceId, &Face)>
     Ok(drawable)
 }
 
+/// `state` with `triangles` (3D corners, the state's units) added as faces drawn in `colour`
+/// on both sides, and `view` with the face colours that name them (the added faces come
+/// first; the state's own keep the paper colours): e.g. the input's area a tessellation leaves
+/// uncovered. Without triangles, the state and view as they are.
+pub fn with_marked_triangles(
+    state: &FoldedState,
+    triangles: &[[DVec3; 3]],
+    colour: [u8; 3],
+    view: View3d,
+) -> (FoldedState, View3d) {
+    if triangles.is_empty() {
+        return (state.clone(), view);
+    }
+    let base = state.positions.len();
+    let mut marked = state.clone();
+    marked.positions.extend(triangles.iter().flatten());
+    let added = (0..triangles.len()).map(|k| Face {
+        outer: (0..3).map(|i| VertexId::new(base + 3 * k + i)).collect(),
+        holes: Vec::new(),
+    });
+    let faces = state.faces.clone().unwrap_or_default();
+    marked.faces = Some(added.chain(faces).collect());
+    let shift = |f: FaceId| FaceId::new(f.index() + triangles.len());
+    marked.face_orders = (state.face_orders.iter())
+        .map(|&(a, b, o)| (shift(a), shift(b), o))
+        .collect();
+    let view = View3d {
+        face_colors: Some(vec![colour; triangles.len()]),
+        ..view
+    };
+    (marked, view)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -432,37 +465,4 @@ mod tests {
         assert_eq!(auto_height(DVec2::new(1.0, 100.0), &view), 480);
         assert_eq!(auto_height(DVec2::ZERO, &view), 120);
     }
-}
-
-/// `state` with `triangles` (3D corners, the state's units) added as faces drawn in `colour`
-/// on both sides, and `view` with the face colours that name them (the added faces come
-/// first; the state's own keep the paper colours): e.g. the input's area a tessellation leaves
-/// uncovered. Without triangles, the state and view as they are.
-pub fn with_marked_triangles(
-    state: &FoldedState,
-    triangles: &[[DVec3; 3]],
-    colour: [u8; 3],
-    view: View3d,
-) -> (FoldedState, View3d) {
-    if triangles.is_empty() {
-        return (state.clone(), view);
-    }
-    let base = state.positions.len();
-    let mut marked = state.clone();
-    marked.positions.extend(triangles.iter().flatten());
-    let added = (0..triangles.len()).map(|k| Face {
-        outer: (0..3).map(|i| VertexId::new(base + 3 * k + i)).collect(),
-        holes: Vec::new(),
-    });
-    let faces = state.faces.clone().unwrap_or_default();
-    marked.faces = Some(added.chain(faces).collect());
-    let shift = |f: FaceId| FaceId::new(f.index() + triangles.len());
-    marked.face_orders = (state.face_orders.iter())
-        .map(|&(a, b, o)| (shift(a), shift(b), o))
-        .collect();
-    let view = View3d {
-        face_colors: Some(vec![colour; triangles.len()]),
-        ..view
-    };
-    (marked, view)
 }
