@@ -192,7 +192,9 @@ pub async fn wait_until(c: &Client, script: &str, what: &str) {
         }
         let error = c
             .execute(
-                "return document.getElementById('error').textContent",
+                // A page without the studio's error line (another origin's, or one still
+                // loading) says nothing: keep waiting.
+                "return document.getElementById('error')?.textContent ?? null",
                 vec![],
             )
             .await
