@@ -156,31 +156,13 @@ impl CheckReport {
                 let _ = writeln!(out, "  … and {rest} more {} findings", kind.name());
             }
         }
-        for (i, f) in self
-            .warnings
-            .iter()
-            .enumerate()
-            .take(TEXT_FINDINGS_PER_KIND)
-        {
-            let _ = writeln!(out, "warning {}", finding_line(i + 1, f));
-        }
-        if self.warnings.len() > TEXT_FINDINGS_PER_KIND {
-            let _ = writeln!(
-                out,
-                "  … and {} more warnings",
-                self.warnings.len() - TEXT_FINDINGS_PER_KIND
-            );
-        }
-        for (i, f) in (self.unchecked_faults.iter().enumerate()).take(TEXT_FINDINGS_PER_KIND) {
-            let _ = writeln!(out, "3D target {}", finding_line(i + 1, f));
-        }
-        if self.unchecked_faults.len() > TEXT_FINDINGS_PER_KIND {
-            let _ = writeln!(
-                out,
-                "  … and {} more at 3D targets",
-                self.unchecked_faults.len() - TEXT_FINDINGS_PER_KIND
-            );
-        }
+        write_listed(&mut out, "warning ", &self.warnings, "warnings");
+        write_listed(
+            &mut out,
+            "3D target ",
+            &self.unchecked_faults,
+            "at 3D targets",
+        );
         out.push_str(&self.verdict());
         out.push('\n');
         out
@@ -360,6 +342,21 @@ impl CheckReport {
              folded frame is checked, --allow-unchecked accepts this",
             self.unchecked_vertices
         ))
+    }
+}
+
+/// Lists at most [`TEXT_FINDINGS_PER_KIND`] of `list`, each line after `prefix`, then how
+/// many more (`… and N more {more}`).
+fn write_listed(out: &mut String, prefix: &str, list: &[Finding], more: &str) {
+    for (i, f) in list.iter().enumerate().take(TEXT_FINDINGS_PER_KIND) {
+        let _ = writeln!(out, "{prefix}{}", finding_line(i + 1, f));
+    }
+    if list.len() > TEXT_FINDINGS_PER_KIND {
+        let _ = writeln!(
+            out,
+            "  … and {} more {more}",
+            list.len() - TEXT_FINDINGS_PER_KIND
+        );
     }
 }
 

@@ -11,8 +11,8 @@ use crate::design::tessellation::estimate::solve_estimate;
 use crate::design::tessellation::{
     FitOptions, Iteration, Limits, MIN_COVERED, Remesh, SHRINK_LADDER, Schedule, StarOptions,
     SurfaceFit, TessError, TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind,
-    TuckLayout, TuckShape, Unfolded, curvature_advice, scheduled_passes, surface_fit,
-    tessellate_passes, uncovered_triangles,
+    TuckLayout, TuckShape, Unfolded, curvature_advice, fit_and_missing, scheduled_passes,
+    tessellate_passes,
 };
 use crate::mesh::PolyMesh;
 
@@ -378,12 +378,13 @@ pub fn tessellate_outcome(
                 "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
                 unfolded.max_length_error
             ));
-            let fit = surface_fit(mesh, &t.mesh);
+            // One sampling gives the fit and the region a partial form leaves uncovered.
+            let (fit, uncovered) = fit_and_missing(mesh, &t.mesh).unzip();
             if let Some(fit) = &fit {
                 lines.push(fit.describe());
             }
             let missing = match &fit {
-                Some(f) if f.covered < MIN_COVERED => uncovered_triangles(mesh, &t.mesh),
+                Some(f) if f.covered < MIN_COVERED => uncovered.unwrap_or_default(),
                 _ => Vec::new(),
             };
             Ok(TessellationDesign {

@@ -109,31 +109,37 @@ const MAX_SAMPLES_PER_SIDE: usize = 24;
 /// pieces with sides under half the reach, at most [`MAX_SAMPLES_PER_SIDE`] per side), each
 /// standing for its piece's area. `None` when either surface has no triangle of positive area.
 pub fn surface_fit(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceFit> {
+    fit_and_missing(input, solved).map(|(fit, _)| fit)
+}
+
+/// [`surface_fit`] and, from the same samples, the input triangles the form leaves mostly
+/// uncovered (over half their area beyond the reach): the missing region, for pictures.
+pub fn fit_and_missing(
+    input: &PolyMesh,
+    solved: &TessMesh,
+) -> Option<(SurfaceFit, Vec<[DVec3; 3]>)> {
     let distance = corner_distance(input, solved)?;
     let (size, reach) = reach_of(input);
     let pieces = coverage_by_triangle(input, solved, reach)?;
     let total: f64 = pieces.iter().map(|p| p.area).sum();
     let covered: f64 = pieces.iter().map(|p| p.covered).sum();
-    Some(SurfaceFit {
+    let fit = SurfaceFit {
         distance,
         covered: if total > 0.0 { covered / total } else { 0.0 },
         reach,
         size,
-    })
-}
-
-/// The input triangles (fan triangles of its faces) that the folded form `solved` leaves
-/// mostly uncovered (over half their area beyond the reach of [`surface_fit`]): the missing
-/// region, for pictures. Empty when the form covers the input, or either surface has no
-/// triangle of positive area.
-pub fn uncovered_triangles(input: &PolyMesh, solved: &TessMesh) -> Vec<[DVec3; 3]> {
-    let (_, reach) = reach_of(input);
-    coverage_by_triangle(input, solved, reach)
-        .unwrap_or_default()
-        .into_iter()
+    };
+    let missing = (pieces.into_iter())
         .filter(|p| p.covered < 0.5 * p.area)
         .map(|p| p.corners)
-        .collect()
+        .collect();
+    Some((fit, missing))
+}
+
+/// The missing region of [`fit_and_missing`] alone (empty when either surface has no
+/// triangle of positive area).
+pub fn uncovered_triangles(input: &PolyMesh, solved: &TessMesh) -> Vec<[DVec3; 3]> {
+    fit_and_missing(input, solved).map_or_else(Vec::new, |(_, missing)| missing)
 }
 
 /// The input's size (bounding-box diagonal) and the reach, [`PARTIAL_REACH`] of it.

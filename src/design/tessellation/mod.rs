@@ -64,8 +64,8 @@ pub use constraints::{
 pub use crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
 pub use diagnose::{Condition, Violation, after_solving, before_solving, sector_counts};
 pub use distance::{
-    MIN_COVERED, PARTIAL_REACH, SurfaceDistance, SurfaceFit, corner_distance, surface_fit,
-    uncovered_triangles,
+    MIN_COVERED, PARTIAL_REACH, SurfaceDistance, SurfaceFit, corner_distance, fit_and_missing,
+    surface_fit, uncovered_triangles,
 };
 pub use fit::{FitOptions, FitReport, Target, fit_surface};
 pub use geometry::{Graded, fold_angle};
