@@ -115,9 +115,10 @@ fn row(
     let uncut: usize = p
         .warnings
         .iter()
-        .filter(|w| w.contains("too short"))
+        .filter(|w| w.kind == foldcam::fab::PlanWarningKind::CreasesTooShort)
         .map(|w| {
-            w.split_whitespace()
+            w.text
+                .split_whitespace()
                 .next()
                 .and_then(|n| n.parse().ok())
                 .unwrap_or(1)

@@ -157,7 +157,7 @@ export class MachineView {
     rows.push(`<tr><td>travel <span class="travel-key">(dashed)</span></td><td>${s.travel_mm.toFixed(1)} mm</td></tr>`);
     rows.push(`<tr><td>time (estimated)</td><td id="plan-time">${clock(s.time_s)}</td></tr>`);
     this.stats.innerHTML = `<table>${rows.join('')}</table>` +
-      plan.warnings.map((w) => `<p class="muted">warning: ${w.replace(/</g, '&lt;')}</p>`).join('');
+      plan.warnings.map((w) => `<p class="muted">warning: ${w.text.replace(/</g, '&lt;')}</p>`).join('');
   }
 
   offer(id, plan, q) {

@@ -4,7 +4,7 @@
 
 use super::report::EdgeMeasure;
 use super::{CheckOptions, Finding, FindingKind, Quantity};
-use crate::pattern::{CreasePattern, EdgeId, Units};
+use crate::pattern::{CreasePattern, EdgeId};
 
 /// Results of the edge pass.
 #[derive(Default)]
@@ -67,10 +67,7 @@ fn short_edge(
 ) -> Finding {
     let [a, b] = cp.edges[id.index()].vertices;
     let assignment = cp.edges[id.index()].assignment.name();
-    let unit = match cp.units {
-        Units::Millimetres => "mm",
-        Units::Unitless => "units",
-    };
+    let unit = cp.units.label();
     Finding {
         kind: FindingKind::ShortEdge,
         vertex: None,

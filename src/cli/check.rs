@@ -84,7 +84,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         if let Some(l) = &layers {
             out!("{}", l.to_text());
         }
-        out!("{}", report.to_text(input::unit_label(cp.units)));
+        out!("{}", report.to_text(cp.units.label()));
     }
     Ok(
         if report.passed() && (report.checked_folding() || args.allow_unchecked) {

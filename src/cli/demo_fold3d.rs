@@ -41,7 +41,7 @@ pub fn miura(dir: &Path, index: &mut super::demo_jobs::DemoIndex, width: u32) ->
         ..View3d::with_width(width.min(800))
     };
     let name = "fold3d-miura";
-    let unit = super::input::unit_label(cp.units);
+    let unit = cp.units.label();
     let shown = view
         .clone()
         .with_key(&format!("Miura-ori folded to {PERCENT}%"), unit);

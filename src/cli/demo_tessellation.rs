@@ -97,7 +97,7 @@ fn cut(
     )?;
     let view = view.clone().with_key(
         &format!("the folded form with {tucks} tucks"),
-        super::input::unit_label(u.pattern.units),
+        u.pattern.units.label(),
     );
     let png = render_folded_png(&u.folded, &view)?;
     write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;

@@ -90,7 +90,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     if let Some(gif) = &gif {
         check_picture_size(shown.len(), view.width, "animation")?;
-        let unit = super::input::unit_label(design.sheet.pattern.units);
+        let unit = design.sheet.pattern.units.label();
         let view = view.clone().with_key("folding step by step", unit);
         let bytes =
             render_gif(&shown, &view, 700).map_err(|e| anyhow!("{}: {e}", gif.display()))?;

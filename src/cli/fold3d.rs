@@ -115,7 +115,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     bar.finish_and_clear();
     let result = result.map_err(|e| anyhow!("{name}: {e}"))?;
     if result.report.stop == Stop::Diverged {
-        print_report(&name, &result, input::unit_label(cp.units));
+        print_report(&name, &result, cp.units.label());
         errln!(
             "foldcam: {name}: the simulation diverged (its positions grew without bound): \
              nothing written; a sheet this small or stiff may need a lower --percent"
@@ -129,7 +129,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         elevation_deg: 35.0,
         ..View3d::with_width(args.width)
     };
-    let unit = input::unit_label(cp.units);
+    let unit = cp.units.label();
     let percent = args.percent;
     if let Some(png) = &png {
         let shows = if args.strain {
@@ -166,7 +166,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         staged.add(gif, bytes);
     }
     outputs::commit(staged, &[&args.input])?;
-    print_report(&name, &result, input::unit_label(cp.units));
+    print_report(&name, &result, cp.units.label());
     Ok(match result.report.stop {
         Stop::Settled => Outcome::Done,
         _ => Outcome::CheckFailed,

@@ -3,8 +3,8 @@
 use std::path::Path;
 
 use anyhow::{Result, bail};
-use foldcam::formats::{self, Imported};
-use foldcam::pattern::{PlanarizeOptions, PlanarizeReport, Units, planarize};
+use foldcam::formats::{self, Finding, Imported};
+use foldcam::pattern::{PlanarizeOptions, PlanarizeReport, Units};
 
 /// The help of a pattern input, `what` followed by every extension the readers take
 /// ([`formats::Format::EXTENSIONS`]).
@@ -62,18 +62,26 @@ pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
         );
     }
     refuse_degenerate(path, &imported.pattern)?;
-    for w in &imported.warnings {
-        errln!("foldcam: warning: {}: {w}", path.display());
-    }
+    print_findings(path, imported.warnings());
     note!(
         "foldcam: {}: {}",
         path.display(),
         size_read(&imported.pattern)
     );
-    for n in &imported.notes {
-        note!("foldcam: {}: {n}", path.display());
-    }
+    print_findings(path, imported.notes());
     Ok(imported)
+}
+
+/// Prints findings about `path`: warnings on stderr, notes there too unless `--quiet`.
+fn print_findings<'a>(path: &Path, findings: impl IntoIterator<Item = &'a Finding>) {
+    let name = path.display().to_string();
+    for f in findings {
+        if f.is_warning() {
+            errln!("foldcam: {}", f.line(&name));
+        } else {
+            note!("foldcam: {}", f.line(&name));
+        }
+    }
 }
 
 /// The size a pattern was read at and where it lies, in the frame every position printed
@@ -119,45 +127,20 @@ fn load_frame(path: &Path, n: usize) -> Result<Imported> {
     Ok(imported)
 }
 
-/// Planarises the pattern in place (tracing faces when asked) and says on stderr what
-/// changed, if anything. A folded state no longer matches a changed pattern and is dropped.
+/// Cleans the pattern in place ([`Imported::clean`]: faces traced when asked, a folded state
+/// that no longer matches dropped) and says on stderr what changed, if anything.
 pub fn clean(
     path: &Path,
     imported: &mut Imported,
     tolerance: Option<f64>,
     faces: bool,
 ) -> Result<PlanarizeReport> {
-    let options = PlanarizeOptions { tolerance, faces };
-    let report = planarize(&mut imported.pattern, &options)
+    let before = imported.findings.len();
+    let report = imported
+        .clean(&PlanarizeOptions { tolerance, faces })
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-    if report.assignment_conflicts > 0 {
-        errln!(
-            "foldcam: warning: {}: {} mountain and valley lines lie on top of each other; the \
-             first of each pair was kept",
-            path.display(),
-            report.assignment_conflicts
-        );
-    }
-    if !report.unchanged() && imported.folded.take().is_some() {
-        errln!(
-            "foldcam: warning: {}: the folded state was dropped: it does not match the cleaned \
-             pattern",
-            path.display()
-        );
-    }
+    print_findings(path, &imported.findings[before..]);
     refuse_degenerate(path, &imported.pattern)?;
-    if !report.unchanged() {
-        note!(
-            "foldcam: {}: cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, \
-             {} zero-length and {} duplicate edges removed",
-            path.display(),
-            report.merged_vertices,
-            report.crossings,
-            report.splits,
-            report.zero_length_removed,
-            report.duplicates_removed
-        );
-    }
     Ok(report)
 }
 
@@ -170,13 +153,5 @@ fn refuse_degenerate(path: &Path, cp: &foldcam::pattern::CreasePattern) -> Resul
             path.display()
         ),
         None => Ok(()),
-    }
-}
-
-/// The unit label of a pattern for messages.
-pub fn unit_label(units: Units) -> &'static str {
-    match units {
-        Units::Millimetres => "mm",
-        Units::Unitless => "units",
     }
 }

@@ -216,7 +216,7 @@ pub fn run(args: Args) -> Result<Outcome> {
             } else {
                 "the tessellation folded, with the mesh's area it leaves uncovered in red"
             },
-            super::input::unit_label(unfolded.pattern.units),
+            unfolded.pattern.units.label(),
         );
         let (state, view) = with_marked_triangles(&unfolded.folded, &missing, MISSING_COLOUR, view);
         let bytes =

@@ -29,7 +29,9 @@ use super::kerf::offset_ring;
 use super::lines::{LineContext, edge_names, line_toolpaths};
 use super::operations::edge_operations;
 use super::tabs::{add_lead_in, merge_straight_runs, split_at_tabs, start_on_longest_side};
-use super::{ContourRole, FabError, Operation, PlanOptions, Toolpath};
+use super::{
+    ContourRole, FabError, Operation, PlanOptions, PlanWarning, PlanWarningKind, Toolpath,
+};
 use crate::geom::polygon::{merge_short_sides, signed_area};
 use crate::pattern::CreasePattern;
 use crate::pattern::vertex_fan::VertexFans;
@@ -51,7 +53,7 @@ pub fn toolpaths(cp: &CreasePattern, opts: &PlanOptions) -> Result<Vec<Toolpath>
 pub fn toolpaths_with_warnings(
     cp: &CreasePattern,
     opts: &PlanOptions,
-) -> Result<(Vec<Toolpath>, Vec<String>), FabError> {
+) -> Result<(Vec<Toolpath>, Vec<PlanWarning>), FabError> {
     cp.require_millimetres()?;
     check_options(opts)?;
     let ops = edge_operations(cp, &opts.mapping);
@@ -106,7 +108,7 @@ fn cut_toolpaths(
     cp: &CreasePattern,
     ops: &[Option<Operation>],
     opts: &PlanOptions,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<PlanWarning>,
 ) -> Vec<Toolpath> {
     let lines = cut_lines(cp, ops);
     let mut out: Vec<Toolpath> = lines
@@ -125,7 +127,7 @@ fn cut_toolpaths(
 }
 
 /// One closed contour as a toolpath.
-fn contour_path(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<String>) -> Toolpath {
+fn contour_path(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<PlanWarning>) -> Toolpath {
     let mut strokes = Vec::new();
     for (ring, scrap_inside) in kerf_rings(c, opts, warnings) {
         let ring = merge_straight_runs(&ring);
@@ -152,7 +154,7 @@ fn contour_path(c: &Contour, opts: &PlanOptions, warnings: &mut Vec<String>) -> 
 fn kerf_rings(
     c: &Contour,
     opts: &PlanOptions,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<PlanWarning>,
 ) -> Vec<(Vec<DVec2>, bool)> {
     let hole = c.role == ContourRole::Hole;
     let half = opts.kerf_mm / 2.0;
@@ -166,13 +168,14 @@ fn kerf_rings(
     };
     let rings = offset_ring(&c.ring, distance);
     if rings.is_empty() {
-        warnings.push(format!(
+        warnings.push(PlanWarningKind::HoleBelowKerf.says(format!(
             "hole {} is smaller than the kerf ({:.3} mm): cut on the drawn line without kerf \
              compensation, so it comes out up to {:.3} mm larger",
             edge_names(&c.edges),
             opts.kerf_mm,
             opts.kerf_mm
-        ));
+        ))
+        .on(c.edges.iter().copied()));
         return vec![(c.ring.clone(), hole)];
     }
     rings
@@ -191,17 +194,21 @@ fn tabbed(
     c: &Contour,
     ring: &[DVec2],
     opts: &PlanOptions,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<PlanWarning>,
 ) -> Option<Vec<Vec<DVec2>>> {
     let tabs = opts.tabs.filter(|_| c.role == ContourRole::Outer)?;
     let margin = tabs.width_mm.max(opts.kerf_mm);
     let strokes = split_at_tabs(ring, &tabs, margin);
     if strokes.is_none() {
-        warnings.push(format!(
-            "contour {} has no straight side long enough for a {:.2} mm tab: left untabbed",
-            edge_names(&c.edges),
-            tabs.width_mm
-        ));
+        warnings.push(
+            PlanWarningKind::NoRoomForTab
+                .says(format!(
+                    "contour {} has no straight side long enough for a {:.2} mm tab: left untabbed",
+                    edge_names(&c.edges),
+                    tabs.width_mm
+                ))
+                .on(c.edges.iter().copied()),
+        );
     }
     strokes
 }

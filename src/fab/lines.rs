@@ -15,7 +15,7 @@ use super::creases::{
 };
 use super::operations::is_continuous_weakening;
 use super::perforation::{NoDashes, clearance_for, layout, layout_closed};
-use super::{ContourRole, Operation, PlanOptions, Toolpath};
+use super::{ContourRole, Operation, PlanOptions, PlanWarning, PlanWarningKind, Toolpath};
 use crate::geom::polyline;
 use crate::pattern::vertex_fan::VertexFans;
 use crate::pattern::{CreasePattern, EdgeId, VertexId};
@@ -166,7 +166,7 @@ const UNCUT_NAMES_LISTED: usize = 8;
 /// The warnings about creases left without a dash: one line for all those too short (their
 /// number, total and longest length, and the first few by name), one per crease that would
 /// need too many dashes. `min_dash_mm` is the shortest dash asked for.
-pub fn uncut_warnings(uncut: &[Uncut], min_dash_mm: f64) -> Vec<String> {
+pub fn uncut_warnings(uncut: &[Uncut], min_dash_mm: f64) -> Vec<PlanWarning> {
     let short: Vec<&Uncut> = uncut
         .iter()
         .filter(|u| matches!(u.why, NoDashes::TooShort { .. }))
@@ -188,21 +188,29 @@ pub fn uncut_warnings(uncut: &[Uncut], min_dash_mm: f64) -> Vec<String> {
         } else {
             (format!("{} creases", short.len()), "them")
         };
-        out.push(format!(
-            "{count} ({total:.1} mm in all, the longest {longest:.2} mm) too short for a \
+        out.push(
+            PlanWarningKind::CreasesTooShort
+                .says(format!(
+                    "{count} ({total:.1} mm in all, the longest {longest:.2} mm) too short for a \
              perforation dash of at least {min_dash_mm:.2} mm after the vertex clearances: left \
              uncut, so the sheet is not weakened along {them} ({}); a smaller --clearance or \
              --min-dash, or --dash for shorter dashes, may fit one",
-            names.join(", ")
-        ));
+                    names.join(", ")
+                ))
+                .on(short.iter().flat_map(|u| u.edges.iter().copied())),
+        );
     }
     for u in uncut {
         if let NoDashes::TooMany { count } = u.why {
-            out.push(format!(
-                "crease {} ({:.2} mm) would need {count:.0} perforation dashes: left uncut",
-                edge_names(&u.edges),
-                u.length_mm
-            ));
+            out.push(
+                PlanWarningKind::TooManyDashes
+                    .says(format!(
+                        "crease {} ({:.2} mm) would need {count:.0} perforation dashes: left uncut",
+                        edge_names(&u.edges),
+                        u.length_mm
+                    ))
+                    .on(u.edges.iter().copied()),
+            );
         }
     }
     out
@@ -213,7 +221,7 @@ pub fn uncut_warnings(uncut: &[Uncut], min_dash_mm: f64) -> Vec<String> {
 pub fn line_toolpaths(
     ctx: &LineContext,
     opts: &PlanOptions,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<PlanWarning>,
 ) -> Vec<Toolpath> {
     let mut out = Vec::new();
     let mut uncut = Vec::new();

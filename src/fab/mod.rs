@@ -25,6 +25,7 @@ pub(crate) mod stats;
 pub(crate) mod tabs;
 pub mod testgrid;
 pub(crate) mod timing;
+pub(crate) mod warning;
 
 pub use frame::bounds;
 pub use geometry::{toolpaths, toolpaths_with_warnings};
@@ -35,6 +36,7 @@ pub use placement::{Placement, bed_to_machine, bounds_of, place};
 pub use plan::plan;
 pub use plan::{design_limit_warnings, plan_toolpaths};
 pub use sides::{mirror, registration_marks, split};
+pub use warning::{PlanWarning, PlanWarningKind};
 
 use glam::{DAffine2, DVec2};
 use serde::Serialize;
@@ -136,8 +138,8 @@ pub struct FabPlan {
     pub settings: SettingsByOperation,
     /// Totals.
     pub stats: PlanStats,
-    /// Remarks (skipped edges, vertex-angle warnings, …).
-    pub warnings: Vec<String>,
+    /// Remarks (skipped edges, vertex-angle warnings, …), each with the edges it is about.
+    pub warnings: Vec<PlanWarning>,
     /// The operation per assignment the plan was made with: every edge it maps to an
     /// operation should be realised by some toolpath of some job (the coverage check counts
     /// the ones that are not, such as creases left without a dash).
@@ -232,7 +234,7 @@ pub struct PlanOptions {
     /// Order toolpaths to shorten travel (off: pattern order, for comparisons).
     pub optimize: bool,
     /// What [`PlanOptions::adapt_to_machine`] changed, for the plan's warnings.
-    pub notes: Vec<String>,
+    pub notes: Vec<PlanWarning>,
     /// Corner or centre of the bed, and an offset.
     pub placement: placement::Placement,
 }
@@ -343,11 +345,12 @@ impl PlanOptions {
             }
         }
         if !changed.is_empty() {
-            self.notes.push(format!(
-                "{} is a plotter: {}",
-                machine.name,
-                changed.join(", ")
-            ));
+            self.notes
+                .push(PlanWarningKind::AdaptedToMachine.says(format!(
+                    "{} is a plotter: {}",
+                    machine.name,
+                    changed.join(", ")
+                )));
         }
         if unsupported.is_empty() {
             Ok(())

@@ -20,7 +20,10 @@ use glam::{DAffine2, DVec2};
 use super::placement::{bounds_of, place_with, transform_paths, union};
 use super::sides::{mirror, registration_marks, split};
 use super::stats::{perforated_crease_mm, plan_stats};
-use super::{FabError, FabPlan, PlanAbout, PlanOptions, Setup, Side, Toolpath, geometry, order};
+use super::{
+    FabError, FabPlan, PlanAbout, PlanOptions, PlanWarning, PlanWarningKind, Setup, Side, Toolpath,
+    geometry, order,
+};
 use crate::check::{CheckOptions, FindingKind, check};
 use crate::machine::{Bed, MachineProfile, Material, load_material, shipped_materials};
 use crate::pattern::CreasePattern;
@@ -71,15 +74,15 @@ pub fn plan(
 
 /// A warning for a pattern whose only lines besides its outline are facet (F) lines that the
 /// plan skips: the sheet is cut out but nothing on it is folded or weakened.
-fn facets_only_warning(cp: &CreasePattern, opts: &PlanOptions) -> Option<String> {
+fn facets_only_warning(cp: &CreasePattern, opts: &PlanOptions) -> Option<PlanWarning> {
     let counts = crate::check::AssignmentCounts::of(cp);
     let creases = counts.mountain + counts.valley + counts.unassigned;
     (creases == 0 && counts.flat > 0 && opts.mapping.flat.is_none()).then(|| {
-        format!(
+        PlanWarningKind::FacetsOnly.says(format!(
             "the pattern has no creases, only {} facet (flat) line(s), which the plan skips: only \
              the outline is cut (--flat mark or --flat score machines them)",
             counts.flat
-        )
+        ))
     })
 }
 
@@ -144,7 +147,7 @@ fn two_sided_jobs(
     paths: Vec<Toolpath>,
     bed: &Bed,
     opts: &PlanOptions,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<PlanWarning>,
 ) -> Result<(Vec<Setup>, f64), FabError> {
     let extent = content_extent(cp, &paths)?;
     let marks = registration_marks(extent);
@@ -153,7 +156,10 @@ fn two_sided_jobs(
     let flipped = to_machine * mirror((sheet.0.x + sheet.1.x) / 2.0);
     let (front, back) = split(cp, paths);
     if back.is_empty() {
-        warnings.push("two-sided: nothing to do from the back (no valley, no cut)".into());
+        warnings.push(
+            PlanWarningKind::EmptyBack
+                .says("two-sided: nothing to do from the back (no valley, no cut)"),
+        );
     }
     let (front, naive_front) = make_job(
         "front",
@@ -222,8 +228,8 @@ fn meets_design_limits(cp: &CreasePattern, material: &Material) -> bool {
 fn design_limit_advice(
     cp: &CreasePattern,
     material: &Material,
-    warnings: &[String],
-) -> Option<String> {
+    warnings: &[PlanWarning],
+) -> Option<PlanWarning> {
     if warnings.is_empty() {
         return None;
     }
@@ -245,17 +251,17 @@ fn design_limit_advice(
         "--min-vertex-angle {} --max-fold-angle {}",
         l.min_vertex_angle_deg, l.max_fold_angle_deg
     );
-    Some(format!(
+    Some(PlanWarningKind::LimitAdvice.says(format!(
         "{}'s limits only warn, so the job was written all the same (no option is needed to \
          allow them); to keep within them, {others}; `foldcam check PATTERN {limits}` lists the \
          vertices and creases beyond them, `foldcam preview PATTERN --check {limits} -o PNG` \
          rings them on a picture",
         material.name
-    ))
+    )))
 }
 
 /// One warning per design limit of `material` that `cp` exceeds, with counts.
-pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<String> {
+pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<PlanWarning> {
     let opts = limit_options(material);
     let report = check(cp, &opts);
     let mut out = Vec::new();
@@ -266,11 +272,14 @@ pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<Str
             .smallest_crease_angle
             .as_ref()
             .map(|m| m.degrees);
-        out.push(format!(
+        out.push(PlanWarningKind::VertexAngleLimit.says(format!(
             "{angles} vertices have creases closer than {l}°, the smallest angle {} allows{}",
             material.name,
             worst.map_or(String::new(), |w| format!(" (smallest {w:.1}°)"))
-        ));
+        ))
+        .on(report
+            .of_kind(FindingKind::VertexAngle)
+            .filter_map(|f| f.edge)));
     }
     let folds: Vec<_> = report.of_kind(FindingKind::FoldAngle).collect();
     if let (false, Some(l)) = (folds.is_empty(), opts.max_fold_angle_deg) {
@@ -284,11 +293,15 @@ pub fn design_limit_warnings(cp: &CreasePattern, material: &Material) -> Vec<Str
         } else {
             String::new()
         };
-        out.push(format!(
-            "{} edges fold further than {l}°, the largest fold angle {} allows{note}",
-            folds.len(),
-            material.name
-        ));
+        out.push(
+            PlanWarningKind::FoldAngleLimit
+                .says(format!(
+                    "{} edges fold further than {l}°, the largest fold angle {} allows{note}",
+                    folds.len(),
+                    material.name
+                ))
+                .on(folds.iter().filter_map(|f| f.edge)),
+        );
     }
     out
 }

@@ -28,7 +28,10 @@
 use glam::DVec2;
 
 use super::stats::plan_stats;
-use super::{FabError, FabPlan, Operation, PlanOptions, SettingsOverride, Toolpath, geometry};
+use super::{
+    FabError, FabPlan, Operation, PlanOptions, PlanWarning, PlanWarningKind, SettingsOverride,
+    Toolpath, geometry,
+};
 use crate::geom::stroke_digits;
 use crate::machine::{MachineKind, MachineProfile, Material, OperationMapping, OperationSettings};
 use crate::pattern::{Assignment, CreasePattern, EdgeId};
@@ -315,7 +318,7 @@ pub fn test_grid(
     let mut pattern = CreasePattern::new();
     let mut paths: Vec<Toolpath> = Vec::new();
     let mut cells = Vec::with_capacity(combos.len());
-    let mut warnings: Vec<String> = Vec::new();
+    let mut warnings: Vec<PlanWarning> = Vec::new();
     for (i, &[dash, bridge, power, speed]) in combos.iter().enumerate() {
         let (col, row) = (i % columns, i / columns);
         let corner = DVec2::new(
@@ -333,7 +336,17 @@ pub fn test_grid(
         let (cell_paths, remarks) = geometry::toolpaths_with_warnings(&cell, &cell_opts)?;
         let shift = pattern.edges.len();
         append(&mut pattern, &cell);
-        warnings.extend(remarks.into_iter().map(|r| format!("cell {}: {r}", i + 1)));
+        warnings.extend(remarks.into_iter().map(|r| {
+            PlanWarning {
+                text: format!("cell {}: {}", i + 1, r.text),
+                edges: r
+                    .edges
+                    .iter()
+                    .map(|e| EdgeId::new(e.index() + shift))
+                    .collect(),
+                ..r
+            }
+        }));
         paths.extend(cell_paths.into_iter().map(|mut p| {
             for e in &mut p.edges {
                 *e = EdgeId::new(e.index() + shift);
@@ -372,10 +385,11 @@ pub fn test_grid(
     plan.warnings.extend(plan_opts.notes.iter().cloned());
     plan.warnings.extend(warnings);
     if !super::operations::can_mark(machine, material) {
-        plan.warnings.push(format!(
-            "{} has no visible mark on {} (mark power 0): the cell labels will not show",
-            material.name, machine.name
-        ));
+        plan.warnings
+            .push(PlanWarningKind::InvisibleMarks.says(format!(
+                "{} has no visible mark on {} (mark power 0): the cell labels will not show",
+                material.name, machine.name
+            )));
     }
     Ok(TestGrid {
         pattern,

@@ -35,7 +35,7 @@ use std::fmt::Write as _;
 
 use glam::DVec2;
 
-use super::{Imported, ParseError};
+use super::{FindingKind, Imported, ParseError};
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Most lines read from one file; larger files are refused with an error.
@@ -107,14 +107,14 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     }
     let mut warnings = Vec::new();
     if !zero_length.is_empty() {
-        warnings.push(zero_length_warning(&zero_length));
+        warnings.push(FindingKind::ZeroLengthLines.warning(zero_length_warning(&zero_length)));
     }
     if let Some(&(first, line_type)) = unusual.first() {
-        warnings.push(format!(
+        warnings.push(FindingKind::UnknownLineType.warning(format!(
             "{} line(s) of a type other than 0-4 (the first: line {first}, type {line_type}) \
              were read as auxiliary lines (flat), as ORIPA reads them",
             unusual.len()
-        ));
+        )));
     }
     super::finish_drawing(pattern, None, None, "lying", warnings)
 }

@@ -9,6 +9,7 @@
 pub(crate) mod atomic;
 pub mod cp;
 pub mod dxf;
+pub mod finding;
 pub mod fold;
 pub(crate) mod options;
 pub mod opx;
@@ -17,9 +18,13 @@ pub mod svg;
 
 use std::path::{Path, PathBuf};
 
-use crate::pattern::{CreasePattern, FoldedState, PatternError, PlanarizeOptions, planarize};
+use crate::pattern::{
+    CreasePattern, FoldedState, PatternError, PlanarizeError, PlanarizeOptions, PlanarizeReport,
+    planarize,
+};
 
 pub use atomic::{OutputError, OutputSet, check_targets, remove_pending_temporaries, write_atomic};
+pub use finding::{Finding, FindingKind, Severity};
 pub use options::{DashedAs, ReadOptions};
 pub use snap::SNAP_RELATIVE;
 
@@ -86,11 +91,67 @@ pub struct Imported {
     pub pattern: CreasePattern,
     /// The folded state, when the file holds one (a FOLD frame of class `foldedForm` in 3D).
     pub folded: Option<FoldedState>,
-    /// Non-fatal remarks (off-palette colours, ignored elements, flattened 3D input, …).
-    pub warnings: Vec<String>,
-    /// What the reader decided that the user should know, without anything being wrong (the
-    /// snapping tolerance used and how many line ends it joined).
-    pub notes: Vec<String>,
+    /// What the reader (and [`Imported::clean`]) had to say, in order: warnings (off-palette
+    /// colours, ignored elements, flattened 3D input, …) and notes (what the reader decided
+    /// that the user should know without anything being wrong: the snapping tolerance used
+    /// and how many line ends it joined).
+    pub findings: Vec<Finding>,
+}
+
+impl Imported {
+    /// The warnings among the findings.
+    pub fn warnings(&self) -> impl Iterator<Item = &Finding> {
+        self.findings.iter().filter(|f| f.is_warning())
+    }
+
+    /// The notes among the findings.
+    pub fn notes(&self) -> impl Iterator<Item = &Finding> {
+        self.findings.iter().filter(|f| !f.is_warning())
+    }
+
+    /// Whether a finding of `kind` was made.
+    pub fn found(&self, kind: FindingKind) -> bool {
+        self.findings.iter().any(|f| f.kind == kind)
+    }
+
+    /// Cleans the pattern into a planar graph as every command and the studio do before using
+    /// it (see [`planarize`]: merged vertices, split crossings, removed zero-length and
+    /// duplicate edges; faces traced when `options.faces`) and adds what happened to
+    /// [`Imported::findings`]: overlapping mountain and valley lines
+    /// ([`FindingKind::AssignmentConflicts`]); a folded state that no longer matches the
+    /// changed pattern, dropped ([`FindingKind::FoldedStateDropped`]); what cleaning changed
+    /// ([`FindingKind::Cleaned`]). Returns the planariser's report.
+    ///
+    /// # Errors
+    /// The planariser's refusal (the file name is the caller's to add).
+    pub fn clean(&mut self, options: &PlanarizeOptions) -> Result<PlanarizeReport, PlanarizeError> {
+        let report = planarize(&mut self.pattern, options)?;
+        if report.assignment_conflicts > 0 {
+            self.findings
+                .push(FindingKind::AssignmentConflicts.warning(format!(
+                    "{} mountain and valley lines lie on top of each other; the first of each \
+                     pair was kept",
+                    report.assignment_conflicts
+                )));
+        }
+        if !report.unchanged() {
+            if self.folded.take().is_some() {
+                self.findings.push(FindingKind::FoldedStateDropped.warning(
+                    "the folded state was dropped: it does not match the cleaned pattern",
+                ));
+            }
+            self.findings.push(FindingKind::Cleaned.note(format!(
+                "cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, {} \
+                 zero-length and {} duplicate edges removed",
+                report.merged_vertices,
+                report.crossings,
+                report.splits,
+                report.zero_length_removed,
+                report.duplicates_removed
+            )));
+        }
+        Ok(report)
+    }
 }
 
 /// A problem in a file's content, located without the file name (which [`load`] adds).
@@ -205,7 +266,7 @@ pub(crate) fn finish_drawing(
     tolerance: Option<f64>,
     snap: Option<f64>,
     verb: &str,
-    mut warnings: Vec<String>,
+    mut findings: Vec<Finding>,
 ) -> Result<Imported, ParseError> {
     let options = PlanarizeOptions {
         tolerance,
@@ -214,12 +275,11 @@ pub(crate) fn finish_drawing(
     let report =
         planarize(&mut pattern, &options).map_err(|e| ParseError::new("file", e.to_string()))?;
     if report.duplicates_removed > 0 {
-        warnings.push(format!(
+        findings.push(FindingKind::OverlapsMerged.warning(format!(
             "{} line(s) {verb} over others were merged (the stronger assignment kept)",
             report.duplicates_removed
-        ));
+        )));
     }
-    let mut notes = Vec::new();
     if let Some(snap) = snap.filter(|&s| s > report.tolerance) {
         let (mut joined, mut merged) = (0, 0);
         // Joining can leave new short stubs where lines were split; a second round finds them.
@@ -233,17 +293,14 @@ pub(crate) fn finish_drawing(
             planarize(&mut pattern, &options)
                 .map_err(|e| ParseError::new("file", e.to_string()))?;
         }
-        let unit = match pattern.units {
-            crate::pattern::Units::Millimetres => "mm",
-            crate::pattern::Units::Unitless => "units",
-        };
+        let unit = pattern.units.label();
         // Said when it changed the drawing; a clean drawing reads without the note.
         if joined + merged > 0 {
-            notes.push(format!(
+            findings.push(FindingKind::Snapped.note(format!(
                 "snap tolerance {snap:.4} {unit} (--snap): {joined} line end(s) joined to the \
                  line or corner they stopped short of, {merged} junction(s) merged with a \
                  neighbour"
-            ));
+            )));
         }
     }
     pattern
@@ -252,8 +309,7 @@ pub(crate) fn finish_drawing(
     Ok(Imported {
         pattern,
         folded: None,
-        warnings,
-        notes,
+        findings,
     })
 }
 

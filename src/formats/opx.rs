@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 
 use glam::DVec2;
 
-use super::{Imported, ParseError};
+use super::{FindingKind, Imported, ParseError};
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Most lines read from one file.
@@ -76,7 +76,10 @@ pub fn read_str(text: &str) -> Result<Imported, ParseError> {
     }
     let mut warnings = Vec::new();
     if zero_length > 0 {
-        warnings.push(format!("{zero_length} zero-length line(s) ignored"));
+        warnings.push(
+            FindingKind::ZeroLengthLines
+                .warning(format!("{zero_length} zero-length line(s) ignored")),
+        );
     }
     super::finish_drawing(pattern, None, None, "lying", warnings)
 }

@@ -75,6 +75,16 @@ pub enum Units {
     Unitless,
 }
 
+impl Units {
+    /// The unit's name in messages, next to a length: `mm` or `units`.
+    pub fn label(self) -> &'static str {
+        match self {
+            Units::Millimetres => "mm",
+            Units::Unitless => "units",
+        }
+    }
+}
+
 /// A physical size was needed but the pattern is unitless.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 #[error(

@@ -10,7 +10,7 @@ use super::style::{DRAW_ORDER, FAULT_COLOR, LineStyle, line_style};
 use super::{PreviewOptions, RenderError, chain, rings};
 use crate::check::Finding;
 use crate::geom::Segment;
-use crate::pattern::{Assignment, CreasePattern, Units};
+use crate::pattern::{Assignment, CreasePattern};
 
 /// Share of the drawable width the scale bar may take at most.
 const SCALE_BAR_SHARE: f64 = 0.3;
@@ -69,10 +69,7 @@ fn preview_key(
     layout: &Layout,
     faults: &[Finding],
 ) -> Key {
-    let unit = match cp.units {
-        Units::Millimetres => "mm",
-        Units::Unitless => "units",
-    };
+    let unit = cp.units.label();
     let drawable = f64::from(layout.width - 2 * layout.margin);
     let scale_bar = opts.scale_bar.then_some(ScaleBar {
         px_per_unit: layout.scale,

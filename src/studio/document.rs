@@ -10,7 +10,7 @@ use serde::Serialize;
 use crate::check::AssignmentCounts;
 use crate::design::source::Design;
 use crate::formats::{self, Format, FormatError, Imported, ReadOptions};
-use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions, Units, planarize};
+use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions};
 
 /// A pattern the studio holds: the import as read (warnings and notes included), named as the
 /// user named it.
@@ -121,8 +121,7 @@ impl Document {
             Imported {
                 pattern,
                 folded: None,
-                warnings: Vec::new(),
-                notes: Vec::new(),
+                findings: Vec::new(),
             },
         )
     }
@@ -142,8 +141,7 @@ impl Document {
             Imported {
                 pattern: design.pattern,
                 folded: design.folded,
-                warnings: Vec::new(),
-                notes: Vec::new(),
+                findings: Vec::new(),
             },
         )?;
         let mut lines = notes;
@@ -164,8 +162,7 @@ impl Document {
             imported: Imported {
                 pattern,
                 folded: None,
-                warnings: self.imported.warnings.clone(),
-                notes: self.imported.notes.clone(),
+                findings: self.imported.findings.clone(),
             },
             // What was made stays; the build's report no longer describes the pattern.
             design: self.design.as_ref().map(|d| DesignNote {
@@ -218,49 +215,22 @@ impl Document {
 
     fn clean_now(&self, faces: bool) -> Result<Cleaned, String> {
         let name = &self.name;
-        let mut messages: Vec<String> = self
+        let mut imported = self.imported.clone();
+        imported
+            .clean(&PlanarizeOptions {
+                tolerance: None,
+                faces,
+            })
+            .map_err(|e| format!("{name}: {e}"))?;
+        let messages: Vec<String> = self
             .design
             .iter()
             .flat_map(|d| d.lines.iter().cloned())
-            .chain(
-                self.imported
-                    .warnings
-                    .iter()
-                    .map(|w| format!("warning: {name}: {w}")),
-            )
-            .chain(self.imported.notes.iter().map(|n| format!("{name}: {n}")))
+            .chain(imported.findings.iter().map(|f| f.line(name)))
             .collect();
-        let mut pattern = self.imported.pattern.clone();
-        let mut folded = self.imported.folded.clone();
-        let options = PlanarizeOptions {
-            tolerance: None,
-            faces,
-        };
-        let report = planarize(&mut pattern, &options).map_err(|e| format!("{name}: {e}"))?;
-        if report.assignment_conflicts > 0 {
-            messages.push(format!(
-                "warning: {name}: {} mountain and valley lines lie on top of each other; the \
-                 first of each pair was kept",
-                report.assignment_conflicts
-            ));
-        }
-        if !report.unchanged() {
-            if folded.take().is_some() {
-                messages.push(format!(
-                    "warning: {name}: the folded state was dropped: it does not match the \
-                     cleaned pattern"
-                ));
-            }
-            messages.push(format!(
-                "{name}: cleaned the drawing: {} vertices merged, {} crossings, {} edge splits, \
-                 {} zero-length and {} duplicate edges removed",
-                report.merged_vertices,
-                report.crossings,
-                report.splits,
-                report.zero_length_removed,
-                report.duplicates_removed
-            ));
-        }
+        let Imported {
+            pattern, folded, ..
+        } = imported;
         Ok(Cleaned {
             pattern,
             folded,
@@ -318,7 +288,7 @@ impl PatternView {
         let cp = &cleaned.pattern;
         PatternView {
             name: name.to_string(),
-            units: unit_label(cp.units),
+            units: cp.units.label(),
             vertices: cp.vertices.iter().map(|p: &DVec2| [p.x, p.y]).collect(),
             edges: cp
                 .edges
@@ -337,13 +307,5 @@ impl PatternView {
             messages: cleaned.messages.clone(),
             made: cleaned.made,
         }
-    }
-}
-
-/// The unit label of a pattern for messages (`mm` or `units`).
-pub fn unit_label(units: Units) -> &'static str {
-    match units {
-        Units::Millimetres => "mm",
-        Units::Unitless => "units",
     }
 }

@@ -301,7 +301,10 @@ fn session_view(id: u64, s: &Session) -> SessionView {
                 .collect(),
         },
         snap: [sn.vertex, sn.edge, sn.line, sn.angle],
-        warnings: layer_problems(&f, f.current()),
+        warnings: layer_problems(&f, f.current())
+            .iter()
+            .map(ToString::to_string)
+            .collect(),
     }
 }
 

@@ -130,8 +130,8 @@ pub struct PlanView {
     pub jobs: Vec<JobView>,
     /// Lengths per operation, pierces, travel and time.
     pub stats: PlanStats,
-    /// The plan's remarks.
-    pub warnings: Vec<String>,
+    /// The plan's remarks, each with its kind and the pattern edges it is about.
+    pub warnings: Vec<crate::fab::PlanWarning>,
 }
 
 impl PlanView {

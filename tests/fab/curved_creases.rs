@@ -237,10 +237,11 @@ fn a_two_sided_plan_reports_each_left_out_edge_once() {
 
 /// The number of creases the plan's one warning about creases too short for a dash counts
 /// ("12 creases (…) too short …", "1 crease (…) too short …"), 0 without that warning.
-fn too_short_count(warnings: &[String]) -> usize {
-    let lines: Vec<&String> = warnings
+fn too_short_count(warnings: &[foldcam::fab::PlanWarning]) -> usize {
+    let lines: Vec<&str> = warnings
         .iter()
-        .filter(|w| w.contains("too short"))
+        .filter(|w| w.kind == foldcam::fab::PlanWarningKind::CreasesTooShort)
+        .map(|w| w.text.as_str())
         .collect();
     assert!(
         lines.len() <= 1,

@@ -91,7 +91,15 @@ fn a_hole_smaller_than_the_kerf_is_reported_not_mangled() {
     opts.kerf_offset = true;
     let (paths, warnings) = toolpaths_with_warnings(&cp, &opts).unwrap();
     assert_eq!(warnings.len(), 1, "{warnings:?}");
-    assert!(warnings[0].contains("smaller than the kerf"));
+    assert_eq!(
+        warnings[0].kind,
+        foldcam::fab::PlanWarningKind::HoleBelowKerf
+    );
+    assert!(warnings[0].text.contains("smaller than the kerf"));
+    // The hole's four sides, drawn after the outline's four.
+    let mut about: Vec<usize> = warnings[0].edges.iter().map(|e| e.index()).collect();
+    about.sort_unstable();
+    assert_eq!(about, [4, 5, 6, 7]);
     let hole = with_role(&paths, ContourRole::Hole)[0].1;
     assert!((area(&hole.strokes[0]).abs() - 0.04).abs() < 1e-9);
 }

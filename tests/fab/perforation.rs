@@ -6,8 +6,8 @@
 use crate::fab_common;
 
 use fab_common::{options, point_segment, polygon, segment_segment};
-use foldcam::fab::toolpaths_with_warnings;
 use foldcam::fab::{Operation, PlanOptions, Toolpath};
+use foldcam::fab::{PlanWarningKind, toolpaths_with_warnings};
 use foldcam::pattern::{Assignment, CreasePattern};
 use glam::DVec2;
 use proptest::prelude::*;
@@ -228,7 +228,13 @@ fn a_crease_too_short_gets_no_dash_and_a_warning() {
     let (paths, warnings) = toolpaths_with_warnings(&cp, &options()).unwrap();
     assert!(perforations(&paths).is_empty());
     assert_eq!(warnings.len(), 1, "{warnings:?}");
-    assert!(warnings[0].contains(&short.to_string()), "{}", warnings[0]);
+    assert_eq!(warnings[0].kind, PlanWarningKind::CreasesTooShort);
+    assert_eq!(warnings[0].edges, [short], "{warnings:?}");
+    assert!(
+        warnings[0].text.contains(&short.to_string()),
+        "{}",
+        warnings[0]
+    );
 }
 
 #[test]
@@ -318,7 +324,9 @@ proptest! {
             .find(|p| p.edges == vec![foldcam::pattern::EdgeId(0)]);
         match main {
             Some(p) => assert_layout(&cp, p, &opts),
-            None => prop_assert!(warnings.iter().any(|w| names_edge(w, "e0"))),
+            None => prop_assert!(warnings
+                .iter()
+                .any(|w| w.edges.contains(&foldcam::pattern::EdgeId(0)) && names_edge(&w.text, "e0"))),
         }
         for p in perforations(&paths) {
             assert_layout(&cp, p, &opts);
@@ -436,7 +444,8 @@ fn facet_lines_alone_are_said_to_be_skipped() {
     assert!(
         p.warnings
             .iter()
-            .any(|w| w.contains("no creases, only 1 facet")),
+            .any(|w| w.kind == PlanWarningKind::FacetsOnly
+                && w.text.contains("no creases, only 1 facet")),
         "{:?}",
         p.warnings
     );

@@ -103,9 +103,9 @@ fn snapping_keeps_every_circle_of_the_circular_pleat_apart() {
     .unwrap_or_else(|e| panic!("{e}"));
     let snapped = formats::load(&path).unwrap_or_else(|e| panic!("{e}"));
     assert!(
-        snapped.notes.iter().any(|n| n.contains("snap tolerance")),
+        snapped.found(formats::FindingKind::Snapped),
         "{:?}",
-        snapped.notes
+        snapped.findings
     );
     let (before, after) = (curves(&raw.pattern), curves(&snapped.pattern));
     // The file's 1400 red and blue chords lie on 14 circles (radii 88 to 192 px, 8 px apart:

@@ -67,7 +67,11 @@ fn a_preliminary_base_is_planarised() {
     assert_eq!(count(p, Assignment::Mountain), 4);
     assert_eq!(p.vertices.len(), 9);
     assert!(p.edges.iter().all(|e| e.fold_angle.is_none()));
-    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    assert!(
+        imported.warnings().next().is_none(),
+        "{:?}",
+        imported.findings
+    );
     assert_eq!(
         p.bounds(),
         Some((DVec2::splat(-200.0), DVec2::splat(200.0)))
@@ -133,8 +137,10 @@ fn errors_name_the_line_and_the_problem() {
 fn zero_length_lines_are_dropped_with_a_warning() {
     let imported = cp::read_str("2 0 0 1 0\n3 5 5 5 5\n2 1 0 2 0\n").expect("reads");
     assert_eq!(imported.pattern.edges.len(), 2);
-    let w = imported.warnings.join("\n");
-    assert!(w.contains("zero-length") && w.contains("line 2"), "{w}");
+    let w: Vec<_> = imported.warnings().collect();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!(w[0].kind, foldcam::formats::FindingKind::ZeroLengthLines);
+    assert!(w[0].text.contains("line 2"), "{w:?}");
 }
 
 #[test]

@@ -102,7 +102,11 @@ fn r2000_layers_named_mountain_and_valley() {
     assert_eq!(n(cp, Assignment::Valley), 4);
     assert_eq!(n(cp, Assignment::Boundary), 6);
     assert_eq!(cp.edges.len(), 12);
-    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    assert!(
+        imported.warnings().next().is_none(),
+        "{:?}",
+        imported.findings
+    );
 }
 
 #[test]
@@ -153,10 +157,9 @@ fn bylayer_colours_true_colours_and_layer_names_take_precedence() {
     assert_eq!(n(cp, Assignment::Mountain), 2);
     assert_eq!(n(cp, Assignment::Valley), 2);
     assert!(
-        imported
-            .warnings
-            .iter()
-            .any(|w| w.contains("read by colour"))
+        imported.found(formats::FindingKind::DxfLayersByColour),
+        "{:?}",
+        imported.findings
     );
 }
 

@@ -511,7 +511,7 @@ fn edges_are_taken_from_faces_when_missing() {
     });
     assert_eq!(diagonal.map(|e| e.assignment), Some(Assignment::Unassigned));
     assert_eq!(cp.assignment_counts()[0], 4, "four boundary edges");
-    assert!(!imported.warnings.is_empty());
+    assert!(imported.found(foldcam::formats::FindingKind::EdgesFromFaces));
 }
 
 #[test]
@@ -666,9 +666,9 @@ fn tilted_flat_pattern_is_rotated_onto_xy() {
     let imported = read_str(&text).expect("reads");
     assert!(imported.folded.is_none());
     assert!(
-        imported.warnings.iter().any(|w| w.contains("one plane")),
+        imported.found(foldcam::formats::FindingKind::PlaneRotated),
         "{:?}",
-        imported.warnings
+        imported.findings
     );
     let cp = &imported.pattern;
     for i in 0..4 {

@@ -78,9 +78,9 @@ fn folded_forms_unfold_isometrically() {
         );
         assert_eq!(imported.pattern.edges, folded.edges, "{name}");
         assert!(
-            imported.warnings.iter().any(|w| w.contains("unfolded")),
+            imported.found(foldcam::formats::FindingKind::Unfolded),
             "{name}: {:?}",
-            imported.warnings
+            imported.findings
         );
         assert_isometric(name, &imported.pattern, folded, 1e-9);
     }
@@ -141,7 +141,7 @@ fn origami_simulator_patterns_become_flat() {
         );
         assert_eq!(cp.units, Units::Unitless);
         assert!(
-            imported.warnings.iter().any(|w| w.contains("plane")),
+            imported.found(foldcam::formats::FindingKind::PlaneRotated),
             "{name}"
         );
         // The rotation is an isometry: lengths match the 3D file.
@@ -167,7 +167,7 @@ fn origami_simulator_patterns_become_flat() {
             assert!(foldcam::geom::signed_area(ring) > 0.0, "{name}");
         }
         assert!(
-            imported.warnings.iter().any(|w| w.contains("reversed")),
+            imported.found(foldcam::formats::FindingKind::FacesReversed),
             "{name}"
         );
         // Read as (x, −z), the SVG it was drawn from with y turned up: the first vertex.
@@ -191,5 +191,9 @@ fn crease_pattern_file_keeps_its_coordinates_and_extras() {
     assert_eq!(cp.meta.title.as_deref(), Some("diagonal"));
     assert_eq!(cp.meta.creator.as_deref(), Some("Crease Pattern Editor"));
     assert!(cp.meta.derived_keys.iter().any(|k| k == "faces_edges"));
-    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    assert!(
+        imported.warnings().next().is_none(),
+        "{:?}",
+        imported.findings
+    );
 }

@@ -54,7 +54,11 @@ fn data_assignment_and_class_names_win_over_colour() {
         .collect();
     mountain_angles.sort_unstable();
     assert_eq!(mountain_angles, vec![-180, -90, -90]);
-    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    assert!(
+        imported.warnings().next().is_none(),
+        "{:?}",
+        imported.findings
+    );
     assert!(no_faults(cp));
 }
 
@@ -82,15 +86,15 @@ fn rabbit_ear_files_read_with_their_assignments() {
     // data-assignment and its palette colour agreeing; gold is join.
     let imported =
         formats::load(&dir.join("crane-cp-all-assignments.svg")).unwrap_or_else(|e| panic!("{e}"));
-    let off_palette = |w: &Vec<String>| w.iter().any(|w| w.contains("not in the crease palette"));
-    assert!(!off_palette(&imported.warnings), "{:?}", imported.warnings);
+    let off_palette = |i: &formats::Imported| i.found(formats::FindingKind::OffPaletteColour);
+    assert!(!off_palette(&imported), "{:?}", imported.findings);
     for a in Assignment::ALL {
         assert!(n(&imported.pattern, a) > 0, "no {a:?}");
     }
     assert!(no_faults(&imported.pattern));
     // fish.svg names classes, with Rabbit Ear's light grey for flat lines.
     let imported = formats::load(&dir.join("fish.svg")).unwrap_or_else(|e| panic!("{e}"));
-    assert!(!off_palette(&imported.warnings), "{:?}", imported.warnings);
+    assert!(!off_palette(&imported), "{:?}", imported.findings);
     assert!(n(&imported.pattern, Assignment::Flat) > 0);
 }
 
@@ -166,7 +170,7 @@ fn the_crane_reads_with_its_ends_joined() {
     // Without snapping, creases dangle; with it, no vertex has a single edge.
     assert!(dangling(&unsnapped.pattern) > 0);
     assert_eq!(dangling(cp), 0);
-    assert!(imported.notes.iter().any(|n| n.contains("snap tolerance")));
+    assert!(imported.found(formats::FindingKind::Snapped));
     // Maekawa holds at every interior vertex once the ends meet (it failed at 33 before).
     let report = foldcam::check::check(cp, &foldcam::check::CheckOptions::default());
     let maekawa = report.of_kind(foldcam::check::FindingKind::Maekawa).count();

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use foldcam::formats::svg;
+use foldcam::formats::{FindingKind, svg};
 use foldcam::pattern::{Assignment, CreasePattern, Units};
 use glam::DVec2;
 use proptest::prelude::*;
@@ -156,7 +156,11 @@ fn waterbomb_base_reads_half_opacity_valleys() {
         DVec2::new(432.0, -288.0) * MM_PER_PX,
         1e-3
     ));
-    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    assert!(
+        imported.warnings().next().is_none(),
+        "{:?}",
+        imported.findings
+    );
 }
 
 #[test]
@@ -180,7 +184,11 @@ fn palette_colours_in_any_notation_are_exact() {
     ] {
         assert_eq!(count(cp, a), 1, "{a:?}");
     }
-    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    assert!(
+        imported.warnings().next().is_none(),
+        "{:?}",
+        imported.findings
+    );
 }
 
 #[test]
@@ -195,7 +203,13 @@ fn off_palette_colours_map_to_the_nearest_with_one_warning_each() {
     assert_eq!(count(cp, Assignment::Mountain), 2);
     assert_eq!(count(cp, Assignment::Unassigned), 1);
     assert_eq!(count(cp, Assignment::Boundary), 1);
-    let w = &imported.warnings;
+    let w: Vec<&str> = imported.warnings().map(|f| f.text.as_str()).collect();
+    assert!(
+        imported
+            .warnings()
+            .all(|f| f.kind == FindingKind::OffPaletteColour),
+        "{w:?}"
+    );
     assert_eq!(w.len(), 3, "{w:?}");
     let red = w
         .iter()
@@ -225,7 +239,7 @@ fn many_off_palette_colours_share_one_warning_beyond_a_dozen() {
         .collect();
     let imported = read(&body);
     assert_eq!(imported.pattern.edges.len(), 20);
-    let w = &imported.warnings;
+    let w: Vec<&str> = imported.warnings().map(|f| f.text.as_str()).collect();
     assert_eq!(w.len(), 13, "{w:?}");
     assert!(
         w[12].contains("8 more off-palette stroke colours on 8 element"),
@@ -382,9 +396,9 @@ fn curves_are_flattened_with_a_warning() {
         );
     }
     assert!(
-        imported.warnings.iter().any(|w| w.contains("flattened")),
+        imported.found(FindingKind::CurvesFlattened),
         "{:?}",
-        imported.warnings
+        imported.findings
     );
 }
 
@@ -396,9 +410,16 @@ fn unstroked_elements_and_text_are_ignored_with_a_warning() {
          <line x1='0' y1='0' x2='10' y2='0' stroke='red'/>",
     );
     assert_eq!(imported.pattern.edges.len(), 1);
-    let w = imported.warnings.join("\n");
-    assert!(w.contains("1 element(s) without a stroke"), "{w}");
-    assert!(w.contains("1 text element(s)"), "{w}");
+    let w: Vec<_> = imported.warnings().collect();
+    let of = |kind| w.iter().find(|f| f.kind == kind).map(|f| f.text.as_str());
+    assert!(
+        of(FindingKind::Unstroked).is_some_and(|t| t.contains("1 element(s) without a stroke")),
+        "{w:?}"
+    );
+    assert!(
+        of(FindingKind::Text).is_some_and(|t| t.contains("1 text element(s)")),
+        "{w:?}"
+    );
 }
 
 #[test]

@@ -333,7 +333,9 @@ fn plotters_draw_mountains_and_valleys_on_separate_layers_with_a_pause() {
         &machine,
         &load_material("card-300gsm").expect("shipped"),
     );
-    assert!(p.warnings.iter().any(|w| w.contains("is a plotter")));
+    assert!(p.warnings.iter().any(|w| {
+        w.kind == foldcam::fab::PlanWarningKind::AdaptedToMachine && w.text.contains("is a plotter")
+    }));
     let svg = post::svg(&p, &p.jobs[0], &machine.bed, false).expect("SVG");
     let layers = svg.matches("inkscape:groupmode=\"layer\"").count();
     assert_eq!(layers, 2);

@@ -24,8 +24,53 @@ struct Taco {
     side: f64,
 }
 
-/// Every violation in the state, described in words (empty when consistent).
-pub fn layer_problems(folding: &Folding, state: &State) -> Vec<String> {
+/// A violation of the local flat-folding conditions in one group's face stack (faces are
+/// indices into the state's faces, groups into its groups); `Display` says it in words.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum LayerProblem {
+    /// Taco–tortilla: `face` lies between the two faces of a flat crease and runs across it.
+    FaceAcrossCrease {
+        /// The group.
+        group: usize,
+        /// The face in between.
+        face: usize,
+    },
+    /// Taco–taco: two flat creases on one segment, opening to the same side, interleave
+    /// (`first` and `second`: each crease's two faces, lower in the stack first).
+    InterleavedCreases {
+        /// The group.
+        group: usize,
+        /// The first crease's faces.
+        first: [usize; 2],
+        /// The second crease's faces.
+        second: [usize; 2],
+    },
+}
+
+impl std::fmt::Display for LayerProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            LayerProblem::FaceAcrossCrease { group, face } => write!(
+                f,
+                "group {group}: face {face} lies between the two faces of a flat crease and runs \
+                 across it"
+            ),
+            LayerProblem::InterleavedCreases {
+                group,
+                first: [a, b],
+                second: [c, d],
+            } => write!(
+                f,
+                "group {group}: two flat creases on one segment interleave (faces {a} {b} and \
+                 {c} {d})"
+            ),
+        }
+    }
+}
+
+/// Every violation in the state (empty when consistent).
+pub fn layer_problems(folding: &Folding, state: &State) -> Vec<LayerProblem> {
     let mut out = Vec::new();
     for g in 0..state.groups.len() {
         group_problems(folding, state, g, &mut out);
@@ -33,7 +78,7 @@ pub fn layer_problems(folding: &Folding, state: &State) -> Vec<String> {
     out
 }
 
-fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<String>) {
+fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<LayerProblem>) {
     let tol = folding.tol * 100.0;
     let group = &state.groups[g];
     let (u, v) = super::geometry::plane_basis(group.normal);
@@ -82,10 +127,10 @@ fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<Stri
     for t in &tacos {
         for (h, poly) in polys.iter().enumerate().take(t.high).skip(t.low + 1) {
             if segment_crosses_interior(t.p, t.q, poly, tol) {
-                out.push(format!(
-                    "group {g}: face {} lies between the two faces of a flat crease and runs across it",
-                    group.stack[h]
-                ));
+                out.push(LayerProblem::FaceAcrossCrease {
+                    group: g,
+                    face: group.stack[h],
+                });
             }
         }
     }
@@ -95,13 +140,11 @@ fn group_problems(folding: &Folding, state: &State, g: usize, out: &mut Vec<Stri
                 || (b.low < a.low && a.low < b.high && b.high < a.high);
             if interleaved && a.side == b.side && shared_segment(a.p, a.q, b.p, b.q, tol).is_some()
             {
-                out.push(format!(
-                    "group {g}: two flat creases on one segment interleave (faces {} {} and {} {})",
-                    group.stack[a.low],
-                    group.stack[a.high],
-                    group.stack[b.low],
-                    group.stack[b.high]
-                ));
+                out.push(LayerProblem::InterleavedCreases {
+                    group: g,
+                    first: [group.stack[a.low], group.stack[a.high]],
+                    second: [group.stack[b.low], group.stack[b.high]],
+                });
             }
         }
     }

@@ -68,7 +68,7 @@ pub use crease::{crease_pattern, step_states};
 pub use display::{TopFace, display_states, faces_from_above, sheet_size, step_captions};
 pub use drag::{Drag, Snap, Snapped};
 pub use error::FoldError;
-pub use layers::layer_problems;
+pub use layers::{LayerProblem, layer_problems};
 pub use operation::{Fold, FoldReport, Layers, Turn};
 pub use script::{Script, ScriptError, parse_script, run_script, write_script};
 pub use small::{Neighbours, Ring};

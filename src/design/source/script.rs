@@ -6,7 +6,7 @@
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::folding::Folding;
 use crate::design::folding::crease::{SheetPattern, crease_pattern, step_states};
-use crate::design::folding::layers::layer_problems;
+use crate::design::folding::layers::{LayerProblem, layer_problems};
 use crate::design::folding::script::{Script, parse_script, run_script};
 use crate::pattern::FoldedState;
 
@@ -24,8 +24,8 @@ pub struct ScriptDesign {
     /// The folded state after each step on the pattern's topology (the first is the flat
     /// sheet).
     pub states: Vec<FoldedState>,
-    /// Layer-order problems of the final state (warnings, without `warning: `).
-    pub warnings: Vec<String>,
+    /// Layer-order problems of the final state.
+    pub warnings: Vec<LayerProblem>,
     /// What `foldcam fold` prints once written, up to where it names the output
     /// ("… written to FILE" follows).
     pub summary: String,

@@ -28,7 +28,7 @@ use dxf::entities::{Entity, EntityType};
 use dxf::enums::Units as DxfUnits;
 use glam::{DAffine2, DVec2};
 
-use super::{FormatError, Imported, ParseError, ReadOptions, snap};
+use super::{Finding, FindingKind, FormatError, Imported, ParseError, ReadOptions, snap};
 use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
@@ -446,17 +446,17 @@ impl<'a> Reader<'a> {
         }
     }
 
-    fn warnings(&self) -> Vec<String> {
+    fn warnings(&self) -> Vec<Finding> {
         let mut out = Vec::new();
         for (kind, n) in &self.skipped {
-            out.push(format!(
+            out.push(FindingKind::DxfEntities.warning(format!(
                 "{n} {kind} were ignored (creases are lines and curves)"
-            ));
+            )));
         }
         for (name, n) in &self.missing_blocks {
-            out.push(format!(
+            out.push(FindingKind::DxfEntities.warning(format!(
                 "{n} insert(s) of block \"{name}\", which the file does not define, were ignored"
-            ));
+            )));
         }
         if !self.by_colour.is_empty() {
             let named: Vec<String> = self
@@ -464,18 +464,18 @@ impl<'a> Reader<'a> {
                 .iter()
                 .map(|(l, n)| format!("\"{l}\" ({n})"))
                 .collect();
-            out.push(format!(
+            out.push(FindingKind::DxfLayersByColour.warning(format!(
                 "layer(s) {} have no crease name (MOUNTAIN, VALLEY, BOUNDARY, CUT, FLAT, …): \
                  their entities were read by colour",
                 named.join(", ")
-            ));
+            )));
         }
         if self.curves > 0 {
-            out.push(format!(
+            out.push(FindingKind::CurvesFlattened.warning(format!(
                 "{} curve(s) were flattened into straight edges (within {CHORD_TOLERANCE_MM} \
                  mm); creases are straight",
                 self.curves
-            ));
+            )));
         }
         out
     }

@@ -8,7 +8,7 @@ use super::raw::{FRAME_TEXT_KEYS, parse_frame};
 use super::values::strings;
 use super::write::is_our_folded_frame;
 use super::{CREATOR, SOURCE_CREATOR_KEY, shape};
-use crate::formats::{Imported, ParseError};
+use crate::formats::{FindingKind, Imported, ParseError};
 use crate::pattern::{FoldedState, Metadata, PatternError};
 
 /// Parses a FOLD file's text and returns its key frame as a crease pattern (and the folded
@@ -172,9 +172,10 @@ fn attach_folded_frame(root: &Map<String, Value>, imported: &mut Imported) {
                 take_written_frame(&mut imported.pattern.meta.file_extra, i);
                 return;
             }
-            Err(why) => imported
-                .warnings
-                .push(format!("frame {i} (foldedForm) ignored: {why}")),
+            Err(why) => imported.findings.push(
+                FindingKind::FoldedFrameIgnored
+                    .warning(format!("frame {i} (foldedForm) ignored: {why}")),
+            ),
         }
     }
 }

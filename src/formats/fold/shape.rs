@@ -25,7 +25,7 @@ use super::plane::fit_plane;
 use super::raw::RawFrame;
 use super::unfold::unfold;
 use super::values::Key;
-use crate::formats::{Imported, ParseError};
+use crate::formats::{Finding, FindingKind, Imported, ParseError};
 use crate::geom::polygon::signed_area;
 use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{CreasePattern, Face, FoldedState, Metadata};
@@ -38,18 +38,18 @@ const COPLANAR_TOLERANCE: f64 = 1e-7;
 pub(super) fn build(mut raw: RawFrame, frame: usize) -> Result<Imported, ParseError> {
     let mut warnings = Vec::new();
     if raw.edges_from_faces {
-        warnings.push(format!(
+        warnings.push(FindingKind::EdgesFromFaces.warning(format!(
             "no edges_vertices: took the {} edges from the faces (B where one face, U where more)",
             raw.edges.len()
-        ));
+        )));
     }
     let flat: Option<Vec<DVec2>> = if !raw.is_3d {
         Some(raw.coords.iter().map(|p| p.truncate()).collect())
     } else if let Some(plane) = fit_plane(&raw.coords, COPLANAR_TOLERANCE) {
-        warnings.push(format!(
+        warnings.push(FindingKind::PlaneRotated.warning(format!(
             "the 3D coordinates lie in one plane (normal {:.3}, {:.3}, {:.3}); rotated it onto the xy plane",
             plane.normal.x, plane.normal.y, plane.normal.z
-        ));
+        )));
         Some(raw.coords.iter().map(|&p| plane.project(p)).collect())
     } else {
         None
@@ -65,15 +65,14 @@ pub(super) fn build(mut raw: RawFrame, frame: usize) -> Result<Imported, ParseEr
                     Some(_) => "the faces do not overlap",
                     None => "it has no faces to unfold",
                 };
-                warnings.push(format!(
+                warnings.push(FindingKind::NotFolded.warning(format!(
                     "frame_classes says foldedForm, but {why}: read as a crease pattern"
-                ));
+                )));
             }
             if raw.is_3d && reverse_clockwise_faces(&pts, &mut raw) {
-                warnings.push(
-                    "the faces ran clockwise in the rotated plane; reversed them (and faceOrders)"
-                        .into(),
-                );
+                warnings.push(FindingKind::FacesReversed.warning(
+                    "the faces ran clockwise in the rotated plane; reversed them (and faceOrders)",
+                ));
             }
             Ok(as_pattern(raw, pts, warnings))
         }
@@ -122,7 +121,7 @@ fn faces_flipped(pts: &[DVec2], faces: &[Face]) -> bool {
 }
 
 /// A crease pattern with the given flat positions.
-fn as_pattern(raw: RawFrame, vertices: Vec<DVec2>, warnings: Vec<String>) -> Imported {
+fn as_pattern(raw: RawFrame, vertices: Vec<DVec2>, findings: Vec<Finding>) -> Imported {
     let renamed = raw.folded_class || raw.is_3d;
     let mut extra = raw.extra;
     normalize_classes(&mut extra, renamed);
@@ -141,15 +140,14 @@ fn as_pattern(raw: RawFrame, vertices: Vec<DVec2>, warnings: Vec<String>) -> Imp
     Imported {
         pattern,
         folded: None,
-        warnings,
-        notes: Vec::new(),
+        findings,
     }
 }
 
 /// A folded state and its unfolding.
 fn as_folded(
     raw: RawFrame,
-    mut warnings: Vec<String>,
+    mut warnings: Vec<Finding>,
     frame: usize,
 ) -> Result<Imported, ParseError> {
     let faces = match &raw.faces {
@@ -163,10 +161,10 @@ fn as_folded(
         }
     };
     let unfolding = unfold(&raw.coords, faces);
-    warnings.push(format!(
+    warnings.push(FindingKind::Unfolded.warning(format!(
         "the frame is a folded state: unfolded its {} faces into the crease pattern",
         faces.len()
-    ));
+    )));
     warnings.extend(unfolding.warnings);
     let positions: Vec<DVec3> = raw.coords.clone();
     let folded = FoldedState {

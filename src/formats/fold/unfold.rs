@@ -29,6 +29,7 @@ use std::collections::HashMap;
 use glam::{DVec2, DVec3};
 
 use super::relax::{Rod, fit_lengths, worst_error};
+use crate::formats::{Finding, FindingKind};
 use crate::geom::tolerance::{RELATIVE, RELATIVE_SQUARED};
 use crate::geom::unfold::{anchor_map, breadth_first};
 use crate::pattern::{Face, VertexId};
@@ -48,7 +49,7 @@ pub struct Unfolding {
     /// Unfolded position of each vertex, in the folded state's unit.
     pub vertices: Vec<DVec2>,
     /// Remarks: non-developable vertices, mirrored or degenerate faces, separate pieces.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Finding>,
 }
 
 /// Unfolds the faces of a folded state (vertex positions `points`, faces indexing them) into
@@ -322,42 +323,42 @@ impl<'a> Unfolder<'a> {
             } else {
                 ""
             };
-            warnings.push(format!(
+            warnings.push(FindingKind::NotDevelopable.warning(format!(
                 "the folded state is not exactly developable (faces not quite flat, e.g. rounded \
                  coordinates): adjusted the unfolding to bring edge length errors from {before:.1e} \
                  down to {after:.1e} (relative){rest}"
-            ));
+            )));
         } else if s.conflicts > 0 && after > LENGTHS_KEPT {
-            warnings.push(format!(
+            warnings.push(FindingKind::NotDevelopable.warning(format!(
                 "the folded state is not developable: {} vertex placements disagree (by up to {:.3e}); \
                  the first was kept, so edge lengths differ from the folded state by up to {after:.1e} \
                  (relative)",
                 s.conflicts, s.max_gap
-            ));
+            )));
         }
         if s.mirrored > 0 {
-            warnings.push(format!(
+            warnings.push(FindingKind::MirroredFaces.warning(format!(
                 "{} faces are oriented against their neighbours and were unfolded mirrored",
                 s.mirrored
-            ));
+            )));
         }
         if s.degenerate > 0 {
-            warnings.push(format!(
+            warnings.push(FindingKind::DegenerateFaces.warning(format!(
                 "{} faces have no area and were not unfolded",
                 s.degenerate
-            ));
+            )));
         }
         if s.pieces > 1 {
-            warnings.push(format!(
+            warnings.push(FindingKind::Pieces.warning(format!(
                 "{} separate pieces were laid out side by side",
                 s.pieces
-            ));
+            )));
         }
         let unplaced = self.placed.iter().filter(|p| p.is_none()).count();
         if unplaced > 0 {
-            warnings.push(format!(
+            warnings.push(FindingKind::LooseVertices.warning(format!(
                 "{unplaced} vertices lie on no face and keep their x and y"
-            ));
+            )));
         }
         let vertices = self
             .placed
@@ -445,7 +446,9 @@ mod tests {
         ];
         let u = unfold(&pts, &faces);
         assert!(
-            u.warnings.iter().any(|w| w.contains("not developable")),
+            u.warnings
+                .iter()
+                .any(|w| w.kind == FindingKind::NotDevelopable),
             "{:?}",
             u.warnings
         );

@@ -18,7 +18,7 @@
 
 use usvg::roxmltree;
 
-use crate::formats::ParseError;
+use crate::formats::{Finding, FindingKind, ParseError};
 
 /// Most attributes on one element; real drawings use a few dozen.
 pub const MAX_ATTRIBUTES: usize = 1000;
@@ -126,7 +126,7 @@ fn scan_tag(text: &str, start: usize) -> Result<usize, ParseError> {
 
 /// Checks the geometric attributes of every element (see the module docs); returns warnings
 /// for presentation attributes that could not be parsed.
-pub fn check_values(doc: &roxmltree::Document) -> Result<Vec<String>, ParseError> {
+pub fn check_values(doc: &roxmltree::Document) -> Result<Vec<Finding>, ParseError> {
     let mut warnings = Vec::new();
     let svg = |n: &roxmltree::Node| {
         n.is_element() && matches!(n.tag_name().namespace(), None | Some(SVG_NS))
@@ -152,11 +152,11 @@ pub fn check_values(doc: &roxmltree::Document) -> Result<Vec<String>, ParseError
                 if let Err(why) =
                     length(value, name).or_else(|e| if keyword { Ok(()) } else { Err(e) })
                 {
-                    warnings.push(format!(
+                    warnings.push(FindingKind::UnreadableAttribute.warning(format!(
                         "{}: {name}=\"{}\" could not be read ({why}); its default was used",
                         element_at(doc, node),
                         short(value)
-                    ));
+                    )));
                 }
                 Ok(())
             } else {

@@ -23,7 +23,7 @@ use glam::{DAffine2, DVec2};
 use super::flatten;
 use super::meaning::Meaning;
 use super::palette::{self, Match, Rgb};
-use crate::formats::{DashedAs, ParseError};
+use crate::formats::{DashedAs, Finding, FindingKind, ParseError};
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
 /// Largest chord deviation allowed when flattening curves, in millimetres.
@@ -118,7 +118,7 @@ impl Collector {
     /// In a single-colour drawing (every element read by colour has the same stroke colour),
     /// reassigns the dashed elements by `rule`; returns how many were reassigned and the
     /// assignment counts as a note, if any.
-    pub fn apply_dashes(&mut self, rule: DashedAs) -> Option<String> {
+    pub fn apply_dashes(&mut self, rule: DashedAs) -> Option<Finding> {
         if self.colours.len() != 1 || self.dashed.is_empty() {
             return None;
         }
@@ -133,12 +133,12 @@ impl Collector {
             }
         }
         let counts: Vec<String> = counts.iter().map(|(a, n)| format!("{n} {a}")).collect();
-        Some(format!(
+        Some(FindingKind::Dashes.note(format!(
             "single-colour drawing: its {} dashed line(s) are folds ({}; --dashed {rule}), its \
              solid lines read by colour",
             self.dashed.len(),
             counts.join(", ")
-        ))
+        )))
     }
 
     /// Collects every path below `group`, whose accumulated opacity is `opacity`.
@@ -304,12 +304,12 @@ impl Collector {
     }
 
     /// The warnings for everything skipped or approximated.
-    pub fn warnings(&self) -> Vec<String> {
-        let mut out: Vec<String> = self
+    pub fn warnings(&self) -> Vec<Finding> {
+        let mut out: Vec<Finding> = self
             .off_palette
             .iter()
             .take(COLOURS_NAMED)
-            .map(off_palette_warning)
+            .map(|c| FindingKind::OffPaletteColour.warning(off_palette_warning(c)))
             .collect();
         if self.off_palette.len() > COLOURS_NAMED {
             let rest = &self
@@ -317,35 +317,38 @@ impl Collector {
                 .values()
                 .skip(COLOURS_NAMED)
                 .collect::<Vec<_>>();
-            out.push(format!(
+            out.push(FindingKind::OffPaletteColour.warning(format!(
                 "{} more off-palette stroke colours on {} element(s) were read as the nearest \
                  palette colour",
                 rest.len(),
                 rest.iter().map(|o| o.elements).sum::<usize>()
-            ));
+            )));
         }
         if self.no_stroke > 0 {
-            out.push(format!(
+            out.push(FindingKind::Unstroked.warning(format!(
                 "{} element(s) without a stroke were ignored (creases are stroked lines)",
                 self.no_stroke
-            ));
+            )));
         }
         if self.non_colour > 0 {
-            out.push(format!(
+            out.push(FindingKind::Unstroked.warning(format!(
                 "{} element(s) stroked with a gradient or pattern were ignored (creases need \
                  a plain stroke colour)",
                 self.non_colour
-            ));
+            )));
         }
         if self.images > 0 {
-            out.push(format!("{} embedded image(s) were ignored", self.images));
+            out.push(
+                FindingKind::Images
+                    .warning(format!("{} embedded image(s) were ignored", self.images)),
+            );
         }
         if self.curves > 0 {
-            out.push(format!(
+            out.push(FindingKind::CurvesFlattened.warning(format!(
                 "{} curved segment(s) were flattened into {} straight edges (within \
                  {CURVE_TOLERANCE_MM} mm); creases are straight",
                 self.curves, self.chords
-            ));
+            )));
         }
         out
     }

@@ -5,7 +5,7 @@ use usvg::roxmltree;
 
 use super::collect::Collector;
 use super::{attributes, frame, meaning};
-use crate::formats::{Imported, ParseError, ReadOptions, snap};
+use crate::formats::{Finding, FindingKind, Imported, ParseError, ReadOptions, snap};
 use crate::limits::MIN_TOLERANCE;
 use crate::pattern::CreasePattern;
 
@@ -91,12 +91,14 @@ pub fn read_str_with(text: &str, options: &ReadOptions) -> Result<Imported, Pars
     let mut imported =
         super::super::finish_drawing(pattern, Some(tolerance), Some(snap), "drawn", warnings)?;
     if declared > 0 {
-        imported.notes.push(format!(
-            "{declared} element(s) read by their data-assignment or class name rather than \
+        imported
+            .findings
+            .push(FindingKind::DeclaredAssignment.note(format!(
+                "{declared} element(s) read by their data-assignment or class name rather than \
              their colour"
-        ));
+            )));
     }
-    imported.notes.extend(dash_note);
+    imported.findings.extend(dash_note);
     Ok(imported)
 }
 
@@ -144,12 +146,12 @@ fn child_text(root: roxmltree::Node, name: &str) -> Option<String> {
 }
 
 /// A warning when the document holds text, which is not read.
-fn text_warning(doc: &roxmltree::Document) -> Option<String> {
+fn text_warning(doc: &roxmltree::Document) -> Option<Finding> {
     let count = doc
         .descendants()
         .filter(|n| is_svg_element(*n, "text"))
         .count();
-    (count > 0).then(|| format!("{count} text element(s) were ignored"))
+    (count > 0).then(|| FindingKind::Text.warning(format!("{count} text element(s) were ignored")))
 }
 
 fn xml_error(e: roxmltree::Error) -> ParseError {

@@ -100,20 +100,32 @@ fn design_limits_are_warned_about() {
     let b = cp.add_vertex(DVec2::new(10.0, 0.5)); // about 2.9° from the first crease
     let m = cp.add_edge(o, a, Assignment::Mountain);
     cp.edges[m.index()].fold_angle = Some(-90.0);
-    cp.add_edge(o, b, Assignment::Valley); // no stored angle: folded flat
+    let flat = cp.add_edge(o, b, Assignment::Valley); // no stored angle: folded flat
     let c = cp.add_vertex(DVec2::new(0.0, 10.0));
     let e = cp.add_edge(o, c, Assignment::Valley);
     cp.edges[e.index()].fold_angle = Some(179.0);
     let w = design_limit_warnings(&cp, &material());
     assert_eq!(w.len(), 2, "{w:?}");
     assert!(
-        w[0].starts_with("1 vertices") && w[0].contains("10°"),
+        w[0].text.starts_with("1 vertices") && w[0].text.contains("10°"),
         "{w:?}"
     );
     assert!(
-        w[1].starts_with("2 edges") && w[1].contains("175°") && w[1].contains("1 of them"),
+        w[1].text.starts_with("2 edges")
+            && w[1].text.contains("175°")
+            && w[1].text.contains("1 of them"),
         "{w:?}"
     );
+    // Typed, with the edges to ring: a crease of the narrow sector, the two far-folding ones.
+    use foldcam::fab::PlanWarningKind::{FoldAngleLimit, VertexAngleLimit};
+    assert_eq!((w[0].kind, w[1].kind), (VertexAngleLimit, FoldAngleLimit));
+    assert!(
+        w[0].edges.len() == 1 && [m, flat].contains(&w[0].edges[0]),
+        "{w:?}"
+    );
+    let mut far = w[1].edges.clone();
+    far.sort();
+    assert_eq!(far, [flat, e]);
     let (clean, _) = sheet(100.0, DVec2::ZERO);
     let mut flat_folding = material();
     flat_folding.limits.max_fold_angle_deg = 180.0;
