@@ -12,16 +12,9 @@ use foldcam::limits;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OpChoice(pub Option<Operation>);
 
-/// Parses an operation name or `skip`.
+/// Parses an operation name or `skip` ([`Operation::choice`]).
 fn operation(s: &str) -> Result<OpChoice, String> {
-    if s == "skip" {
-        return Ok(OpChoice(None));
-    }
-    Operation::from_name(s)
-        .map(|op| OpChoice(Some(op)))
-        .ok_or_else(|| {
-            format!("{s:?} is not an operation (mark, score, perforate, cut, plot, skip)")
-        })
+    Operation::choice(s).map(OpChoice)
 }
 
 /// Parses a duty cycle strictly between 0 and 1.
@@ -132,13 +125,13 @@ pub struct FabArgs {
     #[arg(long, value_name = "MM", value_parser = |s: &str| limits::TAB_WIDTH.parse(s))]
     pub tabs: Option<f64>,
     /// Spacing between holding tabs, mm.
-    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::TAB_SPACING.parse(s), default_value_t = 50.0, requires = "tabs")]
+    #[arg(long, value_name = "MM", value_parser = |s: &str| limits::TAB_SPACING.parse(s), default_value_t = foldcam::fab::DEFAULT_TAB_SPACING_MM, requires = "tabs")]
     pub tab_spacing: f64,
     /// Lead-in length on the scrap side of closed contours, mm.
     #[arg(long, value_name = "MM", value_parser = |s: &str| limits::LEAD_IN.parse(s))]
     pub lead_in: Option<f64>,
     /// Distance from the bed origin to the pattern, mm.
-    #[arg(long, value_name = "MM", default_value_t = 5.0, value_parser = |s: &str| limits::MARGIN.parse(s))]
+    #[arg(long, value_name = "MM", default_value_t = foldcam::fab::DEFAULT_MARGIN_MM, value_parser = |s: &str| limits::MARGIN.parse(s))]
     pub margin: f64,
     /// Keep the pattern's order (no travel optimisation).
     #[arg(long)]

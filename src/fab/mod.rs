@@ -30,7 +30,7 @@ pub(crate) mod warning;
 pub use frame::bounds;
 pub use geometry::{toolpaths, toolpaths_with_warnings};
 pub use operations::{label_operation, mark_labels};
-pub use options::PlanOverrides;
+pub use options::{DEFAULT_MARGIN_MM, DEFAULT_TAB_SPACING_MM, PlanOverrides};
 pub use order::{order, ranks, travel_mm};
 pub use placement::{Placement, bed_to_machine, bounds_of, place};
 pub use plan::plan;
@@ -255,7 +255,7 @@ impl PlanOptions {
             two_sided: false,
             tabs: None,
             lead_in_mm: None,
-            margin_mm: 5.0,
+            margin_mm: DEFAULT_MARGIN_MM,
             optimize: true,
             notes: Vec::new(),
             placement: placement::Placement::default(),

@@ -5,6 +5,7 @@ use glam::DVec2;
 
 use super::placement::Placement;
 use super::{FabError, Operation, PlanOptions, Tabs};
+use crate::limits::{self, Limit};
 use crate::machine::{MachineProfile, Material};
 
 /// Every plan setting a user may override; `None` keeps the material's (or the plan's)
@@ -54,6 +55,50 @@ pub struct PlanOverrides {
     pub offset_mm: Option<DVec2>,
 }
 
+/// Spacing between holding tabs when tabs are asked for without one (`--tab-spacing`), mm.
+pub const DEFAULT_TAB_SPACING_MM: f64 = 50.0;
+
+/// Distance from the bed origin to the pattern when none is given (`--margin`), mm.
+pub const DEFAULT_MARGIN_MM: f64 = 5.0;
+
+impl PlanOverrides {
+    /// Checks every length against its range in [`crate::limits`] (the ranges the command
+    /// line's options take), the duty cycle in (0, 1), and that a bridge and a duty cycle are
+    /// not both given.
+    ///
+    /// # Errors
+    /// [`FabError::BadOption`] naming the first option out of range and the range.
+    pub fn validate(&self) -> Result<(), FabError> {
+        let lengths: [(&Limit, Option<f64>); 10] = [
+            (&limits::DASH, self.dash_mm),
+            (&limits::BRIDGE, self.bridge_mm),
+            (&limits::MIN_DASH, self.min_dash_mm),
+            (&limits::MIN_WEB, self.min_web_mm),
+            (&limits::CLEARANCE, self.vertex_clearance_mm),
+            (&limits::KERF, self.kerf_mm),
+            (&limits::TAB_WIDTH, self.tabs.map(|t| t.width_mm)),
+            (&limits::TAB_SPACING, self.tabs.map(|t| t.spacing_mm)),
+            (&limits::LEAD_IN, self.lead_in_mm),
+            (&limits::MARGIN, self.margin_mm),
+        ];
+        for (limit, value) in lengths {
+            if let Some(v) = value {
+                limit.check(v).map_err(|message| FabError::BadOption {
+                    option: limit.option.trim_start_matches("--"),
+                    message,
+                })?;
+            }
+        }
+        if self.duty.is_some() && self.bridge_mm.is_some() {
+            return Err(FabError::BadOption {
+                option: "duty",
+                message: "and --bridge both given: give one of them".into(),
+            });
+        }
+        Ok(())
+    }
+}
+
 impl PlanOptions {
     /// The options to plan with on `machine` in `material`: the material's defaults, then the
     /// operation overrides, fitted to the machine ([`PlanOptions::adapt_to_machine`]), then the
@@ -77,6 +122,7 @@ impl PlanOptions {
         material: &Material,
         overrides: &PlanOverrides,
     ) -> Result<PlanOptions, FabError> {
+        overrides.validate()?;
         let v = overrides;
         let mut o = PlanOptions::from_material(material);
         let m = &mut o.mapping;
@@ -122,5 +168,49 @@ impl PlanOptions {
         };
         o.validate()?;
         Ok(o)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn overrides_out_of_range_name_the_option_and_its_range() {
+        let bad = |o: PlanOverrides| match o.validate() {
+            Err(e @ FabError::BadOption { .. }) => e.to_string(),
+            other => format!("not refused: {other:?}"),
+        };
+        let dash = bad(PlanOverrides {
+            dash_mm: Some(-1.0),
+            ..PlanOverrides::default()
+        });
+        assert!(
+            dash.starts_with("--dash ") && dash.contains("0.01 to 1000"),
+            "{dash}"
+        );
+        let spacing = bad(PlanOverrides {
+            tabs: Some(Tabs {
+                width_mm: 2.0,
+                spacing_mm: 0.5,
+            }),
+            ..PlanOverrides::default()
+        });
+        assert!(spacing.starts_with("--tab-spacing "), "{spacing}");
+        let both = bad(PlanOverrides {
+            bridge_mm: Some(1.0),
+            duty: Some(0.5),
+            ..PlanOverrides::default()
+        });
+        assert!(
+            both.contains("--duty") && both.contains("--bridge"),
+            "{both}"
+        );
+        let fine = PlanOverrides {
+            dash_mm: Some(2.0),
+            margin_mm: Some(DEFAULT_MARGIN_MM),
+            ..PlanOverrides::default()
+        };
+        assert!(fine.validate().is_ok());
     }
 }

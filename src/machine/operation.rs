@@ -44,4 +44,18 @@ impl Operation {
     pub fn from_name(s: &str) -> Option<Operation> {
         Operation::ALL.into_iter().find(|o| o.name() == s)
     }
+
+    /// Parses what a user may choose for a kind of line: an operation's name, or `skip`
+    /// (`None`: the lines are not machined), as `--mountain` and the studio's settings take it.
+    ///
+    /// # Errors
+    /// Any other word, with the words allowed.
+    pub fn choice(s: &str) -> Result<Option<Operation>, String> {
+        if s == "skip" {
+            return Ok(None);
+        }
+        Operation::from_name(s).map(Some).ok_or_else(|| {
+            format!("{s:?} is not an operation (mark, score, perforate, cut, plot, skip)")
+        })
+    }
 }

@@ -4,8 +4,7 @@
 
 use serde::Deserialize;
 
-use crate::fab::{Operation, PlanOptions, PlanOverrides, Tabs};
-use crate::limits;
+use crate::fab::{DEFAULT_TAB_SPACING_MM, Operation, PlanOptions, PlanOverrides, Tabs};
 use crate::machine::{
     MachineProfile, Material, load_machine, load_material, parse_machine, parse_material,
     shipped_machines, shipped_materials,
@@ -57,11 +56,12 @@ pub struct PlanSettings {
     pub two_sided: bool,
     /// Holding tab width.
     pub tabs: Option<f64>,
-    /// Spacing between tabs (50 mm when absent, as on the command line).
+    /// Spacing between tabs ([`DEFAULT_TAB_SPACING_MM`] when absent, as on the command line).
     pub tab_spacing: Option<f64>,
     /// Lead-in length.
     pub lead_in: Option<f64>,
-    /// Distance from the bed origin (5 mm when absent, as on the command line).
+    /// Distance from the bed origin ([`crate::fab::DEFAULT_MARGIN_MM`] when absent, as on the
+    /// command line).
     pub margin: Option<f64>,
     /// `true` is `--no-optimize`.
     #[serde(default)]
@@ -70,25 +70,8 @@ pub struct PlanSettings {
     pub origin: Option<String>,
 }
 
-/// The command line's default `--tab-spacing`, mm.
-pub const DEFAULT_TAB_SPACING_MM: f64 = 50.0;
-
-/// The command line's default `--margin`, mm.
-pub const DEFAULT_MARGIN_MM: f64 = 5.0;
-
 fn operation(option: &str, name: &str) -> Result<Option<Operation>, String> {
-    if name == "skip" {
-        return Ok(None);
-    }
-    Operation::from_name(name).map(Some).ok_or_else(|| {
-        format!("{option}: {name:?} is not an operation (mark, score, perforate, cut, plot, skip)")
-    })
-}
-
-fn checked(option: &str, limit: &limits::Limit, value: Option<f64>) -> Result<Option<f64>, String> {
-    value
-        .map(|v| limit.check(v).map_err(|e| format!("{option}: {e}")))
-        .transpose()
+    Operation::choice(name).map_err(|e| format!("{option}: {e}"))
 }
 
 impl PlanSettings {
@@ -108,11 +91,6 @@ impl PlanSettings {
                 .map(|name| operation(option, name))
                 .transpose()
         };
-        if self.bridge.is_some() && self.duty.is_some() {
-            return Err("bridge and duty: give one of them, not both".to_string());
-        }
-        let spacing = checked("tab_spacing", &limits::TAB_SPACING, self.tab_spacing)?
-            .unwrap_or(DEFAULT_TAB_SPACING_MM);
         let centre = match self.origin.as_deref() {
             None | Some("" | "corner") => false,
             Some("centre" | "center") => true,
@@ -124,23 +102,21 @@ impl PlanSettings {
             unassigned: op("unassigned", &self.unassigned)?,
             flat: op("flat", &self.flat)?,
             boundary: op("boundary", &self.boundary)?,
-            dash_mm: checked("dash", &limits::DASH, self.dash)?,
-            bridge_mm: checked("bridge", &limits::BRIDGE, self.bridge)?,
+            dash_mm: self.dash,
+            bridge_mm: self.bridge,
             duty: self.duty,
-            min_dash_mm: checked("min_dash", &limits::MIN_DASH, self.min_dash)?,
-            min_web_mm: checked("min_web", &limits::MIN_WEB, self.min_web)?,
-            vertex_clearance_mm: checked("clearance", &limits::CLEARANCE, self.clearance)?,
-            kerf_mm: checked("kerf", &limits::KERF, self.kerf)?,
+            min_dash_mm: self.min_dash,
+            min_web_mm: self.min_web,
+            vertex_clearance_mm: self.clearance,
+            kerf_mm: self.kerf,
             kerf_offset: Some(!self.no_kerf_offset),
             two_sided: self.two_sided,
-            tabs: checked("tabs", &limits::TAB_WIDTH, self.tabs)?.map(|width_mm| Tabs {
+            tabs: self.tabs.map(|width_mm| Tabs {
                 width_mm,
-                spacing_mm: spacing,
+                spacing_mm: self.tab_spacing.unwrap_or(DEFAULT_TAB_SPACING_MM),
             }),
-            lead_in_mm: checked("lead_in", &limits::LEAD_IN, self.lead_in)?,
-            margin_mm: Some(
-                checked("margin", &limits::MARGIN, self.margin)?.unwrap_or(DEFAULT_MARGIN_MM),
-            ),
+            lead_in_mm: self.lead_in,
+            margin_mm: self.margin,
             optimize: Some(!self.no_optimize),
             centre,
             offset_mm: None,

@@ -8,7 +8,7 @@ use super::document::Document;
 use super::settings::PlanSettings;
 use crate::fab::{FabPlan, PlanStats};
 use crate::machine::{MachineProfile, Material};
-use crate::pattern::CreasePattern;
+use crate::pattern::{CreasePattern, Scale};
 
 /// What to plan for: the profiles (shipped or uploaded, never read from a path a request
 /// names), the size and the plan overrides.
@@ -54,7 +54,9 @@ pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, Str
     let cleaned = doc.cleaned(false)?;
     let mut pattern = cleaned.pattern;
     if let Some(size) = choice.size {
-        resize(&mut pattern, size).map_err(|e| format!("{}: {e}", doc.name))?;
+        pattern
+            .scale_to(Scale::Size(size))
+            .map_err(|e| format!("{}: {e}", doc.name))?;
     }
     pattern
         .require_millimetres()
@@ -66,29 +68,6 @@ pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, Str
         plan,
         pattern,
     })
-}
-
-/// Scales the pattern so the longer side of its bounding box is `size` mm (as `--size`).
-fn resize(cp: &mut CreasePattern, size: f64) -> Result<(), String> {
-    if !(size.is_finite() && size > 0.0) {
-        return Err(format!(
-            "size {size}: must be a finite number greater than 0"
-        ));
-    }
-    let extent = cp.bounds().map_or(0.0, |(lo, hi)| (hi - lo).max_element());
-    let factor = if extent > 0.0 { size / extent } else { 1.0 };
-    let reach = cp
-        .bounds()
-        .map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs()).max_element());
-    let limit = crate::pattern::MAX_COORDINATE;
-    if !(reach * factor).is_finite() || reach * factor > limit {
-        return Err(format!(
-            "a scale of {factor} puts coordinates at {:e} mm, beyond the limit of {limit:e} mm",
-            reach * factor
-        ));
-    }
-    cp.scale_to_mm(factor);
-    Ok(())
 }
 
 /// One toolpath as drawn: its operation, layer colour and strokes (machine mm).
