@@ -20,6 +20,11 @@ const machineView = new MachineView($('view-machine'));
 const editor = new Editor(patternView, $('edit-tools'), (view) => guarded(() => edited(view)));
 const flatView = new FlatView($('view-flat'));
 machineView.onError = (promise) => guarded(() => promise);
+// A plan warning about lines of the pattern rings them there.
+machineView.onShowEdges = (edges) => guarded(async () => {
+  await switchView('pattern');
+  patternView.ringEdges(edges, state.legend.fault);
+});
 // The fold-sequence designer; its crease pattern opens as a document in the pattern view.
 new FoldingView($('view-folding'), async (view) => { await opened(view); await switchView('pattern'); }, guarded);
 // A test hook: browser tests compare the lines drawn on the paper with the paper.

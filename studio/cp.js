@@ -321,6 +321,30 @@ export class PatternView {
     });
   }
 
+  /** Rings the edges `ids` (a plan warning's), each drawn over in `colour` with a circle at
+   * its middle, and zooms to show them all. */
+  ringEdges(ids, colour) {
+    this.rings.replaceChildren();
+    const r = 0.02 * this.diagonal;
+    let lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+    for (const i of ids) {
+      const e = this.pattern.edges[i];
+      if (!e) continue;
+      const [p, q] = [this.pattern.vertices[e.v[0]], this.pattern.vertices[e.v[1]]];
+      el('line', { x1: p[0], y1: p[1], x2: q[0], y2: q[1], stroke: colour, 'stroke-width': 4,
+        'vector-effect': 'non-scaling-stroke', class: 'warning-edge', 'data-edge': i }, this.rings);
+      el('circle', { cx: (p[0] + q[0]) / 2, cy: (p[1] + q[1]) / 2, r, fill: 'none', stroke: colour,
+        'stroke-width': 2.5, 'vector-effect': 'non-scaling-stroke', class: 'finding-ring' }, this.rings);
+      for (const v of [p, q]) {
+        lo = [Math.min(lo[0], v[0]), Math.min(lo[1], v[1])];
+        hi = [Math.max(hi[0], v[0]), Math.max(hi[1], v[1])];
+      }
+    }
+    if (lo[0] === Infinity) return;
+    const w = Math.max(hi[0] - lo[0], hi[1] - lo[1], 0.1 * this.diagonal) * 1.3;
+    this.setBox([(lo[0] + hi[0]) / 2 - w / 2, -(lo[1] + hi[1]) / 2 - w / 2, w, w]);
+  }
+
   /** Zooms to a point of the pattern (x, y up). */
   zoomTo(x, y) {
     const w = 0.2 * this.diagonal;

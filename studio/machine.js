@@ -156,8 +156,22 @@ export class MachineView {
     rows.push(`<tr><td>pierces</td><td id="plan-pierces">${s.pierces}</td></tr>`);
     rows.push(`<tr><td>travel <span class="travel-key">(dashed)</span></td><td>${s.travel_mm.toFixed(1)} mm</td></tr>`);
     rows.push(`<tr><td>time (estimated)</td><td id="plan-time">${clock(s.time_s)}</td></tr>`);
-    this.stats.innerHTML = `<table>${rows.join('')}</table>` +
-      plan.warnings.map((w) => `<p class="muted">warning: ${w.text.replace(/</g, '&lt;')}</p>`).join('');
+    this.stats.innerHTML = `<table>${rows.join('')}</table>`;
+    // Each warning in words; one about lines of the pattern shows them there when clicked.
+    for (const w of plan.warnings) {
+      const p = document.createElement('p');
+      p.className = 'muted plan-warning';
+      p.dataset.kind = w.kind;
+      p.textContent = `warning: ${w.text}`;
+      if (w.edges.length && this.onShowEdges) {
+        const b = document.createElement('button');
+        b.className = 'show-edges';
+        b.textContent = `show ${w.edges.length === 1 ? 'it' : `the ${w.edges.length} lines`} on the pattern`;
+        b.addEventListener('click', () => this.onShowEdges(w.edges));
+        p.append(' ', b);
+      }
+      this.stats.append(p);
+    }
   }
 
   offer(id, plan, q) {

@@ -753,3 +753,84 @@ async fn a_file_named_by_a_long_path_shows_its_name_with_the_path_on_hover() {
         .unwrap();
     assert!(rows.as_f64().unwrap() < 1.5, "the name spans {rows} lines");
 }
+
+#[tokio::test]
+async fn a_plan_warning_about_lines_rings_them_on_the_pattern() {
+    // A 100 mm square with a 0.8 mm valley from the bottom side: too short for a perforation
+    // dash, so the plan warns about that one line (edge 5).
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("short.fold"),
+        r#"{"file_spec":1.2,"frame_unit":"mm",
+            "vertices_coords":[[0,0],[50,0],[100,0],[100,100],[0,100],[50,0.8]],
+            "edges_vertices":[[0,1],[1,2],[2,3],[3,4],[4,0],[1,5]],
+            "edges_assignment":["B","B","B","B","B","V"]}"#,
+    )
+    .unwrap();
+    let server = Server::start(&["short.fold"], dir.path());
+    // What the API says: one warning, typed, about edge 5.
+    let (status, opened) = server.post_json("/api/files/0", b"");
+    assert_eq!(status, 200, "{opened}");
+    let (status, plan) = server.get(&format!(
+        "/api/docs/{}/plan?machine=grbl-diode&material=card-300gsm&valley=perforate",
+        opened["id"]
+    ));
+    assert_eq!(status, 200);
+    let plan: Value = serde_json::from_slice(&plan).unwrap();
+    let warnings = plan["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert_eq!(warnings[0]["kind"], "creases_too_short");
+    assert_eq!(warnings[0]["edges"], json!([5]));
+    let (_driver, c) = open_studio(&server.url()).await;
+    wait_until(
+        &c,
+        "return document.getElementById('doc-name').textContent === 'short.fold'",
+        "the document",
+    )
+    .await;
+    click(&c, "#tabs button[data-view='machine']").await;
+    browser::choose_machine(&c, "grbl-diode", "card-300gsm").await;
+    // The overrides sit in a folded section: set the valley's operation as a pick would.
+    c.execute(
+        "const s = document.querySelector(\"select[data-option='valley']\"); \
+         s.value = 'perforate'; s.dispatchEvent(new Event('change'));",
+        vec![],
+    )
+    .await
+    .unwrap();
+    click(&c, "#plan-btn").await;
+    wait_until(
+        &c,
+        "return !!document.querySelector('.plan-warning[data-kind=creases_too_short] .show-edges')",
+        "the warning with its button",
+    )
+    .await;
+    click(&c, ".plan-warning .show-edges").await;
+    wait_until(
+        &c,
+        "return !document.getElementById('view-pattern').hidden \
+           && document.querySelectorAll('#cp-rings line.warning-edge').length === 1",
+        "the pattern view with the line ringed",
+    )
+    .await;
+    // The ringed line is edge 5 where the pattern view draws it, and the view zoomed to it.
+    let ringed = c
+        .execute(
+            "const l = document.querySelector('#cp-rings line.warning-edge'); \
+             return [Number(l.dataset.edge), ...['x1', 'y1', 'x2', 'y2'].map((a) => Number(l.getAttribute(a)))];",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(ringed, json!([5, 50, 0, 50, 0.8]), "{ringed}");
+    let view = c
+        .execute(
+            "return document.getElementById('cp-svg').getAttribute('viewBox').split(' ').map(Number);",
+            vec![],
+        )
+        .await
+        .unwrap();
+    let width = view[2].as_f64().unwrap();
+    assert!(width < 30.0, "the view was not zoomed to the line: {view}");
+    c.close().await.unwrap();
+}

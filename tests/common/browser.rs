@@ -217,7 +217,6 @@ pub async fn text(c: &Client, css: &str) -> String {
         .unwrap()
 }
 
-/// Clicks the element `css`.
 /// Chooses `machine` and `material` in the Machine view's selects.
 pub async fn choose_machine(c: &Client, machine: &str, material: &str) {
     for (css, value) in [("#machine", machine), ("#material", material)] {
@@ -230,6 +229,7 @@ pub async fn choose_machine(c: &Client, machine: &str, material: &str) {
     }
 }
 
+/// Clicks the element `css`.
 pub async fn click(c: &Client, css: &str) {
     c.find(Locator::Css(css))
         .await
