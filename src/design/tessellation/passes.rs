@@ -1,4 +1,4 @@
-//! The triangulations a [`Schedule::Ladder`] solves on, in order, each built before the first solve:
+//! The triangulations a [`Schedule::Ladder`](super::Schedule::Ladder) solves on, in order, each built before the first solve:
 //! the input's own triangles, a near-regular re-triangulation ([`remesh`]) with as many faces,
 //! and, when the input's rim crowding index ([`crowding`](super::crowding)) predicts the
 //! tucks near the sheet's edge to run into each other, a coarser re-triangulation with the

@@ -329,7 +329,7 @@ fn tessellate_shrinking(
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
 }
 
-/// Whether a [`Schedule::Ladder`] re-triangulates the input ([`remesh`](fn@super::remesh)).
+/// Whether a [`Schedule::Ladder`] re-triangulates the input ([`remesh`](fn@super::remesh::remesh)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Remesh {
     /// Never: the input's own triangles only.
@@ -354,9 +354,8 @@ pub enum Schedule {
     #[default]
     Once,
     /// One solve with a face shrink per input face (`FaceShrinks(s)`: `s[f]` in (0, 1] for
-    /// face `f`, overriding [`StarOptions::shrink`]; see
-    /// [`star_tucks_shrunk`](super::star::star_tucks_shrunk)). Refused unless `s` has one
-    /// entry per face.
+    /// face `f`, overriding [`StarOptions::shrink`]; see [`star_tucks_shrunk`]). Refused
+    /// unless `s` has one entry per face.
     FaceShrinks(Vec<f64>),
     /// A face-shrink ladder over the triangulations of the [`Plan`]: every shrink of
     /// `shrinks` (largest first, each a full solve) on each triangulation in turn until a

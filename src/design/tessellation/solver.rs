@@ -92,7 +92,7 @@ pub struct SolveReport {
     pub limits: Limits,
     /// Whether a boundary row (Tachi 2014, eq. 2) was among any rows the solve evaluated,
     /// at an iterate or a trial step. When none was, the solve is the same to the bit with
-    /// either [`BoundaryRuns`](super::BoundaryRuns) form: a violated run implies a violated
+    /// either [`BoundaryRuns`](super::constraints::BoundaryRuns) form: a violated run implies a violated
     /// dominant run, so both forms have no boundary row at exactly the same points.
     pub boundary_rows: bool,
 }
