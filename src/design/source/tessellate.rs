@@ -81,7 +81,9 @@ impl Default for TessellationOptions {
 }
 
 impl TessellationOptions {
-    /// The solver's options.
+    /// The solver's options, with the schedule `foldcam tessellate` solves
+    /// ([`Schedule::Ladder`]): the one shrink asked for, else every shrink of
+    /// [`SHRINK_LADDER`], on the triangulations [`TessellationOptions::remesh`] asks for.
     ///
     /// # Errors
     /// [`SourceError::Option`] for an iteration cap or fit weight out of range.
