@@ -12,10 +12,10 @@
 //! Run with `cargo bench --bench papercraft`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use foldcam::design::papercraft::ReferenceMesh;
 use foldcam::design::papercraft::pack_shapes;
 use foldcam::design::papercraft::parse_design;
 use foldcam::design::papercraft::{SheetSpec, pack_boxes};
+use foldcam::mesh::ReferenceMesh;
 use foldcam::mesh::read_mesh;
 use glam::DVec3;
 

@@ -15,7 +15,7 @@
 //! - `cap`: the scale targets (2,000 faces under 5 s, 10,000 under 60 s at the
 //!   stainless limits) on caps as modelling programs export them (12-valent pole, radius
 //!   100 mm; `spherical_cap(12, 13, …)` has 2,028 faces): the whole default path,
-//!   `tessellate_scheduled` with the default schedule and truncated stars, to its usable
+//!   `tessellate` with `Schedule::ladder()` and truncated stars, to its usable
 //!   result (asserted). The 30° cap is re-triangulated with as many faces (its pole's face
 //!   corners are sharper than 30°) and ends clean at shrink 0.45 after 0.8–0.5 collide
 //!   (release: 161 iterations in all, the same in every run since the re-triangulation is
@@ -44,11 +44,9 @@
 //! 10,086-face case takes ten solves of some minutes each).
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use foldcam::design::tessellation::{
-    Limits, SampleSurface, TessellateOptions, TuckKind, assign_folds, default_schedule, disk,
-    keep_going, keep_trying, remesh, sample_surface, solve, spherical_cap, star_tucks, tessellate,
-    tessellate_scheduled,
-};
+use foldcam::design::tessellation::samples::{SampleSurface, sample_surface, spherical_cap};
+use foldcam::design::tessellation::steps::{assign_folds, disk, remesh, solve, star_tucks};
+use foldcam::design::tessellation::{Limits, Schedule, TessellateOptions, TuckKind, tessellate};
 
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("tessellation");
@@ -72,8 +70,7 @@ fn bench(c: &mut Criterion) {
                         let he = disk(&mesh).expect("disk");
                         let mut init = star_tucks(&he, &opts.star).expect("initial pattern");
                         assign_folds(&mut init.mesh);
-                        let report =
-                            solve(&mut init.mesh, &opts.solve, keep_going).expect("valid options");
+                        let report = solve(&mut init.mesh, &opts.solve, ()).expect("valid options");
                         assert!(report.converged, "{name}: {}", report.summary());
                         report.iterations
                     })
@@ -84,6 +81,7 @@ fn bench(c: &mut Criterion) {
     if std::env::var_os("FOLDCAM_BENCH_LARGE").is_some() {
         let mut opts = TessellateOptions::with_limits(Limits::from_degrees(165.0, 30.0));
         opts.star.tuck.kind = TuckKind::Truncated;
+        opts.schedule = Schedule::ladder();
         let cases = [
             ("cap_2028_faces_30deg", spherical_cap(12, 13, 30.0, 100.0)),
             ("cap_2028_faces_60deg", spherical_cap(12, 13, 60.0, 100.0)),
@@ -91,14 +89,7 @@ fn bench(c: &mut Criterion) {
         for (name, mesh) in cases {
             g.bench_function(format!("{name}_truncated_default_schedule"), |b| {
                 b.iter(|| {
-                    let t = tessellate_scheduled(
-                        &mesh,
-                        &opts,
-                        &default_schedule(),
-                        keep_trying,
-                        keep_going,
-                    )
-                    .expect("valid options");
+                    let t = tessellate(&mesh, &opts, &mut ()).expect("valid options");
                     assert!(t.problem().is_none(), "{name}: {:?}", t.problem());
                     (t.report.iterations, t.mesh.triangles.len())
                 })
@@ -127,7 +118,7 @@ fn bench(c: &mut Criterion) {
                 ),
                 |b| {
                     b.iter(|| {
-                        let t = tessellate(&mesh, &opts, keep_going).expect("valid options");
+                        let t = tessellate(&mesh, &opts, &mut ()).expect("valid options");
                         assert!(t.report.converged, "{}", t.report.summary());
                         t.report.iterations
                     })

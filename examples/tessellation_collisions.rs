@@ -20,10 +20,11 @@
 use std::collections::{HashSet, VecDeque};
 use std::time::Instant;
 
-use foldcam::design::tessellation::{
-    Limits, SolveOptions, StarOptions, TessMesh, TuckKind, assign_folds, disk,
-    intersecting_triangles, keep_going, max_star_points, remesh, solve, spherical_cap, star_tucks,
+use foldcam::design::tessellation::samples::spherical_cap;
+use foldcam::design::tessellation::steps::{
+    assign_folds, disk, intersecting_triangles, max_star_points, remesh, solve, star_tucks,
 };
+use foldcam::design::tessellation::{Limits, SolveOptions, StarOptions, TessMesh, TuckKind};
 use foldcam::geom::segment_through_triangle;
 use glam::DVec3;
 
@@ -118,7 +119,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             tolerance: if switched { 1e-300 } else { 1e-12 },
             ..SolveOptions::default()
         };
-        let r = solve(&mut t, &opts, keep_going)?;
+        let r = solve(&mut t, &opts, ())?;
         done += r.iterations;
         let pairs = count(&t);
         println!(

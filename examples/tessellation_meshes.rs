@@ -1,10 +1,10 @@
 //! Writes the example meshes of `examples/tessellation/`: a dome, a saddle and a bell, each a
 //! hexagonal patch of 54 equilateral triangles (edge 20 mm, interior valence 6) lifted onto
-//! the surface (`foldcam::design::tessellation::sample_surface`).
+//! the surface (`foldcam::design::tessellation::samples::sample_surface`).
 //!
 //! It also writes `cap.obj`, a 60° spherical cap of radius 100 mm as modelling programs
 //! export one: a 12-valent pole and rings of 12, 24, …, 72 vertices (432 faces,
-//! `foldcam::design::tessellation::spherical_cap`).
+//! `foldcam::design::tessellation::samples::spherical_cap`).
 //!
 //! Run with `cargo run --example tessellation_meshes`; `-- RINGS DIR` writes patches of
 //! `6·RINGS²` faces into DIR instead (larger meshes for timing);
@@ -14,7 +14,9 @@
 
 use std::path::Path;
 
-use foldcam::design::tessellation::{SampleSurface, face_mask, sample_surface, spherical_cap};
+use foldcam::design::tessellation::samples::{
+    SampleSurface, face_mask, sample_surface, spherical_cap,
+};
 use foldcam::formats::write_atomic;
 
 fn main() -> std::io::Result<()> {

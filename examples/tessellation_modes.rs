@@ -13,12 +13,31 @@
 
 use std::time::Instant;
 
+use foldcam::design::tessellation::measure::corner_distance;
+use foldcam::design::tessellation::samples::{SampleSurface, sample_surface, spherical_cap};
 use foldcam::design::tessellation::{
-    Limits, Remesh, SampleSurface, TessellateOptions, TuckKind, corner_distance, default_schedule,
-    sample_surface, spherical_cap, tessellate_scheduled,
+    Iteration, Limits, Remesh, Schedule, TessellateOptions, Tessellation, TuckKind, Watch,
+    tessellate,
 };
 use foldcam::mesh::read_mesh;
 use std::ops::ControlFlow;
+
+/// Two closures as a [`Watch`]: the refused results, then the iterations.
+struct Both<R, I>(R, I);
+
+impl<R, I> Watch for Both<R, I>
+where
+    R: FnMut(f64, &Tessellation) -> ControlFlow<()>,
+    I: FnMut(&Iteration) -> ControlFlow<()>,
+{
+    fn iteration(&mut self, it: &Iteration) -> ControlFlow<()> {
+        (self.1)(it)
+    }
+
+    fn refused(&mut self, s: f64, t: &Tessellation) -> ControlFlow<()> {
+        (self.0)(s, t)
+    }
+}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -85,46 +104,53 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let attempts = std::env::var_os("ATTEMPTS").is_some();
         // OLD_SCHEDULE=1: the re-triangulation at the input's face count named explicitly,
         // which leaves out the coarser one of a crowded input (the schedule before it).
-        let mut schedule = default_schedule();
+        let mut remesh_faces = None;
+        let mut remesh = Remesh::Auto;
         if std::env::var_os("OLD_SCHEDULE").is_some() {
-            schedule.remesh_faces = Some(mesh.faces().len());
+            remesh_faces = Some(mesh.faces().len());
         }
         // REMESH_FACES=N: the re-triangulation with about N faces only (`--remesh N`).
         if let Some(n) = std::env::var("REMESH_FACES")
             .ok()
             .and_then(|n| n.parse().ok())
         {
-            schedule.remesh_faces = Some(n);
-            schedule.remesh = Remesh::Only;
+            remesh_faces = Some(n);
+            remesh = Remesh::Only;
         }
-        let t = tessellate_scheduled(
+        opts.schedule = Schedule::Ladder {
+            shrinks: foldcam::design::tessellation::steps::SHRINK_LADDER.to_vec(),
+            remesh,
+            remesh_faces,
+        };
+        let t = tessellate(
             &mesh,
             &opts,
-            &schedule,
-            |s, t| {
-                all_iterations += counted.get().max(t.report.iterations);
-                if attempts {
-                    eprintln!(
-                        "  {kind} shrink {s} on {} faces: {} it ({} counted), {:.2} s, \
+            &mut Both(
+                |s, t: &Tessellation| {
+                    all_iterations += counted.get().max(t.report.iterations);
+                    if attempts {
+                        eprintln!(
+                            "  {kind} shrink {s} on {} faces: {} it ({} counted), {:.2} s, \
                          converged {}, dev {:.2e}, pairs {}, crowded at rim {}",
-                        t.crowding.faces,
-                        t.report.iterations,
-                        counted.get(),
-                        last_start.elapsed().as_secs_f64(),
-                        t.report.converged,
-                        t.report.last.developability,
-                        t.intersections.len(),
-                        t.crowded_at_rim()
-                    );
-                }
-                counted.set(0);
-                last_start = Instant::now();
-                ControlFlow::Continue(())
-            },
-            |it| {
-                counted.set(it.index);
-                ControlFlow::Continue(())
-            },
+                            t.crowding.faces,
+                            t.report.iterations,
+                            counted.get(),
+                            last_start.elapsed().as_secs_f64(),
+                            t.report.converged,
+                            t.report.last.developability,
+                            t.intersections.len(),
+                            t.crowded_at_rim()
+                        );
+                    }
+                    counted.set(0);
+                    last_start = Instant::now();
+                    ControlFlow::Continue(())
+                },
+                |it: &Iteration| {
+                    counted.set(it.index);
+                    ControlFlow::Continue(())
+                },
+            ),
         )?;
         let all = start.elapsed().as_secs_f64();
         let last = last_start.elapsed().as_secs_f64();

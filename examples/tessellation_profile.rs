@@ -10,10 +10,9 @@
 
 use std::time::Instant;
 
-use foldcam::design::tessellation::{
-    Limits, TessellateOptions, TuckKind, remesh, spherical_cap, tessellate,
-    tessellate_with_face_shrink,
-};
+use foldcam::design::tessellation::samples::spherical_cap;
+use foldcam::design::tessellation::steps::remesh;
+use foldcam::design::tessellation::{Limits, Schedule, TessellateOptions, TuckKind, tessellate};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let a: Vec<String> = std::env::args().skip(1).collect();
@@ -44,7 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let outer: Option<f64> = std::env::var("SHRINK_OUTER")
         .ok()
         .and_then(|v| v.parse().ok());
-    let progress = |it: &foldcam::design::tessellation::Iteration| {
+    let mut progress = |it: &foldcam::design::tessellation::Iteration| {
         println!(
             "it {:3} {:6.3} s: dev {:.2e} fold {:.2} angle {:.2} illegal {} active {:?} step {:.3} cg {}",
             it.index,
@@ -61,7 +60,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::ops::ControlFlow::Continue(())
     };
     let t = match outer {
-        None => tessellate(&mesh, &opts, progress)?,
+        None => tessellate(&mesh, &opts, &mut progress)?,
         Some(outer) => {
             let x = mesh.positions();
             let r = |p: glam::DVec3| (p.x * p.x + p.y * p.y).sqrt();
@@ -76,7 +75,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     inner + (outer - inner) * u * u
                 })
                 .collect();
-            tessellate_with_face_shrink(&mesh, &opts, &shrinks, progress)?
+            opts.schedule = Schedule::FaceShrinks(shrinks);
+            tessellate(&mesh, &opts, &mut progress)?
         }
     };
     println!(

@@ -1,5 +1,5 @@
 //! The layers of ARCHITECTURE.md, checked on the source: no module imports from a layer
-//! above it or beside it. Layers, bottom up: clock, limits, geom and mesh; pattern; formats and check;
+//! above it or beside it. Layers, bottom up: clock, limits and geom; mesh and pattern; formats and check;
 //! design and render; machine; fab; post; sim; job; studio.
 
 use std::path::{Path, PathBuf};
@@ -9,7 +9,7 @@ const LAYERS: &[(&str, u8)] = &[
     ("clock", 0),
     ("limits", 0),
     ("geom", 0),
-    ("mesh", 0),
+    ("mesh", 1),
     ("pattern", 1),
     ("formats", 2),
     ("check", 2),
@@ -163,8 +163,11 @@ const PUBLIC_MODULES: &[&str] = &[
     "design::source::tessellate",
     "design::source::voxel",
     "design::tessellation",
+    "design::tessellation::measure",
     "design::tessellation::rigid",
     "design::tessellation::rigid::model",
+    "design::tessellation::samples",
+    "design::tessellation::steps",
     "fab",
     "fab::testgrid",
     "formats",
@@ -247,4 +250,128 @@ fn public_modules_are_the_curated_list() {
         stale.is_empty(),
         "listed but not public any more: {stale:?}"
     );
+}
+
+/// The names a module file exports at its top level, parsed from its source: every name a
+/// `pub use` brings in (the alias when renamed), every `pub mod`, and every `pub` item the
+/// file defines outside braces (`pub fn`, `pub struct`, `pub enum`, `pub const`, ...). A
+/// glob re-export (`pub use a::*`) cannot be counted and is reported as `*`.
+fn exported_names(source: &str) -> Vec<String> {
+    let code: String = source
+        .lines()
+        .map(|l| l.split("//").next().unwrap_or(""))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let mut names = Vec::new();
+    let mut depth = 0usize;
+    let mut i = 0;
+    let bytes = code.as_bytes();
+    while i < bytes.len() {
+        match bytes[i] {
+            b'{' => depth += 1,
+            b'}' => depth = depth.saturating_sub(1),
+            b'p' if depth == 0
+                && code[i..].starts_with("pub ")
+                && (i == 0 || !bytes[i - 1].is_ascii_alphanumeric()) =>
+            {
+                let rest = code[i + 4..].trim_start();
+                let word: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                if word == "use" {
+                    let end = rest.find(';').unwrap_or(rest.len());
+                    let tree = &rest[3..end];
+                    for piece in tree.split(['{', '}', ',']) {
+                        let piece = piece.trim();
+                        if piece.is_empty() || piece.ends_with("::") {
+                            continue;
+                        }
+                        let leaf = match piece.split_once(" as ") {
+                            Some((_, alias)) => alias.trim(),
+                            None => piece.rsplit("::").next().unwrap_or(piece),
+                        };
+                        names.push(leaf.to_string());
+                    }
+                    i += 4 + (code[i + 4..].len() - rest.len()) + end;
+                    continue;
+                }
+                let after = rest[word.len()..].trim_start();
+                let name: String = after
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                if !name.is_empty() {
+                    names.push(name);
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    names
+}
+
+#[test]
+fn the_export_counter_sees_uses_modules_and_items() {
+    let source = "//! Docs.\npub mod rigid;\npub(crate) mod model;\n\
+                  pub use a::{B, c::{D, E as F}};\npub use g::H;\n\
+                  /// Doc.\npub enum Error { A }\nimpl Error { pub fn x() {} }\npub fn run() {}\n";
+    assert_eq!(
+        exported_names(source),
+        ["rigid", "B", "D", "F", "H", "Error", "run"]
+    );
+}
+
+/// Issue 37, "a narrow surface": `design::tessellation` offers one entry point and a few
+/// named submodules, not every step of its pipeline at the top level.
+#[test]
+fn tessellation_exports_at_most_twenty_names() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/design/tessellation/mod.rs");
+    let names = exported_names(&std::fs::read_to_string(path).unwrap());
+    assert!(
+        names.len() <= 20 && !names.iter().any(|n| n == "*"),
+        "design::tessellation exports {} names at its top level (at most 20, no globs): \
+         {names:?}",
+        names.len()
+    );
+}
+
+/// The design sub-areas (ARCHITECTURE.md's table: `design::tessellation` uses mesh and
+/// pattern, `design::papercraft` mesh, geom and pattern, `design::popup` pattern and geom, ...)
+/// do not use each other; only `design::source` ties them together. The files directly in
+/// `src/design/` (`estimate.rs`) are the area's own and shared.
+#[test]
+fn design_sub_areas_do_not_use_each_other() {
+    let design = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/design");
+    let areas: Vec<String> = std::fs::read_dir(&design)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().is_dir())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(areas.iter().any(|a| a == "tessellation"), "{areas:?}");
+    let mut found = Vec::new();
+    for area in areas.iter().filter(|a| *a != "source") {
+        let mut files = Vec::new();
+        rust_files(&design.join(area), &mut files);
+        for file in files {
+            let text = std::fs::read_to_string(&file).unwrap();
+            for (n, line) in text.lines().enumerate() {
+                if line.trim_start().starts_with("//") {
+                    continue;
+                }
+                for used in crate_paths(&line.replace("crate::design::", "crate::")) {
+                    if used != *area && areas.contains(&used) {
+                        found.push(format!(
+                            "{}:{}: design::{area} uses design::{used}",
+                            file.strip_prefix(&design).unwrap().display(),
+                            n + 1
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
 }

@@ -5,9 +5,9 @@
 use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
-use foldcam::design::papercraft::ReferenceMesh;
 use foldcam::design::papercraft::parse_design;
 use foldcam::formats::{self, write_atomic};
+use foldcam::mesh::ReferenceMesh;
 use foldcam::render::{PreviewOptions, preview_png};
 
 use super::demo_jobs::{DemoIndex, write_job};

@@ -5,9 +5,10 @@
 use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
+use foldcam::design::tessellation::measure::surface_fit;
+use foldcam::design::tessellation::steps::SHRINK_LADDER;
 use foldcam::design::tessellation::{
-    Limits, TessellateOptions, Tessellation, TuckKind, default_schedule, keep_going, keep_trying,
-    surface_fit, tessellate, tessellate_scheduled,
+    Limits, Remesh, Schedule, TessellateOptions, Tessellation, TuckKind, tessellate,
 };
 use foldcam::formats::{self, write_atomic};
 use foldcam::machine::load_material;
@@ -36,7 +37,7 @@ pub fn dome(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("dome.obj: {e}"))?;
     let mut opts = stainless()?;
     opts.star.tuck.kind = TuckKind::Truncated;
-    let t = tessellate(&mesh, &opts, keep_going).map_err(|e| anyhow!("dome.obj: {e}"))?;
+    let t = tessellate(&mesh, &opts, &mut ()).map_err(|e| anyhow!("dome.obj: {e}"))?;
     let view = View3d {
         azimuth_deg: 30.0,
         elevation_deg: 35.0,
@@ -61,10 +62,16 @@ pub fn dome(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
 pub fn mask(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
     let obj = include_bytes!("../../examples/tessellation/mask.obj");
     let mesh = foldcam::mesh::parse_obj(obj).map_err(|e| anyhow!("mask.obj: {e}"))?;
-    let mut schedule = default_schedule();
-    schedule.shrinks.retain(|&s| s <= MASK_FIRST_SHRINK);
-    let t = tessellate_scheduled(&mesh, &stainless()?, &schedule, keep_trying, keep_going)
-        .map_err(|e| anyhow!("mask.obj: {e}"))?;
+    let mut opts = stainless()?;
+    opts.schedule = Schedule::Ladder {
+        shrinks: SHRINK_LADDER
+            .into_iter()
+            .filter(|&s| s <= MASK_FIRST_SHRINK)
+            .collect(),
+        remesh: Remesh::Auto,
+        remesh_faces: None,
+    };
+    let t = tessellate(&mesh, &opts, &mut ()).map_err(|e| anyhow!("mask.obj: {e}"))?;
     let view = View3d {
         azimuth_deg: 20.0,
         elevation_deg: 60.0,

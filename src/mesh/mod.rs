@@ -7,6 +7,10 @@
 //! bytes, and every reader validates with [`PolyMesh::new`]: no empty mesh, no non-finite
 //! coordinate, no face with fewer than three corners or an index out of range.
 //! [`PolyMesh::to_obj`] writes the mesh back (the examples' meshes are made that way).
+//! [`ReferenceMesh`] triangulates a mesh for closest-point queries ([`ReferenceMesh::project`]:
+//! the closest point and the normal there, found through a uniform grid over the triangles'
+//! boxes), used by paper craft (Ōgaki 2016, §3.1) and by the tessellation's distance to its
+//! input surface.
 //!
 //! ```
 //! use foldcam::mesh::parse_obj;
@@ -20,9 +24,12 @@
 
 pub(crate) mod half_edge;
 mod read;
+pub(crate) mod reference;
+mod triangle_grid;
 
 pub use half_edge::{HalfEdgeError, HalfEdgeMesh};
 pub use read::{parse_obj, parse_stl, read_mesh};
+pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
 
 use glam::DVec3;
 use thiserror::Error;
@@ -71,6 +78,9 @@ pub enum MeshError {
         /// Number of vertices.
         count: usize,
     },
+    /// No triangle of the mesh has positive area (a [`ReferenceMesh`] needs one).
+    #[error("the reference mesh has no triangle of positive area")]
+    Degenerate,
 }
 
 /// A polygon mesh: positions and faces given as corner cycles (indices into the positions).

@@ -42,11 +42,11 @@ use super::edit_api::json_body;
 use super::guard::JsonBody;
 use super::history::Versions;
 use super::sessions::Sessions;
-use crate::design::papercraft::ReferenceMesh;
 use crate::design::papercraft::design::parse_design;
 use crate::design::papercraft::paint::{Paint, paint_regions};
 use crate::design::papercraft::sketch::{Evaluation, Sketch, SketchParams, regions, snap_line};
 use crate::design::source::MeshUse;
+use crate::mesh::ReferenceMesh;
 use crate::mesh::{PolyMesh, parse_obj, parse_stl};
 
 /// Most paper-craft sessions kept at once; the oldest is dropped first.

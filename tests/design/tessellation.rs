@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 use checks::*;
 use cuts_clean::assert_cuts_clean_on;
-use foldcam::design::tessellation::*;
+use foldcam::design::tessellation::{measure::*, steps::*, *};
 use foldcam::mesh::{HalfEdgeMesh, PolyMesh};
 use foldcam::pattern::{Assignment, CreasePattern};
 use support::*;
@@ -147,7 +147,7 @@ fn solved(name: &str) -> Tessellation {
     let t = tessellate(
         &example(name),
         &TessellateOptions::with_limits(limits),
-        keep_going,
+        &mut (),
     )
     .unwrap();
     let r = &t.report;
@@ -210,31 +210,31 @@ fn bad_input_is_refused_with_a_reason() {
     .unwrap();
     let opts = TessellateOptions::default();
     assert!(matches!(
-        tessellate(&tetra, &opts, keep_going),
+        tessellate(&tetra, &opts, &mut ()),
         Err(TessError::NotADisk(_))
     ));
-    let mut shrink = opts;
+    let mut shrink = opts.clone();
     shrink.star.shrink = 0.0;
     assert!(matches!(
-        tessellate(&example("dome"), &shrink, keep_going),
+        tessellate(&example("dome"), &shrink, &mut ()),
         Err(TessError::BadParameter(_))
     ));
     shrink.star.shrink = f64::NAN;
     assert!(matches!(
-        tessellate(&example("dome"), &shrink, keep_going),
+        tessellate(&example("dome"), &shrink, &mut ()),
         Err(TessError::BadParameter(_))
     ));
-    let mut checker = opts;
+    let mut checker = opts.clone();
     checker.star.layout = TuckLayout::Checkerboard;
     let squares = square_tiling(3, 3, 10.0);
     assert!(matches!(
-        tessellate(&squares, &checker, keep_going),
+        tessellate(&squares, &checker, &mut ()),
         Err(TessError::BadParameter(_))
     ));
     let mut limits = opts;
     limits.solve.limits = Limits::from_degrees(200.0, 30.0);
     assert!(matches!(
-        tessellate(&example("dome"), &limits, keep_going),
+        tessellate(&example("dome"), &limits, &mut ()),
         Err(TessError::BadParameter(_))
     ));
 }
@@ -320,7 +320,7 @@ fn cli_writes_pattern_folded_form_and_previews() {
 fn bell_stands_on_the_ground() {
     let mut opts = TessellateOptions::with_limits(stainless_limits());
     opts.ground = true;
-    let t = tessellate(&example("bell"), &opts, keep_going).unwrap();
+    let t = tessellate(&example("bell"), &opts, &mut ()).unwrap();
     assert!(t.report.converged, "{}", t.report.summary());
     let z0 = t.report.limits.ground_z.expect("plane chosen");
     let on_ground = t
@@ -345,7 +345,7 @@ fn surface_fit_reduces_the_distance_and_keeps_the_constraints() {
         weight: 0.1,
         rounds: 10,
     });
-    let t = tessellate(&example("saddle"), &opts, keep_going).unwrap();
+    let t = tessellate(&example("saddle"), &opts, &mut ()).unwrap();
     let fit = t.fit.expect("fit ran after a converged solve");
     assert!(fit.accepted > 0 && fit.last < 0.9 * fit.initial, "{fit:?}");
     let r = residuals(&t.mesh, &t.mesh.positions, None);
@@ -366,7 +366,7 @@ fn digon_layout_solves_the_dome_with_relaxed_limits() {
     let limits = Limits::from_degrees(178.0, 15.0);
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.layout = TuckLayout::Digon;
-    let t = tessellate(&example("dome"), &opts, keep_going).unwrap();
+    let t = tessellate(&example("dome"), &opts, &mut ()).unwrap();
     assert_eq!(t.initial.layout, TuckLayout::Digon);
     assert!(t.report.converged, "{}", t.report.summary());
     let r = residuals(&t.mesh, &t.mesh.positions, None);
@@ -456,7 +456,7 @@ fn a_self_crossing_result_is_found_and_not_written() {
     let t = tessellate(
         &mesh,
         &TessellateOptions::with_limits(stainless_limits()),
-        keep_going,
+        &mut (),
     )
     .unwrap();
     assert!(t.report.converged, "{}", t.report.summary());

@@ -7,7 +7,7 @@ use crate::cuts_clean;
 #[allow(dead_code)]
 use crate::support::tessellation_checks as checks;
 
-use foldcam::design::tessellation::*;
+use foldcam::design::tessellation::{measure::*, samples::*, steps::*, *};
 use foldcam::mesh::HalfEdgeMesh;
 use glam::DVec3;
 
@@ -57,7 +57,7 @@ fn a_twelve_valent_pole_is_diagnosed_before_solving_and_truncated() {
     // tessellate() refuses it without solving.
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.max_star_points = Some(usize::MAX);
-    let t = tessellate(&mesh, &opts, keep_going).expect("valid options");
+    let t = tessellate(&mesh, &opts, &mut ()).expect("valid options");
     assert_eq!(t.report.iterations, 0);
     assert!(t.problem().expect("refused").contains("input vertex 0"));
 
@@ -86,7 +86,7 @@ fn solved_cap(
     radius: f64,
     shrinks: &[f64],
 ) -> Tessellation {
-    let schedule = Schedule {
+    let schedule = Schedule::Ladder {
         shrinks: shrinks.to_vec(),
         remesh: Remesh::Never,
         remesh_faces: None,
@@ -105,7 +105,8 @@ fn solved_cap_scheduled(
     let limits = stainless_limits();
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.tuck.kind = kind;
-    let t = tessellate_scheduled(mesh, &opts, schedule, keep_trying, keep_going).unwrap();
+    opts.schedule = schedule.clone();
+    let t = tessellate(mesh, &opts, &mut ()).unwrap();
     let r = &t.report;
     assert!(t.problem().is_none(), "{name}: {}", t.summary());
     assert!(r.converged, "{name}: {}", r.summary());
@@ -228,13 +229,20 @@ fn small_caps_tessellate_in_every_mode() {
 #[test]
 fn the_432_face_cap_tessellates_remeshed_with_truncated_stars_and_twist_folds() {
     let mesh = spherical_cap(12, 6, 60.0, 100.0);
-    let schedule = default_schedule();
-    assert_eq!(schedule.remesh, Remesh::Auto);
+    assert_eq!(
+        Schedule::ladder(),
+        Schedule::Ladder {
+            shrinks: SHRINK_LADDER.to_vec(),
+            remesh: Remesh::Auto,
+            remesh_faces: None
+        }
+    );
     for (kind, shrink) in [(TuckKind::Truncated, 0.5), (TuckKind::TwistFold, 0.7)] {
-        assert!(schedule.shrinks.contains(&shrink));
-        let only = Schedule {
+        assert!(SHRINK_LADDER.contains(&shrink));
+        let only = Schedule::Ladder {
             shrinks: vec![shrink],
-            ..schedule.clone()
+            remesh: Remesh::Auto,
+            remesh_faces: None,
         };
         let name = format!("cap 432 {kind}");
         let t = solved_cap_scheduled(&name, &mesh, kind, 100.0, &only);
@@ -255,7 +263,7 @@ fn a_small_remeshed_twelve_valent_cap_tessellates_in_every_mode() {
     let mesh = spherical_cap(12, 3, 60.0, 100.0);
     // By default: the input's 24° face corners are under the 30° limit, so the
     // re-triangulation comes first.
-    let schedule = default_schedule();
+    let schedule = Schedule::ladder();
     for kind in [
         TuckKind::Star,
         TuckKind::Truncated,
@@ -276,10 +284,10 @@ fn a_small_remeshed_twelve_valent_cap_tessellates_in_every_mode() {
 #[test]
 fn the_432_face_cap_tessellates_remeshed_with_twisted_stars_and_cuts_clean() {
     let mesh = spherical_cap(12, 6, 60.0, 100.0);
-    let schedule = default_schedule();
-    let only = Schedule {
-        shrinks: vec![schedule.shrinks[0]],
-        ..schedule.clone()
+    let only = Schedule::Ladder {
+        shrinks: vec![SHRINK_LADDER[0]],
+        remesh: Remesh::Auto,
+        remesh_faces: None,
     };
     let name = "cap 432 twisted-star";
     let t = solved_cap_scheduled(name, &mesh, TuckKind::Twisted, 100.0, &only);
@@ -307,7 +315,7 @@ fn a_cap_crowded_at_the_rim_is_solved_coarser_and_says_so() {
         &mesh,
         TuckKind::TwistFold,
         100.0,
-        &default_schedule(),
+        &Schedule::ladder(),
     );
     assert_eq!(t.coarsened, Some(input));
     let r = t.remeshed.expect("re-triangulated");

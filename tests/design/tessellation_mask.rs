@@ -8,7 +8,7 @@ use crate::support::tessellation_checks as checks;
 
 use checks::*;
 use cuts_clean::assert_cuts_clean_on;
-use foldcam::design::tessellation::*;
+use foldcam::design::tessellation::{measure::*, samples::*, steps::*, *};
 use foldcam::mesh::HalfEdgeMesh;
 
 /// The shipped file is `face_mask(8)` (384 faces, every interior vertex of valence 6), says
@@ -64,7 +64,7 @@ fn mask_solves_within_stainless_limits_and_cuts_clean() {
     let limits = stainless_limits();
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.shrink = 0.6;
-    let t = tessellate(&mesh, &opts, keep_going).unwrap();
+    let t = tessellate(&mesh, &opts, &mut ()).unwrap();
     let r = &t.report;
     eprintln!("mask: shrink {}, {}", t.initial.shrink, t.summary());
     assert!(t.problem().is_none(), "{:?}", t.problem());

@@ -6,10 +6,9 @@
 use std::path::PathBuf;
 
 use foldcam::design::classic::MiuraOri;
+use foldcam::design::tessellation::measure::fold_angle;
 use foldcam::design::tessellation::rigid::*;
-use foldcam::design::tessellation::{
-    Limits, TessellateOptions, fold_angle, keep_going, tessellate,
-};
+use foldcam::design::tessellation::{Limits, TessellateOptions, tessellate};
 use foldcam::machine::load_material;
 use foldcam::mesh::read_mesh;
 use foldcam::pattern::{Assignment, CreasePattern, Face, VertexId};
@@ -270,7 +269,7 @@ fn example_tessellations_fold_rigidly_from_flat() {
         let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join(format!("examples/tessellation/{name}.obj"));
         let mesh = read_mesh(&path).unwrap();
-        let t = tessellate(&mesh, &stainless(), keep_going).unwrap();
+        let t = tessellate(&mesh, &stainless(), &mut ()).unwrap();
         assert!(t.report.converged, "{name}");
         let u = t.unfolded.unwrap();
         let m = RigidModel::new(&u.pattern).unwrap();

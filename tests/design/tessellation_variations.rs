@@ -9,7 +9,7 @@ use crate::support::tessellation_checks as checks;
 
 use std::f64::consts::PI;
 
-use foldcam::design::tessellation::*;
+use foldcam::design::tessellation::{measure::*, steps::*, *};
 use foldcam::mesh::{HalfEdgeMesh, PolyMesh};
 use foldcam::pattern::{Assignment, CreasePattern};
 use glam::DVec2;
@@ -215,7 +215,7 @@ fn solve_variation(name: &str, kind: TuckKind, shrink: f64, min_vertex_deg: f64)
     let mut opts = TessellateOptions::with_limits(limits);
     opts.star.tuck.kind = kind;
     opts.star.shrink = shrink;
-    let t = tessellate(&example(name), &opts, keep_going).unwrap();
+    let t = tessellate(&example(name), &opts, &mut ()).unwrap();
     let what = format!("{name}, {kind:?}");
     let r = &t.report;
     assert!(r.converged, "{what}: {}", r.summary());
@@ -281,6 +281,15 @@ fn twisted_stars_solve_the_saddle() {
     solve_variation("saddle", TuckKind::Twisted, 0.8, 30.0);
 }
 
+/// A [`Watch`] that hears only the refused results of a ladder.
+struct OnRefused<F>(F);
+
+impl<F: FnMut(f64, &Tessellation) -> std::ops::ControlFlow<()>> Watch for OnRefused<F> {
+    fn refused(&mut self, s: f64, t: &Tessellation) -> std::ops::ControlFlow<()> {
+        (self.0)(s, t)
+    }
+}
+
 /// Without a fixed shrink the pipeline tries smaller ones until the folded form is free of
 /// collisions: the truncated saddle's faces pass through each other at s = 0.8, not at 0.6.
 #[test]
@@ -288,11 +297,16 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
     let mut opts = TessellateOptions::with_limits(stainless_limits());
     opts.star.tuck.kind = TuckKind::Truncated;
     let mut refused = Vec::new();
-    let t = tessellate_shrinking(
+    let mut ladder = opts.clone();
+    ladder.schedule = Schedule::Ladder {
+        shrinks: SHRINK_LADDER.to_vec(),
+        remesh: Remesh::Never,
+        remesh_faces: None,
+    };
+    let t = tessellate(
         &example("saddle"),
-        &opts,
-        &SHRINK_LADDER,
-        |s, t| {
+        &ladder,
+        &mut OnRefused(|s, t: &Tessellation| {
             refused.push((
                 s,
                 t.intersections.len(),
@@ -302,8 +316,7 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
                 t.mesh.positions.clone(),
             ));
             std::ops::ControlFlow::Continue(())
-        },
-        keep_going,
+        }),
     )
     .unwrap();
     assert!(t.problem().is_none(), "{:?}", t.problem());
@@ -323,10 +336,10 @@ fn the_shrink_ladder_recovers_from_face_collisions() {
             !boundary_rows,
             "shrink {s} collided with boundary rows, not retried"
         );
-        let mut stiff = opts;
+        let mut stiff = opts.clone();
         stiff.star.shrink = *s;
         stiff.solve.limits.boundary_runs = BoundaryRuns::EveryStart;
-        let again = tessellate(&example("saddle"), &stiff, keep_going).unwrap();
+        let again = tessellate(&example("saddle"), &stiff, &mut ()).unwrap();
         assert_eq!(&again.mesh.positions, positions, "shrink {s}");
     }
     check_unfolded("saddle, truncated", &t);

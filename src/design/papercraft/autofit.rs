@@ -21,10 +21,11 @@
 
 use glam::DVec3;
 
+use super::PapercraftError;
 use super::bspline::BSpline;
 use super::cut_line::CutLine;
 use super::fit::fit_directrix;
-use super::{PapercraftError, ReferenceMesh};
+use crate::mesh::ReferenceMesh;
 
 /// Samples per cut-line segment taken for the fit.
 pub const SAMPLES_PER_SEGMENT: usize = 8;

@@ -14,7 +14,8 @@
 
 use glam::DVec3;
 
-use super::{PapercraftError, ReferenceMesh};
+use super::PapercraftError;
+use crate::mesh::ReferenceMesh;
 
 /// A cut line: the points it passes through, in order (mesh units).
 #[derive(Clone, Debug, PartialEq)]

@@ -35,6 +35,7 @@
 use glam::DVec3;
 use serde::Deserialize;
 
+use super::PapercraftError;
 use super::bspline::BSpline;
 use super::cut_line::CutLine;
 use super::cylinder::CylinderPatch;
@@ -45,7 +46,7 @@ use super::network::Network;
 use super::parts::{Part, TabStyle, add_tabs};
 use super::trim::real_boundary;
 use super::walls::Walls;
-use super::{PapercraftError, ReferenceMesh};
+use crate::mesh::ReferenceMesh;
 use crate::pattern::CreasePattern;
 
 /// Default `merge` distance (mesh units): end points closer than 10⁻⁶ are typed-in copies of

@@ -3,7 +3,8 @@
 //! The user traces cut lines on a reference mesh, places cylindrical developable patches, and
 //! the system trims them and unrolls them into parts. Built so far:
 //!
-//! - [`reference`](mod@reference): the reference mesh with closest-point projection and normals (§3.1).
+//! - the reference mesh with closest-point projection and normals (§3.1) is
+//!   [`ReferenceMesh`](crate::mesh::ReferenceMesh), in `mesh`.
 //! - [`cut_line`]: Catmull–Rom cut lines through points on the mesh, sampled and projected
 //!   (§3.2 Step 1).
 //! - [`network`]: the cut-line network as a half-edge structure, patches as faces (§3.3).
@@ -40,7 +41,6 @@ pub(crate) mod cut_line;
 pub(crate) mod cylinder;
 pub(crate) mod design;
 pub(crate) mod fit;
-mod grid;
 pub(crate) mod labels;
 pub(crate) mod layout;
 pub(crate) mod neighbour;
@@ -48,7 +48,6 @@ pub(crate) mod network;
 pub(crate) mod packing;
 pub(crate) mod paint;
 pub(crate) mod parts;
-pub(crate) mod reference;
 pub(crate) mod shapes;
 pub(crate) mod sketch;
 pub(crate) mod trim;
@@ -67,7 +66,6 @@ pub use network::Network;
 pub use packing::pack_shapes;
 pub use paint::{Paint, Piece, paint_regions};
 pub use parts::{GLUE_TOLERANCE_MM, GLUE_TOLERANCE_SHARE, Part, Seam, TabStyle, add_tabs, seams};
-pub use reference::{Projection, ReferenceMesh, closest_on_triangle};
 pub use shapes::{elliptic_body, revolution, sphere};
 pub use sketch::{
     Evaluation, RegionReport, Regions, Sketch, SketchParams, outline_crosses_itself, regions,
@@ -81,9 +79,6 @@ use thiserror::Error;
 /// Why a paper-craft design cannot be built.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum PapercraftError {
-    /// The reference mesh has no triangle of positive area.
-    #[error("the reference mesh has no triangle of positive area")]
-    DegenerateMesh,
     /// A parameter is out of range (the message names it).
     #[error("bad parameter: {0}")]
     BadParameter(String),

@@ -41,13 +41,14 @@
 
 use glam::DVec3;
 
+use super::PapercraftError;
 use super::cylinder::CylinderPatch;
 use super::fit::fit_directrix;
 use super::network::Network;
 use super::trim::rib_crossing;
 use super::walls::Walls;
-use super::{PapercraftError, ReferenceMesh};
 use crate::geom::tolerance::TINY;
+use crate::mesh::ReferenceMesh;
 
 /// Parameter-correction rounds per fit.
 const CORRECTIONS: usize = 4;

@@ -16,9 +16,9 @@ use std::collections::{HashMap, VecDeque};
 
 use glam::DVec3;
 
-use super::ReferenceMesh;
 use super::cut_line::CutLine;
 use super::sketch::{HOLE_STEP, Regions, left_of, mesh_diagonal};
+use crate::mesh::ReferenceMesh;
 
 /// Cut-line samples are spaced at most this share of the mean triangle edge.
 const SAMPLE_SPACING: f64 = 0.25;

@@ -21,13 +21,14 @@ use std::fmt::Write as _;
 
 use glam::{DVec2, DVec3};
 
+use super::PapercraftError;
 use super::autofit::{FittedPatch, fit_cylinder};
 use super::cut_line::CutLine;
 use super::design::{Design, Made, PatchToml, SheetToml, TabsToml, parse_design};
 use super::network::Network;
 use super::trim::real_boundary;
 use super::walls::Walls;
-use super::{PapercraftError, ReferenceMesh};
+use crate::mesh::ReferenceMesh;
 
 /// End points closer than this (mesh units) are one vertex; snapped ends are exact copies.
 pub const VERTEX_TOLERANCE: f64 = 1e-6;

@@ -20,12 +20,13 @@
 
 use glam::{DVec2, DVec3};
 
+use super::PapercraftError;
 use super::cylinder::CylinderPatch;
 use super::network::Network;
 use super::walls::Walls;
-use super::{PapercraftError, ReferenceMesh};
 use crate::geom::segment::distance_to_point;
 use crate::geom::tolerance::{RELATIVE, ROUNDOFF_SQUARED, TINY};
+use crate::mesh::ReferenceMesh;
 
 /// Bisection stops when the bracket is this share of the parameter (plus an absolute part):
 /// about a thousand ulps of f64.

@@ -21,9 +21,9 @@
 use glam::{DQuat, DVec3};
 
 use super::PapercraftError;
-use super::ReferenceMesh;
 use super::cut_line::CutLine;
 use super::network::Network;
+use crate::mesh::ReferenceMesh;
 
 /// The walls of every cut line.
 #[derive(Clone, Debug)]

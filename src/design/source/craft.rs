@@ -9,9 +9,9 @@
 use std::path::{Path, PathBuf};
 
 use super::{DesignFile, DesignKind, Progress, SourceError};
-use crate::design::papercraft::ReferenceMesh;
 use crate::design::papercraft::design::{Design, Made, parse_design};
 use crate::mesh::PolyMesh;
+use crate::mesh::ReferenceMesh;
 
 /// A design file read, before its mesh is found.
 #[derive(Clone, Debug)]

@@ -8,7 +8,8 @@
 use glam::DVec3;
 
 use crate::design::tessellation::geometry::fold_angle;
-use crate::design::tessellation::{Limits, TessMesh, angle_defects};
+use crate::design::tessellation::measure::angle_defects;
+use crate::design::tessellation::{Limits, TessMesh};
 use crate::pattern::Assignment;
 
 /// One edge of the tessellated surface and its fold.

@@ -7,12 +7,15 @@ use std::ops::ControlFlow;
 use std::path::Path;
 
 use super::{DesignFile, DesignKind, Progress, SourceError};
+use crate::design::tessellation::advice::curvature_advice;
+use crate::design::tessellation::distance::{MIN_COVERED, SurfaceFit, fit_and_missing};
 use crate::design::tessellation::estimate::solve_estimate;
+use crate::design::tessellation::steps::{
+    FitOptions, SHRINK_LADDER, Triangulation, TuckShape, Unfolded,
+};
 use crate::design::tessellation::{
-    FitOptions, Iteration, Limits, MIN_COVERED, Remesh, SHRINK_LADDER, Schedule, StarOptions,
-    SurfaceFit, TessError, TessMesh, TessellateOptions, Tessellation, Triangulation, TuckKind,
-    TuckLayout, TuckShape, Unfolded, curvature_advice, fit_and_missing, scheduled_passes,
-    tessellate_passes,
+    Iteration, Limits, Remesh, Schedule, StarOptions, TessError, TessMesh, TessellateOptions,
+    Tessellation, TuckKind, TuckLayout, Watch,
 };
 use crate::mesh::PolyMesh;
 
@@ -78,7 +81,9 @@ impl Default for TessellationOptions {
 }
 
 impl TessellationOptions {
-    /// The solver's options.
+    /// The solver's options, with the schedule `foldcam tessellate` solves
+    /// ([`Schedule::Ladder`]): the one shrink asked for, else every shrink of
+    /// [`SHRINK_LADDER`], on the triangulations [`TessellationOptions::remesh`] asks for.
     ///
     /// # Errors
     /// [`SourceError::Option`] for an iteration cap or fit weight out of range.
@@ -112,6 +117,11 @@ impl TessellationOptions {
         };
         opts.solve.max_iterations = self.max_iterations;
         opts.ground = self.ground;
+        opts.schedule = Schedule::Ladder {
+            shrinks: self.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]),
+            remesh: self.remesh,
+            remesh_faces: self.remesh_faces,
+        };
         if let Some(weight) = self.fit {
             if !(0.0..=1.0).contains(&weight) {
                 return Err(SourceError::Option(format!(
@@ -254,16 +264,15 @@ pub fn tessellate_outcome(
         fold = limits.max_fold.to_degrees(),
         corner = limits.min_vertex_angle.to_degrees(),
     ));
-    let schedule = schedule(options);
     // Every triangulation the schedule solves on, built once for the notes and the solves.
-    let (passes, crowding) =
-        scheduled_passes(mesh, &limits, &schedule).map_err(|e| SourceError::input(name, e))?;
+    let plan = opts.plan(mesh).map_err(|e| SourceError::input(name, e))?;
+    let (passes, crowding, shrinks) = (plan.passes(), *plan.crowding(), plan.shrinks());
     progress.note(format!(
         "estimate: up to {} solve(s): {} face shrink(s) on {} triangulation(s), a colliding \
          one solved once more with the stiffer outline; a first guess from the face count, \
          {} per solve, until the first iterations are timed",
-        passes.len() * schedule.shrinks.len(),
-        schedule.shrinks.len(),
+        passes.len() * shrinks.len(),
+        shrinks.len(),
         passes.len(),
         solve_estimate(mesh.faces().len()),
     ));
@@ -290,36 +299,10 @@ pub fn tessellate_outcome(
     let asked = options.shrink.is_some();
     stop_if_cancelled_early(progress)?;
     progress.busy("solving");
-    // Both callbacks speak through `progress`, one at a time.
-    let shared = std::cell::RefCell::new(&mut *progress);
-    let t = tessellate_passes(
-        mesh,
-        &opts,
-        &schedule.shrinks,
-        &passes,
-        &crowding,
-        |s: f64, t: &Tessellation| {
-            let mut progress = shared.borrow_mut();
-            if !asked {
-                let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
-                    "trying a smaller shrink"
-                } else {
-                    "no shrink worked on these triangles"
-                };
-                progress.note(format!(
-                    "shrink {s}: {}; {next}",
-                    t.problem().unwrap_or_default()
-                ));
-            }
-            progress.next_solve();
-            go_on(&**progress)
-        },
-        |it: &Iteration| {
-            let mut progress = shared.borrow_mut();
-            progress.iteration(it);
-            go_on(&**progress)
-        },
-    );
+    let t = plan.run(&mut Reporter {
+        progress: &mut *progress,
+        asked,
+    });
     progress.idle();
     if matches!(t, Err(TessError::Cancelled)) {
         return Err(SourceError::Cancelled);
@@ -409,13 +392,34 @@ pub fn tessellate_outcome(
     })
 }
 
-/// The solver's schedule for `options`: the one shrink asked for, else the whole
-/// [`SHRINK_LADDER`]; the re-triangulation as asked.
-fn schedule(options: &TessellationOptions) -> Schedule {
-    Schedule {
-        shrinks: options.shrink.map_or(SHRINK_LADDER.to_vec(), |s| vec![s]),
-        remesh: options.remesh,
-        remesh_faces: options.remesh_faces,
+/// What a solve tells `progress`: every iteration, and every refused shrink (in words
+/// unless the one shrink was asked for) before the next solve.
+struct Reporter<'a> {
+    progress: &'a mut dyn Progress,
+    /// Whether one shrink was asked for (then a refusal is not followed by another).
+    asked: bool,
+}
+
+impl Watch for Reporter<'_> {
+    fn iteration(&mut self, it: &Iteration) -> ControlFlow<()> {
+        self.progress.iteration(it);
+        go_on(&*self.progress)
+    }
+
+    fn refused(&mut self, s: f64, t: &Tessellation) -> ControlFlow<()> {
+        if !self.asked {
+            let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
+                "trying a smaller shrink"
+            } else {
+                "no shrink worked on these triangles"
+            };
+            self.progress.note(format!(
+                "shrink {s}: {}; {next}",
+                t.problem().unwrap_or_default()
+            ));
+        }
+        self.progress.next_solve();
+        go_on(&*self.progress)
     }
 }
 
@@ -428,9 +432,9 @@ pub struct PlannedSolve {
     pub triangulation: Triangulation,
 }
 
-/// What a tessellation will try, in order: the schedule of
-/// [`tessellate_scheduled`](crate::design::tessellation::tessellate_scheduled) (which stops at
-/// the first usable result), with each solve's iteration cap and tolerance.
+/// What a tessellation will try, in order: the [`Plan`](crate::design::tessellation::Plan) of
+/// its [`Schedule::Ladder`] (which stops at the first usable result), with each solve's
+/// iteration cap and tolerance.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SolvePlan {
     /// The solves, in the order they are tried.
@@ -442,7 +446,7 @@ pub struct SolvePlan {
 }
 
 /// The plan `tessellate_outcome` follows for `mesh` with `options`: the passes of
-/// [`scheduled_passes`] (a coarser re-triangulation first when the input is crowded at the
+/// [`TessellateOptions::plan`] (a coarser re-triangulation first when the input is crowded at the
 /// rim; the re-triangulation first when the input has a face corner sharper than the
 /// vertex-angle limit, as [`Remesh::Auto`] decides; a re-triangulation that cannot be built
 /// left out, as the pipeline leaves it out), each with every shrink. Builds the
@@ -456,11 +460,11 @@ pub fn solve_plan(
     options: &TessellationOptions,
 ) -> Result<SolvePlan, SourceError> {
     let opts = options.to_solver()?;
-    let schedule = schedule(options);
-    let passes = scheduled_passes(mesh, &opts.solve.limits, &schedule)
-        .map(|(passes, _)| passes.iter().map(|p| p.triangulation).collect())
+    let passes = opts
+        .plan(mesh)
+        .map(|plan| plan.passes().iter().map(|p| p.triangulation).collect())
         .unwrap_or_else(|_| vec![Triangulation::Input]);
-    let shrinks = &schedule.shrinks;
+    let shrinks = &opts.shrinks();
     Ok(SolvePlan {
         solves: passes
             .iter()
@@ -622,7 +626,27 @@ pub fn seconds_text(seconds: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::design::tessellation::{Residuals, tessellate_scheduled};
+    use crate::design::tessellation::measure::Residuals;
+    use crate::design::tessellation::pipeline::remesh_order;
+    use crate::design::tessellation::samples::{SampleSurface, sample_surface, spherical_cap};
+    use crate::design::tessellation::tessellate;
+
+    /// Two closures as a [`Watch`]: the refused results, then the iterations.
+    struct Both<R, I>(R, I);
+
+    impl<R, I> Watch for Both<R, I>
+    where
+        R: FnMut(f64, &Tessellation) -> ControlFlow<()>,
+        I: FnMut(&Iteration) -> ControlFlow<()>,
+    {
+        fn iteration(&mut self, it: &Iteration) -> ControlFlow<()> {
+            (self.1)(it)
+        }
+
+        fn refused(&mut self, s: f64, t: &Tessellation) -> ControlFlow<()> {
+            (self.0)(s, t)
+        }
+    }
 
     fn plan() -> SolvePlan {
         SolvePlan {
@@ -731,7 +755,7 @@ mod tests {
     /// from the pipeline's own `attempt` calls.
     #[test]
     fn solves_without_iterations_are_counted() {
-        let cap = crate::design::tessellation::spherical_cap(12, 1, 10.0, 100.0);
+        let cap = spherical_cap(12, 1, 10.0, 100.0);
         let options = TessellationOptions {
             min_vertex_angle_deg: 29.8,
             remesh_faces: Some(48),
@@ -750,22 +774,23 @@ mod tests {
         // Per attempt the pipeline reports: its shrink and its iterations.
         let attempts = std::cell::RefCell::new(Vec::new());
         let mut labelled = 0;
-        let t = tessellate_scheduled(
+        let t = tessellate(
             &cap,
             &opts,
-            &schedule(&options),
-            |s, t: &Tessellation| {
-                attempts.borrow_mut().push((s, t.report.iterations));
-                tracker.borrow_mut().next_solve(0.0);
-                ControlFlow::Continue(())
-            },
-            |it: &Iteration| {
-                let mut tracker = tracker.borrow_mut();
-                tracker.iteration(it, 0.0);
-                assert_eq!(tracker.solve().0, attempts.borrow().len(), "{it:?}");
-                labelled += 1;
-                ControlFlow::Continue(())
-            },
+            &mut Both(
+                |s, t: &Tessellation| {
+                    attempts.borrow_mut().push((s, t.report.iterations));
+                    tracker.borrow_mut().next_solve(0.0);
+                    ControlFlow::Continue(())
+                },
+                |it: &Iteration| {
+                    let mut tracker = tracker.borrow_mut();
+                    tracker.iteration(it, 0.0);
+                    assert_eq!(tracker.solve().0, attempts.borrow().len(), "{it:?}");
+                    labelled += 1;
+                    ControlFlow::Continue(())
+                },
+            ),
         )
         .unwrap();
         let attempts = attempts.into_inner();
@@ -797,14 +822,14 @@ mod tests {
     /// itself reports for that solve when it ends.
     #[test]
     fn a_re_triangulation_that_cannot_be_built_does_not_shift_the_labels() {
-        let cap = crate::design::tessellation::spherical_cap(12, 2, 30.0, 100.0);
+        let cap = spherical_cap(12, 2, 30.0, 100.0);
         let options = TessellationOptions {
             remesh_faces: Some(crate::design::tessellation::remesh::MIN_FACES - 1),
             max_iterations: 20,
             ..TessellationOptions::default()
         };
         let opts = options.to_solver().unwrap();
-        let order = schedule(&options).remesh_order(&cap, &opts.solve.limits);
+        let order = remesh_order(options.remesh, &cap, &opts.solve.limits);
         assert_eq!(
             order,
             [true, false],
@@ -821,22 +846,23 @@ mod tests {
                 assert!(l.starts_with(&want), "{l}");
             }
         };
-        let t = tessellate_scheduled(
+        let t = tessellate(
             &cap,
             &opts,
-            &schedule(&options),
-            |s, _: &Tessellation| {
-                check(s, &mut labels.borrow_mut());
-                tracker.borrow_mut().next_solve(0.0);
-                ControlFlow::Continue(())
-            },
-            |it: &Iteration| {
-                let mut tracker = tracker.borrow_mut();
-                tracker.iteration(it, 0.0);
-                labels.borrow_mut().push(tracker.status());
-                labelled.set(labelled.get() + 1);
-                ControlFlow::Continue(())
-            },
+            &mut Both(
+                |s, _: &Tessellation| {
+                    check(s, &mut labels.borrow_mut());
+                    tracker.borrow_mut().next_solve(0.0);
+                    ControlFlow::Continue(())
+                },
+                |it: &Iteration| {
+                    let mut tracker = tracker.borrow_mut();
+                    tracker.iteration(it, 0.0);
+                    labels.borrow_mut().push(tracker.status());
+                    labelled.set(labelled.get() + 1);
+                    ControlFlow::Continue(())
+                },
+            ),
         )
         .unwrap();
         assert!(t.remeshed.is_none());
@@ -854,7 +880,7 @@ mod tests {
     /// The plan follows the schedule: a sharp input is re-triangulated first.
     #[test]
     fn the_plan_is_the_schedule() {
-        let cap = crate::design::tessellation::spherical_cap(12, 3, 60.0, 100.0);
+        let cap = spherical_cap(12, 3, 60.0, 100.0);
         let p = solve_plan(&cap, &TessellationOptions::default()).unwrap();
         assert_eq!(p.solves.len(), 2 * SHRINK_LADDER.len());
         // The 12-valent pole's face corners are 30 deg minus the curvature: sharper than 30.
@@ -863,11 +889,7 @@ mod tests {
             p.solves[SHRINK_LADDER.len()].triangulation,
             Triangulation::Input
         );
-        let flat = crate::design::tessellation::sample_surface(
-            crate::design::tessellation::SampleSurface::Saddle,
-            2,
-            20.0,
-        );
+        let flat = sample_surface(SampleSurface::Saddle, 2, 20.0);
         let one = TessellationOptions {
             shrink: Some(0.5),
             remesh: Remesh::Never,

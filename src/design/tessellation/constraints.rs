@@ -76,7 +76,7 @@ pub struct Limits {
 /// | 450 faces (shrink 0.5) | dominant | 16 | 0.5 s | 90 |
 /// | 450 faces (shrink 0.5) | every start | 16 | 0.2 s | 0 |
 ///
-/// So neither dominates; [`tessellate_shrinking`](super::tessellate_shrinking) tries the
+/// So neither dominates; a [`Schedule::Ladder`](super::Schedule::Ladder) tries the
 /// dominant rows first and every start's row when the folded form intersects itself.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum BoundaryRuns {

@@ -29,7 +29,7 @@
 //! 2,028-face cap with `--tuck truncated --remesh 603` (606 faces) wrote a clean result at
 //! shrink 0.4 in 1.6 s. Every colliding cap above (index 10.4 to 18.3) also collided at
 //! every other shrink of the default ladder, 0.8 to 0.4 (30 to 1,200 pairs each), which is
-//! why [`tessellate_scheduled`](super::tessellate_scheduled) solves a crowded input on a
+//! why [`Schedule::ladder`](super::Schedule::ladder) solves a crowded input on a
 //! coarser re-triangulation with [`RimCrowding::faces_for_limit`] faces first (see
 //! [`passes`](super::passes)) and, at the input's face count, stops at the first converged
 //! result crowded at the rim.

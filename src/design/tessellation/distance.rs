@@ -5,8 +5,8 @@
 use glam::DVec3;
 
 use super::model::TessMesh;
-use crate::design::papercraft::ReferenceMesh;
 use crate::mesh::PolyMesh;
+use crate::mesh::ReferenceMesh;
 
 /// Distance of the face corners of a tessellation to its input surface, mesh units (mm).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -21,7 +21,7 @@ pub struct SurfaceDistance {
 
 /// The distance of every face corner of `solved` (its first `corner_count` vertices) to
 /// `input`, each found through the closest-point grid of
-/// [`crate::design::papercraft::ReferenceMesh`]; `None` when `input` has no
+/// [`crate::mesh::ReferenceMesh`]; `None` when `input` has no
 /// triangle of positive area.
 pub fn corner_distance(input: &PolyMesh, solved: &TessMesh) -> Option<SurfaceDistance> {
     let surface = ReferenceMesh::new(input).ok()?;

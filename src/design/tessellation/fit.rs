@@ -19,7 +19,6 @@ use super::TessError;
 use super::constraints;
 use super::min_norm::{Jacobian, min_norm};
 use super::model::TessMesh;
-use super::pipeline::keep_going;
 use super::solver::{SolveOptions, solve};
 use crate::geom::tolerance::ROUNDOFF;
 
@@ -117,7 +116,7 @@ pub fn fit_surface(
         for (p, (a, c)) in trial.positions.iter_mut().zip(dx0.iter().zip(&correction)) {
             *p += alpha * (*a - *c); // eq. 9
         }
-        let solved = solve(&mut trial, solve_opts, keep_going)?;
+        let solved = solve(&mut trial, solve_opts, ())?;
         let (d, _) = distance(&trial.positions, targets, fit.weight);
         if solved.converged && d < report.last {
             *mesh = trial;

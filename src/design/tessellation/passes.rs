@@ -1,4 +1,4 @@
-//! The triangulations a [`Schedule`] solves on, in order, each built before the first solve:
+//! The triangulations a [`Schedule::Ladder`](super::Schedule::Ladder) solves on, in order, each built before the first solve:
 //! the input's own triangles, a near-regular re-triangulation ([`remesh`]) with as many faces,
 //! and, when the input's rim crowding index ([`crowding`](super::crowding)) predicts the
 //! tucks near the sheet's edge to run into each other, a coarser re-triangulation with the
@@ -15,7 +15,7 @@
 //! re-triangulation cannot be built (it is left out of the passes, not skipped unheard).
 
 use super::crowding::{RimCrowding, rim_crowding_of};
-use super::pipeline::{Remesh, Schedule, disk};
+use super::pipeline::{Remesh, disk, remesh_order};
 use super::remesh::{RemeshReport, remesh};
 use super::{Limits, TessError};
 use crate::mesh::PolyMesh;
@@ -62,32 +62,34 @@ pub struct Pass {
     pub mesh: Option<(PolyMesh, RemeshReport)>,
 }
 
-/// The passes of `schedule` on `mesh` with `limits`, in the order they are solved:
-/// [`Triangulation::Coarser`] first when `schedule` is [`Remesh::Auto`] without a face count
+/// The passes of a ladder re-triangulating as `remesh` says (with `remesh_faces` faces,
+/// `None`: the input's count) on `mesh` with `limits`, in the order they are solved:
+/// [`Triangulation::Coarser`] first when `remesh` is [`Remesh::Auto`] without a face count
 /// and the input is [`crowded`](RimCrowding::crowded), then the order of
-/// [`Schedule::remesh_order`]. A re-triangulation that cannot be built is left out, with the
+/// [`remesh_order`]. A re-triangulation that cannot be built is left out, with the
 /// input's crowding returned alongside.
 ///
 /// # Errors
 /// When `mesh` is not a disk, or no pass can be built (the first re-triangulation's error).
-pub fn scheduled_passes(
+pub(crate) fn scheduled_passes(
     mesh: &PolyMesh,
     limits: &Limits,
-    schedule: &Schedule,
+    remesh_as: Remesh,
+    remesh_faces: Option<usize>,
 ) -> Result<(Vec<Pass>, RimCrowding), TessError> {
     let he = disk(mesh)?;
     let crowding = rim_crowding_of(mesh, &he);
     let own = mesh.faces().len();
     let mut wanted = Vec::new();
-    if schedule.remesh == Remesh::Auto && schedule.remesh_faces.is_none() && crowding.crowded() {
+    if remesh_as == Remesh::Auto && remesh_faces.is_none() && crowding.crowded() {
         wanted.push(Triangulation::Coarser {
             faces: crowding.faces_for_limit(),
         });
     }
-    for &remeshed in schedule.remesh_order(mesh, limits) {
+    for &remeshed in remesh_order(remesh_as, mesh, limits) {
         wanted.push(if remeshed {
             Triangulation::Remeshed {
-                faces: schedule.remesh_faces.unwrap_or(own),
+                faces: remesh_faces.unwrap_or(own),
             }
         } else {
             Triangulation::Input
@@ -126,7 +128,7 @@ pub fn scheduled_passes(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::design::tessellation::{default_schedule, spherical_cap};
+    use crate::design::tessellation::samples::spherical_cap;
 
     fn stainless() -> Limits {
         Limits::from_degrees(165.0, 30.0)
@@ -139,7 +141,7 @@ mod tests {
     #[test]
     fn a_crowded_input_is_coarsened_first() {
         let crowded = spherical_cap(12, 9, 60.0, 100.0);
-        let (passes, c) = scheduled_passes(&crowded, &stainless(), &default_schedule()).unwrap();
+        let (passes, c) = scheduled_passes(&crowded, &stainless(), Remesh::Auto, None).unwrap();
         assert!(c.crowded(), "{}", c.index());
         let Triangulation::Coarser { faces } = passes[0].triangulation else {
             panic!("{:?}", passes[0].triangulation)
@@ -163,7 +165,7 @@ mod tests {
             ]
         );
         let clean = spherical_cap(12, 6, 60.0, 100.0);
-        let (passes, c) = scheduled_passes(&clean, &stainless(), &default_schedule()).unwrap();
+        let (passes, c) = scheduled_passes(&clean, &stainless(), Remesh::Auto, None).unwrap();
         assert!(!c.crowded());
         assert_eq!(passes.len(), 2);
         assert!(
@@ -171,17 +173,9 @@ mod tests {
                 .iter()
                 .all(|p| !matches!(p.triangulation, Triangulation::Coarser { .. }))
         );
-        for schedule in [
-            Schedule {
-                remesh_faces: Some(500),
-                ..default_schedule()
-            },
-            Schedule {
-                remesh: Remesh::Never,
-                ..default_schedule()
-            },
-        ] {
-            let (passes, _) = scheduled_passes(&crowded, &stainless(), &schedule).unwrap();
+        for schedule in [(Remesh::Auto, Some(500)), (Remesh::Never, None)] {
+            let (passes, _) =
+                scheduled_passes(&crowded, &stainless(), schedule.0, schedule.1).unwrap();
             assert!(
                 passes
                     .iter()
@@ -196,17 +190,10 @@ mod tests {
     #[test]
     fn a_re_triangulation_that_cannot_be_built_is_left_out() {
         let tiny = spherical_cap(12, 1, 10.0, 100.0);
-        let schedule = Schedule {
-            remesh_faces: Some(crate::design::tessellation::remesh::MIN_FACES - 1),
-            ..default_schedule()
-        };
-        let (passes, _) = scheduled_passes(&tiny, &stainless(), &schedule).unwrap();
+        let faces = Some(crate::design::tessellation::remesh::MIN_FACES - 1);
+        let (passes, _) = scheduled_passes(&tiny, &stainless(), Remesh::Auto, faces).unwrap();
         let kinds: Vec<_> = passes.iter().map(|p| p.triangulation).collect();
         assert_eq!(kinds, [Triangulation::Input]);
-        let only = Schedule {
-            remesh: Remesh::Only,
-            ..schedule
-        };
-        assert!(scheduled_passes(&tiny, &stainless(), &only).is_err());
+        assert!(scheduled_passes(&tiny, &stainless(), Remesh::Only, faces).is_err());
     }
 }

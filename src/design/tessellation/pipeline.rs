@@ -1,8 +1,10 @@
-//! The whole design in one call: mesh → star tucks → solve → unfold → face-intersection check.
+//! The whole design in one call, [`tessellate`] (Tachi 2014): mesh → star tucks → solve →
+//! unfold → face-intersection check, once or over a [`Schedule`] of face shrinks and
+//! re-triangulations ([`Plan`]).
 //!
-//! The callbacks (`progress` per solver iteration, `attempt` per refused result) return
-//! [`ControlFlow`]: [`ControlFlow::Break`] stops the work at once with
-//! [`TessError::Cancelled`]; [`keep_going`] and [`keep_trying`] never stop it.
+//! A [`Watch`] hears every solver iteration and every refused result of a ladder; its
+//! methods return [`ControlFlow`]: [`ControlFlow::Break`] stops the work at once with
+//! [`TessError::Cancelled`]. `()` watches nothing.
 
 use std::ops::ControlFlow;
 
@@ -22,7 +24,7 @@ use super::{TessError, TessMesh};
 use crate::mesh::{HalfEdgeMesh, PolyMesh};
 
 /// Everything [`tessellate`] needs besides the mesh.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct TessellateOptions {
     /// Initial pattern (Tachi 2014, §2.1).
     pub star: StarOptions,
@@ -35,6 +37,9 @@ pub struct TessellateOptions {
     pub fit: Option<FitOptions>,
     /// Faces of the folded form crossing each other by less than this (mm) only touch.
     pub intersection_tolerance: f64,
+    /// What is solved, in order: one solve (the default), one with a shrink per face, or a
+    /// face-shrink ladder over re-triangulations.
+    pub schedule: Schedule,
 }
 
 impl Default for TessellateOptions {
@@ -45,6 +50,7 @@ impl Default for TessellateOptions {
             ground: false,
             fit: None,
             intersection_tolerance: 1e-3,
+            schedule: Schedule::Once,
         }
     }
 }
@@ -67,6 +73,46 @@ impl TessellateOptions {
             s.max_iterations = s.max_iterations.saturating_mul(TWISTED_ITERATIONS);
         }
         s
+    }
+
+    /// The face shrinks each triangulation is solved at, in order: the ladder's, else the one
+    /// of [`StarOptions::shrink`] (also for [`Schedule::FaceShrinks`], which overrides it per
+    /// face).
+    pub fn shrinks(&self) -> Vec<f64> {
+        match &self.schedule {
+            Schedule::Ladder { shrinks, .. } => shrinks.clone(),
+            Schedule::Once | Schedule::FaceShrinks(_) => vec![self.star.shrink],
+        }
+    }
+
+    /// The [`Plan`] [`tessellate`] follows on `mesh`: the triangulations of the schedule in
+    /// the order they are solved ([`Triangulation::Coarser`] first on a
+    /// [`Schedule::Ladder`] with [`Remesh::Auto`] and no face count when the input is
+    /// [`crowded`](RimCrowding::crowded), then the input's own triangles and the
+    /// re-triangulation in the order [`Remesh`] says), each re-triangulation built (a few
+    /// milliseconds per thousand faces); a re-triangulation that cannot be built is left
+    /// out when another pass remains. [`Plan::run`] then solves it.
+    ///
+    /// # Errors
+    /// When `mesh` is not a disk, or no pass can be built (the first re-triangulation's
+    /// error).
+    pub fn plan<'a>(&'a self, mesh: &'a PolyMesh) -> Result<Plan<'a>, TessError> {
+        let (passes, crowding) = match &self.schedule {
+            Schedule::Ladder {
+                remesh,
+                remesh_faces,
+                ..
+            } => scheduled_passes(mesh, &self.solve.limits, *remesh, *remesh_faces)?,
+            Schedule::Once | Schedule::FaceShrinks(_) => {
+                scheduled_passes(mesh, &self.solve.limits, Remesh::Never, None)?
+            }
+        };
+        Ok(Plan {
+            mesh,
+            opts: self,
+            passes,
+            crowding,
+        })
     }
 }
 
@@ -200,44 +246,60 @@ impl Tessellation {
     }
 }
 
-/// A `progress` callback that only lets the solve go on.
-pub fn keep_going(_: &Iteration) -> ControlFlow<()> {
-    ControlFlow::Continue(())
+/// What a caller hears while [`tessellate`] works, and how it stops the work: each method
+/// returns [`ControlFlow::Break`] to stop at once with [`TessError::Cancelled`]. Every method
+/// has a default that lets the work go on, so `()` watches nothing and a closure over
+/// [`Iteration`] hears only the solver.
+pub trait Watch {
+    /// After every iteration of a solve (Tachi 2014, §3.3), with the residuals then.
+    fn iteration(&mut self, _it: &Iteration) -> ControlFlow<()> {
+        ControlFlow::Continue(())
+    }
+
+    /// After every result of a [`Schedule::Ladder`] that has a [`Tessellation::problem`]
+    /// (its solve has ended), with the face shrink it was solved at, before the next solve.
+    fn refused(&mut self, _shrink: f64, _t: &Tessellation) -> ControlFlow<()> {
+        ControlFlow::Continue(())
+    }
 }
 
-/// An `attempt` callback that only lets the next attempt begin.
-pub fn keep_trying(_: f64, _: &Tessellation) -> ControlFlow<()> {
-    ControlFlow::Continue(())
+/// Watches nothing: the work always goes on.
+impl Watch for () {}
+
+/// A closure hears every solver iteration and nothing else.
+impl<F: FnMut(&Iteration) -> ControlFlow<()>> Watch for F {
+    fn iteration(&mut self, it: &Iteration) -> ControlFlow<()> {
+        self(it)
+    }
 }
 
-/// The face shrinks [`tessellate_shrinking`] tries by default, largest first.
+/// The face shrinks [`Schedule::ladder`] tries, largest first.
 pub const SHRINK_LADDER: [f64; 6] = [0.8, 0.7, 0.6, 0.5, 0.45, 0.4];
 
-/// [`tessellate`] with each face shrink of `shrinks` in turn (overriding `opts.star.shrink`)
-/// until a result has no [`Tessellation::problem`]; `attempt` hears every result that has one
+/// Each face shrink of `shrinks` in turn (overriding `opts.star.shrink`) on `mesh`
+/// until a result has no [`Tessellation::problem`]; `watch` hears every result that has one
 /// (its solve has ended) before the next shrink is tried. A shrink whose solve converges with
 /// [`BoundaryRuns::Dominant`] rows but intersects itself is solved once more with
 /// [`BoundaryRuns::EveryStart`] when a boundary row entered the first solve
 /// ([`SolveReport::boundary_rows`]; else the second would repeat it to the bit). That is the
-/// stiffer outline, as one attempt: `attempt` hears the
-/// second result only, and `progress` counts the second solve's iterations on from the
+/// stiffer outline, as one attempt: `watch` hears the
+/// second result only, and its iterations count on from the
 /// first's). Returns the first usable result, else the first one (the result of the shrink
 /// asked for first); stops early at a result
 /// [`crowded at the rim`](Tessellation::crowded_at_rim) and returns that one.
-/// This stands in for the paper's user, who avoids global face collisions (type 3, §3.2) by
-/// adjusting the design: a smaller shrink opens the tucks wider.
-pub fn tessellate_shrinking(
+/// This stands in for the paper's user (Tachi 2014), who avoids global face collisions
+/// (type 3, §3.2) by adjusting the design: a smaller shrink opens the tucks wider.
+fn tessellate_shrinking(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     shrinks: &[f64],
-    mut attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
-    mut progress: impl FnMut(&Iteration) -> ControlFlow<()>,
+    watch: &mut impl Watch,
 ) -> Result<Tessellation, TessError> {
     let mut first = None;
     for &shrink in shrinks {
-        let mut o = *opts;
+        let mut o = opts.clone();
         o.star.shrink = shrink;
-        let mut t = tessellate(mesh, &o, &mut progress)?;
+        let mut t = tessellate_shrunk(mesh, &o, None, |it: &Iteration| watch.iteration(it))?;
         if t.report.converged
             && !t.intersections.is_empty()
             && o.solve.limits.boundary_runs == BoundaryRuns::Dominant
@@ -249,8 +311,8 @@ pub fn tessellate_shrinking(
             // (`SolveReport::boundary_rows`).
             o.solve.limits.boundary_runs = BoundaryRuns::EveryStart;
             let before = t.report.iterations;
-            t = tessellate(mesh, &o, |it: &Iteration| {
-                progress(&Iteration {
+            t = tessellate_shrunk(mesh, &o, None, |it: &Iteration| {
+                watch.iteration(&Iteration {
                     index: before + it.index,
                     ..*it
                 })
@@ -259,7 +321,7 @@ pub fn tessellate_shrinking(
         if t.problem().is_none() || t.crowded_at_rim() {
             return Ok(t);
         }
-        if attempt(shrink, &t).is_break() {
+        if watch.refused(shrink, &t).is_break() {
             return Err(TessError::Cancelled);
         }
         first.get_or_insert(t);
@@ -267,7 +329,7 @@ pub fn tessellate_shrinking(
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
 }
 
-/// Whether [`tessellate_scheduled`] re-triangulates the input ([`remesh`](fn@super::remesh)).
+/// Whether a [`Schedule::Ladder`] re-triangulates the input ([`remesh`](fn@super::remesh::remesh)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Remesh {
     /// Never: the input's own triangles only.
@@ -285,114 +347,134 @@ pub enum Remesh {
     Only,
 }
 
-/// What [`tessellate_scheduled`] tries, in order.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Schedule {
-    /// Face shrinks, largest first (each a full solve).
-    pub shrinks: Vec<f64>,
-    /// Whether and when to re-triangulate the input.
-    pub remesh: Remesh,
-    /// Faces of the re-triangulation; `None`: as many as the input has.
-    pub remesh_faces: Option<usize>,
+/// What [`tessellate`] solves, in order: [`TessellateOptions::schedule`].
+#[derive(Clone, Debug, PartialEq, Default)]
+pub enum Schedule {
+    /// One solve at [`StarOptions::shrink`] on the input's own triangles (the default).
+    #[default]
+    Once,
+    /// One solve with a face shrink per input face (`FaceShrinks(s)`: `s[f]` in (0, 1] for
+    /// face `f`, overriding [`StarOptions::shrink`]; see [`star_tucks_shrunk`]). Refused
+    /// unless `s` has one entry per face.
+    FaceShrinks(Vec<f64>),
+    /// A face-shrink ladder over the triangulations of the [`Plan`]: every shrink of
+    /// `shrinks` (largest first, each a full solve) on each triangulation in turn until a
+    /// result has no [`Tessellation::problem`] (see [`Plan::run`]).
+    Ladder {
+        /// Face shrinks, largest first (each a full solve).
+        shrinks: Vec<f64>,
+        /// Whether and when to re-triangulate the input.
+        remesh: Remesh,
+        /// Faces of the re-triangulation; `None`: as many as the input has.
+        remesh_faces: Option<usize>,
+    },
 }
 
 impl Schedule {
-    /// Whether each pass of the schedule runs on the re-triangulation (`true`) or on the
-    /// input's own triangles, in order: [`Remesh::Auto`] re-triangulates first when `mesh`
-    /// has a face corner sharper than the vertex-angle limit of `limits`.
-    pub fn remesh_order(&self, mesh: &PolyMesh, limits: &Limits) -> &'static [bool] {
-        let sharp = min_corner_angle(mesh) < limits.min_vertex_angle;
-        match self.remesh {
-            Remesh::Never => &[false],
-            Remesh::Only => &[true],
-            Remesh::Auto if sharp => &[true, false],
-            Remesh::Auto => &[false, true],
+    /// The ladder `foldcam tessellate` solves by default: every shrink of [`SHRINK_LADDER`],
+    /// on the input's own triangles and on a near-regular re-triangulation of the same
+    /// surface with as many faces ([`Remesh::Auto`]; first on a coarser one when the input is
+    /// crowded at the rim).
+    pub fn ladder() -> Schedule {
+        Schedule::Ladder {
+            shrinks: SHRINK_LADDER.to_vec(),
+            remesh: Remesh::Auto,
+            remesh_faces: None,
         }
     }
 }
 
-/// The default schedule: every shrink of [`SHRINK_LADDER`], on the input's own triangles and
-/// on a near-regular re-triangulation of the same surface with as many faces
-/// ([`Remesh::Auto`]; first on a coarser one when the input is crowded at the rim).
-pub fn default_schedule() -> Schedule {
-    Schedule {
-        shrinks: SHRINK_LADDER.to_vec(),
-        remesh: Remesh::Auto,
-        remesh_faces: None,
+/// Whether each pass of a ladder runs on the re-triangulation (`true`) or on the input's own
+/// triangles, in order: [`Remesh::Auto`] re-triangulates first when `mesh` has a face corner
+/// sharper than the vertex-angle limit of `limits`.
+pub(crate) fn remesh_order(remesh: Remesh, mesh: &PolyMesh, limits: &Limits) -> &'static [bool] {
+    let sharp = min_corner_angle(mesh) < limits.min_vertex_angle;
+    match remesh {
+        Remesh::Never => &[false],
+        Remesh::Only => &[true],
+        Remesh::Auto if sharp => &[true, false],
+        Remesh::Auto => &[false, true],
     }
 }
 
-/// [`tessellate_shrinking`] over `schedule`: the shrinks on each of its
-/// [`passes`](super::passes::scheduled_passes) in turn (a coarser re-triangulation first when
-/// the input is crowded at the rim, then the input mesh and its re-triangulation in the
-/// order [`Schedule::remesh`] says) until a result has no [`Tessellation::problem`].
-/// `attempt` hears every result that has one. Returns the first usable result; else the
-/// first result at the input's face count (the coarser pass's when there is none); stops
-/// early, returning it, at a result [`crowded at the rim`](Tessellation::crowded_at_rim) on
-/// a pass at the input's face count (the other triangulation has the same surface and about
-/// the same edge length, so the same crowding). A re-triangulation that cannot be built (for
-/// instance on a mesh too small for it) is left out when another pass remains, an error
-/// otherwise.
-pub fn tessellate_scheduled(
-    mesh: &PolyMesh,
-    opts: &TessellateOptions,
-    schedule: &Schedule,
-    attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
-    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
-) -> Result<Tessellation, TessError> {
-    let (passes, crowding) = scheduled_passes(mesh, &opts.solve.limits, schedule)?;
-    tessellate_passes(
-        mesh,
-        opts,
-        &schedule.shrinks,
-        &passes,
-        &crowding,
-        attempt,
-        progress,
-    )
+/// What [`tessellate`] will solve on `mesh`, built before the first solve
+/// ([`TessellateOptions::plan`]): the triangulations of the schedule, each re-triangulation
+/// built once, so that a caller can show the plan and then [`run`](Plan::run) it.
+#[derive(Clone, Debug)]
+pub struct Plan<'a> {
+    mesh: &'a PolyMesh,
+    opts: &'a TessellateOptions,
+    passes: Vec<Pass>,
+    crowding: RimCrowding,
 }
 
-/// [`tessellate_scheduled`] over passes already built by
-/// [`super::passes::scheduled_passes`] (with the input's `crowding` it
-/// returned), so that a caller that shows the plan builds each re-triangulation once.
-pub fn tessellate_passes(
-    mesh: &PolyMesh,
-    opts: &TessellateOptions,
-    shrinks: &[f64],
-    passes: &[Pass],
-    crowding: &RimCrowding,
-    mut attempt: impl FnMut(f64, &Tessellation) -> ControlFlow<()>,
-    mut progress: impl FnMut(&Iteration) -> ControlFlow<()>,
-) -> Result<Tessellation, TessError> {
-    let mut first: Option<Tessellation> = None;
-    let mut coarser: Option<Tessellation> = None;
-    for pass in passes {
-        // tessellate_shrinking tells `attempt` about every failed shrink.
-        let coarsened = matches!(pass.triangulation, Triangulation::Coarser { .. });
-        let t = match &pass.mesh {
-            Some((m, report)) => {
-                let mut t = tessellate_shrinking(m, opts, shrinks, &mut attempt, &mut progress)?;
-                t.remeshed = Some(*report);
-                t.coarsened = coarsened.then_some(*crowding);
-                t
+impl Plan<'_> {
+    /// The triangulations solved on, in order (one [`Triangulation::Input`] pass for
+    /// [`Schedule::Once`] and [`Schedule::FaceShrinks`]).
+    pub fn passes(&self) -> &[Pass] {
+        &self.passes
+    }
+
+    /// The input mesh's rim crowding index (Tachi 2014, Fig. 14).
+    pub fn crowding(&self) -> &RimCrowding {
+        &self.crowding
+    }
+
+    /// The face shrinks solved on each pass, in order: the ladder's, else the one of
+    /// [`StarOptions::shrink`] (also for [`Schedule::FaceShrinks`], which overrides it per
+    /// face).
+    pub fn shrinks(&self) -> Vec<f64> {
+        self.opts.shrinks()
+    }
+
+    /// Solves the plan, as [`tessellate`] does. On a [`Schedule::Ladder`]: the shrinks on
+    /// each pass in turn (a coarser re-triangulation first when the input is crowded at the
+    /// rim, then the input mesh and its re-triangulation in the order [`Remesh`] says) until
+    /// a result has no [`Tessellation::problem`]; `watch` hears every result that has one.
+    /// Returns the first usable result; else the first result at the input's face count
+    /// (the coarser pass's when there is none); stops early, returning it, at a result
+    /// [`crowded at the rim`](Tessellation::crowded_at_rim) on a pass at the input's face
+    /// count (the other triangulation has the same surface and about the same edge length,
+    /// so the same crowding).
+    ///
+    /// # Errors
+    /// As [`tessellate`].
+    pub fn run(&self, watch: &mut impl Watch) -> Result<Tessellation, TessError> {
+        if let Some(result) = single_solve(self.mesh, self.opts, watch) {
+            return result;
+        }
+        let shrinks = self.shrinks();
+        let (mesh, opts) = (self.mesh, self.opts);
+        let mut first: Option<Tessellation> = None;
+        let mut coarser: Option<Tessellation> = None;
+        for pass in &self.passes {
+            // tessellate_shrinking tells `watch` about every failed shrink.
+            let coarsened = matches!(pass.triangulation, Triangulation::Coarser { .. });
+            let t = match &pass.mesh {
+                Some((m, report)) => {
+                    let mut t = tessellate_shrinking(m, opts, &shrinks, watch)?;
+                    t.remeshed = Some(*report);
+                    t.coarsened = coarsened.then_some(self.crowding);
+                    t
+                }
+                None => tessellate_shrinking(mesh, opts, &shrinks, watch)?,
+            };
+            if t.problem().is_none() {
+                return Ok(t);
             }
-            None => tessellate_shrinking(mesh, opts, shrinks, &mut attempt, &mut progress)?,
-        };
-        if t.problem().is_none() {
-            return Ok(t);
+            if coarsened {
+                coarser.get_or_insert(t);
+                continue;
+            }
+            if t.crowded_at_rim() {
+                return Ok(t);
+            }
+            first.get_or_insert(t);
         }
-        if coarsened {
-            coarser.get_or_insert(t);
-            continue;
-        }
-        if t.crowded_at_rim() {
-            return Ok(t);
-        }
-        first.get_or_insert(t);
+        first
+            .or(coarser)
+            .ok_or_else(|| TessError::BadParameter("nothing to try".into()))
     }
-    first
-        .or(coarser)
-        .ok_or_else(|| TessError::BadParameter("nothing to try".into()))
 }
 
 /// Checks that `mesh` is an oriented manifold disk: connected, one boundary, Euler
@@ -437,26 +519,44 @@ pub fn disk(mesh: &PolyMesh) -> Result<HalfEdgeMesh, TessError> {
     Ok(he)
 }
 
-/// Tessellates `mesh`: star tucks (§2.1), mountain/valley by role, the solve (§3.3) with
-/// `progress` called per iteration, the unfolding and the face-intersection check.
+/// Tessellates `mesh` (Tachi 2014) as `opts.schedule` says: star tucks (§2.1), mountain and
+/// valley by role, the solve (§3.3) with `watch` hearing every iteration, the unfolding and
+/// the face-intersection check; on a [`Schedule::Ladder`] over every shrink and
+/// triangulation of its [`Plan`] until a result can be used (see [`Plan::run`]).
+///
+/// # Errors
+/// [`TessError::NotADisk`] or [`TessError::Mesh`] for an input that is not an oriented
+/// manifold disk; [`TessError::BadParameter`] for options out of range (a face-shrink list
+/// without one entry per face, an empty ladder, a re-triangulation that cannot be built when
+/// it is all the ladder asks for); [`TessError::Cancelled`] when `watch` asked to stop.
 pub fn tessellate(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
-    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
+    watch: &mut impl Watch,
 ) -> Result<Tessellation, TessError> {
-    tessellate_shrunk(mesh, opts, None, progress)
+    match single_solve(mesh, opts, watch) {
+        Some(result) => result,
+        None => opts.plan(mesh)?.run(watch),
+    }
 }
 
-/// [`tessellate`] with a face shrink per input face (`face_shrink[f]` in (0, 1], overriding
-/// `opts.star.shrink`; see [`super::star::star_tucks_shrunk`]).
-/// Errors as [`tessellate`], and when `face_shrink` does not have one entry per face.
-pub fn tessellate_with_face_shrink(
+/// The one solve of [`Schedule::Once`] and [`Schedule::FaceShrinks`]; `None` on a ladder.
+fn single_solve(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
-    face_shrink: &[f64],
-    progress: impl FnMut(&Iteration) -> ControlFlow<()>,
-) -> Result<Tessellation, TessError> {
-    tessellate_shrunk(mesh, opts, Some(face_shrink), progress)
+    watch: &mut impl Watch,
+) -> Option<Result<Tessellation, TessError>> {
+    let face_shrink = match &opts.schedule {
+        Schedule::Once => None,
+        Schedule::FaceShrinks(s) => Some(s.as_slice()),
+        Schedule::Ladder { .. } => return None,
+    };
+    Some(tessellate_shrunk(
+        mesh,
+        opts,
+        face_shrink,
+        |it: &Iteration| watch.iteration(it),
+    ))
 }
 
 fn tessellate_shrunk(

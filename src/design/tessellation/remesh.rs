@@ -410,7 +410,7 @@ pub fn min_corner_angle(mesh: &PolyMesh) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::design::tessellation::spherical_cap;
+    use crate::design::tessellation::samples::spherical_cap;
 
     /// The cap (12-valent pole, faces with 29° corners) becomes a mesh of valence 6
     /// whose vertices all lie on the sphere's chordal mesh, with close to the asked face
@@ -443,7 +443,7 @@ mod tests {
             })
             .fold(0.0f64, f64::max);
         let centre = DVec3::new(0.0, 0.0, -100.0);
-        let surface = crate::design::papercraft::ReferenceMesh::new(&cap).expect("the cap");
+        let surface = crate::mesh::ReferenceMesh::new(&cap).expect("the cap");
         for p in out.positions() {
             let d = p.distance(centre) - 100.0;
             assert!(d <= 1e-9 && d >= -sag - 1e-9, "{p} {d} (sag {sag})");

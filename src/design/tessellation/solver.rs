@@ -31,6 +31,7 @@ use super::TessError;
 use super::constraints::{self, Family, Limits, Residuals, Row};
 use super::min_norm::{Jacobian, damped_min_norm, min_norm};
 use super::model::TessMesh;
+use super::pipeline::Watch;
 use super::vertex_penalty;
 
 /// Solver settings.
@@ -91,7 +92,7 @@ pub struct SolveReport {
     pub limits: Limits,
     /// Whether a boundary row (Tachi 2014, eq. 2) was among any rows the solve evaluated,
     /// at an iterate or a trial step. When none was, the solve is the same to the bit with
-    /// either [`BoundaryRuns`](super::BoundaryRuns) form: a violated run implies a violated
+    /// either [`BoundaryRuns`](super::constraints::BoundaryRuns) form: a violated run implies a violated
     /// dominant run, so both forms have no boundary row at exactly the same points.
     pub boundary_rows: bool,
 }
@@ -162,14 +163,15 @@ pub const FLAT_TOLERANCE: f64 = 1e-9;
 /// Largest accepted distance of a boundary vertex from the ground plane, mesh units.
 pub const GROUND_TOLERANCE: f64 = 1e-9;
 
-/// Solves the constraints for `mesh.positions` in place (§3.3), calling `progress` after every
-/// iteration; [`Break`](std::ops::ControlFlow::Break) from it stops the solve at once with
-/// [`TessError::Cancelled`] (`mesh` is then left as it was). Errors otherwise only on bad
-/// options; not converging is reported, not an error.
+/// Solves the constraints for `mesh.positions` in place (Tachi 2014, §3.3), calling
+/// `watch` ([`Watch::iteration`]: `()` hears nothing, a closure over [`Iteration`] hears
+/// every one) after every iteration; [`Break`](std::ops::ControlFlow::Break) from it stops
+/// the solve at once with [`TessError::Cancelled`] (`mesh` is then left as it was). Errors
+/// otherwise only on bad options; not converging is reported, not an error.
 pub fn solve(
     mesh: &mut TessMesh,
     opts: &SolveOptions,
-    mut progress: impl FnMut(&Iteration) -> std::ops::ControlFlow<()>,
+    mut watch: impl Watch,
 ) -> Result<SolveReport, TessError> {
     let l = opts.limits;
     let valid = opts.tolerance > 0.0
@@ -264,7 +266,7 @@ pub fn solve(
         rows = trial_rows;
         merit = m;
         last = constraints::residuals(mesh, &x, l.ground_z);
-        let heard = progress(&Iteration {
+        let heard = watch.iteration(&Iteration {
             index: iterations,
             residuals: last,
             active: active_counts(&rows),

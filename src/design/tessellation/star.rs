@@ -402,7 +402,7 @@ fn union(uf: &mut [usize], a: usize, b: usize) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::design::tessellation::spherical_cap;
+    use crate::design::tessellation::samples::spherical_cap;
 
     /// A uniform per-face shrink gives the pattern of the global one; a face left at shrink 1
     /// keeps its corners on the input vertices (digon layout: every face has its own

@@ -46,7 +46,7 @@
 //! 29.6°, about 1,700 fold-limit and crease-angle rows active beside the 1,450
 //! developability rows; most accepted steps before it were under 1e-3 of the Newton step). With the
 //! Levenberg–Marquardt fallback ([`SolveOptions::damped_fallback`](super::SolveOptions::damped_fallback))
-//! and four times the iteration cap ([`TWISTED_ITERATIONS`](super::TWISTED_ITERATIONS)), which
+//! and four times the iteration cap ([`TWISTED_ITERATIONS`](super::pipeline::TWISTED_ITERATIONS)), which
 //! [`tessellate`](super::tessellate) gives twisted stars, it converges in 424 iterations
 //! (release, 20 s) within the 0.5 mm stainless limits. `spherical_cap(6, 6, 1, 100)` stalled
 //! too without them (after 132 iterations at 3.8e-2 rad of developability).

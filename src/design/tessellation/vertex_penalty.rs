@@ -458,7 +458,7 @@ mod tests {
             limits,
             ..SolveOptions::default()
         };
-        let report = solve(&mut mesh, &opts, crate::design::tessellation::keep_going).unwrap();
+        let report = solve(&mut mesh, &opts, ()).unwrap();
         assert!(report.converged, "{}", report.summary());
         assert_eq!(report.initial.illegal_creases, 1);
         // Pulled back to contact (or past it): at most 1e-6 rad of angular penetration.
@@ -475,7 +475,7 @@ mod tests {
             },
             ..opts
         };
-        let report = solve(&mut loose, &off, crate::design::tessellation::keep_going).unwrap();
+        let report = solve(&mut loose, &off, ()).unwrap();
         assert!(
             report.converged && report.last.illegal_creases == 1,
             "{}",

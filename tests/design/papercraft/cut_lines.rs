@@ -1,6 +1,7 @@
 use foldcam::design::papercraft::CutLine;
+use foldcam::design::papercraft::PapercraftError;
 use foldcam::design::papercraft::sphere;
-use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
+use foldcam::mesh::ReferenceMesh;
 use glam::DVec3;
 
 use super::support::Rng;

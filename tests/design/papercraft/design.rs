@@ -1,7 +1,8 @@
 use std::path::Path;
 
+use foldcam::design::papercraft::PapercraftError;
 use foldcam::design::papercraft::parse_design;
-use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
+use foldcam::mesh::ReferenceMesh;
 use foldcam::mesh::read_mesh;
 
 use super::support::{assert_cuts_clean_on_paper, side_lengths};

@@ -4,11 +4,12 @@ use std::path::Path;
 
 use foldcam::design::papercraft::BSpline;
 use foldcam::design::papercraft::CylinderPatch;
+use foldcam::design::papercraft::PapercraftError;
 use foldcam::design::papercraft::Walls;
 use foldcam::design::papercraft::boundary_gap;
 use foldcam::design::papercraft::fit_directrix;
 use foldcam::design::papercraft::{Design, Made, parse_design};
-use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
+use foldcam::mesh::ReferenceMesh;
 use foldcam::mesh::read_mesh;
 use glam::DVec3;
 

@@ -1,13 +1,14 @@
 use foldcam::design::papercraft::BSpline;
 use foldcam::design::papercraft::CylinderPatch;
 use foldcam::design::papercraft::Network;
+use foldcam::design::papercraft::PapercraftError;
 use foldcam::design::papercraft::Walls;
 use foldcam::design::papercraft::real_boundary;
-use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::design::papercraft::{Part, TabStyle, add_tabs};
 use foldcam::design::papercraft::{Placement, SheetSpec, pack, part_points, sheet_pattern};
 use foldcam::geom::{Crossing, distance_to_point, intersect};
 use foldcam::geom::{contains_point, signed_area};
+use foldcam::mesh::ReferenceMesh;
 use foldcam::pattern::{Assignment, CreasePattern};
 use glam::{DVec2, DVec3};
 

@@ -1,6 +1,7 @@
-use foldcam::design::papercraft::{PapercraftError, ReferenceMesh, closest_on_triangle};
+use foldcam::design::papercraft::PapercraftError;
 use foldcam::design::papercraft::{revolution, sphere};
 use foldcam::mesh::PolyMesh;
+use foldcam::mesh::{MeshError, ReferenceMesh, closest_on_triangle};
 use glam::DVec3;
 
 use super::support::Rng;
@@ -121,7 +122,7 @@ fn a_mesh_without_area_is_refused() {
     .unwrap();
     assert_eq!(
         ReferenceMesh::new(&flat).unwrap_err(),
-        PapercraftError::DegenerateMesh
+        MeshError::Degenerate
     );
     assert!(matches!(
         revolution(&[(1.0, 0.0)], 8),

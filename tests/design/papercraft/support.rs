@@ -162,7 +162,7 @@ pub fn example_design(name: &str) -> foldcam::design::papercraft::Design {
 /// (the fish takes most of a second in a release build) and hands out copies.
 pub fn build_example(name: &str) -> foldcam::design::papercraft::Made {
     use foldcam::design::papercraft::Made;
-    use foldcam::design::papercraft::ReferenceMesh;
+    use foldcam::mesh::ReferenceMesh;
     use std::collections::HashMap;
     use std::sync::{Arc, Mutex, OnceLock};
     static BUILT: OnceLock<Mutex<HashMap<String, Arc<OnceLock<Made>>>>> = OnceLock::new();

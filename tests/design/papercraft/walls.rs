@@ -1,9 +1,10 @@
 use foldcam::design::papercraft::BSpline;
 use foldcam::design::papercraft::CylinderPatch;
 use foldcam::design::papercraft::Network;
+use foldcam::design::papercraft::PapercraftError;
 use foldcam::design::papercraft::Walls;
-use foldcam::design::papercraft::{PapercraftError, ReferenceMesh};
 use foldcam::design::papercraft::{RealBoundary, real_boundary};
+use foldcam::mesh::ReferenceMesh;
 use glam::{DVec2, DVec3};
 
 use super::support::{cube_corner, cube_lines, cube_mesh, cube_patches};

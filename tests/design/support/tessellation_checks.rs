@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use foldcam::design::tessellation::*;
+use foldcam::design::tessellation::{steps::*, *};
 use foldcam::machine::load_material;
 use foldcam::mesh::{PolyMesh, read_mesh};
 use foldcam::pattern::Assignment;

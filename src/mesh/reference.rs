@@ -1,5 +1,6 @@
-//! The reference mesh of Ōgaki (2016) (§3.1): the shape the user traces cut lines and directrices
-//! on. Offers closest-point projection and the surface normal there.
+//! A triangulated mesh with closest-point projection and the surface normal there: the
+//! reference mesh of Ōgaki (2016) (§3.1), the shape paper craft's user traces cut lines and
+//! directrices on, and the surface a tessellation's distance to its input is measured on.
 //!
 //! Faces are split into fan triangles; a [`TriangleGrid`] finds candidates near the query.
 //! The normal at a projected point interpolates area-weighted vertex normals with the point's
@@ -9,10 +10,9 @@
 
 use glam::DVec3;
 
-use super::PapercraftError;
-use super::grid::TriangleGrid;
+use super::triangle_grid::TriangleGrid;
+use super::{MeshError, PolyMesh};
 use crate::geom::tolerance::ROUNDOFF_SQUARED;
-use crate::mesh::PolyMesh;
 
 /// The closest point of the reference mesh to a query point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,8 +38,8 @@ pub struct ReferenceMesh {
 
 impl ReferenceMesh {
     /// Triangulates `mesh` (fans), drops zero-area triangles and builds the search grid.
-    /// Refuses a mesh with no triangle of positive area.
-    pub fn new(mesh: &PolyMesh) -> Result<Self, PapercraftError> {
+    /// Refuses a mesh with no triangle of positive area ([`MeshError::Degenerate`]).
+    pub fn new(mesh: &PolyMesh) -> Result<Self, MeshError> {
         let positions = mesh.positions().to_vec();
         let scale = {
             let (lo, hi) = mesh.bounds();
@@ -52,7 +52,7 @@ impl ReferenceMesh {
             .filter(|t| tri_cross(&positions, t).length() > ROUNDOFF_SQUARED * scale * scale)
             .collect();
         if triangles.is_empty() {
-            return Err(PapercraftError::DegenerateMesh);
+            return Err(MeshError::Degenerate);
         }
         let mut vertex_normals = vec![DVec3::ZERO; positions.len()];
         for t in &triangles {
