@@ -7,12 +7,54 @@
 //! statistics) and `gcode` (writing one job). The travel length of the optimised order and of
 //! the pattern order are printed once before the measurements.
 //!
+//! `plot_55k_segments`: the plan of a pen plot of 55,760 segments (a triangulated grid of
+//! 136 × 136 cells of 2.06 mm, every segment its own mountain line, in shuffled order) on the
+//! pen plotter: Euler strokes, their order, statistics. The command it stands for, `foldcam
+//! cut grid.svg -m grbl-pen-plotter -x card-300gsm --mountain plot`, is compared with vpype's
+//! `read … linesort write` in the note (same drawing as an SVG).
+//!
 //! Run with `cargo bench --bench fab_pipeline`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use foldcam::design::classic::grid;
 use foldcam::fab::{PlanOptions, plan};
 use foldcam::machine::{load_machine, load_material};
+use foldcam::pattern::{Assignment, CreasePattern};
+use glam::DVec2;
+
+/// The shuffled triangulated grid of the plotting case: `n` × `n` cells of `cell` mm.
+fn shuffled_grid(n: usize, cell: f64) -> CreasePattern {
+    let mut cp = CreasePattern::new();
+    let vertex = |i: usize, j: usize| foldcam::pattern::VertexId::new(i * (n + 1) + j);
+    for i in 0..=n {
+        for j in 0..=n {
+            cp.add_vertex(DVec2::new(i as f64 * cell, j as f64 * cell));
+        }
+    }
+    let mut segments = Vec::new();
+    for i in 0..=n {
+        for j in 0..n {
+            segments.push((vertex(i, j), vertex(i, j + 1)));
+            segments.push((vertex(j, i), vertex(j + 1, i)));
+        }
+    }
+    for i in 0..n {
+        for j in 0..n {
+            segments.push((vertex(i, j), vertex(i + 1, j + 1)));
+        }
+    }
+    let mut state = 7u64;
+    for k in (1..segments.len()).rev() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        segments.swap(k, (state >> 33) as usize % (k + 1));
+    }
+    for (a, b) in segments {
+        cp.add_edge(a, b, Assignment::Mountain);
+    }
+    cp
+}
 
 fn bench(c: &mut Criterion) {
     let cp = grid(316, 5.0).expect("grid parameters are valid");
@@ -47,6 +89,29 @@ fn bench(c: &mut Criterion) {
     });
     g.bench_function("gcode", |b| {
         b.iter(|| foldcam::post::gcode(&p, &p.jobs[0], &machine).expect("G-code"))
+    });
+    g.finish();
+
+    let cp = shuffled_grid(136, 280.0 / 136.0);
+    let plotter = load_machine("grbl-pen-plotter").expect("shipped machine");
+    let card = load_material("card-300gsm").expect("shipped material");
+    let overrides = foldcam::fab::PlanOverrides {
+        mountain: Some(Some(foldcam::fab::Operation::Plot)),
+        ..Default::default()
+    };
+    let options = PlanOptions::for_machine(&plotter, &card, &overrides).expect("adapts");
+    let p = plan(&cp, &plotter, &card, &options).expect("plans");
+    eprintln!(
+        "pen plot: {} segments → {} toolpaths (pen-downs {}), travel {:.0} mm",
+        cp.edges.len(),
+        p.jobs[0].paths.len(),
+        p.stats.pierces,
+        p.stats.travel_mm
+    );
+    let mut g = c.benchmark_group("plot_55k_segments");
+    g.sample_size(10);
+    g.bench_function("plan", |b| {
+        b.iter(|| plan(&cp, &plotter, &card, &options).expect("plans"))
     });
     g.finish();
 }

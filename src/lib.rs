@@ -72,7 +72,10 @@ pub use sim::{CoverageReport, SimReport};
 // The binary's dependencies (feature `cli`) and the test-only ones, which the library itself
 // does not use: named so `unused_crate_dependencies` checks every other one.
 #[cfg(feature = "cli")]
-use {anyhow as _, clap as _, clap_complete as _, clap_mangen as _, ctrlc as _, indicatif as _};
+use {
+    anyhow as _, clap as _, clap_complete as _, clap_mangen as _, ctrlc as _, indicatif as _,
+    mimalloc as _,
+};
 #[cfg(test)]
 use {
     criterion as _, fantoccini as _, hyper_util as _, proptest as _, roxmltree as _, tempfile as _,

@@ -521,3 +521,115 @@ fn svg_layers_carry_their_number_first_where_vpype_looks_for_it() {
         assert_eq!(read, i + 1, "{id} {label}");
     }
 }
+
+/// vpype's pen-up length of `svg` after the commands `then` (`["linesort"]`, or none to take
+/// the file's order): `vpype read FILE … stat`, the last "Pen-up length" it prints (all
+/// layers), in vpype's pixels (1/96 in).
+fn vpype_pen_up(svg: &Path, then: &[&str]) -> f64 {
+    let run = std::process::Command::new("vpype")
+        .arg("read")
+        .arg(svg)
+        .args(then)
+        .arg("stat")
+        .output()
+        .expect("vpype on PATH (python3 -m pip install vpype)");
+    assert!(
+        run.status.success(),
+        "vpype stat: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let out = String::from_utf8_lossy(&run.stdout);
+    out.lines()
+        .rev()
+        .filter_map(|l| l.trim().strip_prefix("Pen-up length:"))
+        .find_map(|v| v.trim().parse::<f64>().ok())
+        .unwrap_or_else(|| panic!("no pen-up length in: {out}"))
+}
+
+/// A drawing of `n` × `n` cells of `cell` mm, each with one diagonal (all the same way, or
+/// alternating like a checkerboard), as one SVG `<line>` per segment in a shuffled order (a
+/// fixed LCG), in millimetres.
+fn shuffled_grid_svg(n: usize, cell: f64, alternate: bool) -> String {
+    let mut segments = Vec::new();
+    let at = |i: usize| 5.0 + i as f64 * cell;
+    for i in 0..=n {
+        for j in 0..n {
+            segments.push([at(i), at(j), at(i), at(j + 1)]);
+            segments.push([at(j), at(i), at(j + 1), at(i)]);
+        }
+    }
+    for i in 0..n {
+        for j in 0..n {
+            if alternate && (i + j) % 2 == 1 {
+                segments.push([at(i), at(j + 1), at(i + 1), at(j)]);
+            } else {
+                segments.push([at(i), at(j), at(i + 1), at(j + 1)]);
+            }
+        }
+    }
+    let mut state = 12345u64;
+    for k in (1..segments.len()).rev() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        segments.swap(k, (state >> 33) as usize % (k + 1));
+    }
+    let side = at(n) + 5.0;
+    let mut svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{side}mm\" height=\"{side}mm\" \
+         viewBox=\"0 0 {side} {side}\">\n"
+    );
+    for [a, b, c, d] in segments {
+        svg.push_str(&format!(
+            "<line x1=\"{a}\" y1=\"{b}\" x2=\"{c}\" y2=\"{d}\" stroke=\"#ff0000\"/>\n"
+        ));
+    }
+    svg + "</svg>\n"
+}
+
+#[test]
+#[ignore = "needs vpype (pip)"]
+fn pen_lines_travel_no_further_than_after_vpype_linesort() {
+    let _alone = post_common::external_tools_alone();
+    let dir = tempfile::tempdir().expect("temporary folder");
+    // The shuffled triangulated grid of the plotting benchmark, smaller (40 × 40 cells of
+    // 2.2 mm: 4,880 segments; two vertices of odd degree), and one with alternating diagonals
+    // (many odd vertices along the rim, so several strokes and jumps).
+    for (name, alternate) in [("grid", false), ("alternating grid", true)] {
+        let input = dir.path().join(format!("{name}.svg"));
+        std::fs::write(&input, shuffled_grid_svg(40, 2.2, alternate)).expect("written");
+        // Ours: the plotter SVG in machine millimetres, read back by vpype in our order.
+        let ours = dir.path().join(format!("{name}.plot.svg"));
+        let out = crate::bin::foldcam(
+            &[
+                "cut",
+                input.to_str().unwrap(),
+                "-m",
+                "grbl-pen-plotter",
+                "-x",
+                "card-300gsm",
+                "--mountain",
+                "plot",
+                "-o",
+                ours.to_str().unwrap(),
+            ],
+            dir.path(),
+        );
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        // Theirs: the same lines as vpype's linesort orders them.
+        let (mine, theirs) = (
+            vpype_pen_up(&ours, &[]),
+            vpype_pen_up(&input, &["linesort"]),
+        );
+        eprintln!(
+            "{name}: pen-up {:.1} mm in foldcam's order, {:.1} mm after vpype's linesort",
+            mine * 25.4 / 96.0,
+            theirs * 25.4 / 96.0
+        );
+        assert!(mine <= theirs, "{name}: {mine} px > {theirs} px");
+    }
+}

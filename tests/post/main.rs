@@ -3,6 +3,8 @@
 //!
 //! One test binary: each module is the tests of one part, so the crate is linked once.
 
+#[path = "../common/bin.rs"]
+mod bin;
 #[path = "../common/post.rs"]
 mod post_common;
 

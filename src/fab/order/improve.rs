@@ -27,6 +27,11 @@ pub(super) const MAX_PASSES: usize = 3;
 /// Smallest travel saving that counts as an improvement, mm.
 pub(super) const MIN_GAIN_MM: f64 = 1e-9;
 
+/// A link (travel between two consecutive visits) this short is closed: a move that only
+/// re-links at a closed link cannot gain [`MIN_GAIN_MM`] (triangle inequality, below), so such
+/// moves are not evaluated. A pen plot's continuous lines are chains of closed links.
+const CLOSED_MM: f64 = MIN_GAIN_MM / 4.0;
+
 /// Improves `tour` (starting at `start`) in place.
 pub(super) fn improve(tour: &mut [Visit], start: DVec2) {
     for _ in 0..MAX_PASSES {
@@ -62,11 +67,21 @@ fn two_opt_pass(tour: &mut [Visit], start: DVec2) -> bool {
     let mut changed = false;
     for i in 0..n {
         let before = exit_before(tour, i, start);
+        // Reversing i..=j turns links (before, a) + (b, next) into (before, b) + (a, next).
+        // With (before, a) closed, before = a and the new pair is at least |ab| + |a next|
+        // ≥ |b next|, the old pair: nothing to gain at this i.
+        if before.distance(tour[i].entry) < CLOSED_MM {
+            continue;
+        }
         for j in i..(i + WINDOW).min(n) {
             if !tour[j].turnable {
                 break;
             }
             let next = tour.get(j + 1).map(|v| v.entry);
+            // Likewise with (b, next) closed.
+            if next.is_some_and(|q| tour[j].exit.distance(q) < CLOSED_MM) {
+                continue;
+            }
             let (a, b) = (tour[i].entry, tour[j].exit);
             let old = before.distance(a) + to_next(b, next);
             let new = before.distance(b) + to_next(a, next);
@@ -99,6 +114,15 @@ fn best_gap(tour: &[Visit], start: DVec2, i: usize, len: usize) -> Option<(usize
     let (first, last) = (tour[i], tour[i + len - 1]);
     let prev = exit_before(tour, i, start);
     let next = tour.get(i + len).map(|v| v.entry);
+    // A run whose links are both closed has prev = its entry and next = its exit, so taking
+    // it out saves −|entry exit|, and putting it in a gap (p, q) costs at least
+    // −|entry exit| (|pq| ≤ |p entry| + |entry exit| + |exit q|): nothing to gain. (At the
+    // open end of the tour, with no next, a move can gain.)
+    if prev.distance(first.entry) < CLOSED_MM
+        && next.is_some_and(|q| last.exit.distance(q) < CLOSED_MM)
+    {
+        return None;
+    }
     let removed = prev.distance(first.entry) + to_next(last.exit, next) - to_next(prev, next);
     let turnable = tour[i..i + len].iter().all(|v| v.turnable);
     let gaps = (i.saturating_sub(OR_WINDOW)..i).chain(i + len + 1..=(i + len + OR_WINDOW).min(n));

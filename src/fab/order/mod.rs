@@ -8,6 +8,8 @@
 //!    from `start`, the machine origin): the next toolpath is the one with the nearest entry,
 //!    found in a 2-d tree of entry points. Open paths may run backwards; closed contours
 //!    (one closed stroke) may start at any vertex; contours with lead-ins or tabs run as given.
+//!    A group of pen, mark or score lines is first made into as few strokes as its odd
+//!    vertices allow (Euler paths, `order/euler.rs`), and the strokes are ordered instead.
 //! 3. **Improvement**: windowed 2-opt and Or-opt passes (`order/improve.rs`), bounded
 //!    work.
 //! 4. **Joining**: consecutive toolpaths that continue each other (same operation, end = start)
@@ -25,6 +27,7 @@
 //! O(n log n) for the sort and the nearest-neighbour tours (P entry points: 2 per open path,
 //! one per vertex of a closed contour), plus O(n · window · passes) for the improvement.
 
+mod euler;
 mod improve;
 mod join;
 mod kdtree;
@@ -78,10 +81,12 @@ fn plan_tour(paths: &[Toolpath], start: DVec2, optimize: bool) -> Vec<Visit> {
     let mut tour = Vec::with_capacity(paths.len());
     let mut at = start;
     for group in sorted.chunk_by(|&a, &b| rank[a] == rank[b]) {
-        let mut part = if optimize {
-            nearest::tour(paths, group, at)
-        } else {
+        let mut part = if !optimize {
             nearest::as_given(paths, group, at)
+        } else if let Some(strokes) = euler::strokes(paths, group) {
+            nearest::tour_of_strokes(strokes, at)
+        } else {
+            nearest::tour(paths, group, at)
         };
         if optimize {
             improve::improve(&mut part, at);

@@ -81,6 +81,45 @@ pub(super) fn tour(paths: &[Toolpath], items: &[usize], start: DVec2) -> Vec<Vis
     out
 }
 
+/// A nearest-neighbour tour through `strokes` (runs of visits that continue one another,
+/// every visit turnable) starting at `start`: each stroke is entered at whichever end is
+/// nearer, and run backwards (each visit reversed) when entered at its last.
+pub(super) fn tour_of_strokes(strokes: Vec<Vec<Visit>>, start: DVec2) -> Vec<Visit> {
+    let mut entries = Vec::with_capacity(2 * strokes.len());
+    for s in &strokes {
+        let (Some(first), Some(last)) = (s.first(), s.last()) else {
+            continue;
+        };
+        entries.push(first.entry);
+        entries.push(last.exit);
+    }
+    let mut tree = KdTree::new(entries);
+    let mut strokes: Vec<Option<Vec<Visit>>> = strokes
+        .into_iter()
+        .filter(|s| !s.is_empty())
+        .map(Some)
+        .collect();
+    let mut out = Vec::with_capacity(strokes.iter().flatten().map(Vec::len).sum());
+    let mut at = start;
+    while let Some(k) = tree.nearest(at) {
+        let s = k / 2;
+        tree.delete(2 * s);
+        tree.delete(2 * s + 1);
+        let Some(mut stroke) = strokes[s].take() else {
+            continue;
+        };
+        if k % 2 == 1 {
+            stroke.reverse();
+            for v in &mut stroke {
+                *v = v.reversed();
+            }
+        }
+        at = stroke.last().map_or(at, |v| v.exit);
+        out.extend(stroke);
+    }
+    out
+}
+
 /// The tour that runs `items` as given, in the given order (no optimisation).
 pub(super) fn as_given(paths: &[Toolpath], items: &[usize], start: DVec2) -> Vec<Visit> {
     let mut at = start;
