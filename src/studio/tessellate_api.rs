@@ -502,14 +502,6 @@ impl SolveRequest {
             "auto, never or only",
             remesh_by_name,
         )?;
-        for (what, v) in [
-            ("--max-fold-angle", self.max_fold_angle),
-            ("--min-vertex-angle", self.min_vertex_angle),
-        ] {
-            if v.is_some_and(|v| !(v.is_finite() && (0.0..=180.0).contains(&v))) {
-                return Err(format!("{what} must be an angle between 0 and 180 degrees"));
-            }
-        }
         TessSettings {
             tuck,
             layout,

@@ -86,7 +86,8 @@ impl TessellationOptions {
     /// [`SHRINK_LADDER`], on the triangulations [`TessellationOptions::remesh`] asks for.
     ///
     /// # Errors
-    /// [`SourceError::Option`] for an iteration cap or fit weight out of range.
+    /// [`SourceError::Option`] for an iteration cap, a limit angle (0° to 180°) or a fit
+    /// weight out of range.
     pub fn to_solver(&self) -> Result<TessellateOptions, SourceError> {
         if self.max_iterations == 0 || self.max_iterations > MAX_ITERATIONS {
             return Err(SourceError::Option(format!(
@@ -102,6 +103,16 @@ impl TessellationOptions {
                 limit.name(),
                 limit.expected()
             )));
+        }
+        for (option, v) in [
+            ("--max-fold-angle", self.max_fold_angle_deg),
+            ("--min-vertex-angle", self.min_vertex_angle_deg),
+        ] {
+            if !(v.is_finite() && (0.0..=180.0).contains(&v)) {
+                return Err(SourceError::Option(format!(
+                    "{option} {v}: must be an angle between 0 and 180 degrees"
+                )));
+            }
         }
         let limits = Limits::from_degrees(self.max_fold_angle_deg, self.min_vertex_angle_deg);
         let mut opts = TessellateOptions::with_limits(limits);
@@ -680,6 +691,25 @@ mod tests {
 
     /// A residual falling tenfold per iteration, one iteration a second: from 1e-2 it takes
     /// 8 more iterations to reach 1e-10, so 8 s (closed form of the geometric decrease).
+    #[test]
+    fn limit_angles_out_of_range_are_refused_by_name() {
+        for (max, min, named) in [
+            (200.0, 30.0, "--max-fold-angle 200"),
+            (165.0, f64::NAN, "--min-vertex-angle NaN"),
+        ] {
+            let o = TessellationOptions {
+                max_fold_angle_deg: max,
+                min_vertex_angle_deg: min,
+                ..TessellationOptions::default()
+            };
+            match o.to_solver() {
+                Err(SourceError::Option(m)) => assert!(m.starts_with(named), "{m}"),
+                other => panic!("not refused: {other:?}"),
+            }
+        }
+        assert!(TessellationOptions::default().to_solver().is_ok());
+    }
+
     #[test]
     fn time_left_follows_the_residual_decrease_and_the_iteration_rate() {
         let mut t = SolveTracker::new(plan());
