@@ -9,7 +9,7 @@
 pub(crate) mod atomic;
 pub mod cp;
 pub mod dxf;
-pub mod finding;
+pub(crate) mod finding;
 pub mod fold;
 pub(crate) mod options;
 pub mod opx;
