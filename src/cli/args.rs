@@ -95,7 +95,7 @@ pub struct CheckArgs {
         long,
         value_name = "N",
         requires = "layers",
-        default_value_t = 1_000_000
+        default_value_t = foldcam::check::layers::DEFAULT_MAX_STATES
     )]
     pub max_states: u64,
     /// With --layers: stop the layer-order search after this many seconds (exit 2, naming

@@ -8,7 +8,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use foldcam::design::tessellation::measure::surface_fit;
 use foldcam::design::tessellation::steps::SHRINK_LADDER;
 use foldcam::design::tessellation::{
-    Limits, Remesh, Schedule, TessellateOptions, Tessellation, TuckKind, tessellate,
+    Remesh, Schedule, TessellateOptions, Tessellation, TuckKind, tessellate,
 };
 use foldcam::formats::{self, write_atomic};
 use foldcam::machine::load_material;
@@ -24,10 +24,9 @@ const MASK_FIRST_SHRINK: f64 = 0.6;
 /// The stainless limits of the demo's tessellations.
 fn stainless() -> Result<TessellateOptions> {
     let material = load_material("stainless-0.5")?;
-    Ok(TessellateOptions::with_limits(Limits::from_degrees(
-        material.limits.max_fold_angle_deg,
-        material.limits.min_vertex_angle_deg,
-    )))
+    Ok(TessellateOptions::with_limits(
+        material.limits.tessellation_limits(),
+    ))
 }
 
 /// Tessellates the bundled dome, writes `tessellation-dome.fold` (pattern and folded form),

@@ -3,7 +3,9 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
-use foldcam::check::layers::{KawasakiTolerance, LayerOptions, LayerSolver, local_faults, refusal};
+use foldcam::check::layers::{
+    DEFAULT_MAX_STATES, FlatFoldError, FlatFolding, KawasakiTolerance, LayerOptions,
+};
 use foldcam::formats;
 use foldcam::render::render_top_view_png;
 
@@ -45,7 +47,7 @@ pub struct Args {
     #[arg(value_name = "PX", long, default_value_t = 1200, requires = "png")]
     pub width: u32,
     /// Stop counting each component at N states (states beyond are not reachable).
-    #[arg(long, value_name = "N", default_value_t = 1_000_000)]
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_STATES)]
     pub max_states: u64,
     /// Kawasaki tolerance of the local check run first, degrees [default: fitted to the
     /// drawing: an error is rounding when closing the vertex moves the end of its shortest
@@ -78,55 +80,35 @@ pub fn run(args: Args) -> Result<Outcome> {
         time_limit: args.time_limit.map(std::time::Duration::from_secs_f64),
         ..LayerOptions::default()
     };
-    let faults = local_faults(cp, options.kawasaki);
-    if let Some(f) = faults.first_refusal() {
-        errln!(
-            "foldcam: {}: {}; nothing written",
-            args.input.display(),
-            refusal(f)
-        );
-        return Ok(Outcome::CheckFailed);
-    }
-    if !faults.rounding.is_empty() {
-        errln!(
-            "foldcam: warning: {}: folded with {} Kawasaki error(s) within the drawing's \
-             precision (largest {:.4}°; --kawasaki-tolerance sets a fixed one)",
-            args.input.display(),
-            faults.rounding.len(),
-            faults.rounding.iter().map(|f| f.value).fold(0.0, f64::max)
-        );
-    }
-    let solver = LayerSolver::new(cp, &options)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
-    let report = solver.report();
-    if let Some(c) = &report.contradiction {
-        errln!(
-            "foldcam: {}: {}; nothing written",
-            args.input.display(),
-            c.message
-        );
-        return Ok(Outcome::CheckFailed);
-    }
-    let k = u128::from(args.state);
-    let Some(folded) = solver.folded_state(cp, k) else {
-        bail!(
-            "{}: there is no state {} ({} state(s){})",
-            args.input.display(),
-            args.state,
-            report.states,
-            if report.exact {
-                String::new()
-            } else {
-                ", counting stopped at --max-states: raise it".to_string()
-            }
-        );
+    let name = args.input.display();
+    let folding = match FlatFolding::new(cp, &options) {
+        Ok(f) => f,
+        Err(e @ (FlatFoldError::NotLocallyFlat(_) | FlatFoldError::NoLayerOrder(_))) => {
+            errln!("foldcam: {name}: {e}; nothing written");
+            return Ok(Outcome::CheckFailed);
+        }
+        Err(e) => bail!("{name}: {e}"),
     };
+    let rounding = &folding.local.rounding;
+    if !rounding.is_empty() {
+        errln!(
+            "foldcam: warning: {name}: folded with {} Kawasaki error(s) within the drawing's \
+             precision (largest {:.4}°; --kawasaki-tolerance sets a fixed one)",
+            rounding.len(),
+            rounding.iter().map(|f| f.value).fold(0.0, f64::max)
+        );
+    }
+    let report = folding.solver.report();
+    let k = u128::from(args.state);
+    let folded = folding
+        .state(cp, k)
+        .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     // The top view searches the state again: only when a picture is asked for.
     let png = match &png_path {
         Some(_) => {
-            let view = solver.top_view(k).ok_or_else(|| {
-                anyhow::anyhow!("{}: no top view of state {k}", args.input.display())
-            })?;
+            let view = folding
+                .top_view(k)
+                .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
             Some(
                 render_top_view_png(&view, args.width, args.xray)
                     .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?,

@@ -36,6 +36,7 @@ impl FrameArg {
     /// The reading options these arguments give.
     pub fn read_options(&self) -> formats::ReadOptions {
         formats::ReadOptions {
+            frame: self.fold_frame.unwrap_or(0),
             snap: self.snap,
             dashed: self.dashed,
         }
@@ -45,22 +46,13 @@ impl FrameArg {
 /// Reads `path` (frame `frame.fold_frame` for FOLD files), prints the reader's warnings to stderr,
 /// and returns the import.
 pub fn load(path: &Path, frame: &FrameArg) -> Result<Imported> {
-    let imported = match frame.fold_frame {
-        _ if super::pipe::is_stdio(path) => super::pipe::load_stdin(
-            frame.from.as_deref(),
-            frame.fold_frame,
-            &frame.read_options(),
-        )?,
-        None | Some(0) => formats::load_with(path, &frame.read_options())?,
-        Some(n) => load_frame(path, n)?,
+    let options = frame.read_options();
+    let imported = if super::pipe::is_stdio(path) {
+        super::pipe::load_stdin(frame.from.as_deref(), &options)?
+    } else {
+        formats::load_with(path, &options)?
     };
-    if imported.pattern.edges.is_empty() {
-        bail!(
-            "{}: the pattern holds no edges (and no faces to derive them from): nothing to \
-             check, draw or convert",
-            path.display()
-        );
-    }
+    imported.require_edges(path)?;
     refuse_degenerate(path, &imported.pattern)?;
     print_findings(path, imported.warnings());
     note!(
@@ -108,23 +100,6 @@ pub fn size_read(cp: &foldcam::pattern::CreasePattern) -> String {
         lo.y,
         hi.y
     )
-}
-
-fn load_frame(path: &Path, n: usize) -> Result<Imported> {
-    if formats::Format::from_path(path) != Some(formats::Format::Fold) {
-        bail!(
-            "{}: --fold-frame applies to FOLD files only",
-            path.display()
-        );
-    }
-    let text = formats::read_text(path)?;
-    let imported = formats::fold::read_frame_str(&text, n)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-    imported
-        .pattern
-        .validate()
-        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-    Ok(imported)
 }
 
 /// Cleans the pattern in place ([`Imported::clean`]: faces traced when asked, a folded state

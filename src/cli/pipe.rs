@@ -94,40 +94,21 @@ fn from_format(from: Option<&str>) -> Result<Format> {
         .ok_or_else(|| anyhow!("--from {from}: expected fold, svg, cp, opx or dxf"))
 }
 
-/// Reads all of standard input as text (DXF and other text with stray bytes read lossily).
-pub fn read_stdin_text() -> Result<String> {
+/// Reads a pattern from standard input in the `--from` format (a FOLD file's frame
+/// `options.frame`), validated as a file would be ([`formats::load_bytes`]).
+pub fn load_stdin(from: Option<&str>, options: &formats::ReadOptions) -> Result<Imported> {
+    let format = from_format(from)?;
     let mut bytes = Vec::new();
     std::io::stdin()
         .lock()
         .read_to_end(&mut bytes)
         .context("standard input")?;
-    Ok(String::from_utf8_lossy(&bytes).into_owned())
-}
-
-/// Reads a pattern from standard input in the `--from` format (frame `fold_frame` of a FOLD
-/// file when given), validated as a file would be.
-pub fn load_stdin(
-    from: Option<&str>,
-    fold_frame: Option<usize>,
-    options: &formats::ReadOptions,
-) -> Result<Imported> {
-    let format = from_format(from)?;
-    let text = read_stdin_text()?;
-    let imported = match fold_frame {
-        Some(n) if n > 0 => {
-            if format != Format::Fold {
-                bail!("standard input: --fold-frame applies to FOLD input only");
-            }
-            formats::fold::read_frame_str(&text, n).map_err(|e| anyhow!("standard input: {e}"))?
-        }
-        _ => formats::parse_with(format, &text, options)
-            .map_err(|e| anyhow!("standard input: {e}"))?,
-    };
-    imported
-        .pattern
-        .validate()
-        .map_err(|e| anyhow!("standard input: {e}"))?;
-    Ok(imported)
+    Ok(formats::load_bytes(
+        Path::new("standard input"),
+        format,
+        &bytes,
+        options,
+    )?)
 }
 
 /// Installs a panic hook that exits with status 0 when printing to standard output failed

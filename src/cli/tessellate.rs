@@ -5,9 +5,7 @@ use std::path::PathBuf;
 use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::source::tess_design::{self, TessSettings};
-use foldcam::design::source::tessellate::{
-    MAX_ITERATIONS, TessellationOptions, solve_plan, tessellate_mesh,
-};
+use foldcam::design::source::tessellate::{TessellationOptions, solve_plan, tessellate_mesh};
 use foldcam::design::source::{
     DesignFile, DesignKind, SourceError, mesh_path_beside, read_design_file,
 };
@@ -146,12 +144,6 @@ pub struct Args {
 
 /// Runs `foldcam tessellate`.
 pub fn run(args: Args) -> Result<Outcome> {
-    if args
-        .max_iterations
-        .is_some_and(|n| n == 0 || n > MAX_ITERATIONS)
-    {
-        bail!("--max-iterations must be between 1 and {MAX_ITERATIONS}");
-    }
     let (mesh_path, from_file) = design_or_mesh(&args)?;
     let output = args.out.target()?;
     let png = super::outputs::optional(args.png.as_ref())?;
@@ -163,9 +155,9 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mesh = read_mesh(&mesh_path).map_err(|e| anyhow!("{}: {e}", mesh_path.display()))?;
     let mut options = TessellationOptions::default();
     if let Some(name) = &args.out.material {
-        let m = load_material(name)?;
-        options.max_fold_angle_deg = m.limits.max_fold_angle_deg;
-        options.min_vertex_angle_deg = m.limits.min_vertex_angle_deg;
+        load_material(name)?
+            .limits
+            .apply_to_tessellation(&mut options);
     }
     // The design file's options over the material's, the command line's over both.
     from_file.apply_to(&mut options);

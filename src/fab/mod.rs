@@ -20,6 +20,7 @@ pub(crate) mod order;
 pub(crate) mod perforation;
 pub(crate) mod placement;
 pub(crate) mod plan;
+pub(crate) mod settings;
 pub(crate) mod sides;
 pub(crate) mod stats;
 pub(crate) mod tabs;
@@ -35,6 +36,7 @@ pub use order::{order, ranks, travel_mm};
 pub use placement::{Placement, bed_to_machine, bounds_of, place};
 pub use plan::plan;
 pub use plan::{design_limit_warnings, plan_toolpaths};
+pub use settings::PlanSettings;
 pub use sides::{mirror, registration_marks, split};
 pub use warning::{PlanWarning, PlanWarningKind};
 

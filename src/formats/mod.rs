@@ -109,6 +109,19 @@ impl Imported {
         self.findings.iter().filter(|f| !f.is_warning())
     }
 
+    /// Refuses a pattern with no edges (nothing to check, draw or convert), naming `name`.
+    ///
+    /// # Errors
+    /// [`FormatError::Empty`].
+    pub fn require_edges(&self, name: &Path) -> Result<(), FormatError> {
+        if self.pattern.edges.is_empty() {
+            return Err(FormatError::Empty {
+                path: name.to_path_buf(),
+            });
+        }
+        Ok(())
+    }
+
     /// Whether a finding of `kind` was made.
     pub fn found(&self, kind: FindingKind) -> bool {
         self.findings.iter().any(|f| f.kind == kind)
@@ -209,6 +222,15 @@ pub enum FormatError {
         /// Where and what.
         source: ParseError,
     },
+    /// The pattern holds no edges.
+    #[error(
+        "{path}: the pattern holds no edges (and no faces to derive them from): nothing to \
+         check, draw or convert"
+    )]
+    Empty {
+        /// The file.
+        path: PathBuf,
+    },
     /// The content parses but describes an invalid pattern.
     #[error("{path}: {source}")]
     Pattern {
@@ -219,7 +241,11 @@ pub enum FormatError {
     },
 }
 
-fn format_of(path: &Path) -> Result<Format, FormatError> {
+/// The format of `path`, from its extension.
+///
+/// # Errors
+/// [`FormatError::UnknownFormat`] naming the file and the extensions read.
+pub fn format_of(path: &Path) -> Result<Format, FormatError> {
     Format::from_path(path).ok_or_else(|| FormatError::UnknownFormat {
         path: path.to_path_buf(),
         expected: Format::EXTENSIONS,
@@ -318,14 +344,21 @@ pub fn parse(format: Format, text: &str) -> Result<Imported, ParseError> {
     parse_with(format, text, &ReadOptions::default())
 }
 
-/// Parses text in the given format; `options` apply to drawings (SVG, DXF).
+/// Parses text in the given format: `options.frame` chooses a FOLD file's frame (other
+/// formats refuse a frame other than 0), the other options apply to drawings (SVG, DXF).
 pub fn parse_with(
     format: Format,
     text: &str,
     options: &ReadOptions,
 ) -> Result<Imported, ParseError> {
+    if options.frame > 0 && format != Format::Fold {
+        return Err(ParseError::new(
+            format!("frame {}", options.frame),
+            "only FOLD files hold frames (--fold-frame applies to FOLD input only)",
+        ));
+    }
     match format {
-        Format::Fold => fold::read_str(text),
+        Format::Fold => fold::read_frame_str(text, options.frame),
         Format::Svg => svg::read_str_with(text, options),
         Format::Cp => cp::read_str(text),
         Format::Dxf => dxf::read_str_with(text, options),
@@ -364,22 +397,47 @@ pub fn load(path: &Path) -> Result<Imported, FormatError> {
     load_with(path, &ReadOptions::default())
 }
 
-/// [`load`] with options for drawings (SVG, DXF).
+/// [`load`] with [`ReadOptions`]: a FOLD file's frame, options for drawings (SVG, DXF).
 pub fn load_with(path: &Path, options: &ReadOptions) -> Result<Imported, FormatError> {
     let format = format_of(path)?;
-    let text = match format {
-        Format::Dxf => dxf::read_text_lossy(path)?,
-        _ => read_text(path)?,
-    };
-    let imported = parse_with(format, &text, options).map_err(|source| FormatError::Parse {
-        path: path.to_path_buf(),
+    load_bytes(path, format, &read_bytes(path)?, options)
+}
+
+/// Reads a pattern in `format` from `bytes` already in memory (an upload, standard input),
+/// as [`load_with`] reads a file: the text decoded (DXF lossily, as older drawings are not
+/// UTF-8; the other formats as UTF-8), parsed with `options`, the pattern validated. `name`
+/// (a path, an upload's name, "standard input") names the input in every error.
+///
+/// # Errors
+/// [`FormatError::Parse`] (not UTF-8 text, or the format's reader refused it) or
+/// [`FormatError::Pattern`] (a broken invariant), naming `name`.
+pub fn load_bytes(
+    name: &Path,
+    format: Format,
+    bytes: &[u8],
+    options: &ReadOptions,
+) -> Result<Imported, FormatError> {
+    let parse_error = |source| FormatError::Parse {
+        path: name.to_path_buf(),
         source,
-    })?;
+    };
+    let text = match format {
+        Format::Dxf => String::from_utf8_lossy(bytes),
+        _ => std::str::from_utf8(bytes)
+            .map(std::borrow::Cow::Borrowed)
+            .map_err(|e| {
+                parse_error(ParseError::new(
+                    format!("byte {}", e.valid_up_to()),
+                    "file is not valid UTF-8 text",
+                ))
+            })?,
+    };
+    let imported = parse_with(format, &text, options).map_err(parse_error)?;
     imported
         .pattern
         .validate()
         .map_err(|source| FormatError::Pattern {
-            path: path.to_path_buf(),
+            path: name.to_path_buf(),
             source,
         })?;
     Ok(imported)

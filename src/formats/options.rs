@@ -77,9 +77,13 @@ impl fmt::Display for DashedAs {
     }
 }
 
-/// How drawings (SVG, DXF) are read.
+/// How a pattern file is read: the frame of a FOLD file, and how drawings (SVG, DXF) are
+/// read.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ReadOptions {
+    /// The frame of a FOLD file to read: 0 is the key frame, `i` is `file_frames[i - 1]`
+    /// (inheritance resolved). Other formats hold one frame and refuse any other.
+    pub frame: usize,
     /// Line ends closer than this to a vertex or line are joined to it, in millimetres (in
     /// drawing units for unitless drawings); `None` picks [`super::snap::SNAP_RELATIVE`] of
     /// the drawing's diagonal, `Some(0.0)` turns snapping off.

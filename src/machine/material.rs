@@ -12,6 +12,8 @@ use serde::Serialize;
 use super::MachineProfile;
 use super::Operation;
 use crate::check::CheckOptions;
+use crate::design::source::TessellationOptions;
+use crate::design::tessellation::Limits;
 use crate::limits::{BRIDGE, CLEARANCE, DASH, LimitError, MIN_DASH, MIN_WEB, show};
 use crate::pattern::Assignment;
 
@@ -230,6 +232,19 @@ impl DesignLimits {
     pub fn apply_to(&self, opts: &mut CheckOptions) {
         opts.min_vertex_angle_deg = Some(self.min_vertex_angle_deg);
         opts.max_fold_angle_deg = Some(self.max_fold_angle_deg);
+    }
+
+    /// Sets the limits a tessellation is solved within (Tachi 2014: largest fold angle,
+    /// smallest angle between creases) to these, as `foldcam tessellate --material` and the
+    /// studio's tessellation with a material do.
+    pub fn apply_to_tessellation(&self, opts: &mut TessellationOptions) {
+        opts.max_fold_angle_deg = self.max_fold_angle_deg;
+        opts.min_vertex_angle_deg = self.min_vertex_angle_deg;
+    }
+
+    /// The tessellation solver's limits with these angles.
+    pub fn tessellation_limits(&self) -> Limits {
+        Limits::from_degrees(self.max_fold_angle_deg, self.min_vertex_angle_deg)
     }
 }
 

@@ -64,9 +64,6 @@ pub const FOLD_FRAMES: usize = 40;
 /// Longest fold simulation the server runs for one request.
 pub const FOLD_TIME_LIMIT: Duration = Duration::from_secs(30);
 
-/// The layer solver's state cap, as `foldcam check --layers`'s default `--max-states`.
-pub const LAYER_MAX_STATES: u64 = 1_000_000;
-
 /// The server's state: its configuration and the open documents.
 pub struct Studio {
     config: StudioConfig,
@@ -569,7 +566,7 @@ async fn layers(
         };
         let mut report = check_with_frame(&c.pattern, c.folded.as_ref(), &check_options);
         let options = LayerOptions {
-            max_states: Some(LAYER_MAX_STATES),
+            max_states: Some(crate::check::layers::DEFAULT_MAX_STATES),
             kawasaki,
             time_limit: Some(std::time::Duration::from_secs(
                 crate::limits::STUDIO_LAYER_SECONDS,

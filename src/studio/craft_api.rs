@@ -427,15 +427,6 @@ struct NameQuery {
     with: Option<String>,
 }
 
-fn stem_of(name: &str) -> String {
-    let lower = name.to_ascii_lowercase();
-    let cut = [".craft.toml", ".toml", ".obj", ".stl"]
-        .iter()
-        .find(|e| lower.ends_with(*e))
-        .map_or(name.len(), |e| name.len() - e.len());
-    name[..cut].replace(' ', "-")
-}
-
 async fn from_mesh(
     State(crafts): State<Arc<Crafts>>,
     query: Result<Query<NameQuery>, QueryRejection>,
@@ -445,7 +436,12 @@ async fn from_mesh(
     let name = upload_name(&q.name);
     let body = upload_body(&name, body)?;
     start(crafts, move || {
-        Session::new(stem_of(&name), &name, body.to_vec(), None)
+        Session::new(
+            crate::design::source::file_stem(&name, "paper-craft"),
+            &name,
+            body.to_vec(),
+            None,
+        )
     })
     .await
 }
@@ -475,7 +471,12 @@ async fn from_design(
                 design.mesh
             ));
         };
-        Session::new(stem_of(&name), mesh_name, mesh.to_vec(), Some(text))
+        Session::new(
+            crate::design::source::file_stem(&name, "paper-craft"),
+            mesh_name,
+            mesh.to_vec(),
+            Some(text),
+        )
     })
     .await
 }

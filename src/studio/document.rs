@@ -1,7 +1,7 @@
 //! A pattern opened in the studio: read from an upload's bytes or a file named on the command
 //! line, and cleaned for each use exactly as the matching `foldcam` subcommand cleans it.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::OnceLock;
 
 use glam::DVec2;
@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use crate::check::AssignmentCounts;
 use crate::design::source::Design;
-use crate::formats::{self, Format, FormatError, Imported, ReadOptions};
+use crate::formats::{self, Imported, ReadOptions};
 use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions};
 
 /// A pattern the studio holds: the import as read (warnings and notes included), named as the
@@ -70,42 +70,9 @@ impl Document {
     /// # Errors
     /// The message `foldcam` prints for a file of that name and content.
     pub fn from_upload(name: &str, bytes: &[u8]) -> Result<Document, String> {
-        let path = PathBuf::from(name);
-        let format = Format::from_path(&path).ok_or_else(|| {
-            FormatError::UnknownFormat {
-                path: path.clone(),
-                expected: Format::EXTENSIONS,
-            }
-            .to_string()
-        })?;
-        let text = match format {
-            // The DXF reader takes any 8-bit text (older drawings are not UTF-8).
-            Format::Dxf => String::from_utf8_lossy(bytes).into_owned(),
-            _ => String::from_utf8(bytes.to_vec()).map_err(|e| {
-                FormatError::Parse {
-                    path: path.clone(),
-                    source: formats::ParseError::new(
-                        format!("byte {}", e.utf8_error().valid_up_to()),
-                        "file is not valid UTF-8 text",
-                    ),
-                }
-                .to_string()
-            })?,
-        };
-        let imported = formats::parse_with(format, &text, &ReadOptions::default())
-            .map_err(|source| FormatError::Parse {
-                path: path.clone(),
-                source,
-            })
-            .and_then(|i| {
-                i.pattern
-                    .validate()
-                    .map_err(|source| FormatError::Pattern {
-                        path: path.clone(),
-                        source,
-                    })
-                    .map(|()| i)
-            })
+        let path = Path::new(name);
+        let imported = formats::format_of(path)
+            .and_then(|format| formats::load_bytes(path, format, bytes, &ReadOptions::default()))
             .map_err(|e| e.to_string())?;
         Document::new(name.to_string(), imported)
     }
@@ -175,12 +142,9 @@ impl Document {
     }
 
     fn new(name: String, imported: Imported) -> Result<Document, String> {
-        if imported.pattern.edges.is_empty() {
-            return Err(format!(
-                "{name}: the pattern holds no edges (and no faces to derive them from): nothing \
-                 to check, draw or convert"
-            ));
-        }
+        imported
+            .require_edges(Path::new(&name))
+            .map_err(|e| e.to_string())?;
         Ok(Document {
             name,
             imported,

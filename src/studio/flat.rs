@@ -6,12 +6,8 @@
 use serde::Serialize;
 
 use super::document::Document;
-use crate::check::layers::{KawasakiTolerance, LayerOptions, LayerSolver, local_faults, refusal};
+use crate::check::layers::{DEFAULT_MAX_STATES, FlatFolding, KawasakiTolerance, LayerOptions};
 use crate::render::top_view::{cell_colour, deepest_layers};
-
-/// The layer solver's state cap per component, as `foldcam fold-flat`'s default
-/// `--max-states`.
-pub const MAX_STATES: u64 = 1_000_000;
 
 /// One cell as drawn.
 #[derive(Clone, Debug, Serialize)]
@@ -64,33 +60,19 @@ pub fn flat_view(
 ) -> Result<FlatView, String> {
     let name = &doc.name;
     let cp = doc.cleaned(true)?.pattern;
-    if let Some(f) = local_faults(&cp, kawasaki).first_refusal() {
-        return Err(format!("{name}: {}", refusal(f)));
-    }
     let options = LayerOptions {
-        max_states: Some(MAX_STATES),
+        max_states: Some(DEFAULT_MAX_STATES),
         kawasaki,
         time_limit: Some(std::time::Duration::from_secs(
             crate::limits::STUDIO_LAYER_SECONDS,
         )),
         ..LayerOptions::default()
     };
-    let solver = LayerSolver::new(&cp, &options).map_err(|e| format!("{name}: {e}"))?;
-    let report = solver.report();
-    if let Some(c) = &report.contradiction {
-        return Err(format!("{name}: {}", c.message));
-    }
-    let view = solver.top_view(u128::from(state)).ok_or_else(|| {
-        format!(
-            "{name}: there is no state {state} ({} state(s){})",
-            report.states,
-            if report.exact {
-                ""
-            } else {
-                ", counting stopped at the cap"
-            }
-        )
-    })?;
+    let folding = FlatFolding::new(&cp, &options).map_err(|e| format!("{name}: {e}"))?;
+    let report = folding.solver.report();
+    let view = folding
+        .top_view(u128::from(state))
+        .map_err(|e| format!("{name}: {e}"))?;
     let deepest = deepest_layers(&view);
     Ok(FlatView {
         states: report.states.clone(),

@@ -511,13 +511,7 @@ async fn forward(
 
 /// The file stem a session's downloads take.
 fn stem(s: &Session) -> String {
-    std::path::Path::new(&s.name)
-        .file_stem()
-        .map_or_else(
-            || "fold-sequence".into(),
-            |x| x.to_string_lossy().into_owned(),
-        )
-        .replace(' ', "-")
+    crate::design::source::file_stem(&s.name, "fold-sequence")
 }
 
 async fn script(State(folds): State<Arc<Folds>>, PathId(id): PathId) -> ApiResult<Response> {

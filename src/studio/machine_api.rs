@@ -16,8 +16,9 @@ use serde_json::{Value, json};
 use super::api::{
     ApiError, ApiResult, PathId, Studio, blocking, download, upload_body, upload_name,
 };
-use super::settings::{Kind, MAX_PROFILE_BYTES, PlanSettings};
+use super::settings::{Kind, MAX_PROFILE_BYTES};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
+use crate::fab::PlanSettings;
 use crate::job::{JOB_EXTENSIONS, JobFormat, check_gcode, job_file, job_file_name};
 use crate::machine::{ProfileKind, load_machine, profile_catalogue};
 
@@ -107,9 +108,7 @@ pub(super) async fn cut(
         let job = pick_job(&p.plan, q.job.as_deref())?;
         let bytes = job_file(kind, &p.plan, job, &p.machine)
             .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
-        let stem = std::path::Path::new(&doc.name)
-            .file_stem()
-            .map_or_else(|| "job".to_string(), |s| s.to_string_lossy().into_owned());
+        let stem = crate::design::source::file_stem(&doc.name, "job");
         let several = (p.plan.jobs.len() > 1).then_some(job.name.as_str());
         let file = job_file_name(&stem, &p.machine, &choice.material, several, kind);
         Ok(download("application/octet-stream", &file, bytes))

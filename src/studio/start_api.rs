@@ -29,7 +29,7 @@ use crate::check::fold3d::{FoldOptions, fold};
 use crate::design::classic::{
     BLANK_SHEET_MM, ClassicError, MiuraOri, SquareTwist, Waterbomb, Yoshimura, blank_sheet,
 };
-use crate::design::source::MeshUse;
+use crate::design::source::{MeshUse, file_stem};
 use crate::formats::{self, Format};
 use crate::limits::STUDIO_BLANK_SIDE;
 use crate::pattern::CreasePattern;
@@ -315,41 +315,6 @@ pub(super) struct SaveQuery {
     format: Option<String>,
 }
 
-/// The endings a document's name loses before a saved file's ending is put on.
-const NAME_ENDINGS: &[&str] = &[
-    ".craft.toml",
-    ".popup.toml",
-    ".tess.toml",
-    ".voxel.txt",
-    ".toml",
-    ".fold",
-    ".json",
-    ".svg",
-    ".cp",
-    ".opx",
-    ".dxf",
-    ".obj",
-    ".stl",
-    ".png",
-];
-
-/// The file name of `doc_name` (a path's last component) without its pattern or design
-/// ending: `examples/vase.craft.toml` → `vase`.
-pub fn saved_stem(doc_name: &str) -> String {
-    let file = doc_name.rsplit(['/', '\\']).next().unwrap_or_default();
-    let lower = file.to_ascii_lowercase();
-    let cut = NAME_ENDINGS
-        .iter()
-        .find(|e| lower.ends_with(*e) && lower.len() > e.len())
-        .map_or(file.len(), |e| file.len() - e.len());
-    let stem = &file[..cut];
-    if stem.is_empty() {
-        "pattern".to_string()
-    } else {
-        stem.to_string()
-    }
-}
-
 /// The bytes of `doc` saved as `what`: the cleaned pattern the page shows (with the folded
 /// state the file or design came with, for FOLD), or its folded form: that folded state, else
 /// the 3D fold simulation's settled form (as `foldcam fold3d` folds it, within the studio's
@@ -393,7 +358,7 @@ pub(super) async fn save(
     blocking(move || {
         let bytes = save_bytes(&doc, what).map_err(ApiError::input)?;
         let (ending, mime) = what.file();
-        let file = format!("{}{ending}", saved_stem(&doc.name));
+        let file = format!("{}{ending}", file_stem(&doc.name, "pattern"));
         Ok(download(mime, &file, bytes))
     })
     .await
@@ -402,16 +367,6 @@ pub(super) async fn save(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn saved_names_lose_the_pattern_and_design_endings() {
-        assert_eq!(saved_stem("examples/papercraft/vase.craft.toml"), "vase");
-        assert_eq!(saved_stem("C:\\work\\bird.CP"), "bird");
-        assert_eq!(saved_stem("house.voxel.txt"), "house");
-        assert_eq!(saved_stem("my.design.fold"), "my.design");
-        assert_eq!(saved_stem(".fold"), ".fold");
-        assert_eq!(saved_stem(""), "pattern");
-    }
 
     #[test]
     fn every_example_opens_as_the_command_makes_it() {

@@ -146,9 +146,7 @@ impl Solve {
     }
 
     fn stem(&self) -> String {
-        Path::new(&self.mesh.name)
-            .file_stem()
-            .map_or("tessellation".into(), |s| s.to_string_lossy().into_owned())
+        crate::design::source::file_stem(&self.mesh.name, "tessellation")
     }
 
     /// The outcome, or a 409 naming what the job is doing instead.
@@ -480,9 +478,10 @@ impl SolveRequest {
     fn options(&self) -> Result<TessellationOptions, String> {
         let mut o = TessellationOptions::default();
         if let Some(name) = &self.material {
-            let m = load_material(name).map_err(|e| e.to_string())?;
-            o.max_fold_angle_deg = m.limits.max_fold_angle_deg;
-            o.min_vertex_angle_deg = m.limits.min_vertex_angle_deg;
+            load_material(name)
+                .map_err(|e| e.to_string())?
+                .limits
+                .apply_to_tessellation(&mut o);
         }
         let tuck = by_name(
             &self.tuck,

@@ -5,7 +5,7 @@ use glam::DVec2;
 use serde::Serialize;
 
 use super::document::Document;
-use super::settings::PlanSettings;
+use crate::fab::PlanSettings;
 use crate::fab::{FabPlan, PlanStats};
 use crate::machine::{MachineProfile, Material};
 use crate::pattern::{CreasePattern, Scale};
@@ -46,7 +46,10 @@ pub struct Planned {
 pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, String> {
     let machine = choice.machine.clone();
     let material = &choice.material;
-    let mut options = choice.settings.options(&machine, material)?;
+    let mut options = choice
+        .settings
+        .options(&machine, material)
+        .map_err(|e| e.to_string())?;
     // A paper craft's edge numbers are marked as `foldcam papercraft --job` marks them.
     if choice.settings.flat.is_none() && doc.design.as_ref().is_some_and(|d| d.labels) {
         crate::fab::mark_labels(&mut options, &machine, material);

@@ -67,13 +67,10 @@ impl Session {
 
     /// The name of the saved file: the session's, ending in `.voxel.txt`.
     fn file_name(&self) -> String {
-        let stem = self
-            .name
-            .trim_end_matches(".voxel.txt")
-            .trim_end_matches(".png")
-            .trim_end_matches(".txt")
-            .replace(' ', "-");
-        format!("{}.voxel.txt", if stem.is_empty() { "card" } else { &stem })
+        format!(
+            "{}.voxel.txt",
+            crate::design::source::file_stem(&self.name, "card")
+        )
     }
 }
 

@@ -182,7 +182,7 @@ async fn the_paper_craft_job_downloaded_from_the_studio_is_the_clis() {
     .await;
     click(&c, "#dl-gcode").await;
     // Named as every job is: pattern, machine, material, extension.
-    let served = downloaded(downloads.path(), "vase.craft.grbl-diode.paper-160gsm.gcode").await;
+    let served = downloaded(downloads.path(), "vase.grbl-diode.paper-160gsm.gcode").await;
     assert!(
         served == cli,
         "the studio's job ({} bytes) differs from `foldcam papercraft --job`'s ({} bytes)",

@@ -309,6 +309,17 @@ fn cell_sizes_and_resolutions_out_of_range_are_refused() {
         d,
         &["--resolution", "from 4 to 4000 cells"],
     );
+    // A height map with a base of no depth: the library's option check, which the command
+    // reaches through the design source.
+    image::GrayImage::from_pixel(8, 8, image::Luma([128]))
+        .save(d.join("grey.png"))
+        .unwrap();
+    refused(
+        &["popup", "voxel", "grey.png", "-o", "g.fold", "--depth", "0"],
+        d,
+        &["--depth must be at least 1 cell"],
+    );
+    assert!(!d.join("g.fold").exists());
     // The library refuses the cell size too, whoever calls it.
     let e = foldcam::design::popup::voxel::VoxelCard::new(4, 4, 4, 1e-300).unwrap_err();
     assert!(e.to_string().contains("from 0.1 to 1000 mm"), "{e}");

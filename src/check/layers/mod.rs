@@ -25,6 +25,7 @@
 pub(crate) mod cells;
 pub(crate) mod constraints;
 mod decimal;
+pub(crate) mod flat;
 pub(crate) mod folded;
 pub(crate) mod rounding;
 pub(crate) mod search;
@@ -39,6 +40,7 @@ use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState, VertexId};
 pub use cells::arrange;
 use constraints::{Kind, Place, System};
 pub use decimal::BigCount;
+pub use flat::{DEFAULT_MAX_STATES, FlatFoldError, FlatFolding};
 use folded::FoldedFaces;
 pub use folded::fold_faces;
 pub use rounding::{

@@ -370,7 +370,6 @@ pub fn build_design(
         .ok_or_else(|| SourceError::Unrecognised(file.display()))?;
     match kind {
         DesignKind::VoxelText | DesignKind::HeightMap => {
-            options.voxel.validate()?;
             voxel::build(file, None, &options.voxel, progress).map(|d| d.into_design(kind))
         }
         DesignKind::Mesh => {
@@ -380,11 +379,8 @@ pub fn build_design(
                     tessellate::build(file, &mesh, &options.tessellation, progress)
                         .map(|d| d.into_design())
                 }
-                _ => {
-                    options.voxel.validate()?;
-                    voxel::build(file, Some(&mesh), &options.voxel, progress)
-                        .map(|d| d.into_design(kind))
-                }
+                _ => voxel::build(file, Some(&mesh), &options.voxel, progress)
+                    .map(|d| d.into_design(kind)),
             }
         }
         DesignKind::PopupPolygon => {
@@ -436,15 +432,34 @@ pub fn build_design(
 /// `dome`) or, for another name, without its last extension. Machine jobs name their source
 /// by it (the G-code header's `source:`).
 pub fn design_title(name: &Path) -> Option<String> {
-    let file = name.file_name()?.to_string_lossy().into_owned();
-    let lower = file.to_ascii_lowercase();
-    let stem = match DesignKind::EXTENSIONS.iter().find(|e| lower.ends_with(*e)) {
-        Some(e) => &file[..file.len() - e.len()],
-        None => file
-            .rsplit_once('.')
-            .map_or(file.as_str(), |(stem, _)| stem),
-    };
+    let name = name.to_string_lossy();
+    let stem = bare_stem(&name);
     (!stem.is_empty()).then(|| stem.to_string())
+}
+
+/// The stem of the files saved from a document, session or job named `name` (a path, an
+/// upload's name): [`design_title`]'s stem with spaces made dashes (`a/my vase.craft.toml`
+/// → `my-vase`), or `fallback` when nothing is left. Forward and back slashes both separate
+/// folders (a name can come from any browser's system).
+pub fn file_stem(name: &str, fallback: &str) -> String {
+    let stem = bare_stem(name).replace(' ', "-");
+    if stem.is_empty() {
+        fallback.to_string()
+    } else {
+        stem
+    }
+}
+
+/// The last component of `name` (after `/` or `\`) without a design ending or, for another
+/// name, its last extension; the component whole when that would leave nothing (`.fold`).
+fn bare_stem(name: &str) -> &str {
+    let file = name.rsplit(['/', '\\']).next().unwrap_or_default();
+    let lower = file.to_ascii_lowercase();
+    let cut = match DesignKind::EXTENSIONS.iter().find(|e| lower.ends_with(*e)) {
+        Some(e) => file.len() - e.len(),
+        None => file.rfind('.').unwrap_or(file.len()),
+    };
+    if cut == 0 { file } else { &file[..cut] }
 }
 
 /// Gives `pattern` the title of the design file `name` unless it has one.
@@ -463,4 +478,29 @@ pub fn mesh_file_name(mesh: &Path) -> Option<std::ffi::OsString> {
 /// folder, as `foldcam papercraft` reads it.
 pub fn mesh_path_beside(design: &Path, mesh: &Path) -> PathBuf {
     design.parent().unwrap_or(Path::new(".")).join(mesh)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn saved_names_lose_the_pattern_and_design_endings() {
+        assert_eq!(
+            file_stem("examples/papercraft/vase.craft.toml", "x"),
+            "vase"
+        );
+        assert_eq!(file_stem("C:\\work\\bird.CP", "x"), "bird");
+        assert_eq!(file_stem("house.voxel.txt", "x"), "house");
+        assert_eq!(file_stem("my.design.fold", "x"), "my.design");
+        assert_eq!(file_stem("a/my vase.OBJ", "x"), "my-vase");
+        assert_eq!(file_stem(".fold", "x"), ".fold");
+        assert_eq!(file_stem("", "pattern"), "pattern");
+        assert_eq!(file_stem("dir/", "pattern"), "pattern");
+        assert_eq!(
+            design_title(Path::new("scan.v2.OBJ")).as_deref(),
+            Some("scan.v2")
+        );
+        assert_eq!(design_title(Path::new("")), None);
+    }
 }

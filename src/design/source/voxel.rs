@@ -145,6 +145,7 @@ pub fn load_card(
     options: &VoxelOptions,
     progress: &mut dyn Progress,
 ) -> Result<VoxelCard, SourceError> {
+    options.validate()?;
     let at = |e: &dyn std::fmt::Display| SourceError::input(file.name, e);
     let is_png = file
         .name

@@ -22,13 +22,12 @@ pub(crate) mod assign;
 pub(crate) mod curves;
 
 use std::collections::{BTreeMap, HashMap};
-use std::path::Path;
 
 use dxf::entities::{Entity, EntityType};
 use dxf::enums::Units as DxfUnits;
 use glam::{DAffine2, DVec2};
 
-use super::{Finding, FindingKind, FormatError, Imported, ParseError, ReadOptions, snap};
+use super::{Finding, FindingKind, Imported, ParseError, ReadOptions, snap};
 use crate::geom::tolerance::RELATIVE;
 use crate::pattern::{Assignment, CreasePattern, MAX_COORDINATE, Units};
 
@@ -48,13 +47,6 @@ pub use crate::limits::MAX_BLOCK_COPIES;
 
 /// Most edges read from one file.
 pub const MAX_SEGMENTS: usize = super::svg::MAX_SEGMENTS;
-
-/// Reads a DXF file's bytes as text (other code pages than UTF-8 only touch names and text,
-/// which are replaced character by character), refusing files over [`super::MAX_INPUT_BYTES`].
-pub fn read_text_lossy(path: &Path) -> Result<String, FormatError> {
-    let bytes = super::read_bytes(path)?;
-    Ok(String::from_utf8_lossy(&bytes).into_owned())
-}
 
 /// Parses a DXF drawing with default options.
 pub fn read_str(text: &str) -> Result<Imported, ParseError> {
