@@ -6,7 +6,7 @@ use anyhow::{Context, Result, bail};
 use foldcam::fab::{FabPlan, Operation};
 use foldcam::formats::OutputSet;
 use foldcam::job::{
-    JOB_EXTENSIONS, Job, JobFormat, WriterChoices, check_gcode, job_file, job_paths,
+    JOB_EXTENSIONS, Job, JobFormat, WriterChoices, check_gcode, job_files, job_paths,
 };
 use foldcam::machine::MachineProfile;
 
@@ -209,9 +209,8 @@ pub fn stage_plan(
              solid lines; without --dasharray every dash is a path of its own"
         );
     }
-    for (job, path) in p.jobs.iter().zip(job_paths(output, p)) {
-        let bytes =
-            job_file(format, p, job, machine).with_context(|| path.display().to_string())?;
+    let files = job_files(format, p, machine).with_context(|| output.display().to_string())?;
+    for (path, bytes) in job_paths(output, p).into_iter().zip(files) {
         outputs.add(path, bytes);
     }
     Ok(())

@@ -138,15 +138,13 @@ impl<'a> Job<'a> {
         })
     }
 
-    /// Renders every job of the plan in `format`; nothing is kept unless all render.
+    /// Renders every job of the plan in `format` ([`job_files`]: G-code read back by the
+    /// simulated machine first); nothing is kept unless all render.
+    ///
+    /// # Errors
+    /// The writer's refusal, or for G-code the simulated machine's.
     pub fn post(mut self, format: JobFormat) -> Result<Job<'a>, JobError> {
-        let outputs = self
-            .plan
-            .jobs
-            .iter()
-            .map(|job| render(format, &self.plan, job, self.machine))
-            .collect::<Result<Vec<_>, _>>()?;
-        self.outputs = outputs;
+        self.outputs = job_files(format, &self.plan, self.machine)?;
         self.format = Some(format);
         Ok(self)
     }
@@ -215,6 +213,22 @@ pub fn job_file(
         check_gcode(&String::from_utf8_lossy(&bytes), machine)?;
     }
     Ok(bytes)
+}
+
+/// Every job of `plan` as a file in `format` ([`job_file`]), in the plan's order (the files
+/// [`job_paths`] names); nothing unless every one renders and reads back.
+///
+/// # Errors
+/// The first job's refusal, as [`job_file`].
+pub fn job_files(
+    format: JobFormat,
+    plan: &FabPlan,
+    machine: &MachineProfile,
+) -> Result<Vec<Vec<u8>>, JobError> {
+    plan.jobs
+        .iter()
+        .map(|job| job_file(format, plan, job, machine))
+        .collect()
 }
 
 /// Runs G-code `text` on the simulated `machine` and returns its report.

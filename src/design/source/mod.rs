@@ -390,35 +390,13 @@ pub fn build_design(
         DesignKind::PaperCraft => {
             let parsed = craft::parse(file)?;
             let mesh_name = parsed.mesh_name();
-            let wanted = mesh_file_name(&mesh_name);
-            let mesh_file = companions
-                .iter()
-                .find(|c| {
-                    c.name
-                        .file_name()
-                        .is_some_and(|n| Some(n) == wanted.as_deref())
-                })
-                .ok_or_else(|| SourceError::MissingMesh {
-                    design: file.display(),
-                    mesh: mesh_name.display().to_string(),
-                })?;
+            let mesh_file = companion_mesh(file, companions, &mesh_name)?;
             let mesh = mesh_file.mesh()?;
             craft::build(parsed, mesh_file.name, &mesh, progress)?.into_design(file.name)
         }
         DesignKind::Tessellation => {
             let design = tess_design::parse(file)?;
-            let wanted = mesh_file_name(&design.mesh);
-            let mesh_file = companions
-                .iter()
-                .find(|c| {
-                    c.name
-                        .file_name()
-                        .is_some_and(|n| Some(n) == wanted.as_deref())
-                })
-                .ok_or_else(|| SourceError::MissingMesh {
-                    design: file.display(),
-                    mesh: design.mesh.display().to_string(),
-                })?;
+            let mesh_file = companion_mesh(file, companions, &design.mesh)?;
             let mesh = mesh_file.mesh()?;
             let mut opts = options.tessellation;
             design.settings.apply_to(&mut opts);
@@ -467,6 +445,30 @@ pub(crate) fn title_from(pattern: &mut CreasePattern, name: &Path) {
     if pattern.meta.title.is_none() {
         pattern.meta.title = design_title(name);
     }
+}
+
+/// The companion of `design` that is the mesh file it names (`mesh`, matched by its last
+/// component: an upload or a file beside the design).
+///
+/// # Errors
+/// [`SourceError::MissingMesh`] naming the design and the mesh.
+fn companion_mesh<'c, 'f>(
+    design: &DesignFile<'_>,
+    companions: &'c [DesignFile<'f>],
+    mesh: &Path,
+) -> Result<&'c DesignFile<'f>, SourceError> {
+    let wanted = mesh_file_name(mesh);
+    companions
+        .iter()
+        .find(|c| {
+            c.name
+                .file_name()
+                .is_some_and(|n| Some(n) == wanted.as_deref())
+        })
+        .ok_or_else(|| SourceError::MissingMesh {
+            design: design.display(),
+            mesh: mesh.display().to_string(),
+        })
 }
 
 /// The last component of a mesh path a design names (what an upload of it is called).
