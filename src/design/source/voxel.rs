@@ -259,8 +259,8 @@ fn conversion_notes(r: &ConvertReport, progress: &mut dyn Progress) {
         r.added_cells, r.filled_rows, r.window_rows, r.window_candidates, r.constraint_time
     ));
     progress.note(format!(
-        "{} of {} thin top faces left out; {} pop-up checks; {:.1?}",
-        r.tops_omitted, r.thin_tops, r.checks, r.thin_top_time
+        "{} of {} thin top faces left out; {} pop-up checks ({} over the whole card); {:.1?}",
+        r.tops_omitted, r.thin_tops, r.checks, r.full_checks, r.thin_top_time
     ));
 }
 

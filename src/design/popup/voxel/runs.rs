@@ -24,6 +24,7 @@
 use super::VoxelCard;
 use super::check::{FrontCellProblem, PopupProblem};
 use super::surface::{Line, Plane, line_between, slice_planes};
+use crate::geom::DisjointSets;
 
 /// Rows `lo..=hi` of one column on one plane; `below` is the line under row `lo`.
 #[derive(Clone, Copy, Debug)]
@@ -90,6 +91,7 @@ impl ColumnRuns {
 
     /// True when every vertical cell the check covers (front cells and detached back-sheet
     /// cells, see the module docs) is reached by both floods.
+    #[cfg(test)]
     pub(super) fn passes(&self) -> bool {
         let graph = Graph::new(&self.columns);
         let (from_back, from_base) = (
@@ -100,6 +102,193 @@ impl ColumnRuns {
             let run = graph.runs[id];
             from_back[id] >= run.hi as i64 && from_base[id] <= run.lo as i64
         })
+    }
+
+    /// `None` when the check fails (see [`ColumnRuns::passes`]), else the number of loose
+    /// pieces of the card (see [`ColumnRuns::loose_pieces`]); one graph serves both.
+    pub(super) fn loose_if_passes(&self) -> Option<usize> {
+        let graph = Graph::new(&self.columns);
+        let (from_back, from_base) = (
+            graph.flood_from_back(self.rows),
+            graph.flood_from_base(self.rows),
+        );
+        let passes = graph.checked_runs(self.ny, self.margin).all(|(id, _)| {
+            let run = graph.runs[id];
+            from_back[id] >= run.hi as i64 && from_base[id] <= run.lo as i64
+        });
+        passes.then(|| graph.loose_pieces(self.ny, self.margin))
+    }
+
+    /// The pieces of the card cut free on every side: the regions of the pattern joined by no
+    /// crease or flat line to the largest one. This is the count
+    /// [`crate::design::popup::integrity::loose_pieces`] gives on the card's crease pattern,
+    /// taken on the runs: within a column two runs are joined unless a cut lies between them
+    /// (Table 1), runs of neighbouring columns on one plane over shared rows are joined by a
+    /// flat line, and a margin is one piece of paper joined to every run beside it on its
+    /// plane.
+    pub(super) fn loose_pieces(&self) -> usize {
+        Graph::new(&self.columns).loose_pieces(self.ny, self.margin)
+    }
+
+    /// True when some vertical run of columns `x0..=x1` that the check surely covers (a front
+    /// run, or a back-sheet run with no flat line to any other run and away from the top edge
+    /// and the margin) has no line over which flood (a) could reach its top row, or none over
+    /// which flood (b) could reach its bottom row. Only the runs of those columns and of their
+    /// neighbours are read, and true means the check fails: a quick refusal for the searches.
+    /// False says nothing.
+    pub(super) fn fails_locally(&self, x0: usize, x1: usize) -> bool {
+        let columns = &self.columns;
+        let last = columns.len().saturating_sub(1);
+        let top = self.rows as u32 - 1;
+        for x in x0..=x1.min(last) {
+            let column = &columns[x];
+            // A run of a neighbouring column on `run`'s plane over one of rows `lo..=hi`.
+            let beside = |run: &Run, lo: u32, hi: u32| {
+                let near = [x.checked_sub(1), (x < last).then_some(x + 1)];
+                near.into_iter().flatten().any(|n| {
+                    columns[n]
+                        .iter()
+                        .any(|u| u.plane == run.plane && u.lo <= hi && lo <= u.hi)
+                })
+            };
+            for (i, run) in column.iter().enumerate() {
+                let checked = match run.plane {
+                    Plane::Horizontal(_) => false,
+                    Plane::Vertical(0) => {
+                        let edge = self.margin && (x == 0 || x == last);
+                        let seed = run.hi == top || (edge && run.hi as usize >= self.ny);
+                        let linked = beside(run, run.lo, run.hi);
+                        !seed && !linked
+                    }
+                    Plane::Vertical(_) => true,
+                };
+                if !checked {
+                    continue;
+                }
+                let from_back = (x == 0 && i + 1 == column.len())
+                    || column.get(i + 1).is_some_and(|up| up.below != Line::Cut)
+                    || beside(run, run.hi, run.hi);
+                let from_base = (x == 0 && i == 0)
+                    || (i > 0 && run.below != Line::Cut)
+                    || beside(run, run.lo, run.lo);
+                if !(from_back && from_base) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// True when the edit that changed columns `before` (each column's planes before it, row
+    /// by row; `self` holds the card after it) surely leaves the card with more loose pieces
+    /// (see [`ColumnRuns::loose_pieces`]) than before: every cell the edit moved to another
+    /// plane now lies in a region of moved cells joined to no other cell, and before the edit
+    /// every such region was joined to some unmoved cell. Then the regions of the card without
+    /// the moved cells gained at most the old moved cells back as joins, and now gain at least
+    /// one region of their own. Only the cells around the moved ones are read; false says
+    /// nothing (also when more than a few hundred cells moved).
+    pub(super) fn adds_loose_piece(&self, before: &[(usize, Vec<Plane>)]) -> bool {
+        const MOST: usize = 512;
+        let mut moved: Vec<(i64, i64)> = Vec::new();
+        for (x, old) in before {
+            let Some(column) = self.columns.get(*x) else {
+                return false;
+            };
+            for run in column {
+                for r in run.lo..=run.hi {
+                    if old.get(r as usize) != Some(&run.plane) {
+                        moved.push((*x as i64, r as i64));
+                    }
+                }
+            }
+            if moved.len() > MOST {
+                return false;
+            }
+        }
+        if moved.is_empty() {
+            return false;
+        }
+        moved.sort_unstable();
+        moved.dedup();
+        let after = |x: i64, r: i64| self.plane_at(x, r);
+        let old = |x: i64, r: i64| match before.iter().find(|(bx, _)| *bx as i64 == x) {
+            Some((_, planes)) if (0..self.rows as i64).contains(&r) => {
+                planes.get(r as usize).copied()
+            }
+            _ => self.plane_at(x, r),
+        };
+        // Per region of moved cells: whether it is joined to an unmoved cell.
+        let held_now = self.moved_regions(&moved, &after);
+        let held_before = self.moved_regions(&moved, &old);
+        held_now.iter().all(|&held| !held) && held_before.iter().all(|&held| held)
+    }
+
+    /// The plane of pattern cell (x, r) on the card as it stands, the margin's outside the
+    /// cells when there is one; `None` beyond the sheet.
+    fn plane_at(&self, x: i64, r: i64) -> Option<Plane> {
+        let (nx, rows) = (self.columns.len() as i64, self.rows as i64);
+        if (0..nx).contains(&x) && (0..rows).contains(&r) {
+            let column = &self.columns[x as usize];
+            let i = column.partition_point(|run| (run.hi as i64) < r);
+            return column.get(i).map(|run| run.plane);
+        }
+        let in_margin = (-1..=nx).contains(&x) && (-1..=rows).contains(&r);
+        let plane = if r >= self.ny as i64 {
+            Plane::Vertical(0)
+        } else {
+            Plane::Horizontal(0)
+        };
+        (self.margin && in_margin).then_some(plane)
+    }
+
+    /// The regions that the cells `moved` (sorted) form on the planes `plane` gives, joined
+    /// across lines that are not cuts (Table 1); per region, whether it is joined to a cell
+    /// not in `moved`.
+    fn moved_regions(
+        &self,
+        moved: &[(i64, i64)],
+        plane: &dyn Fn(i64, i64) -> Option<Plane>,
+    ) -> Vec<bool> {
+        let ny = self.ny as i64;
+        let joined = |(x, r): (i64, i64), (ox, or): (i64, i64)| -> bool {
+            let (Some(a), Some(b)) = (plane(x, r), plane(ox, or)) else {
+                return false;
+            };
+            if x == ox {
+                let (upper, lower, row) = if or < r { (a, b, r) } else { (b, a, or) };
+                line_between(upper, lower, row - ny) != Line::Cut
+            } else {
+                a == b
+            }
+        };
+        let mut region = vec![usize::MAX; moved.len()];
+        let mut held = Vec::new();
+        for first in 0..moved.len() {
+            if region[first] != usize::MAX {
+                continue;
+            }
+            let id = held.len();
+            held.push(false);
+            region[first] = id;
+            let mut stack = vec![first];
+            while let Some(i) = stack.pop() {
+                let (x, r) = moved[i];
+                for next in [(x, r + 1), (x, r - 1), (x - 1, r), (x + 1, r)] {
+                    if !joined((x, r), next) {
+                        continue;
+                    }
+                    match moved.binary_search(&next) {
+                        Ok(j) if region[j] == usize::MAX => {
+                            region[j] = id;
+                            stack.push(j);
+                        }
+                        Ok(_) => {}
+                        Err(_) => held[id] = true,
+                    }
+                }
+            }
+        }
+        held
     }
 
     /// The failing vertical cells (front cells and detached back-sheet cells), by column then
@@ -242,6 +431,67 @@ impl Graph {
             }
         }
         proper
+    }
+
+    /// See [`ColumnRuns::loose_pieces`]: the connected regions of runs (and the margin, when
+    /// there is one), less the one card.
+    fn loose_pieces(&self, ny: usize, margin: bool) -> usize {
+        let n = self.runs.len();
+        let columns = self.start.len() - 1;
+        let rows = self
+            .runs
+            .iter()
+            .map(|r| r.hi as usize + 1)
+            .max()
+            .unwrap_or(0);
+        let mut sets = DisjointSets::new(n + usize::from(margin));
+        let mut regions = n + usize::from(margin);
+        for x in 0..columns {
+            for id in self.start[x] + 1..self.start[x + 1] {
+                if self.runs[id].below != Line::Cut && sets.union(id, id - 1) {
+                    regions -= 1;
+                }
+            }
+        }
+        for id in 0..n {
+            for &(other, _, _) in self.links(id) {
+                if sets.union(id, other as usize) {
+                    regions -= 1;
+                }
+            }
+        }
+        if margin {
+            let ny = ny as i64;
+            // Margin cells lie on the back sheet above the fold (rows ny..) and on the base
+            // below it; they form one ring of paper.
+            let margin_plane = |r: i64| {
+                if r >= ny {
+                    Plane::Vertical(0)
+                } else {
+                    Plane::Horizontal(0)
+                }
+            };
+            for x in 0..columns {
+                for id in self.start[x]..self.start[x + 1] {
+                    let run = self.runs[id];
+                    let on_margin_plane = match run.plane {
+                        Plane::Vertical(0) => run.hi as i64 >= ny,
+                        Plane::Horizontal(0) => (run.lo as i64) < ny,
+                        _ => false,
+                    };
+                    let side = (x == 0 || x + 1 == columns) && on_margin_plane;
+                    let below =
+                        run.lo == 0 && line_between(run.plane, margin_plane(-1), -ny) != Line::Cut;
+                    let above = run.hi as usize + 1 == rows
+                        && line_between(margin_plane(rows as i64), run.plane, rows as i64 - ny)
+                            != Line::Cut;
+                    if (side || below || above) && sets.union(id, n) {
+                        regions -= 1;
+                    }
+                }
+            }
+        }
+        regions.saturating_sub(1)
     }
 
     /// Flood (a) from the top-left cell: per run, the highest row reached (−1: none). Runs

@@ -117,8 +117,11 @@ pub struct ConvertReport {
     pub tops_omitted: usize,
     /// Thin top faces tried.
     pub thin_tops: usize,
-    /// Pop-up checks run by the two searches.
+    /// Pop-up checks run by the two searches: candidates and groups of candidates tried.
     pub checks: usize,
+    /// Of those, the checks that flooded the whole card; the others were refused on the
+    /// edited columns and their neighbours alone.
+    pub full_checks: usize,
     /// Time of the bump removal.
     pub smoothing_time: Duration,
     /// Time of eq. 7 and the window search.
@@ -135,6 +138,16 @@ pub fn card_from_depths(
     field: &DepthField,
     cell_mm: f64,
     options: &ConvertOptions,
+) -> Result<(VoxelCard, ConvertReport), VoxelError> {
+    convert(field, cell_mm, options, search::Verify::Runs)
+}
+
+/// [`card_from_depths`] with the searches' tries judged by `verify`.
+fn convert(
+    field: &DepthField,
+    cell_mm: f64,
+    options: &ConvertOptions,
+    verify: search::Verify,
 ) -> Result<(VoxelCard, ConvertReport), VoxelError> {
     let (nx, ny, nz) = (field.nx, field.ny, field.nz);
     let mut card = VoxelCard::new(nx, ny, nz, cell_mm)?;
@@ -201,7 +214,7 @@ pub fn card_from_depths(
             above = d;
         }
     }
-    let mut search = search::Search::new(&mut card);
+    let mut search = search::Search::new(&mut card, verify);
     if options.windows {
         report.window_rows = search.windows(&filled);
     }
@@ -212,6 +225,7 @@ pub fn card_from_depths(
         (report.tops_omitted, report.thin_tops) = search.thin_tops(options.thin_top);
     }
     report.checks = search.checks();
+    report.full_checks = search.full_checks();
     report.thin_top_time = start.elapsed();
     Ok((card, report))
 }

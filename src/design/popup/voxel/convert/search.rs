@@ -3,23 +3,49 @@
 //! holds together: it may not add a piece cut free on every side
 //! ([`crate::design::popup::integrity::loose_pieces`], counted on the card's crease pattern).
 //! A thin top whose removal would cut a strip loose is kept instead.
+//!
+//! # Cost
+//! A try first looks at the runs of the edited columns and their neighbours
+//! ([`ColumnRuns::fails_locally`]): a vertical face that no line beside it can let a flood
+//! into fails the check, whatever the rest of the card, so most refused candidates cost a few
+//! columns. The others get both floods over the card's runs, and, when those pass, the loose
+//! pieces counted on the same runs ([`ColumnRuns::loose_pieces`]) instead of on a crease
+//! pattern built and planarised per try. Both give the verdicts of the plain check exactly;
+//! the unit tests compare the two searches (`Verify::Reference` keeps the plain one).
 
 use std::collections::VecDeque;
 
 use super::super::VoxelCard;
 use super::super::runs::ColumnRuns;
+use super::super::surface::{Plane, slice_planes};
 
 /// A card under edit with its pop-up check kept up to date column by column.
 pub(super) struct Search<'a> {
     card: &'a mut VoxelCard,
     runs: ColumnRuns,
     checks: usize,
+    /// Tries that needed the floods over the whole card.
+    full_checks: usize,
     /// Loose pieces of the card as it stands (edits may not add any).
     loose: usize,
+    verify: Verify,
 }
 
-/// Pieces of `card` cut free on every side; a card whose pattern cannot be built counts as
-/// falling apart.
+/// How a try is judged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Verify {
+    /// The local refusal, then the floods and the loose pieces on the runs (see the module
+    /// docs).
+    Runs,
+    /// The plain check: both floods, then the loose pieces counted on the card's planarised
+    /// crease pattern, on every try. The reference the tests hold [`Verify::Runs`] to.
+    #[cfg(test)]
+    Reference,
+}
+
+/// Pieces of `card` cut free on every side, counted on its crease pattern; a card whose
+/// pattern cannot be built counts as falling apart.
+#[cfg(test)]
 fn loose_count(card: &VoxelCard) -> usize {
     crate::design::popup::voxel::crease_pattern(card).map_or(usize::MAX, |cp| {
         crate::design::popup::integrity::loose_pieces(&cp).len()
@@ -36,20 +62,32 @@ struct Block {
 }
 
 impl<'a> Search<'a> {
-    pub(super) fn new(card: &'a mut VoxelCard) -> Self {
+    pub(super) fn new(card: &'a mut VoxelCard, verify: Verify) -> Self {
         let runs = ColumnRuns::new(card);
-        let loose = loose_count(card);
+        let loose = match verify {
+            Verify::Runs => runs.loose_pieces(),
+            #[cfg(test)]
+            Verify::Reference => loose_count(card),
+        };
         Search {
             card,
             runs,
             checks: 0,
+            full_checks: 0,
             loose,
+            verify,
         }
     }
 
-    /// Pop-up checks run so far.
+    /// Pop-up checks run so far (candidates and groups of candidates tried).
     pub(super) fn checks(&self) -> usize {
         self.checks
+    }
+
+    /// Of those, the checks that needed the floods over the whole card (the others were
+    /// refused on the edited columns alone).
+    pub(super) fn full_checks(&self) -> usize {
+        self.full_checks
     }
 
     /// §3.2 c): windows on the rows eq. 7 filled (`filled[x * nz + z]`), highest first, kept
@@ -154,21 +192,56 @@ impl<'a> Search<'a> {
 
     /// Applies `edits`; keeps them if the card pops up, else undoes them.
     fn try_edits(&mut self, edits: &[Edit]) -> bool {
+        let mut before: Vec<(usize, Vec<Plane>)> = Vec::new();
+        if self.verify == Verify::Runs {
+            for e in edits {
+                for x in e.block.x0..=e.block.x1 {
+                    if before.iter().all(|(bx, _)| *bx != x) {
+                        let mut planes = vec![Plane::Vertical(0); self.card.ny() + self.card.nz()];
+                        slice_planes(self.card, x, &mut planes);
+                        before.push((x, planes));
+                    }
+                }
+            }
+        }
         for e in edits {
             self.set(e, true);
         }
         self.checks += 1;
-        if self.runs.passes() {
-            let loose = loose_count(self.card);
-            if loose <= self.loose {
-                self.loose = loose;
-                return true;
-            }
+        if let Some(loose) = self.loose_if_passes(edits, &before)
+            && loose <= self.loose
+        {
+            self.loose = loose;
+            return true;
         }
         for e in edits {
             self.set(e, false);
         }
         false
+    }
+
+    /// With `edits` applied: `None` when the card fails the pop-up check, else its loose
+    /// pieces.
+    /// `before`: the planes of the edited columns before the edits.
+    fn loose_if_passes(&mut self, edits: &[Edit], before: &[(usize, Vec<Plane>)]) -> Option<usize> {
+        match self.verify {
+            Verify::Runs => {
+                let refused = edits.iter().any(|e| {
+                    let b = e.block;
+                    self.runs.fails_locally(b.x0.saturating_sub(1), b.x1 + 1)
+                });
+                if refused || self.runs.adds_loose_piece(before) {
+                    return None;
+                }
+                self.full_checks += 1;
+                self.runs.loose_if_passes()
+            }
+            #[cfg(test)]
+            Verify::Reference => {
+                self.full_checks += 1;
+                self.runs.passes().then(|| loose_count(self.card))
+            }
+        }
     }
 
     fn set(&mut self, e: &Edit, on: bool) {
@@ -225,4 +298,164 @@ fn merge_along_x<T, K: PartialEq + Ord + Copy>(
         }
     }
     blocks.into_iter().map(|(_, b)| b).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{ConvertOptions, DepthField, convert};
+    use super::*;
+
+    /// A fixed linear congruential sequence.
+    struct Lcg(u64);
+
+    impl Lcg {
+        fn below(&mut self, n: usize) -> usize {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((self.0 >> 33) % n as u64) as usize
+        }
+    }
+
+    /// A small bumpy field with overhangs, gaps and thin steps: per column a random walk of
+    /// depth, sometimes dropping to nothing, next columns drifting from the last.
+    fn bumpy(seed: u64) -> DepthField {
+        let mut rng = Lcg(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
+        let (nx, ny, nz) = (4 + rng.below(10), 3 + rng.below(6), 4 + rng.below(10));
+        let mut depths = vec![0u16; nx * nz];
+        let mut previous = vec![0usize; nz];
+        for x in 0..nx {
+            let mut d = rng.below(ny);
+            for z in 0..nz {
+                match rng.below(6) {
+                    0 => d = 0,
+                    1 => d = rng.below(ny + 1),
+                    2 => d = previous[z],
+                    3 => d = (d + 1).min(ny),
+                    4 => d = d.saturating_sub(1),
+                    _ => {}
+                }
+                depths[x * nz + z] = d as u16;
+                previous[z] = d;
+            }
+        }
+        DepthField { nx, ny, nz, depths }
+    }
+
+    fn options(seed: u64) -> ConvertOptions {
+        ConvertOptions {
+            element: if seed.is_multiple_of(5) { 3 } else { 1 },
+            windows: !seed.is_multiple_of(7),
+            window_gap: [0.0, 0.25, 0.5][seed as usize % 3],
+            thin_top: 1 + seed as usize % 3,
+        }
+    }
+
+    #[test]
+    fn the_search_on_runs_keeps_what_the_plain_search_keeps() {
+        let (mut windows, mut tops, mut refused) = (0, 0, 0);
+        for seed in 0..400 {
+            let (field, opts) = (bumpy(seed), options(seed));
+            let (fast, a) = convert(&field, 1.0, &opts, Verify::Runs).unwrap();
+            let (plain, b) = convert(&field, 1.0, &opts, Verify::Reference).unwrap();
+            assert_eq!(fast, plain, "seed {seed}: {field:?} {opts:?}");
+            assert_eq!(
+                (a.window_rows, a.tops_omitted, a.thin_tops, a.checks),
+                (b.window_rows, b.tops_omitted, b.thin_tops, b.checks),
+                "seed {seed}"
+            );
+            assert_eq!(b.full_checks, b.checks);
+            windows += a.window_rows;
+            tops += a.tops_omitted;
+            refused += (a.window_candidates - a.window_rows) + (a.thin_tops - a.tops_omitted);
+        }
+        // The cards exercise both searches, with keeps and refusals.
+        assert!(
+            windows > 100 && tops > 100 && refused > 100,
+            "{windows} {tops} {refused}"
+        );
+    }
+
+    /// A random card with random windows and left-out tops (most do not pop up).
+    fn edited(seed: u64) -> VoxelCard {
+        let field = bumpy(seed);
+        let (nx, nz) = (field.nx, field.nz);
+        let mut card = VoxelCard::new(nx, field.ny, nz, 1.0).unwrap();
+        let mut rng = Lcg(seed ^ 0x5555);
+        for x in 0..nx {
+            let mut d = 0;
+            for z in (0..nz).rev() {
+                d = d.max(field.depth(x, z));
+                card.set_depth_unchecked_order(x, z, d);
+            }
+            for z in 0..nz {
+                card.set_hole(x, z, rng.below(5) == 0).unwrap();
+                card.set_top_omitted(x, z, rng.below(4) == 0).unwrap();
+            }
+        }
+        if seed % 2 == 1 {
+            card.set_margin_mm(2.0).unwrap();
+        }
+        card
+    }
+
+    #[test]
+    fn loose_pieces_on_runs_are_those_of_the_crease_pattern() {
+        let mut loose = 0;
+        for seed in 0..400 {
+            let card = edited(seed);
+            let on_runs = ColumnRuns::new(&card).loose_pieces();
+            assert_eq!(on_runs, loose_count(&card), "seed {seed}");
+            loose += on_runs;
+        }
+        assert!(loose > 50, "{loose}");
+    }
+
+    #[test]
+    fn a_loose_piece_seen_locally_is_one_more_on_the_crease_pattern() {
+        let mut seen = 0;
+        for seed in 0..400 {
+            let card = edited(seed);
+            let loose = loose_count(&card);
+            let mut rng = Lcg(seed ^ 0xaaaa);
+            for _ in 0..8 {
+                let (x, z) = (rng.below(card.nx()), rng.below(card.nz()));
+                let mut before = vec![Plane::Vertical(0); card.ny() + card.nz()];
+                slice_planes(&card, x, &mut before);
+                let mut edited = card.clone();
+                if rng.below(2) == 0 {
+                    let on = !edited.is_top_omitted(x, z);
+                    edited.set_top_omitted(x, z, on).unwrap();
+                } else {
+                    let on = !edited.is_hole(x, z);
+                    edited.set_hole(x, z, on).unwrap();
+                }
+                if ColumnRuns::new(&edited).adds_loose_piece(&[(x, before)]) {
+                    assert!(loose_count(&edited) > loose, "seed {seed}, ({x}, {z})");
+                    seen += 1;
+                }
+            }
+        }
+        assert!(seen > 50, "{seen}");
+    }
+
+    #[test]
+    fn a_local_refusal_is_a_failing_check() {
+        let (mut local, mut failing) = (0, 0);
+        for seed in 0..400 {
+            let card = edited(seed);
+            let runs = ColumnRuns::new(&card);
+            let passes = runs.passes();
+            failing += usize::from(!passes);
+            for x in 0..card.nx() {
+                if runs.fails_locally(x, x) {
+                    assert!(!passes, "seed {seed}, column {x}");
+                    local += 1;
+                }
+            }
+            assert_eq!(passes, runs.loose_if_passes().is_some(), "seed {seed}");
+        }
+        assert!(local > 100 && failing < 400, "{local} {failing}");
+    }
 }
