@@ -56,30 +56,43 @@ pub fn run(args: Args) -> Result<Outcome> {
     input::clean(&args.input, &mut imported, None, false)?;
     let cp = &imported.pattern;
     let mut report = check_with_frame(cp, imported.folded.as_ref(), &args.limits.options());
-    let layers = if args.limits.layers {
+    let layers = args.limits.layers.then(|| {
         let bar = super::progress::spinner("searching layer orders");
         let outcome = check_layers(cp, &mut report, &args.limits.layer_options());
         bar.finish_and_clear();
-        let outcome =
-            outcome.map_err(|e| anyhow::anyhow!("{}: layer order: {e}", args.input.display()))?;
-        Some(outcome)
-    } else {
-        None
-    };
+        outcome
+    });
+    let refused =
+        |e: &dyn std::fmt::Display| anyhow::anyhow!("{}: layer order: {e}", args.input.display());
     if args.json {
+        // A refused layer search is a report too: the local checks, and why the layer
+        // order was not found (the exit status stays the refusal's).
         let mut value = serde_json::to_value(&report).context("encoding the report")?;
         if let Some(map) = value.as_object_mut() {
             map.insert("verdict".into(), report.verdict().into());
-        }
-        if let (Some(l), Some(map)) = (&layers, value.as_object_mut()) {
-            map.insert(
-                "layers".into(),
-                serde_json::to_value(l).context("encoding the layer report")?,
-            );
+            match &layers {
+                Some(Ok(l)) => {
+                    map.insert(
+                        "layers".into(),
+                        serde_json::to_value(l).context("encoding the layer report")?,
+                    );
+                }
+                Some(Err(e)) => {
+                    map.insert(
+                        "layers".into(),
+                        serde_json::json!({ "refused": e.to_string() }),
+                    );
+                }
+                None => {}
+            }
         }
         let text = serde_json::to_string_pretty(&value).context("encoding the report")?;
         outln!("{text}");
+        if let Some(Err(e)) = &layers {
+            return Err(refused(e));
+        }
     } else {
+        let layers = layers.transpose().map_err(|e| refused(&e))?;
         outln!("{}", args.input.display());
         if let Some(l) = &layers {
             out!("{}", l.to_text());

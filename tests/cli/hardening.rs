@@ -388,5 +388,13 @@ fn the_layer_search_stops_at_its_time_limit_and_a_deep_stack_is_refused_at_once(
         err.contains("85013600 transitivity constraints at least"),
         "{err}"
     );
+    // With --json the refusal is a report too: the local checks, and why no layer order.
+    let o = foldcam(&["check", "--layers", "--json", "b.cp"], dir.path());
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let report: serde_json::Value =
+        serde_json::from_slice(&o.stdout).expect("standard output is a JSON report");
+    let why = report["layers"]["refused"].as_str().expect("layers.refused");
+    assert!(why.contains("85013600 transitivity constraints at least"), "{why}");
+    assert!(report["verdict"].is_string(), "{report}");
     assert_eq!(bin::listing(dir.path()), vec!["a.cp", "b.cp"]);
 }
