@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use foldcam::check::check_with_frame;
-use foldcam::check::layers::check_layers;
+use foldcam::check::layers::{LayerOptions, LayerProgress, check_layers};
 
 use super::Outcome;
 use super::args::CheckArgs;
@@ -57,10 +57,12 @@ pub fn run(args: Args) -> Result<Outcome> {
     let cp = &imported.pattern;
     let mut report = check_with_frame(cp, imported.folded.as_ref(), &args.limits.options());
     let layers = args.limits.layers.then(|| {
-        let bar = super::progress::spinner("searching layer orders");
-        let outcome = check_layers(cp, &mut report, &args.limits.layer_options());
-        bar.finish_and_clear();
-        outcome
+        let progress = std::sync::Arc::new(LayerProgress::default());
+        let options = LayerOptions {
+            progress: Some(progress.clone()),
+            ..args.limits.layer_options()
+        };
+        super::progress::watching_layers(&progress, || check_layers(cp, &mut report, &options))
     });
     let refused =
         |e: &dyn std::fmt::Display| anyhow::anyhow!("{}: layer order: {e}", args.input.display());

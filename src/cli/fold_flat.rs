@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use foldcam::check::layers::{
-    DEFAULT_MAX_STATES, FlatFoldError, FlatFolding, KawasakiTolerance, LayerOptions,
+    DEFAULT_MAX_STATES, FlatFoldError, FlatFolding, KawasakiTolerance, LayerOptions, LayerProgress,
 };
 use foldcam::formats;
 use foldcam::render::render_top_view_png;
@@ -74,21 +74,24 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut imported = input::load(&args.input, &args.frame)?;
     input::clean(&args.input, &mut imported, None, true)?;
     let cp = &imported.pattern;
+    let progress = std::sync::Arc::new(LayerProgress::default());
     let options = LayerOptions {
         max_states: Some(args.max_states.max(1)),
         kawasaki: KawasakiTolerance::from_degrees(args.kawasaki_tolerance),
         time_limit: args.time_limit.map(std::time::Duration::from_secs_f64),
+        progress: Some(progress.clone()),
         ..LayerOptions::default()
     };
     let name = args.input.display();
-    let folding = match FlatFolding::new(cp, &options) {
-        Ok(f) => f,
-        Err(e @ (FlatFoldError::NotLocallyFlat(_) | FlatFoldError::NoLayerOrder(_))) => {
-            errln!("foldcam: {name}: {e}; nothing written");
-            return Ok(Outcome::CheckFailed);
-        }
-        Err(e) => bail!("{name}: {e}"),
-    };
+    let folding =
+        match super::progress::watching_layers(&progress, || FlatFolding::new(cp, &options)) {
+            Ok(f) => f,
+            Err(e @ (FlatFoldError::NotLocallyFlat(_) | FlatFoldError::NoLayerOrder(_))) => {
+                errln!("foldcam: {name}: {e}; nothing written");
+                return Ok(Outcome::CheckFailed);
+            }
+            Err(e) => bail!("{name}: {e}"),
+        };
     let rounding = &folding.local.rounding;
     if !rounding.is_empty() {
         errln!(

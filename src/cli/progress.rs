@@ -4,6 +4,7 @@
 
 use std::time::{Duration, Instant};
 
+use foldcam::check::layers::LayerProgress;
 use foldcam::design::source::tessellate::{SolvePlan, SolveTracker};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -28,6 +29,23 @@ fn solve_bar(len: u64) -> ProgressBar {
         .progress_chars("=> ");
     bar.set_style(style);
     bar
+}
+
+/// Runs a layer search `work` (its options holding `progress`) on a scoped thread while a
+/// spinner says where it is ([`LayerProgress::describe`]: the stage, the component, the
+/// states found so far), and returns what `work` returned.
+pub fn watching_layers<T: Send>(progress: &LayerProgress, work: impl FnOnce() -> T + Send) -> T {
+    let bar = spinner("searching layer orders");
+    let out = std::thread::scope(|s| {
+        let worker = s.spawn(work);
+        while !worker.is_finished() {
+            bar.set_message(format!("layer orders: {}", progress.describe()));
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        worker.join()
+    });
+    bar.finish_and_clear();
+    out.unwrap_or_else(|panic| std::panic::resume_unwind(panic))
 }
 
 /// A spinner for work of unknown length, labelled `what`, ticking on its own.

@@ -664,3 +664,24 @@ fn a_vertex_off_by_degrees_is_refused_by_name() {
         "a 0.2° turn passed as rounding"
     );
 }
+
+#[test]
+fn a_search_writes_its_progress_and_ends_finished_with_the_same_count() {
+    use foldcam::check::layers::{LayerProgress, LayerStage};
+    let cp = load(&copied("372_brown_4x4_D112.fold"));
+    let progress = std::sync::Arc::new(LayerProgress::default());
+    assert_eq!(progress.stage(), LayerStage::Waiting);
+    let watched = LayerOptions {
+        progress: Some(progress.clone()),
+        ..LayerOptions::default()
+    };
+    let report = solve_layers(&cp, &watched).expect("layer problem");
+    assert_eq!(progress.stage(), LayerStage::Finished);
+    assert_eq!(progress.describe(), "done");
+    // Watching changes nothing: the count is Flat-Folder's, with or without a watcher.
+    assert_eq!(report.states, "4096");
+    assert_eq!(
+        report,
+        solve_layers(&cp, &LayerOptions::default()).expect("layer problem")
+    );
+}

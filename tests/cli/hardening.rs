@@ -393,8 +393,13 @@ fn the_layer_search_stops_at_its_time_limit_and_a_deep_stack_is_refused_at_once(
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let report: serde_json::Value =
         serde_json::from_slice(&o.stdout).expect("standard output is a JSON report");
-    let why = report["layers"]["refused"].as_str().expect("layers.refused");
-    assert!(why.contains("85013600 transitivity constraints at least"), "{why}");
+    let why = report["layers"]["refused"]
+        .as_str()
+        .expect("layers.refused");
+    assert!(
+        why.contains("85013600 transitivity constraints at least"),
+        "{why}"
+    );
     assert!(report["verdict"].is_string(), "{report}");
     assert_eq!(bin::listing(dir.path()), vec!["a.cp", "b.cp"]);
 }

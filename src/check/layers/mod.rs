@@ -27,6 +27,7 @@ pub(crate) mod constraints;
 mod decimal;
 pub(crate) mod flat;
 pub(crate) mod folded;
+pub(crate) mod progress;
 pub(crate) mod rounding;
 pub(crate) mod search;
 mod verdict;
@@ -43,6 +44,7 @@ pub use decimal::BigCount;
 pub use flat::{DEFAULT_MAX_STATES, FlatFoldError, FlatFolding};
 use folded::FoldedFaces;
 pub use folded::fold_faces;
+pub use progress::{LayerProgress, LayerStage};
 pub use rounding::{
     KawasakiTolerance, LocalFaults, PRECISION_DIVISOR, drawing_precision, local_faults,
 };
@@ -90,6 +92,9 @@ pub struct LayerOptions {
     /// Stop with [`LayerError::TimeLimit`] when arranging the folded layers, building the
     /// constraints and counting take longer than this; `None` has no limit.
     pub time_limit: Option<std::time::Duration>,
+    /// Where the search is, written as it runs for a front end to show (see
+    /// [`LayerProgress`]); `None` reports nothing.
+    pub progress: Option<std::sync::Arc<LayerProgress>>,
 }
 
 impl Default for LayerOptions {
@@ -99,6 +104,7 @@ impl Default for LayerOptions {
             relative_tolerance: RELATIVE_TOLERANCE,
             kawasaki: KawasakiTolerance::Fitted,
             time_limit: None,
+            progress: None,
         }
     }
 }
@@ -288,10 +294,18 @@ impl LayerSolver {
             &traced
         };
         let deadline = Deadline::after(opts.time_limit);
+        let stage = |s| {
+            if let Some(p) = &opts.progress {
+                p.set_stage(s);
+            }
+        };
+        stage(LayerStage::Arranging);
         let folded = folded::fold_faces(cp, vertex_agreement(cp).max(tol))?;
         constraints::check_stack(folded.deepest_stack_at_least(tol))?;
         let (arr, _) = cells::arrange_by(cp, &folded, tol, &deadline)?;
+        stage(LayerStage::Constraining);
         let sys = constraints::build(cp, &folded, &arr, &deadline)?;
+        stage(LayerStage::Counting);
         let mut solver = LayerSolver {
             report: LayerReport {
                 states: "0".into(),
@@ -317,12 +331,16 @@ impl LayerSolver {
             components: Vec::new(),
             counts: Vec::new(),
         };
-        solver.solve(opts, &deadline)?;
+        let solved = solver.solve(opts, &deadline);
+        stage(LayerStage::Finished);
+        solved?;
         Ok(solver)
     }
 
     fn solve(&mut self, opts: &LayerOptions, deadline: &Deadline) -> Result<(), LayerError> {
-        let mut engine = Engine::new(&self.sys).with_deadline(deadline);
+        let mut engine = Engine::new(&self.sys)
+            .with_deadline(deadline)
+            .with_progress(opts.progress.as_deref());
         for &(lit, e) in &self.sys.forced {
             if !engine.set_literal(lit) {
                 let (a, b) = self.sys.faces_of(lit >> 1);
@@ -339,7 +357,10 @@ impl LayerSolver {
         let cap = opts.max_states.map(u128::from);
         let mut product = BigCount::one();
         let mut exact = true;
-        for comp in &components {
+        for (i, comp) in components.iter().enumerate() {
+            if let Some(p) = &opts.progress {
+                p.set_component(i, components.len(), comp.len());
+            }
             let count = engine.count(comp, cap, None);
             if engine.timed_out {
                 return Err(LayerError::out_of_time(

@@ -10,6 +10,7 @@
 //! stopping at a cap.
 
 use super::constraints::{System, tables};
+use super::progress::LayerProgress;
 use crate::clock::Deadline;
 
 /// Outcome of counting one component.
@@ -117,6 +118,8 @@ pub struct Engine<'a> {
     cache: std::collections::HashMap<(u64, u64), u128>,
     /// When to give up counting (see [`Engine::with_deadline`]).
     deadline: Option<&'a Deadline>,
+    /// Where the states found are counted for a front end (see [`Engine::with_progress`]).
+    progress: Option<&'a LayerProgress>,
     /// The deadline passed: the counts since are not to be used.
     pub timed_out: bool,
 }
@@ -195,6 +198,7 @@ impl<'a> Engine<'a> {
             epoch: 0,
             cache: std::collections::HashMap::new(),
             deadline: None,
+            progress: None,
             timed_out: false,
         }
     }
@@ -203,6 +207,12 @@ impl<'a> Engine<'a> {
     /// set and the counts returned are not to be used.
     pub fn with_deadline(mut self, deadline: &'a Deadline) -> Engine<'a> {
         self.deadline = Some(deadline);
+        self
+    }
+
+    /// This engine, counting every state its enumeration finds in `progress` (when given).
+    pub fn with_progress(mut self, progress: Option<&'a LayerProgress>) -> Engine<'a> {
+        self.progress = progress;
         self
     }
 
@@ -467,6 +477,9 @@ impl<'a> Engine<'a> {
                 .filter(|&v| self.value[v as usize] == -1)
                 .collect();
             vars.sort_unstable();
+            if let Some(p) = self.progress {
+                p.splitting();
+            }
             let base = self.trail.len();
             let mut count = self.count_split(&vars, cap);
             self.undo_to(base);
@@ -538,6 +551,9 @@ impl<'a> Engine<'a> {
                         });
                     }
                     total += 1;
+                    if let Some(p) = self.progress {
+                        p.add_state();
+                    }
                     if cap.is_some_and(|c| total >= c) {
                         self.undo_to(base);
                         return Some(Count {
