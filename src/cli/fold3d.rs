@@ -64,6 +64,11 @@ pub struct Args {
     /// Colour the PNG's faces by bar strain instead of paper colours.
     #[arg(long)]
     pub strain: bool,
+    /// Adaptive ramp: raise the target up to 20 times faster while the sheet keeps up
+    /// (about half the steps for a rigid-foldable sheet such as a Miura-ori; a sheet that is
+    /// not rigid-foldable from flat may settle on another branch).
+    #[arg(long)]
+    pub adaptive_ramp: bool,
     /// Most solver steps.
     #[arg(value_name = "N", long, default_value_t = 200_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
     pub steps: u64,
@@ -106,6 +111,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     let opts = FoldOptions {
         percent: args.percent,
         max_steps: usize::try_from(args.steps).unwrap_or(usize::MAX),
+        adaptive_ramp: args.adaptive_ramp,
         max_time: Duration::from_secs_f64(args.time_limit.min(1e6)),
         frames: if gif.is_some() { GIF_FRAMES } else { 0 },
         ..FoldOptions::default()

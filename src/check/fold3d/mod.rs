@@ -74,6 +74,15 @@ pub struct FoldOptions {
     pub max_time: Duration,
     /// Residual force (over `EA`) below which the fold has settled.
     pub tolerance: f64,
+    /// Adaptive ramp (off by default): the target rises up to [`RAMP_SPEEDUP`] times faster
+    /// than over [`Self::ramp_steps`] while the largest force on a vertex stays below
+    /// [`RAMP_FORCE`] (the sheet keeps up with it), and falls back towards the linear rate when
+    /// it does not; never slower than the linear ramp. It settles a rigid-foldable sheet such
+    /// as a Miura-ori in about half the steps, to the same tolerance; a sheet that is not
+    /// rigid-foldable from flat (a tessellation of a curved surface) can settle on another
+    /// branch than with the slow ramp (the saddle example lands 2.2 % of its diagonal off its
+    /// solved form instead of 1.7 %), so it is not the default.
+    pub adaptive_ramp: bool,
     /// Positions recorded during the ramp for an animation (0: none; at most [`MAX_FRAMES`]).
     pub frames: usize,
 }
@@ -91,6 +100,7 @@ impl Default for FoldOptions {
             facet_stiffness: 200.0,
             damping_ratio: 0.45,
             ramp_steps: 6000,
+            adaptive_ramp: false,
             max_steps: 200_000,
             max_time: Duration::from_secs(60),
             tolerance: SETTLED_RESIDUAL,
@@ -373,33 +383,60 @@ fn run<'m>(
     let fraction = opts.percent / 100.0;
     let mut solver = Solver::new(model, opts);
     let mut frames = Vec::new();
+    // Frame k (from 1) is taken when the target reaches k·every/ramp of the fold, as the
+    // linear ramp reached it at step k·every; the adaptive ramp lands on those fractions.
     let frame_every = ramp
         .checked_div(opts.frames)
         .map_or(usize::MAX, |every| every.max(1));
+    let frame_at = |k: usize| (k.saturating_mul(frame_every)) as f64 / ramp.max(1) as f64;
+    let (slowest, fastest) = if ramp == 0 {
+        (1.0, 1.0)
+    } else {
+        (1.0 / ramp as f64, RAMP_SPEEDUP / ramp as f64)
+    };
+    let mut rate = slowest;
+    let mut progress: f64 = 0.0;
     let mut last_good = solver.positions.clone();
     let mut steps = 0;
     let stop = loop {
         if steps >= budget.steps {
             break Stop::StepCap;
         }
-        let progress = if ramp == 0 {
-            1.0
-        } else {
-            ((steps + 1) as f64 / ramp as f64).min(1.0)
-        };
+        let ramping = progress < 1.0;
+        if ramping {
+            let mut next = if opts.adaptive_ramp {
+                (progress + rate).min(1.0)
+            } else {
+                // The linear ramp, exactly as a step count.
+                ((steps + 1) as f64 / ramp.max(1) as f64).min(1.0)
+            };
+            if ramp > 0 && frames.len() < opts.frames {
+                next = next.min(frame_at(frames.len() + 1));
+            }
+            progress = next;
+        }
         solver.set_fraction(fraction * progress);
         solver.step();
         steps += 1;
         observe(model, &solver.positions);
-        if steps <= ramp && steps % frame_every == 0 && frames.len() < opts.frames {
-            frames.push(solver.positions.clone());
+        if ramping {
+            if ramp > 0 && frames.len() < opts.frames && progress >= frame_at(frames.len() + 1) {
+                frames.push(solver.positions.clone());
+            }
+            // Faster while the sheet keeps up with the target, slower when it lags.
+            rate = if solver.step_force() < RAMP_FORCE {
+                rate * RAMP_GROW
+            } else {
+                rate * RAMP_SHRINK
+            }
+            .clamp(slowest, fastest);
         }
         if steps % CHECK_EVERY == 0 {
             if !solver.finite() {
                 break Stop::Diverged;
             }
             last_good.clone_from(&solver.positions);
-            if steps >= ramp && solver.residual() < opts.tolerance {
+            if progress >= 1.0 && solver.residual() < opts.tolerance {
                 break Stop::Settled;
             }
             if budget.start.elapsed() > opts.max_time {
@@ -424,6 +461,20 @@ fn wrong_signs(model: &BarHingeModel, angles: &[f64], fraction: f64) -> usize {
         })
         .count()
 }
+
+/// Adaptive ramp: the largest force on a vertex in a step ([`Solver::step_force`], over
+/// `EA`) below which the target advances faster.
+pub const RAMP_FORCE: f64 = 4e-4;
+
+/// Adaptive ramp: how many times faster than the linear ramp of
+/// [`FoldOptions::ramp_steps`] the target may rise at most (it never rises slower).
+pub const RAMP_SPEEDUP: f64 = 20.0;
+
+/// Adaptive ramp: factor on the rate after a step within [`RAMP_FORCE`].
+pub const RAMP_GROW: f64 = 1.01;
+
+/// Adaptive ramp: factor on the rate after a step beyond [`RAMP_FORCE`].
+pub const RAMP_SHRINK: f64 = 0.7;
 
 /// Steps between checks of divergence, residual and time.
 const CHECK_EVERY: usize = 32;

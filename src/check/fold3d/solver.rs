@@ -20,7 +20,9 @@
 //!
 //! **Schedule.** The target percentage rises linearly from 0 over the first
 //! [`super::FoldOptions::ramp_steps`] steps (a quasi-static fold, which keeps the bars near
-//! their rest lengths), then holds until the largest residual force on a vertex (without the
+//! their rest lengths; with [`super::FoldOptions::adaptive_ramp`] it rises up to
+//! [`super::RAMP_SPEEDUP`] times faster while [`Solver::step_force`] stays small, a
+//! continuation with an adaptive load step), then holds until the largest residual force on a vertex (without the
 //! damping), over the axial stiffness `EA`, falls below the tolerance, or a step or time cap
 //! stops it.
 //!
@@ -88,6 +90,8 @@ pub struct Solver<'m> {
     mass: Vec<f64>,
     /// Kinetic energy after the last step.
     kinetic: f64,
+    /// Largest force on a vertex in the last step (damping included), over `EA`.
+    step_force: f64,
     axial: f64,
     parallel: bool,
 }
@@ -139,6 +143,7 @@ impl<'m> Solver<'m> {
             slots,
             mass: Vec::new(),
             kinetic: 0.0,
+            step_force: 0.0,
             axial: opts.axial_stiffness,
             parallel: model.bars.len() + model.hinges.len() >= PARALLEL_MIN,
         };
@@ -149,6 +154,14 @@ impl<'m> Solver<'m> {
     /// Sets every crease hinge's target to `fraction ×` its 100 % angle.
     pub fn set_fraction(&mut self, fraction: f64) {
         self.fraction = fraction;
+    }
+
+    /// The largest force on a vertex in the last step, damping included, over the axial
+    /// stiffness `EA`: a residual measured on the fly at no extra cost, which the adaptive
+    /// ramp of [`super::fold_with`] reads. It is not [`Self::residual`] (which leaves the
+    /// damping out and is taken at the new positions). 0 before the first step.
+    pub fn step_force(&self) -> f64 {
+        self.step_force
     }
 
     /// The unwrapped fold angle of every hinge after the last step, radians.
@@ -272,27 +285,31 @@ impl<'m> Solver<'m> {
             }
             f
         };
-        let update = |(vtx, (x, v)): (usize, (&mut DVec3, &mut DVec3))| -> f64 {
-            *v += gather(vtx) / mass[vtx];
+        // Per vertex: its kinetic energy and the squared force on it.
+        let update = |(vtx, (x, v)): (usize, (&mut DVec3, &mut DVec3))| -> (f64, f64) {
+            let f = gather(vtx);
+            *v += f / mass[vtx];
             *x += *v;
-            mass[vtx] * v.length_squared()
+            (mass[vtx] * v.length_squared(), f.length_squared())
         };
-        let kinetic: f64 = if self.parallel {
+        let add = |a: (f64, f64), b: (f64, f64)| (a.0 + b.0, a.1.max(b.1));
+        let (kinetic, force2) = if self.parallel {
             self.positions
                 .par_iter_mut()
                 .zip(self.velocities.par_iter_mut())
                 .enumerate()
                 .with_min_len(1024)
                 .map(update)
-                .sum()
+                .reduce(|| (0.0, 0.0), add)
         } else {
             self.positions
                 .iter_mut()
                 .zip(self.velocities.iter_mut())
                 .enumerate()
                 .map(update)
-                .sum()
+                .fold((0.0, 0.0), add)
         };
+        self.step_force = force2.sqrt() / self.axial;
         if kinetic < self.kinetic {
             self.velocities.fill(DVec3::ZERO);
             self.kinetic = 0.0;
