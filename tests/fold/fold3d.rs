@@ -115,6 +115,47 @@ fn miura_at_half_follows_closed_form_kinematics() {
     assert!((ly - want_ly).abs() < 0.01 * want_ly, "{ly} vs {want_ly}");
 }
 
+/// The opt-in adaptive ramp reaches the same folded form as the linear ramp, by the closed
+/// form of the Miura-ori's rigid kinematics ([`miura_closed_form`]), in fewer steps.
+#[test]
+fn the_adaptive_ramp_follows_the_closed_form_in_fewer_steps() {
+    let (cols, rows) = (6, 6);
+    let (m, cp) = miura(cols, rows);
+    let run = |adaptive_ramp| {
+        let opts = FoldOptions {
+            percent: 90.0,
+            adaptive_ramp,
+            ..FoldOptions::default()
+        };
+        fold(&cp, &opts).unwrap()
+    };
+    let (linear, adaptive) = (run(false), run(true));
+    let r = &adaptive.report;
+    assert_eq!(r.stop, Stop::Settled);
+    assert!(r.wrong_sign.is_empty() && r.past_flat.is_empty());
+    assert!(r.crossing_faces.is_empty());
+    assert!(r.max_strain < 0.01, "{}", r.max_strain);
+    assert!(
+        r.steps < linear.report.steps,
+        "adaptive {} steps, linear {}",
+        r.steps,
+        linear.report.steps
+    );
+    let horizontal = (rows + 1) * cols;
+    let zig =
+        (horizontal..cp.edges.len()).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
+    let pleat = (0..horizontal).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
+    let rho_z = mean_abs(&r.fold_angles, zig).to_radians();
+    let rho_x = mean_abs(&r.fold_angles, pleat).to_radians();
+    let c = (m.shear * m.shear + m.height * m.height).sqrt();
+    let gamma = (m.shear / c).acos();
+    let (want_x, _, _) = miura_closed_form(gamma, rho_z);
+    assert!(
+        (rho_x - want_x).abs() < 0.01 * want_x,
+        "{rho_x} vs {want_x}"
+    );
+}
+
 /// Largest |bar strain| of positions `x`.
 fn max_bar_strain(model: &foldcam::check::fold3d::BarHingeModel, x: &[DVec3]) -> f64 {
     model
