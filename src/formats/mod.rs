@@ -128,7 +128,7 @@ impl Imported {
     }
 
     /// Cleans the pattern into a planar graph as every command and the studio do before using
-    /// it (see [`planarize`]: merged vertices, split crossings, removed zero-length and
+    /// it (see [`planarize()`]: merged vertices, split crossings, removed zero-length and
     /// duplicate edges; faces traced when `options.faces`) and adds what happened to
     /// [`Imported::findings`]: overlapping mountain and valley lines
     /// ([`FindingKind::AssignmentConflicts`]); a folded state that no longer matches the

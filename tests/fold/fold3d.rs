@@ -59,6 +59,25 @@ fn mean_abs(angles: &[Option<f64>], edges: impl Iterator<Item = usize>) -> f64 {
     v.iter().sum::<f64>() / v.len() as f64
 }
 
+/// The mean |fold angle| of the zigzag creases and of the pleats of a Miura-ori of
+/// `cols` × `rows` cells, radians. Generator numbering: (rows + 1) · cols row segments
+/// (pleats), then the zigzag columns.
+fn zigzag_and_pleat(
+    cp: &CreasePattern,
+    angles: &[Option<f64>],
+    cols: usize,
+    rows: usize,
+) -> (f64, f64) {
+    let horizontal = (rows + 1) * cols;
+    let crease = |e: &usize| cp.edges[*e].assignment != Assignment::Boundary;
+    let zig = (horizontal..cp.edges.len()).filter(crease);
+    let pleat = (0..horizontal).filter(crease);
+    (
+        mean_abs(angles, zig).to_radians(),
+        mean_abs(angles, pleat).to_radians(),
+    )
+}
+
 #[test]
 fn miura_at_half_follows_closed_form_kinematics() {
     let (cols, rows) = (6, 6);
@@ -85,16 +104,9 @@ fn miura_at_half_follows_closed_form_kinematics() {
             edge.assignment
         );
     }
-    // Generator numbering: (rows + 1) · cols row segments (pleats), then the zigzag columns.
-    let horizontal = (rows + 1) * cols;
-    let zig =
-        (horizontal..cp.edges.len()).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
-    let pleat = (0..horizontal).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
-    let rho_z = mean_abs(&r.fold_angles, zig).to_radians();
-    let rho_x = mean_abs(&r.fold_angles, pleat).to_radians();
+    let (rho_z, rho_x) = zigzag_and_pleat(&cp, &r.fold_angles, cols, rows);
     let c = (m.shear * m.shear + m.height * m.height).sqrt();
-    let gamma = (m.shear / c).acos();
-    let (want_x, eta, q) = miura_closed_form(gamma, rho_z);
+    let (want_x, eta, q) = miura_closed_form((m.shear / c).acos(), rho_z);
     // Halfway between flat and flat-folded on average, but not equally: the two families
     // cannot both reach 90° (the closed form ties them).
     assert!(rho_z > 1.2 * rho_x, "{rho_z} {rho_x}");
@@ -141,15 +153,9 @@ fn the_adaptive_ramp_follows_the_closed_form_in_fewer_steps() {
         r.steps,
         linear.report.steps
     );
-    let horizontal = (rows + 1) * cols;
-    let zig =
-        (horizontal..cp.edges.len()).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
-    let pleat = (0..horizontal).filter(|&e| cp.edges[e].assignment != Assignment::Boundary);
-    let rho_z = mean_abs(&r.fold_angles, zig).to_radians();
-    let rho_x = mean_abs(&r.fold_angles, pleat).to_radians();
+    let (rho_z, rho_x) = zigzag_and_pleat(&cp, &r.fold_angles, cols, rows);
     let c = (m.shear * m.shear + m.height * m.height).sqrt();
-    let gamma = (m.shear / c).acos();
-    let (want_x, _, _) = miura_closed_form(gamma, rho_z);
+    let (want_x, _, _) = miura_closed_form((m.shear / c).acos(), rho_z);
     assert!(
         (rho_x - want_x).abs() < 0.01 * want_x,
         "{rho_x} vs {want_x}"

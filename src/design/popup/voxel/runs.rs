@@ -104,8 +104,9 @@ impl ColumnRuns {
         })
     }
 
-    /// `None` when the check fails (see [`ColumnRuns::passes`]), else the number of loose
-    /// pieces of the card (see [`ColumnRuns::loose_pieces`]); one graph serves both.
+    /// `None` when the check fails (a vertical cell it covers is not reached by both floods),
+    /// else the number of loose pieces of the card (counted as `loose_pieces` counts them);
+    /// one graph serves both.
     pub(super) fn loose_if_passes(&self) -> Option<usize> {
         let graph = Graph::new(&self.columns);
         let (from_back, from_base) = (
