@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use anyhow::{Result, anyhow, bail};
 use clap::ValueEnum;
 use foldcam::design::source::tess_design::{self, TessSettings};
-use foldcam::design::source::tessellate::{TessellationOptions, solve_plan, tessellate_mesh};
+use foldcam::design::source::tessellate::{
+    DEFAULT_TIME_LIMIT_S, TessellationOptions, solve_plan, tessellate_mesh,
+};
 use foldcam::design::source::{
     DesignFile, DesignKind, SourceError, mesh_path_beside, read_design_file,
 };
@@ -121,6 +123,10 @@ pub struct Args {
     /// Newton iteration cap [default: 200].
     #[arg(value_name = "N", long)]
     pub max_iterations: Option<usize>,
+    /// Stop after this many seconds, solved or not: the solve under way keeps what it reached
+    /// and the best attempt is reported with the reason; 0 for no limit.
+    #[arg(value_name = "SECONDS", long, default_value_t = DEFAULT_TIME_LIMIT_S)]
+    pub time_limit: f64,
     /// Write a preview of the folded form.
     #[arg(long)]
     pub png: Option<PathBuf>,
@@ -162,6 +168,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     // The design file's options over the material's, the command line's over both.
     from_file.apply_to(&mut options);
     settings(&args).apply_to(&mut options);
+    options.time_limit_s = (args.time_limit != 0.0).then_some(args.time_limit);
     let mut progress = DesignProgress::solving(solve_plan(&mesh, &options)?);
     let result = tessellate_mesh(&mesh_path, &mesh, &options, &mut progress);
     // The report is printed whether or not the result is usable.

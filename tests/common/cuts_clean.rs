@@ -10,9 +10,21 @@ use foldcam::pattern::CreasePattern;
 /// Plans `cp` on the shipped `machine` and `material` and checks every job on the
 /// simulated machine; `name` labels failures.
 pub fn assert_cuts_clean_on(name: &str, cp: &CreasePattern, machine: &str, material: &str) {
+    assert_cuts_clean_with(name, cp, machine, material, &PlanOverrides::default());
+}
+
+/// [`assert_cuts_clean_on`] with the plan's settings overridden as `foldcam cut`'s options
+/// would.
+pub fn assert_cuts_clean_with(
+    name: &str,
+    cp: &CreasePattern,
+    machine: &str,
+    material: &str,
+    overrides: &PlanOverrides,
+) {
     let machine = load_machine(machine).unwrap();
     let material = load_material(material).unwrap();
-    let job = Job::plan(cp, &machine, &material, &PlanOverrides::default())
+    let job = Job::plan(cp, &machine, &material, overrides)
         .and_then(|j| j.post(JobFormat::Gcode))
         .and_then(|j| j.verify())
         .unwrap_or_else(|e| panic!("{name}: {e}"));

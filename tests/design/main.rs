@@ -29,4 +29,5 @@ mod tessellation;
 mod tessellation_caps;
 mod tessellation_mask;
 mod tessellation_rigid;
+mod tessellation_samples;
 mod tessellation_variations;

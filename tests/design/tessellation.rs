@@ -487,3 +487,82 @@ fn a_self_crossing_result_is_found_and_not_written() {
     assert!(stdout.contains("intersects itself"), "{stdout}");
     assert!(!out.exists());
 }
+
+/// Counts what a ladder reports: iterations and refused results.
+#[derive(Default)]
+struct Counts {
+    iterations: usize,
+    refused: Vec<f64>,
+}
+
+impl Watch for Counts {
+    fn iteration(&mut self, _: &Iteration) -> std::ops::ControlFlow<()> {
+        self.iterations += 1;
+        std::ops::ControlFlow::Continue(())
+    }
+
+    fn refused(&mut self, shrink: f64, _: &Tessellation) -> std::ops::ControlFlow<()> {
+        self.refused.push(shrink);
+        std::ops::ControlFlow::Continue(())
+    }
+}
+
+/// A ladder whose time limit has run out stops: the solve under way keeps what it reached (here
+/// nothing: the limit is zero), no other shrink or triangulation is tried, and the result is
+/// refused with the time limit named; the same ladder without a limit goes on to the next shrink.
+#[test]
+fn a_time_limit_ends_the_ladder_with_its_reason() {
+    let mesh = foldcam::design::tessellation::samples::spherical_cap(12, 6, 60.0, 100.0);
+    let mut opts = TessellateOptions::with_limits(stainless_limits());
+    opts.schedule = Schedule::ladder();
+    opts.time_limit = Some(std::time::Duration::ZERO);
+    let mut heard = Counts::default();
+    let t = tessellate(&mesh, &opts, &mut heard).unwrap();
+    assert_eq!(heard.iterations, 0);
+    assert_eq!(heard.refused, [SHRINK_LADDER[0]], "one attempt only");
+    assert!(t.report.out_of_time && !t.report.converged);
+    assert_eq!(t.report.iterations, 0);
+    assert_eq!(t.out_of_time, Some(std::time::Duration::ZERO));
+    let problem = t.problem().expect("refused");
+    assert!(problem.contains("time limit of 0ns ran out"), "{problem}");
+    assert!(
+        t.report.summary().contains("time limit"),
+        "{}",
+        t.report.summary()
+    );
+}
+
+/// `--time-limit` on the command line: the cap's ladder cut short after 50 ms exits 1 with the
+/// reason and writes nothing; 0 and negative limits are refused or mean no limit as the help says.
+#[test]
+fn cli_time_limit_refuses_with_the_reason_and_writes_nothing() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("cap.fold");
+    let mesh = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/tessellation/cap.obj");
+    let run = foldcam(&[
+        "tessellate",
+        mesh.to_str().expect("utf-8"),
+        "--time-limit",
+        "0.05",
+        "-o",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert_eq!(run.status.code(), Some(1), "{stdout}");
+    assert!(
+        stdout.contains("nothing written") && stdout.contains("time limit of 50ms ran out"),
+        "{stdout}"
+    );
+    assert!(!out.exists());
+    let run = foldcam(&[
+        "tessellate",
+        mesh.to_str().expect("utf-8"),
+        "--time-limit=-3",
+        "-o",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--time-limit"), "{stderr}");
+    assert!(!out.exists());
+}

@@ -323,6 +323,8 @@ mod tests {
             max_iterations: 77,
             remesh: Remesh::Only,
             remesh_faces: Some(40),
+            // A run's time limit is the command's, not the design's: not saved.
+            time_limit_s: TessellationOptions::default().time_limit_s,
         };
         let text = write_design("my \"mesh\".obj", &options, Some("from stainless-0.5"));
         let d = read(&text).unwrap();

@@ -59,7 +59,17 @@ pub struct TessellationOptions {
     pub remesh: Remesh,
     /// Faces of the re-triangulation; `None`: as many as the input has.
     pub remesh_faces: Option<usize>,
+    /// Seconds the whole schedule may take (then the best attempt is reported, refused with
+    /// the reason), [`DEFAULT_TIME_LIMIT_S`] by default; `None`: no limit.
+    pub time_limit_s: Option<f64>,
 }
+
+/// The default [`TessellationOptions::time_limit_s`]: a run ends, solved or refused with its
+/// reason, within a minute.
+pub const DEFAULT_TIME_LIMIT_S: f64 = 60.0;
+
+/// The largest [`TessellationOptions::time_limit_s`] accepted: a day.
+pub const MAX_TIME_LIMIT_S: f64 = 86_400.0;
 
 impl Default for TessellationOptions {
     fn default() -> Self {
@@ -76,6 +86,7 @@ impl Default for TessellationOptions {
             max_iterations: 200,
             remesh: Remesh::Auto,
             remesh_faces: None,
+            time_limit_s: Some(DEFAULT_TIME_LIMIT_S),
         }
     }
 }
@@ -114,8 +125,17 @@ impl TessellationOptions {
                 )));
             }
         }
+        if let Some(t) = self
+            .time_limit_s
+            .filter(|t| !(t.is_finite() && *t > 0.0 && *t <= MAX_TIME_LIMIT_S))
+        {
+            return Err(SourceError::Option(format!(
+                "--time-limit {t}: must be more than 0 and at most {MAX_TIME_LIMIT_S} seconds"
+            )));
+        }
         let limits = Limits::from_degrees(self.max_fold_angle_deg, self.min_vertex_angle_deg);
         let mut opts = TessellateOptions::with_limits(limits);
+        opts.time_limit = self.time_limit_s.map(std::time::Duration::from_secs_f64);
         opts.star = StarOptions {
             shrink: self.shrink.unwrap_or(SHRINK_LADDER[0]),
             layout: self.layout,

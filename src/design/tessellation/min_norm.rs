@@ -25,6 +25,9 @@ pub(crate) struct Jacobian {
     /// The preconditioner and the Tikhonov ε, built at the first solve and reused by later
     /// solves with the same rows.
     preconditioner: OnceCell<(Preconditioner, f64)>,
+    /// The Cholesky preconditioner built when the diagonal one needed more than
+    /// [`JACOBI_BUDGET`] CG iterations (`None` when that factorization failed too).
+    fallback: OnceCell<Option<Preconditioner>>,
 }
 
 impl Jacobian {
@@ -47,6 +50,7 @@ impl Jacobian {
             blocks,
             n,
             preconditioner: OnceCell::new(),
+            fallback: OnceCell::new(),
         }
     }
 
@@ -90,12 +94,48 @@ impl Jacobian {
 /// The minimum-norm solution `dx = Cᵀ y` of `C dx = g` (that is `C⁺ g`), with the CG
 /// stopped at the relative residual `eta` (1e-12 for an exact step). Returns the step and the
 /// CG iteration count.
+///
+/// A small system starts with the diagonal preconditioner; when its CG has not converged
+/// after [`JACOBI_BUDGET`] iterations (nearly dependent rows), the step is solved again with
+/// the Cholesky factor, which this Jacobian then keeps.
 pub(crate) fn min_norm(c: &Jacobian, g: &[f64], eta: f64) -> (Vec<DVec3>, usize) {
     let (pre, eps) = c.preconditioner.get_or_init(|| {
         let (diag, eps) = diagonal(c, ROUNDOFF);
         (Preconditioner::new(c, &diag, eps, 100.0 * eps), eps)
     });
-    preconditioned_cg(c, g, eta, *eps, pre)
+    let full = full_cap(c.rows());
+    if let Preconditioner::Cholesky(_) = pre {
+        return preconditioned_cg(c, g, eta, *eps, pre, full).0;
+    }
+    if let Some(Some(factored)) = c.fallback.get() {
+        return preconditioned_cg(c, g, eta, *eps, factored, full).0;
+    }
+    let budget = if c.fallback.get().is_some() {
+        full
+    } else {
+        JACOBI_BUDGET.min(full)
+    };
+    let ((dx, it), converged) = preconditioned_cg(c, g, eta, *eps, pre, budget);
+    if converged || budget == full {
+        return (dx, it);
+    }
+    let fallback = c
+        .fallback
+        .get_or_init(|| factor(c, 100.0 * eps).map(Preconditioner::Cholesky));
+    let again = fallback.as_ref().unwrap_or(pre);
+    let ((dx, more), _) = preconditioned_cg(c, g, eta, *eps, again, full);
+    (dx, it + more)
+}
+
+/// CG iterations a diagonal preconditioner gets before [`min_norm`] factors `C Cᵀ` instead:
+/// on the sample domes the diagonal needs some tens to a few hundred; on saddles and height
+/// fields of 216 faces it ran into the thousands per step (95% of the solve's time), where a
+/// factorization costs a few dozen.
+const JACOBI_BUDGET: usize = 400;
+
+/// The CG's iteration cap for `m` rows.
+fn full_cap(m: usize) -> usize {
+    10 * m + 100
 }
 
 /// The Levenberg–Marquardt step `Cᵀ (C Cᵀ + μI)⁻¹ g` (Levenberg 1944, Marquardt 1963), μ =
@@ -111,7 +151,7 @@ pub(crate) fn damped_min_norm(
 ) -> (Vec<DVec3>, usize) {
     let (diag, mu) = diagonal(c, relative.max(ROUNDOFF));
     let pre = Preconditioner::new(c, &diag, mu, mu);
-    preconditioned_cg(c, g, eta, mu, &pre)
+    preconditioned_cg(c, g, eta, mu, &pre, full_cap(c.rows())).0
 }
 
 /// The diagonal of `C Cᵀ` and the shift `relative` × its largest entry (the Tikhonov ε of
@@ -124,14 +164,16 @@ fn diagonal(c: &Jacobian, relative: f64) -> (Vec<f64>, f64) {
     (diag, eps)
 }
 
-/// CG on `(C Cᵀ + εI) y = g` preconditioned by `pre`, to the relative residual `eta`.
+/// CG on `(C Cᵀ + εI) y = g` preconditioned by `pre`, to the relative residual `eta` or `cap`
+/// iterations: the step `Cᵀ y`, the iterations, and whether the residual reached `eta`.
 fn preconditioned_cg(
     c: &Jacobian,
     g: &[f64],
     eta: f64,
     eps: f64,
     pre: &Preconditioner,
-) -> (Vec<DVec3>, usize) {
+    cap: usize,
+) -> ((Vec<DVec3>, usize), bool) {
     let m = c.rows();
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
     let mut z_blocks = vec![DVec3::ZERO; c.n];
@@ -150,7 +192,6 @@ fn preconditioned_cg(
     let mut ap = vec![0.0; m];
     let mut rz = dot(&r, &z);
     let goal = eta * eta * dot(g, g);
-    let cap = 10 * m + 100;
     let mut it = 0;
     while it < cap && dot(&r, &r) > goal {
         it += 1;
@@ -172,9 +213,10 @@ fn preconditioned_cg(
             p[k] = z[k] + beta * p[k];
         }
     }
+    let converged = dot(&r, &r) <= goal;
     let mut dx = vec![DVec3::ZERO; c.n];
     c.transpose_times(&y, &mut dx);
-    (dx, it)
+    ((dx, it), converged)
 }
 
 /// Systems with fewer rows are preconditioned by their diagonal alone: the CG then needs only
@@ -344,13 +386,53 @@ mod tests {
         assert!(residual < 1e-8, "{residual}");
         let (diag, eps) = diagonal(&c, ROUNDOFF);
         let jacobi = Preconditioner::Jacobi(diag.iter().map(|d| d + eps).collect());
-        let (reference, slow) = preconditioned_cg(&c, &g, 1e-12, eps, &jacobi);
+        let ((reference, slow), _) =
+            preconditioned_cg(&c, &g, 1e-12, eps, &jacobi, full_cap(c.rows()));
         assert!(slow > 10 * iterations, "{slow} vs {iterations}");
         let diff = dx
             .iter()
             .zip(&reference)
             .fold(0.0f64, |a, (p, q)| a.max(p.distance(*q)));
         assert!(diff < 1e-7, "{diff}");
+    }
+
+    /// A small but ill-conditioned system: a chain of 1,000 rows, each the difference of two
+    /// neighbouring vertices (its `C Cᵀ` is the path Laplacian, condition number about
+    /// 4m²/π²): the diagonal preconditioner runs out of its budget, the step is solved with
+    /// the Cholesky factor, which the Jacobian keeps, and it solves `C dx = g`.
+    #[test]
+    fn a_small_ill_conditioned_system_falls_back_to_the_cholesky_factor() {
+        let m = 1000;
+        let chain: Vec<Row> = (0..m as u32)
+            .map(|k| Row {
+                family: Family::Developability,
+                value: ((k as f64) * 0.37).sin(),
+                entries: vec![(k, DVec3::X), (k + 1, -DVec3::X)],
+            })
+            .collect();
+        assert!(chain.len() < FACTOR_ROWS);
+        let g: Vec<f64> = chain.iter().map(|r| r.value).collect();
+        let c = Jacobian::new(&chain, m + 1);
+        let (dx, iterations) = min_norm(&c, &g, 1e-12);
+        assert!(matches!(
+            c.preconditioner.get(),
+            Some((Preconditioner::Jacobi(_), _))
+        ));
+        assert!(matches!(
+            c.fallback.get(),
+            Some(Some(Preconditioner::Cholesky(_)))
+        ));
+        assert!(iterations > JACOBI_BUDGET, "{iterations}");
+        let residual = max_residual(&c, &dx, &g);
+        assert!(residual < 1e-6, "{residual}");
+        // A second step on the same rows goes straight to the factor.
+        let (again, more) = min_norm(&c, &g, 1e-12);
+        assert!(more < 50, "{more}");
+        let diff = dx
+            .iter()
+            .zip(&again)
+            .fold(0.0f64, |a, (p, q)| a.max(p.distance(*q)));
+        assert!(diff < 1e-9, "{diff}");
     }
 
     /// The damped step minimizes ‖C dx − g‖² + μ‖dx‖² (Levenberg 1944), so it solves the

@@ -7,6 +7,7 @@
 //! [`TessError::Cancelled`]. `()` watches nothing.
 
 use std::ops::ControlFlow;
+use std::time::Duration;
 
 use super::collision_sites::CollisionSites;
 use super::constraints::{BoundaryRuns, Limits, assign_folds, assign_free_folds};
@@ -16,11 +17,12 @@ use super::fit::{FitOptions, FitReport, Target, fit_surface};
 use super::intersect::intersecting_triangles;
 use super::passes::{Pass, Triangulation, scheduled_passes};
 use super::remesh::{RemeshReport, min_corner_angle};
-use super::solver::{Iteration, SolveOptions, SolveReport, solve};
+use super::solver::{Iteration, SolveOptions, SolveReport, solve_until};
 use super::star::{InitialPattern, StarOptions, max_star_points, star_tucks_shrunk};
 use super::tuck::TuckKind;
 use super::unfold::{Unfolded, unfold};
 use super::{TessError, TessMesh};
+use crate::clock::Deadline;
 use crate::mesh::{HalfEdgeMesh, PolyMesh};
 
 /// Everything [`tessellate`] needs besides the mesh.
@@ -40,6 +42,10 @@ pub struct TessellateOptions {
     /// What is solved, in order: one solve (the default), one with a shrink per face, or a
     /// face-shrink ladder over re-triangulations.
     pub schedule: Schedule,
+    /// How long the whole schedule may take: once it has run out, the solve under way stops
+    /// (keeping what it reached) and no further solve starts; the result then says
+    /// [`Tessellation::out_of_time`]. `None` (the default): no limit.
+    pub time_limit: Option<Duration>,
 }
 
 impl Default for TessellateOptions {
@@ -51,6 +57,7 @@ impl Default for TessellateOptions {
             fit: None,
             intersection_tolerance: 1e-3,
             schedule: Schedule::Once,
+            time_limit: None,
         }
     }
 }
@@ -159,6 +166,9 @@ pub struct Tessellation {
     /// When that re-triangulation has fewer faces than the input because the input's rim
     /// crowding index is over the limit ([`Triangulation::Coarser`]): the input's crowding.
     pub coarsened: Option<RimCrowding>,
+    /// [`TessellateOptions::time_limit`] when it ran out before the schedule ended (a solve
+    /// cut short, or solves left untried).
+    pub out_of_time: Option<Duration>,
 }
 
 impl Tessellation {
@@ -224,6 +234,20 @@ impl Tessellation {
                 v.describe()
             ));
         }
+        if let Some(limit) = self.out_of_time {
+            let problem = self
+                .problem_within_time()
+                .unwrap_or_else(|| "no usable result".into());
+            return Some(format!(
+                "{problem}; the time limit of {limit:?} ran out before every face shrink and \
+                 triangulation was tried"
+            ));
+        }
+        self.problem_within_time()
+    }
+
+    /// [`Tessellation::problem`] without the time limit.
+    fn problem_within_time(&self) -> Option<String> {
         if !self.report.converged {
             return Some("the solver did not reach every condition".into());
         }
@@ -293,17 +317,25 @@ fn tessellate_shrinking(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     shrinks: &[f64],
+    deadline: &Deadline,
     watch: &mut impl Watch,
 ) -> Result<Tessellation, TessError> {
-    let mut first = None;
+    let mut first: Option<Tessellation> = None;
     for &shrink in shrinks {
+        if let Some(t) = first.as_mut().filter(|_| deadline.passed()) {
+            t.out_of_time = deadline.limit();
+            break;
+        }
         let mut o = opts.clone();
         o.star.shrink = shrink;
-        let mut t = tessellate_shrunk(mesh, &o, None, |it: &Iteration| watch.iteration(it))?;
+        let mut t = tessellate_shrunk(mesh, &o, None, deadline, |it: &Iteration| {
+            watch.iteration(it)
+        })?;
         if t.report.converged
             && !t.intersections.is_empty()
             && o.solve.limits.boundary_runs == BoundaryRuns::Dominant
             && t.report.boundary_rows
+            && !deadline.passed()
         {
             // The same shrink again with the stiffer outline (see `BoundaryRuns`); its
             // iterations continue the count, so progress displays see one solve per shrink.
@@ -311,7 +343,7 @@ fn tessellate_shrinking(
             // (`SolveReport::boundary_rows`).
             o.solve.limits.boundary_runs = BoundaryRuns::EveryStart;
             let before = t.report.iterations;
-            t = tessellate_shrunk(mesh, &o, None, |it: &Iteration| {
+            t = tessellate_shrunk(mesh, &o, None, deadline, |it: &Iteration| {
                 watch.iteration(&Iteration {
                     index: before + it.index,
                     ..*it
@@ -324,7 +356,12 @@ fn tessellate_shrinking(
         if watch.refused(shrink, &t).is_break() {
             return Err(TessError::Cancelled);
         }
-        first.get_or_insert(t);
+        let cut_short = t.out_of_time.is_some();
+        let kept = first.get_or_insert(t);
+        if cut_short {
+            kept.out_of_time = deadline.limit();
+            break;
+        }
     }
     first.ok_or_else(|| TessError::BadParameter("no face shrink to try".into()))
 }
@@ -445,19 +482,27 @@ impl Plan<'_> {
         }
         let shrinks = self.shrinks();
         let (mesh, opts) = (self.mesh, self.opts);
+        let deadline = Deadline::after(opts.time_limit);
         let mut first: Option<Tessellation> = None;
         let mut coarser: Option<Tessellation> = None;
         for pass in &self.passes {
+            if deadline.passed() && (first.is_some() || coarser.is_some()) {
+                // Passes left untried: the result returned says so.
+                for t in [&mut first, &mut coarser].into_iter().flatten() {
+                    t.out_of_time = deadline.limit();
+                }
+                break;
+            }
             // tessellate_shrinking tells `watch` about every failed shrink.
             let coarsened = matches!(pass.triangulation, Triangulation::Coarser { .. });
             let t = match &pass.mesh {
                 Some((m, report)) => {
-                    let mut t = tessellate_shrinking(m, opts, &shrinks, watch)?;
+                    let mut t = tessellate_shrinking(m, opts, &shrinks, &deadline, watch)?;
                     t.remeshed = Some(*report);
                     t.coarsened = coarsened.then_some(self.crowding);
                     t
                 }
-                None => tessellate_shrinking(mesh, opts, &shrinks, watch)?,
+                None => tessellate_shrinking(mesh, opts, &shrinks, &deadline, watch)?,
             };
             if t.problem().is_none() {
                 return Ok(t);
@@ -555,6 +600,7 @@ fn single_solve(
         mesh,
         opts,
         face_shrink,
+        &Deadline::after(opts.time_limit),
         |it: &Iteration| watch.iteration(it),
     ))
 }
@@ -563,6 +609,7 @@ fn tessellate_shrunk(
     mesh: &PolyMesh,
     opts: &TessellateOptions,
     face_shrink: Option<&[f64]>,
+    deadline: &Deadline,
     progress: impl FnMut(&Iteration) -> ControlFlow<()>,
 ) -> Result<Tessellation, TessError> {
     let he = disk(mesh)?;
@@ -592,7 +639,7 @@ fn tessellate_shrunk(
     if !infeasible.is_empty() {
         solve_opts.max_iterations = 0;
     }
-    let report = solve(&mut solved, &solve_opts, progress)?;
+    let report = solve_until(&mut solved, &solve_opts, deadline, progress)?;
     let unmet = if report.converged {
         Vec::new()
     } else {
@@ -621,6 +668,7 @@ fn tessellate_shrunk(
     let collisions =
         (!intersections.is_empty()).then(|| CollisionSites::locate(&solved, &he, &intersections));
     let crowding = rim_crowding_of(mesh, &he);
+    let out_of_time = report.out_of_time.then_some(deadline.limit()).flatten();
     Ok(Tessellation {
         initial,
         mesh: solved,
@@ -635,6 +683,7 @@ fn tessellate_shrunk(
         unmet,
         remeshed: None,
         coarsened: None,
+        out_of_time,
     })
 }
 

@@ -1,6 +1,8 @@
 //! Sample surfaces for examples, tests and benchmarks: a hexagonal patch of equilateral
-//! triangles (edge `l`, `6·rings²` faces) lifted vertically onto a dome, a saddle or a bell,
-//! the doubly curved shapes of Tachi (2014) Fig. 13.
+//! triangles (edge `l`, `6·rings²` faces) laid onto a dome, a saddle or a bell (the doubly
+//! curved shapes of Tachi (2014) Fig. 13), saddles of other curvatures, a sinusoidal height
+//! field, a cylinder and a torus; spherical caps triangulated two ways (rings of growing
+//! length, [`spherical_cap`]; a UV sphere's latitude rings, [`uv_cap`]); a face mask.
 
 use glam::DVec3;
 
@@ -19,6 +21,21 @@ pub enum SampleSurface {
     Saddle,
     /// A Gaussian bell `z = 0.4 ρ exp(−r² / (2 (ρ/2.5)²))` (positive top, negative rim).
     Bell,
+    /// A shallower saddle `z = (x² − y²) / (6 ρ)` (a quarter of [`Self::Saddle`]'s Gaussian
+    /// curvature).
+    ShallowSaddle,
+    /// A steeper saddle `z = (x² − y²) / (1.5 ρ)` (four times [`Self::Saddle`]'s).
+    SteepSaddle,
+    /// A sinusoidal height field `z = 0.06 ρ sin(k x) sin(k y)`, wavelength `2π/k = 1.5 ρ`:
+    /// bumps and dips side by side, saddles between them.
+    Waves,
+    /// A cylinder of radius `1.5 ρ` about the y axis, the patch wrapped round it without
+    /// stretching (Gaussian curvature zero).
+    Cylinder,
+    /// The top of a torus lying flat (tube radius `ρ`, centre circle radius `2 ρ`), the patch
+    /// centred on the tube's top circle: positive curvature on the outer side (x > 0),
+    /// negative on the inner.
+    Torus,
 }
 
 /// A hexagonal patch of `6·rings²` triangles of edge `edge` (mesh units) lifted onto
@@ -27,17 +44,40 @@ pub enum SampleSurface {
 pub fn sample_surface(surface: SampleSurface, rings: usize, edge: f64) -> PolyMesh {
     let r = rings.clamp(1, 64) as i64;
     let radius = r as f64 * edge;
-    let lift = |x: f64, y: f64| -> f64 {
+    let place = |x: f64, y: f64| -> DVec3 {
         let rr = x * x + y * y;
+        let height = |z: f64| DVec3::new(x, y, z);
         match surface {
             SampleSurface::Dome => {
                 let s = 1.5 * radius;
-                (s * s - rr).max(0.0).sqrt() - s
+                height((s * s - rr).max(0.0).sqrt() - s)
             }
-            SampleSurface::Saddle => (x * x - y * y) / (3.0 * radius),
+            SampleSurface::Saddle => height((x * x - y * y) / (3.0 * radius)),
+            SampleSurface::ShallowSaddle => height((x * x - y * y) / (6.0 * radius)),
+            SampleSurface::SteepSaddle => height((x * x - y * y) / (1.5 * radius)),
             SampleSurface::Bell => {
                 let sigma = radius / 2.5;
-                0.4 * radius * (-rr / (2.0 * sigma * sigma)).exp()
+                height(0.4 * radius * (-rr / (2.0 * sigma * sigma)).exp())
+            }
+            SampleSurface::Waves => {
+                let k = std::f64::consts::TAU / (1.5 * radius);
+                height(0.06 * radius * (k * x).sin() * (k * y).sin())
+            }
+            SampleSurface::Cylinder => {
+                let r = 1.5 * radius;
+                let a = x / r;
+                DVec3::new(r * a.sin(), y, r * (a.cos() - 1.0))
+            }
+            SampleSurface::Torus => {
+                // x across the tube (arc length from its top), y along the centre circle.
+                let (tube, centre) = (radius, 2.0 * radius);
+                let (phi, theta) = (x / tube, y / centre);
+                let reach = centre + tube * phi.sin();
+                DVec3::new(
+                    reach * theta.cos() - centre,
+                    reach * theta.sin(),
+                    tube * (phi.cos() - 1.0),
+                )
             }
         }
     };
@@ -50,7 +90,7 @@ pub fn sample_surface(surface: SampleSurface, rings: usize, edge: f64) -> PolyMe
                 let x = edge * (i as f64 + 0.5 * j as f64);
                 let y = edge * 0.75f64.sqrt() * j as f64;
                 index.insert((i, j), positions.len() as u32);
-                positions.push(DVec3::new(x, y, lift(x, y)));
+                positions.push(place(x, y));
             }
         }
     }
@@ -96,6 +136,49 @@ pub fn spherical_cap(n: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyM
         })
         .collect();
     PolyMesh::new(positions, faces).expect("a spherical cap is a valid mesh")
+}
+
+/// A spherical cap as a UV sphere is triangulated (the way most modelling programs make a
+/// sphere, and unlike [`spherical_cap`]): a pole joined to the first of `rings` latitude rings
+/// of `segments` vertices each, at polar angles `k·cap/rings`, the quads between rings split
+/// along one diagonal, so `segments·(2·rings − 1)` triangles, long and thin near the pole and
+/// square-ish at the rim. The pole sits at the origin, the cap opens towards −z; faces are
+/// counter-clockwise seen from outside. Clamps: `segments` to 3..=256, `rings` to 1..=256,
+/// `cap_deg` to (0, 179].
+pub fn uv_cap(segments: usize, rings: usize, cap_deg: f64, radius: f64) -> PolyMesh {
+    let (n, rings) = (segments.clamp(3, 256), rings.clamp(1, 256));
+    let cap = cap_deg.clamp(MIN_CAP_DEG, 179.0).to_radians();
+    let mut positions = vec![DVec3::ZERO];
+    for k in 1..=rings {
+        let phi = cap * k as f64 / rings as f64;
+        for i in 0..n {
+            let a = std::f64::consts::TAU * i as f64 / n as f64;
+            positions.push(DVec3::new(
+                radius * phi.sin() * a.cos(),
+                radius * phi.sin() * a.sin(),
+                radius * (phi.cos() - 1.0),
+            ));
+        }
+    }
+    // Vertex i of ring k (1-based rings; ring 0 is the pole).
+    let at = |k: usize, i: usize| -> u32 {
+        if k == 0 {
+            0
+        } else {
+            (1 + (k - 1) * n + i % n) as u32
+        }
+    };
+    let mut faces = Vec::with_capacity(n * (2 * rings - 1));
+    for i in 0..n {
+        faces.push(vec![at(0, 0), at(1, i), at(1, i + 1)]);
+    }
+    for k in 1..rings {
+        for i in 0..n {
+            faces.push(vec![at(k, i), at(k + 1, i), at(k + 1, i + 1)]);
+            faces.push(vec![at(k, i), at(k + 1, i + 1), at(k, i + 1)]);
+        }
+    }
+    PolyMesh::new(positions, faces).expect("a UV cap is a valid mesh")
 }
 
 /// The connectivity of [`spherical_cap`] on the disk: per vertex its ring number `k` (0 at the

@@ -33,6 +33,7 @@ use super::min_norm::{Jacobian, damped_min_norm, min_norm};
 use super::model::TessMesh;
 use super::pipeline::Watch;
 use super::vertex_penalty;
+use crate::clock::Deadline;
 
 /// Solver settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,6 +96,10 @@ pub struct SolveReport {
     /// either [`BoundaryRuns`](super::constraints::BoundaryRuns) form: a violated run implies a violated
     /// dominant run, so both forms have no boundary row at exactly the same points.
     pub boundary_rows: bool,
+    /// Whether the solve stopped because its time limit ran out
+    /// ([`TessellateOptions::time_limit`](super::TessellateOptions::time_limit)) before it
+    /// converged or gave up.
+    pub out_of_time: bool,
 }
 
 impl SolveReport {
@@ -111,6 +116,8 @@ impl SolveReport {
              vertex-adjacent faces (Tachi 2014 corner penalty{}): illegal creases {} (start {}), max penalty {:.2e}",
             if self.converged {
                 "converged"
+            } else if self.out_of_time {
+                "NOT converged (the time limit ran out)"
             } else {
                 "NOT converged"
             },
@@ -171,6 +178,20 @@ pub const GROUND_TOLERANCE: f64 = 1e-9;
 pub fn solve(
     mesh: &mut TessMesh,
     opts: &SolveOptions,
+    watch: impl Watch,
+) -> Result<SolveReport, TessError> {
+    solve_until(mesh, opts, &Deadline::after(None), watch)
+}
+
+/// [`solve`], stopping before an iteration once `deadline` has passed: the positions
+/// reached are kept and the report says [`SolveReport::out_of_time`].
+///
+/// # Errors
+/// As [`solve`].
+pub fn solve_until(
+    mesh: &mut TessMesh,
+    opts: &SolveOptions,
+    deadline: &Deadline,
     mut watch: impl Watch,
 ) -> Result<SolveReport, TessError> {
     let l = opts.limits;
@@ -203,7 +224,12 @@ pub fn solve(
     let mut merit = merit_of(&rows);
     let cap = 0.1 * mean_edge(mesh, &x);
     let mut smoothed = false;
+    let mut out_of_time = false;
     while iterations < opts.max_iterations && !satisfied(&last, opts) {
+        if deadline.passed() {
+            out_of_time = true;
+            break;
+        }
         iterations += 1;
         let g: Vec<f64> = rows.iter().map(|r| r.value).collect();
         // Inexact Newton: the CG's relative residual η shrinks with ‖g‖, so far from the
@@ -286,6 +312,7 @@ pub fn solve(
         last,
         limits: l,
         boundary_rows,
+        out_of_time,
     })
 }
 
