@@ -545,7 +545,7 @@ fn long_design_steps_print_an_estimate_first() {
     );
     assert_eq!(code, 0, "{err}");
     assert!(
-        err.contains("estimate:") && err.contains("per solve"),
+        err.contains("estimate:") && err.contains("star tucks took"),
         "{err}"
     );
     let building = repo_file("examples/popup/building.obj");

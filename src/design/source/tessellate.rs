@@ -9,7 +9,7 @@ use std::path::Path;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::advice::curvature_advice;
 use crate::design::tessellation::distance::{MIN_COVERED, SurfaceFit, fit_and_missing};
-use crate::design::tessellation::estimate::solve_estimate;
+use crate::design::tessellation::estimate::ladder_estimate;
 use crate::design::tessellation::steps::{
     FitOptions, SHRINK_LADDER, Triangulation, TuckShape, Unfolded,
 };
@@ -298,14 +298,22 @@ pub fn tessellate_outcome(
     // Every triangulation the schedule solves on, built once for the notes and the solves.
     let plan = opts.plan(mesh).map_err(|e| SourceError::input(name, e))?;
     let (passes, crowding, shrinks) = (plan.passes(), *plan.crowding(), plan.shrinks());
+    // The faces of the first triangulation solved: the one the history's times are per.
+    let first_faces = match passes.first().map(|p| p.triangulation) {
+        Some(Triangulation::Coarser { faces } | Triangulation::Remeshed { faces }) => faces,
+        _ => mesh.faces().len(),
+    };
     progress.note(format!(
         "estimate: up to {} solve(s): {} face shrink(s) on {} triangulation(s), a colliding \
-         one solved once more with the stiffer outline; a first guess from the face count, \
-         {} per solve, until the first iterations are timed",
+         one solved once more with the stiffer outline; {}{}",
         passes.len() * shrinks.len(),
         shrinks.len(),
         passes.len(),
-        solve_estimate(mesh.faces().len()),
+        ladder_estimate(opts.star.tuck.kind, first_faces),
+        opts.time_limit.map_or(String::new(), |limit| format!(
+            "; the time limit stops it after {:.0} s (--time-limit)",
+            limit.as_secs_f64()
+        )),
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
     let advice = curvature_advice(mesh)
@@ -526,8 +534,8 @@ pub const RATE_WINDOW: usize = 5;
 /// geometric mean over the last [`RATE_WINDOW`] iterations), so reaching the tolerance `τ`
 /// takes `ln(r/τ) / ln(1/q)` more, at most the iteration cap. Until two iterations of the
 /// running solve are seen nothing is known, and nothing is said: the up-front estimate of
-/// [`solve_estimate`] is a guess from the face count, printed as one before the work starts,
-/// never as the time left. Times are passed in, so nothing
+/// [`ladder_estimate`] is from the solver's measured history on other meshes, printed as such
+/// before the work starts, never as the time left. Times are passed in, so nothing
 /// here reads a clock. A solve that makes no iteration (refused before solving) is still
 /// counted; a re-triangulation that cannot be built is not in the plan (see [`solve_plan`]).
 #[derive(Clone, Debug)]

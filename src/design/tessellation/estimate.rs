@@ -11,6 +11,7 @@
 //! smaller face shrink of the ladder, which multiplies the time by up to that many tries.
 
 use crate::design::estimate::Estimate;
+use crate::design::tessellation::TuckKind;
 
 /// Seconds of one solve per `faces^SOLVE_TIME_EXPONENT`, measured (see the module docs).
 pub const SECONDS_PER_FACE_POWER: f64 = 3.8e-6;
@@ -30,9 +31,123 @@ pub fn solve_estimate(faces: usize) -> Estimate {
     }
 }
 
+/// What the solver's measured history says a whole face-shrink ladder takes (every solve until
+/// a usable result, or all of them), by tuck kind and solved face count: iterations × seconds
+/// per iteration.
+///
+/// The history is `examples/tessellation_survey.rs` (saddles of three curvatures, a height
+/// field, a cylinder, a torus patch, a bell, spherical and UV caps of 408 to 10,092 faces, a
+/// Stanford bunny patch; release build, two cores, 0.5 mm stainless limits): the iterations of
+/// every ladder that ended before the time limit (median and largest), and the seconds per
+/// iteration (the ladder's time over its iterations, so unfolding and the intersection check
+/// are included) fitted as `a · faces^b` over the solved face counts 138 to 2,022, within a
+/// factor of 1.5 (twisted stars, twist folds) to 2.3 (truncated stars) of every run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LadderEstimate {
+    /// The tuck kind.
+    pub kind: TuckKind,
+    /// Faces of the first triangulation solved.
+    pub faces: usize,
+    /// Iterations a ladder of this kind took in the history: median and largest.
+    pub iterations: (usize, usize),
+    /// Seconds per iteration at `faces`; `None` above [`MAX_MEASURED_FACES`].
+    pub seconds_per_iteration: Option<f64>,
+}
+
+/// The largest solved face count the history covers (a smaller mesh is no slower per
+/// iteration than the smallest measured, so the fit is used below the range too).
+pub const MAX_MEASURED_FACES: usize = 2_100;
+
+/// `(a, b, median iterations, largest iterations)` of [`LadderEstimate`] per tuck kind.
+fn history(kind: TuckKind) -> (f64, f64, usize, usize) {
+    match kind {
+        TuckKind::Star => (1.54e-5, 1.23, 129, 966),
+        TuckKind::Truncated => (2.47e-5, 1.05, 116, 515),
+        TuckKind::Twisted => (3.07e-5, 1.20, 228, 751),
+        TuckKind::TwistFold => (4.99e-5, 1.00, 22, 156),
+    }
+}
+
+/// The [`LadderEstimate`] of `kind` tucks on a first triangulation of `faces` faces.
+pub fn ladder_estimate(kind: TuckKind, faces: usize) -> LadderEstimate {
+    let (a, b, median, most) = history(kind);
+    LadderEstimate {
+        kind,
+        faces,
+        iterations: (median, most),
+        seconds_per_iteration: (faces <= MAX_MEASURED_FACES)
+            .then(|| a * (faces.max(1) as f64).powf(b)),
+    }
+}
+
+impl LadderEstimate {
+    /// Seconds of a typical ladder and of the longest measured, when the face count is
+    /// within the history.
+    pub fn seconds(&self) -> Option<(f64, f64)> {
+        self.seconds_per_iteration
+            .map(|s| (s * self.iterations.0 as f64, s * self.iterations.1 as f64))
+    }
+}
+
+impl std::fmt::Display for LadderEstimate {
+    /// "about 4 s, up to 31 s (star tucks took 129 iterations, at most 966, on the measured
+    /// meshes; 33 ms each at 800 faces)".
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (median, most) = self.iterations;
+        match (self.seconds(), self.seconds_per_iteration) {
+            (Some((typical, longest)), Some(each)) => write!(
+                f,
+                "about {}, up to {} ({} tucks took {median} iterations, at most {most}, on the \
+                 measured meshes; {:.0} ms each at {} faces)",
+                seconds(typical),
+                seconds(longest),
+                self.kind,
+                1e3 * each,
+                self.faces
+            ),
+            _ => write!(
+                f,
+                "not known: no measured history at {} faces (measured up to \
+                 {MAX_MEASURED_FACES}; {} tucks took {median} iterations, at most {most})",
+                self.faces, self.kind
+            ),
+        }
+    }
+}
+
+/// "0.4 s", "12 s", "3 min".
+fn seconds(s: f64) -> String {
+    if s < 10.0 {
+        format!("{s:.1} s")
+    } else if s < 120.0 {
+        format!("{s:.0} s")
+    } else {
+        format!("{:.0} min", s / 60.0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::solve_estimate;
+    use super::{LadderEstimate, TuckKind, ladder_estimate};
+
+    /// The history's own runs, re-read through the model: the star ladder on the 2,028-face
+    /// 52° cap (solved on 804 faces, 966 iterations, 31.6 s) lies within its range, the
+    /// 216-face saddle (64 iterations, 0.7 s) too; a face count outside the history is said
+    /// to be unknown, not guessed.
+    #[test]
+    fn the_ladder_estimate_brackets_the_measured_runs_and_says_when_it_cannot() {
+        let cap = ladder_estimate(TuckKind::Star, 804);
+        let (typical, longest) = cap.seconds().expect("measured");
+        assert!(typical < 31.6 && 31.6 < 1.5 * longest, "{cap}");
+        let saddle = ladder_estimate(TuckKind::Star, 216);
+        let (typical, _) = saddle.seconds().expect("measured");
+        assert!((0.2..3.0).contains(&typical), "{saddle}");
+        let big: LadderEstimate = ladder_estimate(TuckKind::TwistFold, 10_092);
+        assert_eq!(big.seconds(), None);
+        assert!(big.to_string().starts_with("not known"), "{big}");
+        assert!(cap.to_string().contains("966"), "{cap}");
+    }
 
     #[test]
     fn twenty_thousand_faces_are_announced_as_minutes_not_seconds() {
