@@ -63,13 +63,32 @@ pub(super) fn write_job(
     machine: &str,
     material: &str,
 ) -> Result<WrittenJob> {
+    write_job_with(
+        dir,
+        index,
+        name,
+        cp,
+        (machine, material),
+        &PlanOverrides::default(),
+    )
+}
+
+/// [`write_job`] with the plan's settings overridden as `foldcam cut`'s options would.
+pub(super) fn write_job_with(
+    dir: &Path,
+    index: &mut DemoIndex,
+    name: &str,
+    cp: &CreasePattern,
+    (machine, material): (&str, &str),
+    overrides: &PlanOverrides,
+) -> Result<WrittenJob> {
     let machine = load_machine(machine)?;
     let material = load_material(material)?;
     // A design's pattern has no title of its own: its job names the demo's name as source.
     let mut titled = cp.clone();
     titled.meta.title.get_or_insert_with(|| name.to_string());
     let cp = &titled;
-    let job = Job::plan(cp, &machine, &material, &PlanOverrides::default())?
+    let job = Job::plan(cp, &machine, &material, overrides)?
         .post(JobFormat::Gcode)?
         .verify()?;
     let clean = job.is_clean();

@@ -10,12 +10,13 @@ use foldcam::design::tessellation::steps::SHRINK_LADDER;
 use foldcam::design::tessellation::{
     Remesh, Schedule, TessellateOptions, Tessellation, TuckKind, tessellate,
 };
+use foldcam::fab::PlanOverrides;
 use foldcam::formats::{self, write_atomic};
 use foldcam::machine::load_material;
 use foldcam::mesh::PolyMesh;
 use foldcam::render::{View3d, render_folded_png};
 
-use super::demo_jobs::{DemoIndex, write_job};
+use super::demo_jobs::{DemoIndex, write_job_with};
 
 /// The face shrink the default ladder reaches on the mask (0.8 and 0.7 leave limits unmet):
 /// starting there saves the demo two failing solves (about 5 s of a release build).
@@ -46,12 +47,18 @@ pub fn dome(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
         dir,
         index,
         "tessellation-dome",
-        &mesh,
-        &t,
+        (&mesh, &t),
         &view,
         "truncated star",
+        None,
     )
 }
+
+/// The vertex clearance the mask is perforated with, mm: some creases between its tucks are
+/// 3.4 mm long, and a 0.5 mm dash does not fit between the stainless profile's 1.5 mm
+/// clearances (the planner would leave them uncut, and the simulated machine would find them
+/// not perforated).
+const MASK_CLEARANCE_MM: f64 = 0.8;
 
 /// Tessellates the bundled face mask as `foldcam tessellate` does by default (star tucks, the
 /// face-shrink ladder, a re-triangulation when the input's own triangles fail) but starting
@@ -76,21 +83,29 @@ pub fn mask(dir: &Path, index: &mut DemoIndex, width: u32) -> Result<()> {
         elevation_deg: 60.0,
         ..View3d::with_width(width.min(800))
     };
-    cut(dir, index, "tessellation-mask", &mesh, &t, &view, "star")
+    cut(
+        dir,
+        index,
+        "tessellation-mask",
+        (&mesh, &t),
+        &view,
+        "star",
+        Some(MASK_CLEARANCE_MM),
+    )
 }
 
 /// Writes `NAME.fold`, `NAME.png` (the folded form seen through `view`) and the checked
-/// `NAME.linuxcnc-fiber.ngc` of the tessellation `t` of `mesh` (with `tucks`) into `dir`, and
-/// prints one line about them; fails when `t` is unusable or the simulated machine finds a
-/// problem.
+/// `NAME.linuxcnc-fiber.ngc` of the tessellation `t` of `mesh` (with `tucks`; perforated with
+/// `clearance` mm around the vertices when given, else the material's) into `dir`, and prints
+/// one line about them; fails when `t` is unusable or the simulated machine finds a problem.
 fn cut(
     dir: &Path,
     index: &mut DemoIndex,
     name: &str,
-    mesh: &PolyMesh,
-    t: &Tessellation,
+    (mesh, t): (&PolyMesh, &Tessellation),
     view: &View3d,
     tucks: &str,
+    clearance: Option<f64>,
 ) -> Result<()> {
     if let Some(problem) = t.problem() {
         bail!("{name}: {problem}");
@@ -108,13 +123,17 @@ fn cut(
     let png = render_folded_png(&u.folded, &view)?;
     write_atomic(&dir.join(format!("{name}.png")), &png).context("png")?;
     index.picture(format!("{name}.png"), format!("{name}: the folded form"));
-    let job = write_job(
+    let overrides = PlanOverrides {
+        vertex_clearance_mm: clearance,
+        ..PlanOverrides::default()
+    };
+    let job = write_job_with(
         dir,
         index,
         name,
         &u.pattern,
-        "linuxcnc-fiber",
-        "stainless-0.5",
+        ("linuxcnc-fiber", "stainless-0.5"),
+        &overrides,
     )?;
     let clean = job.clean;
     let r = &t.report.last;
@@ -137,7 +156,7 @@ fn cut(
     outln!(
         "\n{name} (tessellation, Tachi 2014): {} faces{remeshed} -> {} triangles with {} tucks, \
          shrink {}, solved in {} iterations (developable to {:.0e} rad, folds <= {:.1} deg, \
-         creases >= {:.1} deg apart){distance}; linuxcnc-fiber/stainless-0.5 perforation {}; \
+         creases >= {:.1} deg apart){distance}; linuxcnc-fiber/stainless-0.5 perforation{} {}; \
          {name}.png shows it folded",
         mesh.faces().len(),
         t.mesh.triangles.len(),
@@ -147,6 +166,10 @@ fn cut(
         r.developability.max(1e-16),
         r.max_fold.to_degrees(),
         r.min_vertex_angle.to_degrees(),
+        clearance.map_or(String::new(), |c| format!(
+            " (vertex clearances {c} mm: some creases are too short for a dash between the \
+             material's)"
+        )),
         if clean { "clean" } else { "NOT clean" }
     );
     if !clean {
