@@ -1,6 +1,7 @@
 //! Compliant 3D fold simulation (Ghassaei, Demaine & Gershenfeld 2018, on the CPU): solver
-//! steps per second on a sheet of about 10,000 triangles, and a 20 × 20 Miura-ori folded to
-//! 90 % end to end (model, triangulation, dynamics until settled, report).
+//! steps per second on Miura-ori sheets of about 1,000, 10,000 and 100,000 triangles, and a
+//! 20 × 20 Miura-ori folded to 90 % end to end (model, triangulation, dynamics until settled,
+//! report).
 //!
 //! The targets on 2 cores: ≥ 200 steps/s at 10,000 triangles, the Miura-ori in under
 //! 1 s. Run with `cargo bench --bench fold3d`.
@@ -31,28 +32,31 @@ fn miura(columns: usize, rows: usize) -> CreasePattern {
 }
 
 fn bench(c: &mut Criterion) {
-    // 71 × 71 parallelograms = 10,082 triangles.
-    let big = miura(71, 71);
-    let model = BarHingeModel::build(&big).expect("model");
-    eprintln!("steps: {} triangles", model.triangles.len());
-    let opts = FoldOptions::default();
     let mut group = c.benchmark_group("fold3d");
+    // 22 × 22, 71 × 71 and 224 × 224 parallelograms: 968, 10,082 and 100,352 triangles.
+    for (side, name) in [(22, "1k"), (71, "10k"), (224, "100k")] {
+        let cp = miura(side, side);
+        let model = BarHingeModel::build(&cp).expect("model");
+        eprintln!("steps: {} triangles", model.triangles.len());
+        let opts = FoldOptions::default();
+        group.sample_size(if side > 100 { 10 } else { 20 });
+        group.bench_function(format!("100 steps, {name} triangles"), |b| {
+            b.iter_batched_ref(
+                || {
+                    let mut s = Solver::new(&model, &opts);
+                    s.set_fraction(0.5);
+                    s
+                },
+                |s| {
+                    for _ in 0..100 {
+                        s.step();
+                    }
+                },
+                BatchSize::LargeInput,
+            )
+        });
+    }
     group.sample_size(20);
-    group.bench_function("100 steps, 10k triangles", |b| {
-        b.iter_batched_ref(
-            || {
-                let mut s = Solver::new(&model, &opts);
-                s.set_fraction(0.5);
-                s
-            },
-            |s| {
-                for _ in 0..100 {
-                    s.step();
-                }
-            },
-            BatchSize::LargeInput,
-        )
-    });
     let small = miura(20, 20);
     let opts = FoldOptions {
         percent: 90.0,

@@ -54,7 +54,7 @@ use crate::design::source::tessellate::{
 };
 use crate::design::source::{DesignFile, Progress, SourceError};
 use crate::design::tessellation::Iteration;
-use crate::design::tessellation::estimate::solve_estimate;
+use crate::design::tessellation::estimate::solve_bytes;
 use crate::machine::{load_material, shipped_materials};
 use crate::mesh::PolyMesh;
 
@@ -552,7 +552,7 @@ async fn solve(
         .max(mesh.mesh.faces().len());
     let memory = budget::reserve(
         &format!("{}: the solve", mesh.name),
-        solve_estimate(faces).bytes as u64,
+        solve_bytes(faces) as u64,
     )?;
     let job = Arc::new(Solve {
         mesh,
