@@ -20,6 +20,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use foldcam::design::source::TessellationOptions;
+use foldcam::design::source::tess_design::tuck_by_name;
 use foldcam::design::tessellation::measure::surface_fit;
 use foldcam::design::tessellation::samples::{
     SampleSurface, sample_surface, spherical_cap, uv_cap,
@@ -47,7 +48,10 @@ fn main() -> Result<(), Error> {
         match a.as_str() {
             "--modes" => {
                 let list = it.next().ok_or("--modes needs a list")?;
-                modes = list.split(',').map(mode).collect::<Result<_, _>>()?;
+                modes = list
+                    .split(',')
+                    .map(|m| tuck_by_name(m).ok_or(format!("unknown mode {m}")))
+                    .collect::<Result<_, _>>()?;
             }
             "--write" => write = Some(PathBuf::from(it.next().ok_or("--write needs a DIR")?)),
             "--time-limit" => time_limit = it.next().ok_or("--time-limit needs S")?.parse()?,
@@ -126,16 +130,6 @@ fn main() -> Result<(), Error> {
 fn short(problem: &str) -> String {
     let first = problem.split(" (first").next().unwrap_or(problem);
     first.replace('|', "/")
-}
-
-fn mode(name: &str) -> Result<TuckKind, String> {
-    match name {
-        "star" => Ok(TuckKind::Star),
-        "truncated" => Ok(TuckKind::Truncated),
-        "twisted" => Ok(TuckKind::Twisted),
-        "twist" => Ok(TuckKind::TwistFold),
-        other => Err(format!("unknown mode {other}")),
-    }
 }
 
 /// The survey's meshes, by name.

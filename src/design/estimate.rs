@@ -15,17 +15,22 @@ pub struct Estimate {
 impl std::fmt::Display for Estimate {
     /// "about 2 min and 120 MB".
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let s = self.seconds.max(0.0);
-        let time = if s < 1.0 {
-            "under a second".to_string()
-        } else if s < 120.0 {
-            format!("about {s:.0} s")
-        } else if s < 7200.0 {
-            format!("about {:.0} min", s / 60.0)
-        } else {
-            format!("about {:.1} h", s / 3600.0)
-        };
-        write!(f, "{time} and {:.0} MB", self.bytes / 1e6)
+        write!(f, "{} and {:.0} MB", about(self.seconds), self.bytes / 1e6)
+    }
+}
+
+/// An estimated time in units a person uses: "under a second", "about 3 s", "about 2 min",
+/// "about 2.5 h".
+pub(crate) fn about(seconds: f64) -> String {
+    let s = seconds.max(0.0);
+    if s < 1.0 {
+        "under a second".to_string()
+    } else if s < 120.0 {
+        format!("about {s:.0} s")
+    } else if s < 7200.0 {
+        format!("about {:.0} min", s / 60.0)
+    } else {
+        format!("about {:.1} h", s / 3600.0)
     }
 }
 

@@ -539,14 +539,16 @@ fn cli_time_limit_refuses_with_the_reason_and_writes_nothing() {
     let dir = tempfile::tempdir().expect("temp dir");
     let out = dir.path().join("cap.fold");
     let mesh = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/tessellation/cap.obj");
-    let run = foldcam(&[
-        "tessellate",
-        mesh.to_str().expect("utf-8"),
-        "--time-limit",
-        "0.05",
-        "-o",
-        out.to_str().expect("utf-8"),
-    ]);
+    let with_limit = |limit: &str| {
+        foldcam(&[
+            "tessellate",
+            mesh.to_str().expect("utf-8"),
+            &format!("--time-limit={limit}"),
+            "-o",
+            out.to_str().expect("utf-8"),
+        ])
+    };
+    let run = with_limit("0.05");
     let stdout = String::from_utf8_lossy(&run.stdout);
     assert_eq!(run.status.code(), Some(1), "{stdout}");
     assert!(
@@ -554,13 +556,7 @@ fn cli_time_limit_refuses_with_the_reason_and_writes_nothing() {
         "{stdout}"
     );
     assert!(!out.exists());
-    let run = foldcam(&[
-        "tessellate",
-        mesh.to_str().expect("utf-8"),
-        "--time-limit=-3",
-        "-o",
-        out.to_str().expect("utf-8"),
-    ]);
+    let run = with_limit("-3");
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("--time-limit"), "{stderr}");

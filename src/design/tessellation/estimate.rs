@@ -3,6 +3,7 @@
 //! the time from the solver's measured history ([`LadderEstimate`]), the memory of one solve
 //! from the face count ([`solve_bytes`], which the studio also reserves before solving).
 
+use crate::design::estimate::about;
 use crate::design::tessellation::TuckKind;
 
 /// Bytes per mesh face, measured on the release build with gently curved quad grids of 100
@@ -79,17 +80,17 @@ impl LadderEstimate {
 }
 
 impl std::fmt::Display for LadderEstimate {
-    /// "about 4 s, up to 31 s (star tucks took 129 iterations, at most 966, on the measured
-    /// meshes; 33 ms each at 800 faces) and 38 MB".
+    /// "about 4 s, up to about 31 s (star tucks took 129 iterations, at most 966, on the
+    /// measured meshes; 33 ms each at 800 faces) and 38 MB".
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let (median, most) = self.iterations;
         match (self.seconds(), self.seconds_per_iteration) {
             (Some((typical, longest)), Some(each)) => write!(
                 f,
-                "about {}, up to {} ({} tucks took {median} iterations, at most {most}, on the \
+                "{}, up to {} ({} tucks took {median} iterations, at most {most}, on the \
                  measured meshes; {:.0} ms each at {} faces) and {:.0} MB",
-                seconds(typical),
-                seconds(longest),
+                about(typical),
+                about(longest),
                 self.kind,
                 1e3 * each,
                 self.faces,
@@ -105,17 +106,6 @@ impl std::fmt::Display for LadderEstimate {
                 self.bytes / 1e6
             ),
         }
-    }
-}
-
-/// "0.4 s", "12 s", "3 min".
-fn seconds(s: f64) -> String {
-    if s < 10.0 {
-        format!("{s:.1} s")
-    } else if s < 120.0 {
-        format!("{s:.0} s")
-    } else {
-        format!("{:.0} min", s / 60.0)
     }
 }
 

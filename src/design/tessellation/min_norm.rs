@@ -99,31 +99,29 @@ impl Jacobian {
 /// after [`JACOBI_BUDGET`] iterations (nearly dependent rows), the step is solved again with
 /// the Cholesky factor, which this Jacobian then keeps.
 pub(crate) fn min_norm(c: &Jacobian, g: &[f64], eta: f64) -> (Vec<DVec3>, usize) {
-    let (pre, eps) = c.preconditioner.get_or_init(|| {
+    let (first, eps) = c.preconditioner.get_or_init(|| {
         let (diag, eps) = diagonal(c, ROUNDOFF);
         (Preconditioner::new(c, &diag, eps, 100.0 * eps), eps)
     });
     let full = full_cap(c.rows());
-    if let Preconditioner::Cholesky(_) = pre {
-        return preconditioned_cg(c, g, eta, *eps, pre, full).0;
-    }
-    if let Some(Some(factored)) = c.fallback.get() {
-        return preconditioned_cg(c, g, eta, *eps, factored, full).0;
-    }
-    let budget = if c.fallback.get().is_some() {
-        full
-    } else {
+    // The factor, once a diagonal has run out of its budget on these rows (it stays on the
+    // diagonal, with the full cap, when that factorization failed).
+    let pre = c.fallback.get().and_then(Option::as_ref).unwrap_or(first);
+    let on_budget = matches!(first, Preconditioner::Jacobi(_)) && c.fallback.get().is_none();
+    let cap = if on_budget {
         JACOBI_BUDGET.min(full)
+    } else {
+        full
     };
-    let ((dx, it), converged) = preconditioned_cg(c, g, eta, *eps, pre, budget);
-    if converged || budget == full {
+    let ((dx, it), converged) = preconditioned_cg(c, g, eta, *eps, pre, cap);
+    if converged || cap == full {
         return (dx, it);
     }
-    let fallback = c
+    let factored = c
         .fallback
         .get_or_init(|| factor(c, 100.0 * eps).map(Preconditioner::Cholesky));
-    let again = fallback.as_ref().unwrap_or(pre);
-    let ((dx, more), _) = preconditioned_cg(c, g, eta, *eps, again, full);
+    let ((dx, more), _) =
+        preconditioned_cg(c, g, eta, *eps, factored.as_ref().unwrap_or(first), full);
     (dx, it + more)
 }
 
