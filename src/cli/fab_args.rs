@@ -2,19 +2,21 @@
 
 use anyhow::{Context, Result};
 use clap::Args;
-use foldcam::fab::{Operation, PlanOptions, PlanOverrides, Tabs};
+use foldcam::fab::{Operation, PlanOptions, PlanSettings, parse_offset};
 use foldcam::job::Job;
 use foldcam::machine::{MachineProfile, Material, load_machine, load_material};
 
 use foldcam::limits;
 
-/// An operation, or `skip` (`None`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OpChoice(pub Option<Operation>);
+/// Checks an operation name or `skip` ([`Operation::choice`]) as it is parsed, so that a bad
+/// one is refused with clap's usage; the request keeps the name.
+fn operation(s: &str) -> Result<String, String> {
+    Operation::choice(s).map(|_| s.to_string())
+}
 
-/// Parses an operation name or `skip` ([`Operation::choice`]).
-fn operation(s: &str) -> Result<OpChoice, String> {
-    Operation::choice(s).map(OpChoice)
+/// Checks `X,Y` in mm ([`parse_offset`]) as it is parsed; the request keeps the text.
+fn offset(s: &str) -> Result<String, String> {
+    parse_offset(s).map(|_| s.to_string())
 }
 
 /// Parses a duty cycle strictly between 0 and 1.
@@ -76,19 +78,19 @@ impl ProfileArgs {
 pub struct FabArgs {
     /// Operation for mountain creases (mark, score, perforate, cut, plot, skip).
     #[arg(long, value_name = "OP", value_parser = operation)]
-    pub mountain: Option<OpChoice>,
+    pub mountain: Option<String>,
     /// Operation for valley creases.
     #[arg(long, value_name = "OP", value_parser = operation)]
-    pub valley: Option<OpChoice>,
+    pub valley: Option<String>,
     /// Operation for unassigned creases.
     #[arg(long, value_name = "OP", value_parser = operation)]
-    pub unassigned: Option<OpChoice>,
+    pub unassigned: Option<String>,
     /// Operation for flat (facet) lines.
     #[arg(long, value_name = "OP", value_parser = operation)]
-    pub flat: Option<OpChoice>,
+    pub flat: Option<String>,
     /// Operation for boundary and cut lines.
     #[arg(long, value_name = "OP", value_parser = operation)]
-    pub boundary: Option<OpChoice>,
+    pub boundary: Option<String>,
     /// Perforation dash length, mm.
     #[arg(long, value_name = "MM", value_parser = |s: &str| limits::DASH.parse(s))]
     pub dash: Option<f64>,
@@ -141,7 +143,7 @@ pub struct FabArgs {
     pub origin: OriginArg,
     /// Shift the job by X,Y mm (x right, y towards the back of the bed) after placing it.
     #[arg(long, value_name = "X,Y", value_parser = offset, allow_hyphen_values = true)]
-    pub offset: Option<glam::DVec2>,
+    pub offset: Option<String>,
 }
 
 /// `--origin`.
@@ -153,49 +155,38 @@ pub enum OriginArg {
     Centre,
 }
 
-/// Parses `X,Y` in millimetres.
-fn offset(s: &str) -> Result<glam::DVec2, String> {
-    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
-    let bad = || format!("{s}: expected X,Y in mm, e.g. 10,-5");
-    if parts.len() != 2 {
-        return Err(bad());
-    }
-    let x: f64 = parts[0].parse().map_err(|_| bad())?;
-    let y: f64 = parts[1].parse().map_err(|_| bad())?;
-    if !(x.is_finite() && y.is_finite() && x.abs() <= 1e5 && y.abs() <= 1e5) {
-        return Err(format!("{s}: offsets must be finite and within ±100000 mm"));
-    }
-    Ok(glam::DVec2::new(x, y))
-}
-
 impl FabArgs {
-    /// The library overrides these arguments describe.
-    pub fn overrides(&self) -> PlanOverrides {
-        let op = |arg: Option<OpChoice>| arg.map(|OpChoice(op)| op);
-        PlanOverrides {
-            mountain: op(self.mountain),
-            valley: op(self.valley),
-            unassigned: op(self.unassigned),
-            flat: op(self.flat),
-            boundary: op(self.boundary),
-            dash_mm: self.dash,
-            bridge_mm: self.bridge,
+    /// The plan request these arguments make: the library's [`PlanSettings`], which the
+    /// studio's requests deserialise into too.
+    pub fn settings(&self) -> PlanSettings {
+        PlanSettings {
+            mountain: self.mountain.clone(),
+            valley: self.valley.clone(),
+            unassigned: self.unassigned.clone(),
+            flat: self.flat.clone(),
+            boundary: self.boundary.clone(),
+            dash: self.dash,
+            bridge: self.bridge,
             duty: self.duty,
-            min_dash_mm: self.min_dash,
-            min_web_mm: self.min_web,
-            vertex_clearance_mm: self.clearance,
-            kerf_mm: self.kerf,
-            kerf_offset: Some(!self.no_kerf_offset),
+            min_dash: self.min_dash,
+            min_web: self.min_web,
+            clearance: self.clearance,
+            kerf: self.kerf,
+            no_kerf_offset: self.no_kerf_offset,
             two_sided: self.two_sided,
-            tabs: self.tabs.map(|width_mm| Tabs {
-                width_mm,
-                spacing_mm: self.tab_spacing,
-            }),
-            lead_in_mm: self.lead_in,
-            margin_mm: Some(self.margin),
-            optimize: Some(!self.no_optimize),
-            centre: self.origin == OriginArg::Centre,
-            offset_mm: self.offset,
+            tabs: self.tabs,
+            tab_spacing: Some(self.tab_spacing),
+            lead_in: self.lead_in,
+            margin: Some(self.margin),
+            no_optimize: self.no_optimize,
+            origin: Some(
+                match self.origin {
+                    OriginArg::Corner => "corner",
+                    OriginArg::Centre => "centre",
+                }
+                .to_string(),
+            ),
+            offset: self.offset.clone(),
         }
     }
 
@@ -207,7 +198,7 @@ impl FabArgs {
     ) -> Result<(MachineProfile, Material, PlanOptions)> {
         let machine = load_machine(machine)?;
         let material = load_material(material)?;
-        let options = PlanOptions::for_machine(&machine, &material, &self.overrides())?;
+        let options = self.settings().options(&machine, &material)?;
         Ok((machine, material, options))
     }
 }

@@ -172,10 +172,10 @@ pub fn run(args: Args) -> Result<Outcome> {
     let mut progress = DesignProgress::solving(solve_plan(&mesh, &options)?);
     let result = tessellate_mesh(&mesh_path, &mesh, &options, &mut progress);
     // The report is printed whether or not the result is usable.
-    let lines: &[String] = match &result {
-        Ok(t) => &t.summary,
-        Err(SourceError::NotMade { lines }) => lines,
-        Err(_) => &[],
+    let lines: Vec<String> = match &result {
+        Ok(t) => t.summary.iter().map(ToString::to_string).collect(),
+        Err(SourceError::NotMade { lines }) => lines.clone(),
+        Err(_) => Vec::new(),
     };
     for line in lines {
         outln!("{line}");

@@ -36,7 +36,7 @@ pub use order::{order, ranks, travel_mm};
 pub use placement::{Placement, bed_to_machine, bounds_of, place};
 pub use plan::plan;
 pub use plan::{design_limit_warnings, plan_toolpaths};
-pub use settings::PlanSettings;
+pub use settings::{PlanSettings, parse_offset};
 pub use sides::{mirror, registration_marks, split};
 pub use warning::{PlanWarning, PlanWarningKind};
 

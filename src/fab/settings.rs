@@ -2,6 +2,7 @@
 //! `foldcam plan` by its option's name, deserialised from the studio's requests, resolved by
 //! the same [`PlanOptions::for_machine`] the command line uses.
 
+use glam::DVec2;
 use serde::Deserialize;
 
 use super::{DEFAULT_TAB_SPACING_MM, FabError, Operation, PlanOptions, PlanOverrides, Tabs};
@@ -9,8 +10,8 @@ use crate::machine::{MachineProfile, Material};
 
 /// Every plan override of `foldcam cut` / `foldcam plan`, by the option's name with `_` for
 /// `-` (`min_dash` is `--min-dash`); `None` keeps the material's or the planner's default.
-/// Lengths are millimetres. The studio's plan requests deserialise into it; the command line
-/// parses its options into [`PlanOverrides`] directly.
+/// Lengths are millimetres. The studio's plan requests deserialise into it and the command
+/// line parses its options into it, so both resolve the same request with [`Self::options`].
 #[derive(Clone, Debug, Default, Deserialize, PartialEq)]
 pub struct PlanSettings {
     /// Operation for mountain creases (`mark`, `score`, `perforate`, `cut`, `plot`, `skip`).
@@ -57,6 +58,31 @@ pub struct PlanSettings {
     pub no_optimize: bool,
     /// `corner` (default) or `centre`.
     pub origin: Option<String>,
+    /// Shift of the placed job, `X,Y` in mm ([`parse_offset`]).
+    pub offset: Option<String>,
+}
+
+/// Largest shift of a placed job along either axis, mm.
+pub const MAX_OFFSET_MM: f64 = 1e5;
+
+/// Parses a job's shift `X,Y` in millimetres (`--offset`), each within [`MAX_OFFSET_MM`].
+///
+/// # Errors
+/// The text and what was expected.
+pub fn parse_offset(s: &str) -> Result<DVec2, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let bad = || format!("{s}: expected X,Y in mm, e.g. 10,-5");
+    let [x, y] = parts[..] else {
+        return Err(bad());
+    };
+    let x: f64 = x.parse().map_err(|_| bad())?;
+    let y: f64 = y.parse().map_err(|_| bad())?;
+    if !(x.is_finite() && y.is_finite() && x.abs() <= MAX_OFFSET_MM && y.abs() <= MAX_OFFSET_MM) {
+        return Err(format!(
+            "{s}: offsets must be finite and within ±{MAX_OFFSET_MM} mm"
+        ));
+    }
+    Ok(DVec2::new(x, y))
 }
 
 /// Parses an operation name or `skip` for `option`.
@@ -115,8 +141,48 @@ impl PlanSettings {
             margin_mm: self.margin,
             optimize: Some(!self.no_optimize),
             centre,
-            offset_mm: None,
+            offset_mm: self
+                .offset
+                .as_deref()
+                .map(parse_offset)
+                .transpose()
+                .map_err(|message| FabError::BadOption {
+                    option: "offset",
+                    message,
+                })?,
         };
         PlanOptions::for_machine(machine, material, &overrides)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::machine::{load_machine, load_material};
+
+    #[test]
+    fn an_offset_is_parsed_once_for_both_front_ends_and_refused_out_of_range() {
+        let machine = load_machine("grbl-diode").unwrap();
+        let material = load_material("card-300gsm").unwrap();
+        let settings = |offset: &str| PlanSettings {
+            offset: Some(offset.to_string()),
+            ..PlanSettings::default()
+        };
+        let o = settings(" 10 , -5 ").options(&machine, &material).unwrap();
+        assert_eq!(o.placement.offset_mm, DVec2::new(10.0, -5.0));
+        let none = PlanSettings::default()
+            .options(&machine, &material)
+            .unwrap();
+        assert_eq!(none.placement.offset_mm, DVec2::ZERO);
+        for bad in ["10", "1,2,3", "x,1", "1e6,0", "NaN,0"] {
+            let err = settings(bad).options(&machine, &material).unwrap_err();
+            match err {
+                FabError::BadOption { option, message } => {
+                    assert_eq!(option, "offset");
+                    assert!(message.starts_with(bad), "{message}");
+                }
+                other => panic!("{bad}: {other}"),
+            }
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! A pattern opened in the studio: read from an upload's bytes or a file named on the command
 //! line, and cleaned for each use exactly as the matching `foldcam` subcommand cleans it.
 
+use crate::design::source::SummaryLine;
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -112,7 +113,7 @@ impl Document {
             },
         )?;
         let mut lines = notes;
-        lines.extend(design.summary);
+        lines.extend(SummaryLine::texts(&design.summary));
         doc.design = Some(DesignNote {
             made: design.made,
             lines,

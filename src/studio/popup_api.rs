@@ -19,6 +19,7 @@
 //! Errors are JSON `{"error": …}` with the library's message; a refused edit names its
 //! operation and leaves the session as it was.
 
+use crate::design::source::SummaryLine;
 use std::path::Path;
 use std::sync::{Arc, PoisonError};
 
@@ -217,7 +218,7 @@ fn session_view(id: u64, s: &Session) -> ApiResult<SessionView> {
     let found = findings(&replay.card, &replay.report);
     let built = cli_build(&s.name, &write_design(design));
     let (valid, lines, pattern) = match built {
-        Ok(made) => (true, made.summary, Some(made.pattern)),
+        Ok(made) => (true, SummaryLine::texts(&made.summary), Some(made.pattern)),
         Err(refusal) => (
             false,
             refusal.lines().map(str::to_string).collect(),

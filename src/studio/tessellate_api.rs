@@ -22,6 +22,7 @@
 //! Progress is polled: the page asks for the events after the last one it has (about five
 //! times a second while the solve runs).
 
+use crate::design::source::SummaryLine;
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -171,7 +172,7 @@ impl Solve {
             Ok(_) => Ok(Arc::clone(&outcome)),
             Err(lines) => Err(ApiError::new(
                 StatusCode::CONFLICT,
-                lines.last().cloned().unwrap_or_default(),
+                lines.last().map(ToString::to_string).unwrap_or_default(),
             )),
         }
     }
@@ -695,9 +696,9 @@ fn result_view(job: &Solve, outcome: &TessellationOutcome) -> Value {
                     e.assignment.letter().to_string(),
                 ])).collect::<Vec<_>>(),
             });
-            (true, d.summary.clone(), pattern)
+            (true, SummaryLine::texts(&d.summary), pattern)
         }
-        Err(lines) => (false, lines.clone(), Value::Null),
+        Err(lines) => (false, SummaryLine::texts(lines), Value::Null),
     };
     json!({
         "name": job.mesh.name,

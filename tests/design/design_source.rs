@@ -8,7 +8,7 @@ use std::path::Path;
 
 use bin::{foldcam, repo_file};
 use foldcam::design::source::{
-    DesignFile, DesignKind, DesignOptions, MeshUse, SourceError, build_design,
+    DesignFile, DesignKind, DesignOptions, MeshUse, SourceError, SummaryLine, build_design,
 };
 
 fn example(rel: &str) -> Vec<u8> {
@@ -52,8 +52,8 @@ fn design_files_are_recognised_by_name_then_by_content() {
     );
 }
 
-/// The pattern `foldcam ARGS … -o out.fold` writes, read back.
-fn written(args: &[&str], dir: &Path) -> foldcam::pattern::CreasePattern {
+/// The pattern `foldcam ARGS … -o out.fold` writes, read back, and what it printed.
+fn written(args: &[&str], dir: &Path) -> (foldcam::pattern::CreasePattern, String) {
     let mut all = args.to_vec();
     all.extend(["-o", "out.fold"]);
     let out = foldcam(&all, dir);
@@ -62,7 +62,8 @@ fn written(args: &[&str], dir: &Path) -> foldcam::pattern::CreasePattern {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    foldcam::load(&dir.join("out.fold")).unwrap().pattern
+    let cp = foldcam::load(&dir.join("out.fold")).unwrap().pattern;
+    (cp, String::from_utf8_lossy(&out.stdout).into_owned())
 }
 
 #[test]
@@ -85,13 +86,51 @@ fn a_built_design_is_the_pattern_the_command_writes() {
         let input = repo_file(&format!("examples/{rel}"));
         let mut args = cmd.to_vec();
         args.push(&input);
-        let cp = written(&args, dir.path());
+        let (cp, stdout) = written(&args, dir.path());
         assert_eq!(design.pattern.vertices, cp.vertices, "{rel}: vertices");
         let ends = |p: &foldcam::pattern::CreasePattern| -> Vec<_> {
             p.edges.iter().map(|e| (e.vertices, e.assignment)).collect()
         };
         assert_eq!(ends(&design.pattern), ends(&cp), "{rel}: edges");
+        // The typed summary: its numbers are the written pattern's, its words what the
+        // command printed (which names the file by the path it was given).
         assert!(!design.summary.is_empty(), "{rel}: a summary");
+        let (lo, hi) = cp.bounds().unwrap();
+        let size = hi - lo;
+        for line in &design.summary {
+            match line {
+                SummaryLine::VoxelCard { sheet_mm, .. } => {
+                    assert!(
+                        (sheet_mm[0] - size.x).abs() < 1e-6,
+                        "{rel}: {line} vs {size}"
+                    );
+                    assert!(
+                        (sheet_mm[1] - size.y).abs() < 1e-6,
+                        "{rel}: {line} vs {size}"
+                    );
+                }
+                SummaryLine::PolygonCard {
+                    width_mm,
+                    base_mm,
+                    back_mm,
+                    ..
+                } => {
+                    assert!((width_mm - size.x).abs() < 1e-6, "{rel}: {line} vs {size}");
+                    let depth = base_mm + back_mm;
+                    assert!((depth - size.y).abs() < 1e-6, "{rel}: {line} vs {size}");
+                }
+                SummaryLine::FoldSequence {
+                    vertices, edges, ..
+                } => {
+                    assert_eq!(*vertices, cp.vertices.len(), "{rel}");
+                    assert_eq!(*edges, cp.edges.len(), "{rel}");
+                }
+                other => panic!("{rel}: an unexpected line {other:?}"),
+            }
+            let text = line.to_string();
+            let (_, words) = text.split_once(": ").unwrap();
+            assert!(stdout.contains(words), "{rel}: {words:?} not in {stdout:?}");
+        }
     }
 }
 

@@ -334,7 +334,7 @@ fn a_cap_crowded_at_the_rim_is_solved_coarser_and_says_so() {
         "{}",
         t.crowding.index()
     );
-    let summary = t.summary();
+    let summary = t.summary().to_string();
     assert!(
         summary.contains(&format!("face count changed from 972 to {}", r.faces[1])),
         "{summary}"

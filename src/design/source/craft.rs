@@ -8,6 +8,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::papercraft::design::{Design, Made, parse_design};
 use crate::mesh::PolyMesh;
@@ -50,9 +51,9 @@ pub struct CraftDesign {
     /// mountain folds, edge numbers flat lines), reports.
     pub made: Made,
     /// What `foldcam papercraft` prints once written.
-    pub summary: Vec<String>,
+    pub summary: Vec<SummaryLine>,
     /// What it notes once written (labels that found no room).
-    pub late_notes: Vec<String>,
+    pub late_notes: Vec<SummaryLine>,
 }
 
 impl CraftDesign {
@@ -68,10 +69,7 @@ impl CraftDesign {
         let mut summary = self.late_notes;
         summary.append(&mut self.summary);
         if sheets > 1 {
-            summary.push(format!(
-                "showing sheet 1 of {sheets} (`foldcam papercraft` writes sheet n > 1 to \
-                 NAME-n.EXT)"
-            ));
+            summary.push(SummaryLine::FirstSheetOf(sheets));
         }
         Ok(super::Design {
             kind: DesignKind::PaperCraft,
@@ -123,19 +121,17 @@ pub fn build(
     }
     let mut late_notes = Vec::new();
     if !made.unlabelled.is_empty() {
-        late_notes.push(format!(
-            "no room for the edge labels of cut lines {:?} (lower label_height)",
-            made.unlabelled
-        ));
+        late_notes.push(SummaryLine::UnlabelledCutLines(made.unlabelled.clone()));
     }
     let tabs: usize = made.parts.iter().map(|p| p.tabs.len()).sum();
     let dropped: usize = made.parts.iter().map(|p| p.dropped_tabs).sum();
-    let summary = vec![format!(
-        "{}: {} parts, {tabs} tabs ({dropped} left out), {} sheet(s)",
-        name.display(),
-        made.parts.len(),
-        made.sheets.len()
-    )];
+    let summary = vec![SummaryLine::PaperCraft {
+        file: name.display().to_string(),
+        parts: made.parts.len(),
+        tabs,
+        tabs_left_out: dropped,
+        sheets: made.sheets.len(),
+    }];
     let mut made = made;
     for sheet in &mut made.sheets {
         super::title_from(sheet, &name);

@@ -20,6 +20,7 @@ pub(crate) mod card;
 pub mod craft;
 pub mod poly;
 pub mod script;
+pub(crate) mod summary;
 pub mod tess_design;
 pub(crate) mod tess_limits;
 pub mod tessellate;
@@ -34,6 +35,7 @@ use crate::pattern::{CreasePattern, FoldedState};
 pub use craft::{CraftDesign, ParsedCraft};
 pub use poly::{PolyDesign, PolyOptions};
 pub use script::ScriptDesign;
+pub use summary::SummaryLine;
 pub use tess_limits::{CreaseState, LimitMap, VertexState, limit_map};
 pub use tessellate::{TessellationDesign, TessellationOptions};
 pub use voxel::{VoxelDesign, VoxelOptions};
@@ -347,7 +349,7 @@ pub struct Design {
     /// The folded state the command writes with it, if any.
     pub folded: Option<FoldedState>,
     /// The lines the command prints on standard output when it succeeds.
-    pub summary: Vec<String>,
+    pub summary: Vec<SummaryLine>,
     /// How many sheets the design made (paper craft can make several; the others are left
     /// out of [`Design::pattern`]).
     pub sheets: usize,

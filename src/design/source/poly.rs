@@ -3,6 +3,7 @@
 //! card's own checks — what `foldcam popup poly` does before it writes anything.
 
 use super::card::{card_holds, take_fit};
+use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::popup::fit::fit_design;
 use crate::design::popup::polygon::{
@@ -33,7 +34,7 @@ pub struct PolyDesign {
     /// The card folded shut (opening 0°).
     pub closed: FoldedState,
     /// What `foldcam popup poly` prints when it has written the card.
-    pub summary: Vec<String>,
+    pub summary: Vec<SummaryLine>,
 }
 
 impl PolyDesign {
@@ -93,13 +94,14 @@ pub fn build(
         .iter()
         .filter(|f| !f.polygon.is_empty())
         .count();
-    let summary = vec![format!(
-        "{}: {} operations, {faces} faces, sheet {w:.1} × {:.1} mm (base {d:.1}, back {h:.1}), \
-         pops up",
-        path.display(),
-        design.operations.len(),
-        d + h
-    )];
+    let summary = vec![SummaryLine::PolygonCard {
+        file: path.display().to_string(),
+        operations: design.operations.len(),
+        faces,
+        width_mm: w,
+        base_mm: d,
+        back_mm: h,
+    }];
     Ok(PolyDesign {
         design,
         card,

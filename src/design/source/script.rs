@@ -3,6 +3,7 @@
 //! state) and the folded state after every step — what `foldcam fold` does before it writes
 //! anything.
 
+use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::folding::Folding;
 use crate::design::folding::crease::{SheetPattern, crease_pattern, step_states};
@@ -28,17 +29,19 @@ pub struct ScriptDesign {
     pub warnings: Vec<LayerProblem>,
     /// What `foldcam fold` prints once written, up to where it names the output
     /// ("… written to FILE" follows).
-    pub summary: String,
+    pub summary: SummaryLine,
 }
 
 impl ScriptDesign {
     /// As one design: the crease pattern, folded as after the last step.
     pub fn into_design(self) -> super::Design {
-        let name = &self.name;
-        let mut summary: Vec<String> = self
+        let mut summary: Vec<SummaryLine> = self
             .warnings
             .iter()
-            .map(|w| format!("{name}: warning: {w}"))
+            .map(|&problem| SummaryLine::LayerWarning {
+                file: self.name.clone(),
+                problem,
+            })
             .collect();
         summary.push(self.summary);
         super::Design {
@@ -75,13 +78,13 @@ pub fn build(
     let states = step_states(&folding, &sheet);
     let warnings = layer_problems(&folding, folding.current());
     let cp = &sheet.pattern;
-    let summary = format!(
-        "{name}: {} steps, {} faces, crease pattern of {} vertices and {} edges",
-        folding.steps().len() - 1,
-        folding.current().faces.len(),
-        cp.vertices.len(),
-        cp.edges.len(),
-    );
+    let summary = SummaryLine::FoldSequence {
+        file: name.clone(),
+        steps: folding.steps().len() - 1,
+        faces: folding.current().faces.len(),
+        vertices: cp.vertices.len(),
+        edges: cp.edges.len(),
+    };
     Ok(ScriptDesign {
         name,
         script,

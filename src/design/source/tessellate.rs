@@ -6,6 +6,7 @@
 use std::ops::ControlFlow;
 use std::path::Path;
 
+use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::advice::curvature_advice;
 use crate::design::tessellation::distance::{MIN_COVERED, SurfaceFit, fit_and_missing};
@@ -189,7 +190,7 @@ pub struct TessellationDesign {
     /// The crease pattern (mm) and the folded form.
     pub unfolded: Unfolded,
     /// What `foldcam tessellate` prints about the solve and the unfolding.
-    pub summary: Vec<String>,
+    pub summary: Vec<SummaryLine>,
     /// How well the folded form stands for the input (`None` for a degenerate surface); a
     /// partial one ([`SurfaceFit::partial`]) fails `foldcam tessellate` unless allowed.
     pub fit: Option<SurfaceFit>,
@@ -237,9 +238,9 @@ pub fn tessellate_mesh(
     progress: &mut dyn Progress,
 ) -> Result<TessellationDesign, SourceError> {
     let outcome = tessellate_outcome(name, mesh, options, progress)?;
-    outcome
-        .design
-        .map_err(|lines| SourceError::NotMade { lines })
+    outcome.design.map_err(|lines| SourceError::NotMade {
+        lines: SummaryLine::texts(&lines),
+    })
 }
 
 /// A solve's result, usable or not: the surface it left (to show where it misses the limits,
@@ -254,7 +255,7 @@ pub struct TessellationOutcome {
     /// Its developability tolerance, radians per vertex.
     pub tolerance: f64,
     /// The design, or the lines `foldcam tessellate` prints before exiting with status 1.
-    pub design: Result<TessellationDesign, Vec<String>>,
+    pub design: Result<TessellationDesign, Vec<SummaryLine>>,
 }
 
 /// [`ControlFlow::Break`] when `progress` asks to stop: the solver's callbacks then end the
@@ -316,11 +317,9 @@ pub fn tessellate_outcome(
         )),
     ));
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
-    let advice = curvature_advice(mesh)
-        .map(|a| a.describe())
-        .unwrap_or_default();
-    for line in &advice {
-        progress.note(line.clone());
+    let advice = curvature_advice(mesh).ok();
+    for line in advice.iter().flat_map(|a| a.describe()) {
+        progress.note(line);
     }
     // Up front, when the tucks near the edge are expected to run into each other.
     if crowding.crowded() {
@@ -348,62 +347,53 @@ pub fn tessellate_outcome(
     }
     let t = t.map_err(|e| SourceError::input(name, e))?;
     let mut lines = vec![
-        format!(
-            "{}: {} layout, {} tucks, shrink {}, {} vertices, {} triangles, {} interior vertices",
-            name.display(),
-            t.initial.layout,
-            opts.star.tuck.kind,
-            t.initial.shrink,
-            t.mesh.positions.len(),
-            t.mesh.triangles.len(),
-            t.mesh.interior_count()
-        ),
-        t.summary(),
+        SummaryLine::Tessellated {
+            file: name.display().to_string(),
+            layout: t.initial.layout,
+            tuck: opts.star.tuck.kind,
+            shrink: t.initial.shrink,
+            vertices: t.mesh.positions.len(),
+            triangles: t.mesh.triangles.len(),
+            interior_vertices: t.mesh.interior_count(),
+        },
+        SummaryLine::Solve(Box::new(t.summary())),
     ];
-    for v in &t.infeasible {
-        lines.push(format!("  cannot meet the limits: {}", v.describe()));
-    }
+    lines.extend(t.infeasible.iter().map(|&v| SummaryLine::CannotMeet(v)));
     // The worst few places of each unmet condition (the list is sorted by condition).
     for group in t.unmet.chunk_by(|a, b| a.condition == b.condition) {
-        for v in group.iter().take(UNMET_SHOWN) {
-            lines.push(format!("  unmet: {}", v.describe()));
-        }
+        lines.extend(
+            group
+                .iter()
+                .take(UNMET_SHOWN)
+                .map(|&v| SummaryLine::Unmet(v)),
+        );
         if group.len() > UNMET_SHOWN {
-            lines.push(format!(
-                "  ... and {} more input vertices",
-                group.len() - UNMET_SHOWN
-            ));
+            lines.push(SummaryLine::MoreUnmet(group.len() - UNMET_SHOWN));
         }
     }
     if let Some(sites) = &t.collisions {
-        lines.extend(sites.describe());
-        lines.extend(t.crowding.describe());
+        lines.push(SummaryLine::Collisions(Box::new(sites.clone())));
+        lines.push(SummaryLine::Crowding(t.crowding));
         if t.crowded_at_rim() {
-            lines.push(format!(
-                "stopped at shrink {}: every limit is met but the tucks near the edge collide, \
-                 which a smaller shrink did not fix on such meshes",
-                t.initial.shrink
-            ));
+            lines.push(SummaryLine::CrowdedAtRim {
+                shrink: t.initial.shrink,
+            });
         }
     }
-    if let Some(fit) = &t.fit {
-        lines.push(format!(
-            "surface fit: distance {:.4e} -> {:.4e} in {} rounds",
-            fit.initial, fit.last, fit.accepted
-        ));
+    if let Some(fit) = t.fit {
+        lines.push(SummaryLine::FitRounds(fit));
     }
     let problem = t.problem();
     let design = match (problem, t.unfolded) {
         (None, Ok(mut unfolded)) => {
             super::title_from(&mut unfolded.pattern, name);
-            lines.push(format!(
-                "unfolded: no overlaps, edge lengths match 3D within {:.1e} (relative)",
-                unfolded.max_length_error
-            ));
+            lines.push(SummaryLine::Unfolded {
+                max_length_error: unfolded.max_length_error,
+            });
             // One sampling gives the fit and the region a partial form leaves uncovered.
             let (fit, uncovered) = fit_and_missing(mesh, &t.mesh).unzip();
-            if let Some(fit) = &fit {
-                lines.push(fit.describe());
+            if let Some(fit) = fit {
+                lines.push(SummaryLine::SurfaceFit(fit));
             }
             let missing = match &fit {
                 Some(f) if f.covered < MIN_COVERED => uncovered.unwrap_or_default(),
@@ -418,8 +408,10 @@ pub fn tessellate_outcome(
         }
         (problem, unfolded) => {
             let why = problem.or(unfolded.err().map(|e| e.to_string()));
-            lines.extend(advice);
-            lines.push(format!("nothing written: {}", why.unwrap_or_default()));
+            lines.extend(advice.map(SummaryLine::Curvature));
+            lines.push(SummaryLine::NothingWritten {
+                reason: why.unwrap_or_default(),
+            });
             Err(lines)
         }
     };

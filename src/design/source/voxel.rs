@@ -6,6 +6,7 @@
 use std::path::Path;
 
 use super::card::{card_holds, take_fit};
+use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::clock::Stopwatch;
 use crate::design::popup::fit::fit_voxel_card;
@@ -112,7 +113,7 @@ pub struct VoxelDesign {
     /// The card folded shut (opening 0°).
     pub closed: FoldedState,
     /// What `foldcam popup voxel` prints when it has written the card.
-    pub summary: Vec<String>,
+    pub summary: Vec<SummaryLine>,
 }
 
 impl VoxelDesign {
@@ -326,14 +327,12 @@ pub fn finish_card(
         progress,
     )?;
     let (w, h) = card.sheet_mm();
-    let summary = vec![format!(
-        "{}: {} × {} × {} cells of {:.3} mm, sheet {w:.1} × {h:.1} mm, pops up",
-        name.display(),
-        card.nx(),
-        card.ny(),
-        card.nz(),
-        card.cell_mm()
-    )];
+    let summary = vec![SummaryLine::VoxelCard {
+        file: name.display().to_string(),
+        cells: [card.nx(), card.ny(), card.nz()],
+        cell_mm: card.cell_mm(),
+        sheet_mm: [w, h],
+    }];
     Ok(VoxelDesign {
         card,
         pattern,

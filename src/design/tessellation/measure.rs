@@ -7,6 +7,7 @@
 //! form lies from the input surface ([`corner_distance`], [`surface_fit`], mm) and the input
 //! triangles it leaves uncovered ([`uncovered_triangles`]).
 
+pub use super::advice::CurvatureAdvice;
 pub use super::collision_sites::{CollisionSite, CollisionSites};
 pub use super::constraints::{Residuals, angle_defects, residuals};
 pub use super::crowding::{CROWDING_LIMIT, RimCrowding, rim_crowding};
@@ -15,3 +16,4 @@ pub use super::distance::{
     SurfaceDistance, SurfaceFit, corner_distance, surface_fit, uncovered_triangles,
 };
 pub use super::geometry::{Graded, fold_angle};
+pub use super::pipeline::SolveSummary;

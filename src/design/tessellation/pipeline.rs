@@ -172,23 +172,57 @@ pub struct Tessellation {
 }
 
 impl Tessellation {
-    /// The solver's summary with the face-intersection count of the folded form.
-    pub fn summary(&self) -> String {
-        let found = match self.intersections.first() {
+    /// The solver's summary with the face-intersection count of the folded form (its
+    /// `Display` is what `foldcam tessellate` prints).
+    pub fn summary(&self) -> SolveSummary {
+        SolveSummary {
+            report: self.report.clone(),
+            intersections: self.intersections.len(),
+            first_intersection: self.intersections.first().copied(),
+            intersection_tolerance: self.intersection_tolerance,
+            remeshed: self.remeshed,
+            coarsened: self.coarsened,
+        }
+    }
+}
+
+/// How a tessellation's solve went, as [`Tessellation::summary`] reports it: the solver's
+/// residuals and limits, the re-triangulation if any, and the crossing face pairs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolveSummary {
+    /// The solver's report.
+    pub report: SolveReport,
+    /// Pairs of folded-form triangles that pass through each other.
+    pub intersections: usize,
+    /// The first such pair.
+    pub first_intersection: Option<(usize, usize)>,
+    /// The tolerance they were found with, mm.
+    pub intersection_tolerance: f64,
+    /// What the re-triangulation changed, if the input was re-triangulated.
+    pub remeshed: Option<RemeshReport>,
+    /// The input's crowding, when a coarser re-triangulation was solved because of it.
+    pub coarsened: Option<RimCrowding>,
+}
+
+impl std::fmt::Display for SolveSummary {
+    /// Several lines: the re-triangulation, the solver's summary, the crossings.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if let (Some(c), Some(r)) = (&self.coarsened, &self.remeshed) {
+            writeln!(f, "{}", Tessellation::coarsened_line(c, r))?;
+        }
+        if let Some(r) = &self.remeshed {
+            writeln!(f, "{}", r.describe())?;
+        }
+        let found = match self.first_intersection {
             None => "none".to_string(),
             Some((a, b)) => format!(
                 "{} pairs (first: triangles {a} and {b})",
-                self.intersections.len()
+                self.intersections
             ),
         };
-        let mut remeshed = self
-            .remeshed
-            .map_or(String::new(), |r| format!("{}\n", r.describe()));
-        if let (Some(c), Some(r)) = (self.coarsened, self.remeshed) {
-            remeshed = format!("{}\n{remeshed}", Self::coarsened_line(&c, &r));
-        }
-        format!(
-            "{remeshed}{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
+        write!(
+            f,
+            "{}\n  face intersections (folded form, tolerance {:.0e} mm): {found}",
             self.report.summary(),
             self.intersection_tolerance
         )
