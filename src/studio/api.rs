@@ -46,6 +46,7 @@ use super::assets;
 use super::design_open;
 use super::document::{Document, PatternView};
 use super::edit_api;
+use super::error::StudioError;
 use super::flat::{FlatView, flat_view};
 use super::guard::{self, Guard};
 use super::history::Versions;
@@ -183,11 +184,25 @@ impl Studio {
     }
 }
 
-/// An API error: an HTTP status and the message `foldcam` would print.
+/// An API error: an HTTP status and the message `foldcam` would print, with the stage and
+/// file of a [`StudioError`] as data.
 #[derive(Debug)]
 pub struct ApiError {
     pub(super) status: StatusCode,
     message: String,
+    detail: Option<StudioError>,
+}
+
+impl From<StudioError> for ApiError {
+    /// Unprocessable input (422), whatever the stage: the request was understood, the file
+    /// or value it carries cannot be used.
+    fn from(e: StudioError) -> ApiError {
+        ApiError {
+            status: StatusCode::UNPROCESSABLE_ENTITY,
+            message: e.to_string(),
+            detail: Some(e),
+        }
+    }
 }
 
 impl ApiError {
@@ -195,6 +210,7 @@ impl ApiError {
         ApiError {
             status,
             message: message.into(),
+            detail: None,
         }
     }
 
@@ -212,7 +228,11 @@ impl ApiError {
 
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
-        (self.status, Json(json!({ "error": self.message }))).into_response()
+        let body = match &self.detail {
+            Some(d) => json!({ "error": self.message, "stage": d.stage, "file": d.file }),
+            None => json!({ "error": self.message }),
+        };
+        (self.status, Json(body)).into_response()
     }
 }
 
@@ -397,7 +417,7 @@ pub(super) struct Opened {
 }
 
 pub(super) fn opened(s: &Studio, doc: Document) -> ApiResult<Json<Opened>> {
-    let view = PatternView::new(&doc.name, doc.planar().map_err(ApiError::input)?);
+    let view = PatternView::new(&doc.name, doc.planar()?);
     let (id, _) = s.add(doc);
     Ok(Json(Opened {
         id,
@@ -448,7 +468,7 @@ async fn open_file(
         } else {
             Document::open(&path)
         };
-        opened(&s, doc.map_err(ApiError::input)?)
+        opened(&s, doc?)
     })
     .await
 }
@@ -500,14 +520,13 @@ async fn upload(
         }
     })?;
     blocking(move || {
-        let (main, companions) =
-            design_open::split_body(&name, &body, &parts).map_err(ApiError::input)?;
+        let (main, companions) = design_open::split_body(&name, &body, &parts)?;
         let doc = if design_open::is_design(std::path::Path::new(&name)) {
             design_open::open_upload(&name, main, &companions, make)
         } else {
             Document::from_upload(&name, main)
         };
-        opened(&s, doc.map_err(ApiError::input)?)
+        opened(&s, doc?)
     })
     .await
 }
@@ -515,7 +534,7 @@ async fn upload(
 async fn check(State(s): State<Arc<Studio>>, PathId(id): PathId) -> ApiResult<Json<Value>> {
     let doc = s.get(id)?;
     blocking(move || {
-        let c = doc.cleaned(false).map_err(ApiError::input)?;
+        let c = doc.cleaned(false)?;
         let report = check_with_frame(&c.pattern, c.folded.as_ref(), &CheckOptions::default());
         Ok(Json(json!(report)))
     })
@@ -556,7 +575,7 @@ async fn layers(
     let kawasaki = q.tolerance()?;
     let doc = s.get(id)?;
     blocking(move || {
-        let c = doc.cleaned(false).map_err(ApiError::input)?;
+        let c = doc.cleaned(false)?;
         let check_options = CheckOptions {
             kawasaki_tolerance_deg: match kawasaki {
                 KawasakiTolerance::Degrees(d) => d,
@@ -602,7 +621,7 @@ async fn flat(
     blocking(move || {
         flat_view(&doc, q.state.unwrap_or(0), kawasaki)
             .map(Json)
-            .map_err(ApiError::input)
+            .map_err(ApiError::from)
     })
     .await
 }
@@ -662,7 +681,7 @@ async fn fold3d(
     let Query(q) = query?;
     let doc = s.get(id)?;
     blocking(move || {
-        let c = doc.cleaned(true).map_err(ApiError::input)?;
+        let c = doc.cleaned(true)?;
         if q.flat {
             // The sheet the simulation starts from ([`fold`] builds the same model).
             let model = BarHingeModel::build(&c.pattern)

@@ -39,6 +39,7 @@ use super::api::{
 };
 use super::design_open;
 use super::edit_api::json_body;
+use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
 use super::history::Versions;
 use super::sessions::Sessions;
@@ -99,14 +100,17 @@ impl Session {
         mesh_name: &str,
         mesh_bytes: Vec<u8>,
         design: Option<&str>,
-    ) -> Result<Session, String> {
+    ) -> Result<Session, StudioError> {
         let poly = read_mesh(mesh_name, &mesh_bytes)?;
         let (lo, hi) = poly.bounds();
         let diagonal = (hi - lo).length();
-        let mesh = ReferenceMesh::new(&poly).map_err(|e| format!("{mesh_name}: {e}"))?;
+        let mesh = ReferenceMesh::new(&poly)
+            .map_err(|e| StudioError::about(Stage::Design, mesh_name, e))?;
         let sketch = match design {
             Some(text) => {
-                let d = parse_design(text).map_err(|e| format!("{name}.craft.toml: {e}"))?;
+                let d = parse_design(text).map_err(|e| {
+                    StudioError::about(Stage::Design, format!("{name}.craft.toml"), e)
+                })?;
                 let mut s = Sketch::from_design(&d);
                 s.mesh_name = mesh_name.to_string();
                 s
@@ -131,7 +135,7 @@ impl Session {
     }
 
     /// Replaces the drawing by `next`, keeping the current one for undo.
-    fn change(&mut self, next: Sketch) -> Result<(), String> {
+    fn change(&mut self, next: Sketch) -> Result<(), StudioError> {
         let (eval, paint) = evaluate(&self.mesh, &next)?;
         self.sketches.push(next);
         self.eval = eval;
@@ -140,23 +144,31 @@ impl Session {
     }
 }
 
-fn evaluate(mesh: &ReferenceMesh, sketch: &Sketch) -> Result<(Evaluation, Paint), String> {
-    let eval = sketch.evaluate(mesh).map_err(|e| e.to_string())?;
-    let lines = sketch.cut_lines().map_err(|e| e.to_string())?;
+fn evaluate(mesh: &ReferenceMesh, sketch: &Sketch) -> Result<(Evaluation, Paint), StudioError> {
+    let eval = sketch
+        .evaluate(mesh)
+        .map_err(|e| StudioError::named(Stage::Design, e))?;
+    let lines = sketch
+        .cut_lines()
+        .map_err(|e| StudioError::named(Stage::Design, e))?;
     let paint = paint_regions(mesh, &lines, &regions(mesh, &lines));
     Ok((eval, paint))
 }
 
-fn read_mesh(name: &str, bytes: &[u8]) -> Result<PolyMesh, String> {
+fn read_mesh(name: &str, bytes: &[u8]) -> Result<PolyMesh, StudioError> {
     let lower = name.to_ascii_lowercase();
     let mesh = if lower.ends_with(".obj") {
         parse_obj(bytes)
     } else if lower.ends_with(".stl") {
         parse_stl(bytes)
     } else {
-        return Err(format!("{name}: expected an OBJ or STL mesh (.obj, .stl)"));
+        return Err(StudioError::about(
+            Stage::Read,
+            name,
+            "expected an OBJ or STL mesh (.obj, .stl)",
+        ));
     };
-    mesh.map_err(|e| format!("{name}: {e}"))
+    mesh.map_err(|e| StudioError::about(Stage::Read, name, e))
 }
 
 /// The paper-craft mode's state.
@@ -378,10 +390,10 @@ async fn on_session(
 
 async fn start(
     crafts: Arc<Crafts>,
-    make: impl FnOnce() -> Result<Session, String> + Send + 'static,
+    make: impl FnOnce() -> Result<Session, StudioError> + Send + 'static,
 ) -> ApiResult<Json<SessionView>> {
     blocking(move || {
-        let session = make().map_err(ApiError::input)?;
+        let session = make()?;
         let (id, s) = crafts.sessions.add(session);
         let s = s.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(Json(session_view(id, &s, true)))
@@ -461,14 +473,17 @@ async fn from_design(
     let body = upload_body(&name, body)?;
     start(crafts, move || {
         let (main, companions) = design_open::split_body(&name, &body, &parts)?;
-        let text = std::str::from_utf8(main)
-            .map_err(|e| format!("{name}: byte {}: not UTF-8 text", e.valid_up_to()))?;
-        let design = parse_design(text).map_err(|e| format!("{name}: {e}"))?;
+        let text = std::str::from_utf8(main).map_err(|e| {
+            let at = format!("byte {}: not UTF-8 text", e.valid_up_to());
+            StudioError::about(Stage::Read, &name, at)
+        })?;
+        let design = parse_design(text).map_err(|e| StudioError::about(Stage::Design, &name, e))?;
         let wanted = upload_name(&design.mesh);
         let Some((mesh_name, mesh)) = companions.iter().find(|(n, _)| *n == wanted) else {
-            return Err(format!(
-                "{name}: names the mesh {:?}; send it with the design",
-                design.mesh
+            return Err(StudioError::about(
+                Stage::Design,
+                &name,
+                format!("names the mesh {:?}; send it with the design", design.mesh),
             ));
         };
         Session::new(
@@ -507,7 +522,7 @@ async fn add_line(
             .map_err(|e| ApiError::input(e.to_string()))?;
         let mut next = s.sketches.current().clone();
         next.lines.push(line);
-        s.change(next).map_err(ApiError::input)
+        s.change(next).map_err(ApiError::from)
     })
     .await
 }
@@ -528,7 +543,7 @@ async fn remove_line(
         let mut next = s.sketches.current().clone();
         next.remove_line(q.line)
             .map_err(|e| ApiError::input(e.to_string()))?;
-        s.change(next).map_err(ApiError::input)
+        s.change(next).map_err(ApiError::from)
     })
     .await
 }
@@ -538,7 +553,7 @@ async fn undo(
     PathId(id): PathId,
 ) -> ApiResult<Json<SessionView>> {
     on_session(crafts, id, false, |s| {
-        let (eval, paint) = evaluate(&s.mesh, s.sketches.undo()?).map_err(ApiError::input)?;
+        let (eval, paint) = evaluate(&s.mesh, s.sketches.undo()?)?;
         s.eval = eval;
         s.paint = paint;
         Ok(())
@@ -583,8 +598,7 @@ async fn to_pattern(
     };
     blocking(move || {
         let companions = [(mesh_name, mesh.as_slice())];
-        let doc = design_open::open_upload(&name, text.as_bytes(), &companions, MeshUse::Auto)
-            .map_err(ApiError::input)?;
+        let doc = design_open::open_upload(&name, text.as_bytes(), &companions, MeshUse::Auto)?;
         opened(&studio, doc)
     })
     .await

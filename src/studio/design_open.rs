@@ -11,6 +11,7 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use super::document::Document;
+use super::error::{Stage, StudioError};
 use crate::design::source::{
     DesignFile, DesignKind, DesignOptions, MeshUse, SourceError, build_design, craft,
     mesh_path_beside, read_design_file, tess_design,
@@ -38,6 +39,11 @@ pub fn message(e: &SourceError) -> String {
     text
 }
 
+/// A design's failure as a studio error: [`message`] at [`Stage::Design`].
+pub fn design_error(e: &SourceError) -> StudioError {
+    StudioError::named(Stage::Design, message(e))
+}
+
 /// Builds an upload: `name` and `bytes` the design file, `companions` the files sent with it
 /// (a paper craft's mesh is found among them by name).
 ///
@@ -48,7 +54,7 @@ pub fn open_upload(
     bytes: &[u8],
     companions: &[Named<'_>],
     mesh_use: MeshUse,
-) -> Result<Document, String> {
+) -> Result<Document, StudioError> {
     let path = PathBuf::from(name);
     let file = DesignFile { name: &path, bytes };
     let named: Vec<PathBuf> = companions.iter().map(|(n, _)| PathBuf::from(n)).collect();
@@ -65,8 +71,12 @@ pub fn open_upload(
 ///
 /// # Errors
 /// The message `foldcam` prints for the same file.
-pub fn open_path(path: &Path, given: &[PathBuf], mesh_use: MeshUse) -> Result<Document, String> {
-    let bytes = read_design_file(path).map_err(|e| message(&e))?;
+pub fn open_path(
+    path: &Path,
+    given: &[PathBuf],
+    mesh_use: MeshUse,
+) -> Result<Document, StudioError> {
+    let bytes = read_design_file(path).map_err(|e| design_error(&e))?;
     let file = DesignFile {
         name: path,
         bytes: &bytes,
@@ -78,12 +88,12 @@ pub fn open_path(path: &Path, given: &[PathBuf], mesh_use: MeshUse) -> Result<Do
         _ => None,
     };
     if let Some(named) = mesh_named {
-        let wanted = mesh_path_beside(path, &named.map_err(|e| message(&e))?);
+        let wanted = mesh_path_beside(path, &named.map_err(|e| design_error(&e))?);
         let same = |a: &Path, b: &Path| {
             a == b || matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
         };
         if given.iter().any(|g| same(g, &wanted)) {
-            let mesh = read_design_file(&wanted).map_err(|e| message(&e))?;
+            let mesh = read_design_file(&wanted).map_err(|e| design_error(&e))?;
             companion = Some((wanted, mesh));
         }
     }
@@ -99,13 +109,14 @@ fn build(
     file: &DesignFile<'_>,
     companions: &[DesignFile<'_>],
     mesh_use: MeshUse,
-) -> Result<Document, String> {
+) -> Result<Document, StudioError> {
     let options = DesignOptions {
         mesh_use,
         ..DesignOptions::default()
     };
     let mut notes = Vec::new();
-    let design = build_design(file, companions, &options, &mut notes).map_err(|e| message(&e))?;
+    let design =
+        build_design(file, companions, &options, &mut notes).map_err(|e| design_error(&e))?;
     Document::from_design(name.to_string(), design, notes)
 }
 
@@ -130,14 +141,18 @@ pub fn split_body<'a>(
     name: &str,
     body: &'a [u8],
     parts: &[Part],
-) -> Result<(&'a [u8], Vec<Named<'a>>), String> {
+) -> Result<(&'a [u8], Vec<Named<'a>>), StudioError> {
     let total = parts
         .iter()
         .fold(0usize, |sum, p| sum.saturating_add(p.size));
     let Some(main_len) = body.len().checked_sub(total) else {
-        return Err(format!(
-            "{name}: the files sent with it announce {total} bytes, more than the {} received",
-            body.len()
+        return Err(StudioError::about(
+            Stage::Read,
+            name,
+            format!(
+                "the files sent with it announce {total} bytes, more than the {} received",
+                body.len()
+            ),
         ));
     };
     let (main, mut rest) = body.split_at(main_len);

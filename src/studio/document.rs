@@ -1,15 +1,15 @@
 //! A pattern opened in the studio: read from an upload's bytes or a file named on the command
 //! line, and cleaned for each use exactly as the matching `foldcam` subcommand cleans it.
 
-use crate::design::source::SummaryLine;
 use std::path::Path;
 use std::sync::OnceLock;
 
 use glam::DVec2;
 use serde::Serialize;
 
+use super::error::{Stage, StudioError};
 use crate::check::AssignmentCounts;
-use crate::design::source::Design;
+use crate::design::source::{Design, SummaryLine};
 use crate::formats::{self, Imported, ReadOptions};
 use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions};
 
@@ -24,7 +24,7 @@ pub struct Document {
     /// For a design file: what was made of it, and the lines the matching command prints.
     pub design: Option<DesignNote>,
     /// The cleaning without faces, done once (snapping asks for it on every pointer move).
-    clean: OnceLock<Result<Cleaned, String>>,
+    clean: OnceLock<Result<Cleaned, StudioError>>,
 }
 
 /// What a design file became ([`crate::design::source`]).
@@ -59,9 +59,9 @@ impl Document {
     ///
     /// # Errors
     /// The message `foldcam` prints for the same file.
-    pub fn open(path: &Path) -> Result<Document, String> {
-        let imported =
-            formats::load_with(path, &ReadOptions::default()).map_err(|e| e.to_string())?;
+    pub fn open(path: &Path) -> Result<Document, StudioError> {
+        let imported = formats::load_with(path, &ReadOptions::default())
+            .map_err(|e| StudioError::named(Stage::Read, e))?;
         Document::new(path.display().to_string(), imported)
     }
 
@@ -70,11 +70,11 @@ impl Document {
     ///
     /// # Errors
     /// The message `foldcam` prints for a file of that name and content.
-    pub fn from_upload(name: &str, bytes: &[u8]) -> Result<Document, String> {
+    pub fn from_upload(name: &str, bytes: &[u8]) -> Result<Document, StudioError> {
         let path = Path::new(name);
         let imported = formats::format_of(path)
             .and_then(|format| formats::load_bytes(path, format, bytes, &ReadOptions::default()))
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| StudioError::named(Stage::Read, e))?;
         Document::new(name.to_string(), imported)
     }
 
@@ -83,7 +83,7 @@ impl Document {
     ///
     /// # Errors
     /// A pattern with no edges.
-    pub fn from_pattern(name: String, pattern: CreasePattern) -> Result<Document, String> {
+    pub fn from_pattern(name: String, pattern: CreasePattern) -> Result<Document, StudioError> {
         Document::new(
             name,
             Imported {
@@ -103,7 +103,7 @@ impl Document {
         name: String,
         design: Design,
         notes: Vec<String>,
-    ) -> Result<Document, String> {
+    ) -> Result<Document, StudioError> {
         let mut doc = Document::new(
             name,
             Imported {
@@ -142,10 +142,10 @@ impl Document {
         }
     }
 
-    fn new(name: String, imported: Imported) -> Result<Document, String> {
+    fn new(name: String, imported: Imported) -> Result<Document, StudioError> {
         imported
             .require_edges(Path::new(&name))
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| StudioError::named(Stage::Read, e))?;
         Ok(Document {
             name,
             imported,
@@ -159,7 +159,7 @@ impl Document {
     ///
     /// # Errors
     /// The planariser's refusal, naming the file.
-    pub fn cleaned(&self, faces: bool) -> Result<Cleaned, String> {
+    pub fn cleaned(&self, faces: bool) -> Result<Cleaned, StudioError> {
         if faces {
             self.clean_now(true)
         } else {
@@ -171,14 +171,14 @@ impl Document {
     ///
     /// # Errors
     /// The planariser's refusal, naming the file.
-    pub fn planar(&self) -> Result<&Cleaned, String> {
+    pub fn planar(&self) -> Result<&Cleaned, StudioError> {
         self.clean
             .get_or_init(|| self.clean_now(false))
             .as_ref()
             .map_err(Clone::clone)
     }
 
-    fn clean_now(&self, faces: bool) -> Result<Cleaned, String> {
+    fn clean_now(&self, faces: bool) -> Result<Cleaned, StudioError> {
         let name = &self.name;
         let mut imported = self.imported.clone();
         imported
@@ -186,7 +186,7 @@ impl Document {
                 tolerance: None,
                 faces,
             })
-            .map_err(|e| format!("{name}: {e}"))?;
+            .map_err(|e| StudioError::about(Stage::Clean, name, e))?;
         let messages: Vec<String> = self
             .design
             .iter()

@@ -35,11 +35,11 @@ pub(super) async fn edit(
     let edit: Edit = json_body(body, "edit")?;
     let base = s.get(id)?;
     blocking(move || {
-        let mut pattern = base.planar().map_err(ApiError::input)?.pattern.clone();
+        let mut pattern = base.planar()?.pattern.clone();
         let report = apply_edit(&mut pattern, &edit, None)
             .map_err(|e| ApiError::input(format!("{}: {e}", base.name)))?;
         let next = base.edited(pattern);
-        let view = PatternView::new(&next.name, next.planar().map_err(ApiError::input)?);
+        let view = PatternView::new(&next.name, next.planar()?);
         let history = s.push(id, &base, next)?;
         Ok(Json(Opened {
             id,
@@ -68,7 +68,7 @@ pub(super) async fn redo(
 fn moved(s: &Studio, id: u64, step: Step) -> ApiResult<Json<Opened>> {
     let (doc, history) = s.step(id, step)?;
     // Every version was cleaned when it was made: this takes no time.
-    let view = PatternView::new(&doc.name, doc.planar().map_err(ApiError::input)?);
+    let view = PatternView::new(&doc.name, doc.planar()?);
     Ok(Json(Opened {
         id,
         view,
@@ -94,7 +94,7 @@ pub(super) async fn snap_point(
     let q: SnapRequest = json_body(body, "snap")?;
     let doc = s.get(id)?;
     blocking(move || {
-        let c = doc.planar().map_err(ApiError::input)?;
+        let c = doc.planar()?;
         Ok(Json(snap(
             &c.pattern,
             glam::DVec2::from(q.point),

@@ -6,6 +6,7 @@
 use serde::Serialize;
 
 use super::document::Document;
+use super::error::{Stage, StudioError};
 use crate::check::layers::{DEFAULT_MAX_STATES, FlatFolding, KawasakiTolerance, LayerOptions};
 use crate::render::top_view::{cell_colour, deepest_layers};
 
@@ -57,7 +58,7 @@ pub fn flat_view(
     doc: &Document,
     state: u64,
     kawasaki: KawasakiTolerance,
-) -> Result<FlatView, String> {
+) -> Result<FlatView, StudioError> {
     let name = &doc.name;
     let cp = doc.cleaned(true)?.pattern;
     let options = LayerOptions {
@@ -68,11 +69,12 @@ pub fn flat_view(
         )),
         ..LayerOptions::default()
     };
-    let folding = FlatFolding::new(&cp, &options).map_err(|e| format!("{name}: {e}"))?;
+    let folding =
+        FlatFolding::new(&cp, &options).map_err(|e| StudioError::about(Stage::Fold, name, e))?;
     let report = folding.solver.report();
     let view = folding
         .top_view(u128::from(state))
-        .map_err(|e| format!("{name}: {e}"))?;
+        .map_err(|e| StudioError::about(Stage::Fold, name, e))?;
     let deepest = deepest_layers(&view);
     Ok(FlatView {
         states: report.states.clone(),

@@ -37,6 +37,7 @@ use super::api::{
 };
 use super::document::Document;
 use super::edit_api::json_body;
+use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
 use super::sessions::Sessions;
 use crate::design::folding::Folding;
@@ -76,8 +77,8 @@ struct Session {
 }
 
 impl Session {
-    fn new(name: String, script: Script) -> Result<Session, String> {
-        let folding = run_script(&script).map_err(|e| format!("{name}: {e}"))?;
+    fn new(name: String, script: Script) -> Result<Session, StudioError> {
+        let folding = run_script(&script).map_err(|e| StudioError::about(Stage::Fold, &name, e))?;
         let at = folding.steps().len() - 1;
         Ok(Session {
             name,
@@ -350,7 +351,7 @@ async fn new_sheet(
             snap: SnapSpec::from(snap),
             steps: Vec::new(),
         };
-        let session = Session::new("fold sequence".into(), script).map_err(ApiError::input)?;
+        let session = Session::new("fold sequence".into(), script)?;
         let (id, s) = folds.sessions.add(session);
         let s = s.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(Json(session_view(id, &s)))
@@ -374,7 +375,7 @@ async fn from_script(
     blocking(move || {
         let text = upload_text(&name, &body)?;
         let script = parse_script(text).map_err(|e| ApiError::input(format!("{name}: {e}")))?;
-        let session = Session::new(name, script).map_err(ApiError::input)?;
+        let session = Session::new(name, script)?;
         let (id, s) = folds.sessions.add(session);
         let s = s.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(Json(session_view(id, &s)))
@@ -547,7 +548,7 @@ async fn to_pattern(
     })
     .await?;
     blocking(move || {
-        let doc = Document::from_upload(&name, text.as_bytes()).map_err(ApiError::input)?;
+        let doc = Document::from_upload(&name, text.as_bytes())?;
         opened(&studio, doc)
     })
     .await

@@ -32,7 +32,7 @@ pub(super) async fn plan(
     let choice = q.choice(&s, settings?.0)?;
     let doc = s.get(id)?;
     blocking(move || {
-        let p = plan_document(&doc, &choice).map_err(ApiError::input)?;
+        let p = plan_document(&doc, &choice)?;
         Ok(Json(PlanView::new(&p)))
     })
     .await
@@ -59,8 +59,8 @@ impl JobQuery {
     fn choice(&self, s: &Studio, settings: PlanSettings) -> ApiResult<PlanChoice> {
         let profiles = s.profiles.lock().unwrap_or_else(PoisonError::into_inner);
         Ok(PlanChoice {
-            machine: profiles.machine(&self.machine).map_err(ApiError::input)?,
-            material: profiles.material(&self.material).map_err(ApiError::input)?,
+            machine: profiles.machine(&self.machine)?,
+            material: profiles.material(&self.material)?,
             size: self.size,
             settings,
         })
@@ -104,7 +104,7 @@ pub(super) async fn cut(
                 "format {format:?}: unknown job type (expected {JOB_EXTENSIONS})"
             ))
         })?;
-        let p = plan_document(&doc, &choice).map_err(ApiError::input)?;
+        let p = plan_document(&doc, &choice)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
         let bytes = job_file(kind, &p.plan, job, &p.machine)
             .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
@@ -126,7 +126,7 @@ pub(super) async fn simulate(
     let choice = q.choice(&s, settings?.0)?;
     let doc = s.get(id)?;
     blocking(move || {
-        let p = plan_document(&doc, &choice).map_err(ApiError::input)?;
+        let p = plan_document(&doc, &choice)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
         let failed = |e: &dyn std::fmt::Display| ApiError::input(format!("{}: {e}", doc.name));
         let text = crate::post::gcode(&p.plan, job, &p.machine).map_err(|e| failed(&e))?;
@@ -208,8 +208,7 @@ pub(super) async fn upload_profile(
         .profiles
         .lock()
         .unwrap_or_else(PoisonError::into_inner)
-        .add(kind, &name, &body)
-        .map_err(ApiError::input)?;
+        .add(kind, &name, &body)?;
     Ok(Json(json!({ "name": key })))
 }
 

@@ -20,7 +20,10 @@
 //! # Errors
 //! Every API error is a JSON object `{"error": "..."}` whose text is the message `foldcam`
 //! would print for the same input (without the leading `foldcam: `), with the upload's file
-//! name where the command line names the file.
+//! name where the command line names the file. A failure to read, build, clean, fold or plan
+//! (an [`error::StudioError`]) adds what failed (`"stage"`: `read`, `design`, `clean`, `fold`,
+//! `profile`, `plan`, `request`) and the file it concerns when its text does not name it
+//! (`"file"`, else `null`).
 
 pub(crate) mod api;
 pub(crate) mod assets;
@@ -29,6 +32,7 @@ mod craft_api;
 pub(crate) mod design_open;
 pub(crate) mod document;
 mod edit_api;
+pub(crate) mod error;
 pub(crate) mod flat;
 mod folding_api;
 pub(crate) mod guard;

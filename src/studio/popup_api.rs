@@ -19,7 +19,6 @@
 //! Errors are JSON `{"error": …}` with the library's message; a refused edit names its
 //! operation and leaves the session as it was.
 
-use crate::design::source::SummaryLine;
 use std::path::Path;
 use std::sync::{Arc, PoisonError};
 
@@ -35,8 +34,9 @@ use super::api::{
     ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened, upload_body,
     upload_name, upload_text,
 };
-use super::design_open::{message, open_upload};
+use super::design_open::{design_error, open_upload};
 use super::edit_api::json_body;
+use super::error::StudioError;
 use super::guard::JsonBody;
 use super::history::Versions;
 use super::sessions::Sessions;
@@ -44,6 +44,7 @@ use crate::design::popup::polygon::{
     Add, CardSize, Design, Edit, Operation, PlaneName, apply_edit, crease_pattern, findings,
     fold_card, outline_box, parse_design, write_design,
 };
+use crate::design::source::SummaryLine;
 use crate::design::source::poly::{PolyOptions, build};
 use crate::design::source::{DesignFile, MeshUse};
 use crate::pattern::CreasePattern;
@@ -200,14 +201,17 @@ struct SessionView {
 }
 
 /// The card as the CLI builds the saved text: the design made, or the refusal's lines.
-fn cli_build(name: &str, text: &str) -> Result<crate::design::source::poly::PolyDesign, String> {
+fn cli_build(
+    name: &str,
+    text: &str,
+) -> Result<crate::design::source::poly::PolyDesign, StudioError> {
     let path = Path::new(name);
     let file = DesignFile {
         name: path,
         bytes: text.as_bytes(),
     };
     let mut notes = Vec::new();
-    build(&file, &PolyOptions::default(), &mut notes).map_err(|e| message(&e))
+    build(&file, &PolyOptions::default(), &mut notes).map_err(|e| design_error(&e))
 }
 
 fn session_view(id: u64, s: &Session) -> ApiResult<SessionView> {
@@ -221,7 +225,7 @@ fn session_view(id: u64, s: &Session) -> ApiResult<SessionView> {
         Ok(made) => (true, SummaryLine::texts(&made.summary), Some(made.pattern)),
         Err(refusal) => (
             false,
-            refusal.lines().map(str::to_string).collect(),
+            refusal.to_string().lines().map(str::to_string).collect(),
             crease_pattern(&replay.card).ok(),
         ),
     };
@@ -489,8 +493,7 @@ async fn to_pattern(
     })
     .await?;
     blocking(move || {
-        let doc = open_upload(&name, text.as_bytes(), &[], MeshUse::default())
-            .map_err(ApiError::input)?;
+        let doc = open_upload(&name, text.as_bytes(), &[], MeshUse::default())?;
         opened(&studio, doc)
     })
     .await

@@ -2,6 +2,7 @@
 //! the profile files the command line names. (The plan settings a user may change are the
 //! library's [`crate::fab::PlanSettings`].)
 
+use super::error::{Stage, StudioError};
 use crate::machine::{
     MachineProfile, Material, load_machine, load_material, parse_machine, parse_material,
     shipped_machines, shipped_materials,
@@ -46,17 +47,21 @@ impl UploadedProfiles {
     ///
     /// # Errors
     /// The message `foldcam cut -m NAME` prints for a file of that name and content.
-    pub fn add(&mut self, kind: Kind, name: &str, bytes: &[u8]) -> Result<String, String> {
-        let text = std::str::from_utf8(bytes)
-            .map_err(|e| format!("{name}: file: not UTF-8 text (byte {})", e.valid_up_to()))?;
+    pub fn add(&mut self, kind: Kind, name: &str, bytes: &[u8]) -> Result<String, StudioError> {
+        let text = std::str::from_utf8(bytes).map_err(|e| {
+            let at = format!("file: not UTF-8 text (byte {})", e.valid_up_to());
+            StudioError::about(Stage::Profile, name, at)
+        })?;
         let key = format!("{UPLOAD_PREFIX}{name}");
         match kind {
             Kind::Machine => {
-                let m = parse_machine(text, name).map_err(|e| e.to_string())?;
+                let m =
+                    parse_machine(text, name).map_err(|e| StudioError::named(Stage::Profile, e))?;
                 keep(&mut self.machines, key.clone(), m);
             }
             Kind::Material => {
-                let m = parse_material(text, name).map_err(|e| e.to_string())?;
+                let m = parse_material(text, name)
+                    .map_err(|e| StudioError::named(Stage::Profile, e))?;
                 keep(&mut self.materials, key.clone(), m);
             }
         }
@@ -77,37 +82,40 @@ impl UploadedProfiles {
     ///
     /// # Errors
     /// A name that is neither, listing the shipped names.
-    pub fn machine(&self, name: &str) -> Result<MachineProfile, String> {
+    pub fn machine(&self, name: &str) -> Result<MachineProfile, StudioError> {
         if let Some((_, m)) = self.machines.iter().find(|(k, _)| k == name) {
             return Ok(m.clone());
         }
         shipped(name, "machine", &shipped_machines())?;
-        load_machine(name).map_err(|e| e.to_string())
+        load_machine(name).map_err(|e| StudioError::named(Stage::Profile, e))
     }
 
     /// A shipped material by name or an uploaded one by key.
     ///
     /// # Errors
     /// As [`UploadedProfiles::machine`].
-    pub fn material(&self, name: &str) -> Result<Material, String> {
+    pub fn material(&self, name: &str) -> Result<Material, StudioError> {
         if let Some((_, m)) = self.materials.iter().find(|(k, _)| k == name) {
             return Ok(m.clone());
         }
         shipped(name, "material", &shipped_materials())?;
-        load_material(name).map_err(|e| e.to_string())
+        load_material(name).map_err(|e| StudioError::named(Stage::Profile, e))
     }
 }
 
 /// Refuses a name that is not a shipped profile (a path would make the server read a file a
 /// request names).
-fn shipped(name: &str, kind: &str, names: &[&str]) -> Result<(), String> {
+fn shipped(name: &str, kind: &str, names: &[&str]) -> Result<(), StudioError> {
     if names.contains(&name) {
         Ok(())
     } else {
-        Err(format!(
-            "{kind} {name:?}: not a shipped profile (one of {}) nor an uploaded one; the studio \
+        Err(StudioError::named(
+            Stage::Profile,
+            format!(
+                "{kind} {name:?}: not a shipped profile (one of {}) nor an uploaded one; the studio \
              reads no profile files from disk",
-            names.join(", ")
+                names.join(", ")
+            ),
         ))
     }
 }

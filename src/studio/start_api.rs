@@ -25,6 +25,7 @@ use serde::{Deserialize, Serialize};
 use super::api::{ApiError, ApiResult, Opened, PathId, Studio, blocking, download, opened};
 use super::design_open;
 use super::document::Document;
+use super::error::{Stage, StudioError};
 use crate::check::fold3d::{FoldOptions, fold};
 use crate::design::classic::{
     BLANK_SHEET_MM, ClassicError, MiuraOri, SquareTwist, Waterbomb, Yoshimura, blank_sheet,
@@ -208,10 +209,10 @@ pub(super) async fn examples() -> Json<Vec<ExampleGroup>> {
 }
 
 /// Example `e` as a document, made as `foldcam` makes the same file.
-fn open_example(e: &Example) -> Result<Document, String> {
+fn open_example(e: &Example) -> Result<Document, StudioError> {
     match e.source {
         Source::Generated(make) => {
-            let cp = make().map_err(|err| format!("{}: {err}", e.file))?;
+            let cp = make().map_err(|err| StudioError::about(Stage::Design, e.file, err))?;
             Document::from_pattern(e.file.to_string(), cp)
         }
         Source::Pattern(text) => Document::from_upload(e.file, text.as_bytes()),
@@ -240,7 +241,7 @@ pub(super) async fn open(
             ),
         ));
     };
-    blocking(move || opened(&s, open_example(e).map_err(ApiError::input)?)).await
+    blocking(move || opened(&s, open_example(e)?)).await
 }
 
 /// `side`: the sheet's side in millimetres.
@@ -267,7 +268,7 @@ pub(super) async fn blank(
     let side = blank_side(q.side.as_deref())?;
     blocking(move || {
         let cp = blank_sheet(side).map_err(|e| ApiError::input(format!("blank sheet: {e}")))?;
-        let doc = Document::from_pattern("blank.fold".to_string(), cp).map_err(ApiError::input)?;
+        let doc = Document::from_pattern("blank.fold".to_string(), cp)?;
         opened(&s, doc)
     })
     .await
@@ -319,7 +320,7 @@ pub(super) struct SaveQuery {
 /// state the file or design came with, for FOLD), or its folded form: that folded state, else
 /// the 3D fold simulation's settled form (as `foldcam fold3d` folds it, within the studio's
 /// time limit).
-fn save_bytes(doc: &Document, what: SaveAs) -> Result<Vec<u8>, String> {
+fn save_bytes(doc: &Document, what: SaveAs) -> Result<Vec<u8>, StudioError> {
     match what {
         SaveAs::Pattern(format) => {
             let c = doc.planar()?;
@@ -338,7 +339,9 @@ fn save_bytes(doc: &Document, what: SaveAs) -> Result<Vec<u8>, String> {
                         ..FoldOptions::default()
                     };
                     fold(&c.pattern, &options)
-                        .map_err(|e| format!("{}: folded form: {e}", doc.name))?
+                        .map_err(|e| {
+                            StudioError::about(Stage::Fold, &doc.name, format!("folded form: {e}"))
+                        })?
                         .folded
                 }
             };
@@ -356,7 +359,7 @@ pub(super) async fn save(
     let what = SaveAs::from_name(q.format.as_deref().unwrap_or("fold"))?;
     let doc = s.get(id)?;
     blocking(move || {
-        let bytes = save_bytes(&doc, what).map_err(ApiError::input)?;
+        let bytes = save_bytes(&doc, what)?;
         let (ending, mime) = what.file();
         let file = format!("{}{ending}", file_stem(&doc.name, "pattern"));
         Ok(download(mime, &file, bytes))

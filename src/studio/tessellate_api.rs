@@ -22,7 +22,6 @@
 //! Progress is polled: the page asks for the events after the last one it has (about five
 //! times a second while the solve runs).
 
-use crate::design::source::SummaryLine;
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -44,7 +43,9 @@ use super::budget;
 use super::design_open::message;
 use super::document::Document;
 use super::edit_api::json_body;
+use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
+use crate::design::source::SummaryLine;
 use crate::design::source::tess_design::{
     TessSettings, layout_by_name, remesh_by_name, tuck_by_name, tuck_name, write_design,
 };
@@ -476,11 +477,11 @@ pub struct SolveRequest {
 
 impl SolveRequest {
     /// The options, as `foldcam tessellate` with the matching flags makes them.
-    fn options(&self) -> Result<TessellationOptions, String> {
+    fn options(&self) -> Result<TessellationOptions, StudioError> {
         let mut o = TessellationOptions::default();
         if let Some(name) = &self.material {
             load_material(name)
-                .map_err(|e| e.to_string())?
+                .map_err(|e| StudioError::named(Stage::Profile, e))?
                 .limits
                 .apply_to_tessellation(&mut o);
         }
@@ -517,7 +518,7 @@ impl SolveRequest {
             max_iterations: self.max_iterations,
         }
         .apply_to(&mut o);
-        o.to_solver().map_err(|e| e.to_string())?;
+        o.to_solver().map_err(StudioError::request)?;
         Ok(o)
     }
 }
@@ -528,12 +529,12 @@ fn by_name<T>(
     what: &str,
     expected: &str,
     find: impl Fn(&str) -> Option<T>,
-) -> Result<Option<T>, String> {
+) -> Result<Option<T>, StudioError> {
     match value {
         None => Ok(None),
         Some(v) => find(v)
             .map(Some)
-            .ok_or_else(|| format!("{what} {v:?}: expected {expected}")),
+            .ok_or_else(|| StudioError::request(format!("{what} {v:?}: expected {expected}"))),
     }
 }
 
@@ -544,7 +545,7 @@ async fn solve(
 ) -> ApiResult<Json<Value>> {
     let mesh = tess.mesh(id)?;
     let request: SolveRequest = json_body(body, "solve")?;
-    let options = request.options().map_err(ApiError::input)?;
+    let options = request.options()?;
     // The solve's memory, by the solver's estimate for its largest triangulation, held until
     // the job ends.
     let faces = options
@@ -785,8 +786,7 @@ async fn to_pattern(
         let Ok(d) = &outcome.design else {
             return Err(ApiError::input("no design".into()));
         };
-        let doc = Document::from_design(name, d.clone().into_design(), Vec::new())
-            .map_err(ApiError::input)?;
+        let doc = Document::from_design(name, d.clone().into_design(), Vec::new())?;
         opened(&studio, doc)
     })
     .await

@@ -5,6 +5,7 @@ use glam::DVec2;
 use serde::Serialize;
 
 use super::document::Document;
+use super::error::{Stage, StudioError};
 use crate::fab::PlanSettings;
 use crate::fab::{FabPlan, PlanStats};
 use crate::machine::{MachineProfile, Material};
@@ -43,13 +44,13 @@ pub struct Planned {
 /// # Errors
 /// The message `foldcam cut` prints for the same input, naming the option for a setting out
 /// of range.
-pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, String> {
+pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, StudioError> {
     let machine = choice.machine.clone();
     let material = &choice.material;
     let mut options = choice
         .settings
         .options(&machine, material)
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| StudioError::named(Stage::Plan, e))?;
     // A paper craft's edge numbers are marked as `foldcam papercraft --job` marks them.
     if choice.settings.flat.is_none() && doc.design.as_ref().is_some_and(|d| d.labels) {
         crate::fab::mark_labels(&mut options, &machine, material);
@@ -59,13 +60,13 @@ pub fn plan_document(doc: &Document, choice: &PlanChoice) -> Result<Planned, Str
     if let Some(size) = choice.size {
         pattern
             .scale_to(Scale::Size(size))
-            .map_err(|e| format!("{}: {e}", doc.name))?;
+            .map_err(|e| StudioError::about(Stage::Request, &doc.name, e))?;
     }
     pattern
         .require_millimetres()
-        .map_err(|e| format!("{}: {e}", doc.name))?;
+        .map_err(|e| StudioError::about(Stage::Plan, &doc.name, e))?;
     let plan = crate::fab::plan(&pattern, &machine, material, &options)
-        .map_err(|e| format!("{}: {e}", doc.name))?;
+        .map_err(|e| StudioError::about(Stage::Plan, &doc.name, e))?;
     Ok(Planned {
         machine,
         plan,

@@ -31,6 +31,7 @@ use super::api::{
     upload_name,
 };
 use super::edit_api::json_body;
+use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
 use super::history::Versions;
 use super::sessions::Sessions;
@@ -454,11 +455,15 @@ struct OpenView {
     faults: Vec<Vec<[[f64; 3]; 4]>>,
 }
 
-fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, String> {
+fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, StudioError> {
     if !angle.is_finite() {
-        return Err(format!("angle {angle}: expected degrees from 0 to 180"));
+        return Err(StudioError::request(format!(
+            "angle {angle}: expected degrees from 0 to 180"
+        )));
     }
-    let cp = crease_pattern(card).map_err(|e| format!("the crease pattern: {e}"))?;
+    let pattern_error =
+        |e: &dyn std::fmt::Display| StudioError::about(Stage::Design, "the crease pattern", e);
+    let cp = crease_pattern(card).map_err(|e| pattern_error(&e))?;
     let folded = fold_card(card, &cp, angle).state;
     let mut triangles = Vec::new();
     for (pattern_face, face) in cp.faces.iter().flatten().zip(folded.faces.iter().flatten()) {
@@ -471,7 +476,7 @@ fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, String> {
             .map(|h| ring(h.as_slice()))
             .collect();
         let tris = triangulate_polygon(&ring(pattern_face.outer.as_slice()), &holes)
-            .map_err(|e| format!("a face of the card: {e}"))?;
+            .map_err(|e| StudioError::about(Stage::Design, "a face of the card", e))?;
         let ids: Vec<usize> = face
             .outer
             .iter()
@@ -480,7 +485,7 @@ fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, String> {
             .collect();
         triangles.extend(tris.iter().map(|t| t.map(|k| ids[k])));
     }
-    let verdict = card_verdict(card).map_err(|e| format!("the crease pattern: {e}"))?;
+    let verdict = card_verdict(card).map_err(|e| pattern_error(&e))?;
     let surface = Surface::new(card);
     let (s, ny) = (card.cell_mm(), card.ny() as f64);
     let quad = |f: &FaceView| -> [[f64; 3]; 4] {
@@ -539,8 +544,7 @@ async fn to_pattern(
     .await?;
     blocking(move || {
         // The saved file, built as an upload of it is (and as `foldcam popup voxel` builds it).
-        let doc = design_open::open_upload(&name, text.as_bytes(), &[], MeshUse::Auto)
-            .map_err(ApiError::input)?;
+        let doc = design_open::open_upload(&name, text.as_bytes(), &[], MeshUse::Auto)?;
         opened(&studio, doc)
     })
     .await

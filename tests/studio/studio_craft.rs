@@ -224,4 +224,7 @@ fn a_drawing_from_a_bare_mesh_and_bad_requests() {
     let (status, e) = server.post_json("/api/craft/mesh?name=notes.txt", b"hello");
     assert_eq!(status, 422);
     assert!(e["error"].as_str().unwrap().contains("notes.txt"), "{e}");
+    // The failure as data: what failed and which file.
+    assert_eq!(e["stage"], "read", "{e}");
+    assert_eq!(e["file"], "notes.txt", "{e}");
 }

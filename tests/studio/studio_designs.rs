@@ -323,6 +323,8 @@ fn a_bad_value_in_a_design_file_gets_the_command_lines_message() {
         let (status, reply) = upload(&server, &[(name, text.as_bytes().to_vec())], "auto");
         assert_eq!(status, 422, "{reply}");
         assert_eq!(reply["error"].as_str().unwrap(), expected, "{name}");
+        // A build's failure names the stage; its message names the file itself.
+        assert_eq!(reply["stage"], "design", "{reply}");
     }
 }
 
