@@ -93,10 +93,17 @@ impl DesignProgress {
 }
 
 impl foldcam::design::source::Progress for DesignProgress {
-    fn note(&mut self, line: String) {
+    fn note(&mut self, note: foldcam::design::source::BuildNote) {
+        // Every text line of a note (curvature advice holds several) after `foldcam: `.
+        let text = note.to_string();
+        let print = || {
+            for line in text.lines() {
+                errln!("foldcam: {line}");
+            }
+        };
         match &self.bar {
-            Some(bar) => bar.suspend(|| errln!("foldcam: {line}")),
-            None => errln!("foldcam: {line}"),
+            Some(bar) => bar.suspend(print),
+            None => print(),
         }
     }
 

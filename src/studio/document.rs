@@ -9,7 +9,8 @@ use serde::Serialize;
 
 use super::error::{Stage, StudioError};
 use crate::check::AssignmentCounts;
-use crate::design::source::{Design, SummaryLine};
+use crate::design::source::summary::text_lines;
+use crate::design::source::{BuildNote, Design, SummaryLine};
 use crate::formats::{self, Imported, ReadOptions};
 use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions};
 
@@ -102,7 +103,7 @@ impl Document {
     pub fn from_design(
         name: String,
         design: Design,
-        notes: Vec<String>,
+        notes: Vec<BuildNote>,
     ) -> Result<Document, StudioError> {
         let mut doc = Document::new(
             name,
@@ -112,7 +113,7 @@ impl Document {
                 findings: Vec::new(),
             },
         )?;
-        let mut lines = notes;
+        let mut lines = text_lines(&notes);
         lines.extend(SummaryLine::texts(&design.summary));
         doc.design = Some(DesignNote {
             made: design.made,

@@ -45,7 +45,6 @@ use super::document::Document;
 use super::edit_api::json_body;
 use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
-use crate::design::source::SummaryLine;
 use crate::design::source::tess_design::{
     TessSettings, layout_by_name, remesh_by_name, tuck_by_name, tuck_name, write_design,
 };
@@ -54,6 +53,7 @@ use crate::design::source::tessellate::{
     SolvePlan, SolveTracker, TessellationOptions, TessellationOutcome, iteration_line, solve_plan,
     tessellate_outcome,
 };
+use crate::design::source::{BuildNote, SummaryLine};
 use crate::design::source::{DesignFile, Progress, SourceError};
 use crate::design::tessellation::Iteration;
 use crate::design::tessellation::estimate::solve_bytes;
@@ -219,8 +219,10 @@ impl JobProgress {
 }
 
 impl Progress for JobProgress {
-    fn note(&mut self, line: String) {
-        self.job.push(json!({ "kind": "note", "text": line }));
+    fn note(&mut self, note: BuildNote) {
+        for line in note.to_string().lines() {
+            self.job.push(json!({ "kind": "note", "text": line }));
+        }
     }
 
     fn busy(&mut self, _what: &str) {

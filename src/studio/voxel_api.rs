@@ -43,7 +43,7 @@ use crate::design::popup::voxel::{
     card_verdict, crease_pattern, fold_card, format_voxel_card, open_transform,
 };
 use crate::design::source::voxel::{VoxelOptions, load_card};
-use crate::design::source::{DesignFile, DesignKind, MeshUse, SourceError};
+use crate::design::source::{BuildNote, DesignFile, DesignKind, MeshUse, SourceError};
 use crate::geom::triangulate::triangulate_polygon;
 use crate::limits::{STUDIO_BYTES_PER_PATTERN_CELL, STUDIO_VOXEL_PATTERN_CELLS};
 
@@ -387,12 +387,12 @@ async fn load(
             name: &path,
             bytes: &body,
         };
-        let fail = |e: SourceError| ApiError::input(design_open::message(&e));
+        let fail = |e: SourceError| ApiError::from(design_open::design_error(&e));
         let mesh = match DesignKind::recognise(&path, &body) {
             Some(DesignKind::Mesh) => Some(file.mesh().map_err(fail)?),
             _ => None,
         };
-        let mut notes: Vec<String> = Vec::new();
+        let mut notes: Vec<BuildNote> = Vec::new();
         let card = load_card(&file, mesh.as_ref(), &options, &mut notes).map_err(fail)?;
         drop(converting);
         start(&voxels, name, card)

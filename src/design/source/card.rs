@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use super::note::{BuildNote, closed_overhang_text};
 use super::{Progress, SourceError};
 use crate::design::popup::fit::{CLOSED_SLACK_MM, FitError, Fitted};
 use crate::design::popup::integrity::{closed_overhang, loose_pieces_where};
@@ -27,15 +28,13 @@ pub fn take_fit<T>(
         lines: vec![format!("{}: {e}", input.display())],
     })?;
     if let Some(o) = fitted.before {
-        progress.note(format!(
-            "{}: folded shut, the card reached {:.1} mm beyond its outline (at x = {:.1}, y = \
-             {:.1} mm of the closed card); --fit added {:.0} mm to the {what}",
-            input.display(),
-            o.beyond_mm,
-            o.at.x,
-            o.at.y,
-            fitted.added_mm
-        ));
+        progress.note(BuildNote::Fitted {
+            file: input.display().to_string(),
+            beyond_mm: o.beyond_mm,
+            at: o.at,
+            added_mm: fitted.added_mm,
+            to: what.to_string(),
+        });
     }
     Ok(fitted.card)
 }
@@ -70,24 +69,22 @@ pub fn card_holds(
         return Ok(());
     };
     let (lo, hi) = o.outline;
-    let message = format!(
-        "{}: folded shut, the card reaches {:.1} mm beyond its {:.1} × {:.1} mm outline (at \
-         x = {:.1}, y = {:.1} mm of the closed card)",
-        input.display(),
-        o.beyond_mm,
-        hi.x - lo.x,
-        hi.y - lo.y,
-        o.at.x,
-        o.at.y
-    );
+    let file = input.display().to_string();
+    let outline_mm = [hi.x - lo.x, hi.y - lo.y];
     if fit {
+        let message = closed_overhang_text(&file, o.beyond_mm, outline_mm, o.at);
         Err(SourceError::NotMade {
             lines: vec![format!(
                 "{message}: make the model smaller or the card larger"
             )],
         })
     } else {
-        progress.note(format!("warning: {message}; --fit adds the paper it needs"));
+        progress.note(BuildNote::ClosedOverhang {
+            file,
+            beyond_mm: o.beyond_mm,
+            outline_mm,
+            at: o.at,
+        });
         Ok(())
     }
 }

@@ -8,6 +8,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::note::BuildNote;
 use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::papercraft::design::{Design, Made, parse_design};
@@ -94,29 +95,27 @@ pub fn build(
 ) -> Result<CraftDesign, SourceError> {
     let ParsedCraft { name, design } = parsed;
     let reference = ReferenceMesh::new(mesh).map_err(|e| SourceError::input(mesh_name, e))?;
-    progress.note(format!(
-        "{} cut lines, {} placed and {} generated patches on a mesh of {} triangles",
-        design.cut_lines.len(),
-        design.patches.len(),
-        design.auto_patches.len(),
-        reference.triangle_count()
-    ));
+    progress.note(BuildNote::CraftParts {
+        cut_lines: design.cut_lines.len(),
+        placed: design.patches.len(),
+        generated: design.auto_patches.len(),
+        triangles: reference.triangle_count(),
+    });
     progress.busy("building the parts");
     let made = design.build(&reference);
     progress.idle();
     let made = made.map_err(|e| SourceError::input(&name, e))?;
     for r in &made.auto {
         for &(q, e, gap) in &r.gaps {
-            let warn = if gap > design.tolerance {
-                " (above the tolerance: the patches cannot meet on one cylinder)"
-            } else {
-                ""
-            };
-            progress.note(format!(
-                "patch {} ({} control points, fit residual {:.2e}) meets patch {q} on cut line \
-                 {e} with a gap of {gap:.2e}{warn}",
-                r.patch, r.control_points, r.fit_residual
-            ));
+            progress.note(BuildNote::PatchGap {
+                patch: r.patch,
+                control_points: r.control_points,
+                fit_residual: r.fit_residual,
+                other: q,
+                cut_line: e,
+                gap,
+                over_tolerance: gap > design.tolerance,
+            });
         }
     }
     let mut late_notes = Vec::new();

@@ -18,6 +18,7 @@
 
 pub(crate) mod card;
 pub mod craft;
+pub(crate) mod note;
 pub mod poly;
 pub mod script;
 pub(crate) mod summary;
@@ -33,6 +34,7 @@ use crate::mesh::{MeshError, PolyMesh, parse_obj, parse_stl};
 use crate::pattern::{CreasePattern, FoldedState};
 
 pub use craft::{CraftDesign, ParsedCraft};
+pub use note::BuildNote;
 pub use poly::{PolyDesign, PolyOptions};
 pub use script::ScriptDesign;
 pub use summary::SummaryLine;
@@ -293,12 +295,12 @@ impl SourceError {
     }
 }
 
-/// Hears what a build has to say while it runs: the lines `foldcam` prints on standard error
-/// (without `foldcam: `), when long work starts and ends, and the tessellation solver's
-/// iterations. Every method has a default that ignores it.
+/// Hears what a build has to say while it runs: its notes ([`BuildNote`], printed by
+/// `foldcam` on standard error after `foldcam: `), when long work starts and ends, and the
+/// tessellation solver's iterations. Every method has a default that ignores it.
 pub trait Progress {
-    /// A line of news (a warning starts with `warning: `).
-    fn note(&mut self, _line: String) {}
+    /// A note (see [`BuildNote::is_warning`]).
+    fn note(&mut self, _note: BuildNote) {}
     /// Long work begins (`what` says which).
     fn busy(&mut self, _what: &str) {}
     /// The long work announced by [`Progress::busy`] ended.
@@ -317,9 +319,9 @@ pub trait Progress {
 }
 
 /// Collects the notes, ignores the rest.
-impl Progress for Vec<String> {
-    fn note(&mut self, line: String) {
-        self.push(line);
+impl Progress for Vec<BuildNote> {
+    fn note(&mut self, note: BuildNote) {
+        self.push(note);
     }
 }
 

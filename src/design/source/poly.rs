@@ -3,6 +3,7 @@
 //! card's own checks — what `foldcam popup poly` does before it writes anything.
 
 use super::card::{card_holds, take_fit};
+use super::note::BuildNote;
 use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::popup::fit::fit_design;
@@ -73,7 +74,9 @@ pub fn build(
     } else {
         design
     };
-    progress.note(format!("replaying {} operations", design.operations.len()));
+    progress.note(BuildNote::Replaying {
+        operations: design.operations.len(),
+    });
     let replay = design.replay().map_err(|e| SourceError::input(path, e))?;
     if !replay.report.passed() {
         return Err(SourceError::NotMade {

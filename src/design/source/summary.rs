@@ -140,16 +140,21 @@ impl SummaryLine {
 
     /// The printed lines of `lines`, each text line separately (the studio's list).
     pub fn texts(lines: &[SummaryLine]) -> Vec<String> {
-        lines
-            .iter()
-            .flat_map(|l| {
-                l.to_string()
-                    .lines()
-                    .map(str::to_string)
-                    .collect::<Vec<_>>()
-            })
-            .collect()
+        text_lines(lines)
     }
+}
+
+/// Every text line of what `items` print, in order (an item may print several).
+pub(crate) fn text_lines<T: fmt::Display>(items: &[T]) -> Vec<String> {
+    items
+        .iter()
+        .flat_map(|item| {
+            item.to_string()
+                .lines()
+                .map(str::to_string)
+                .collect::<Vec<_>>()
+        })
+        .collect()
 }
 
 impl fmt::Display for SummaryLine {

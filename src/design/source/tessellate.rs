@@ -6,6 +6,7 @@
 use std::ops::ControlFlow;
 use std::path::Path;
 
+use super::note::BuildNote;
 use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::advice::curvature_advice;
@@ -289,13 +290,12 @@ pub fn tessellate_outcome(
 ) -> Result<TessellationOutcome, SourceError> {
     let opts = options.to_solver()?;
     let limits = opts.solve.limits;
-    progress.note(format!(
-        "{}: {} faces; solving (fold <= {fold:.1} deg, vertex angle >= {corner:.1} deg)",
-        name.display(),
-        mesh.faces().len(),
-        fold = limits.max_fold.to_degrees(),
-        corner = limits.min_vertex_angle.to_degrees(),
-    ));
+    progress.note(BuildNote::Solving {
+        file: name.display().to_string(),
+        faces: mesh.faces().len(),
+        max_fold_deg: limits.max_fold.to_degrees(),
+        min_vertex_angle_deg: limits.min_vertex_angle.to_degrees(),
+    });
     // Every triangulation the schedule solves on, built once for the notes and the solves.
     let plan = opts.plan(mesh).map_err(|e| SourceError::input(name, e))?;
     let (passes, crowding, shrinks) = (plan.passes(), *plan.crowding(), plan.shrinks());
@@ -304,34 +304,25 @@ pub fn tessellate_outcome(
         Some(Triangulation::Coarser { faces } | Triangulation::Remeshed { faces }) => faces,
         _ => mesh.faces().len(),
     };
-    progress.note(format!(
-        "estimate: up to {} solve(s): {} face shrink(s) on {} triangulation(s), a colliding \
-         one solved once more with the stiffer outline; {}{}",
-        passes.len() * shrinks.len(),
-        shrinks.len(),
-        passes.len(),
-        ladder_estimate(opts.star.tuck.kind, first_faces),
-        opts.time_limit.map_or(String::new(), |limit| format!(
-            "; the time limit stops it after {:.0} s (--time-limit)",
-            limit.as_secs_f64()
-        )),
-    ));
+    progress.note(BuildNote::SolveEstimate {
+        shrinks: shrinks.len(),
+        passes: passes.len(),
+        estimate: ladder_estimate(opts.star.tuck.kind, first_faces),
+        time_limit: opts.time_limit,
+    });
     // What the curvature asks of the tucks (a mesh that is not a disk is refused below).
     let advice = curvature_advice(mesh).ok();
-    for line in advice.iter().flat_map(|a| a.describe()) {
-        progress.note(line);
+    if let Some(advice) = advice {
+        progress.note(BuildNote::Curvature(advice));
     }
     // Up front, when the tucks near the edge are expected to run into each other.
     if crowding.crowded() {
-        for line in crowding.describe() {
-            progress.note(line);
-        }
+        progress.note(BuildNote::Crowding(crowding));
         if let Triangulation::Coarser { faces } = passes[0].triangulation {
-            progress.note(format!(
-                "rim crowding: solving a coarser re-triangulation (about {faces} faces) first; \
-                 the input's {} faces only if it gives no usable result",
-                mesh.faces().len()
-            ));
+            progress.note(BuildNote::CoarserFirst {
+                faces,
+                input_faces: mesh.faces().len(),
+            });
         }
     }
     let asked = options.shrink.is_some();
@@ -439,15 +430,11 @@ impl Watch for Reporter<'_> {
 
     fn refused(&mut self, s: f64, t: &Tessellation) -> ControlFlow<()> {
         if !self.asked {
-            let next = if s > SHRINK_LADDER[SHRINK_LADDER.len() - 1] {
-                "trying a smaller shrink"
-            } else {
-                "no shrink worked on these triangles"
-            };
-            self.progress.note(format!(
-                "shrink {s}: {}; {next}",
-                t.problem().unwrap_or_default()
-            ));
+            self.progress.note(BuildNote::ShrinkRefused {
+                shrink: s,
+                problem: t.problem().unwrap_or_default(),
+                last: s <= SHRINK_LADDER[SHRINK_LADDER.len() - 1],
+            });
         }
         self.progress.next_solve();
         go_on(&*self.progress)

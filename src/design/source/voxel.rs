@@ -6,6 +6,7 @@
 use std::path::Path;
 
 use super::card::{card_holds, take_fit};
+use super::note::BuildNote;
 use super::summary::SummaryLine;
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::clock::Stopwatch;
@@ -161,14 +162,11 @@ pub fn load_card(
         };
         let started = Stopwatch::start();
         let (field, _) = depth_field_from_mesh(mesh, &placement).map_err(|e| at(&e))?;
-        progress.note(format!(
-            "{} faces seen from the front as {} × {} × {} cells in {:.1?}",
-            mesh.faces().len(),
-            field.nx,
-            field.ny,
-            field.nz,
-            started.elapsed()
-        ));
+        progress.note(BuildNote::MeshAsCells {
+            faces: mesh.faces().len(),
+            cells: [field.nx, field.ny, field.nz],
+            took: started.elapsed(),
+        });
         field
     } else if is_png {
         if options.depth == 0 {
@@ -226,13 +224,10 @@ fn card_from_field(
     let cell_mm = options
         .cell_mm
         .unwrap_or(options.card_width / field.nx as f64);
-    progress.note(format!(
-        "building a card of {} × {} × {} cells: {} (estimated)",
-        field.nx,
-        field.ny,
-        field.nz,
-        conversion_estimate(field)
-    ));
+    progress.note(BuildNote::BuildingCard {
+        cells: [field.nx, field.ny, field.nz],
+        estimate: conversion_estimate(field),
+    });
     let convert = ConvertOptions {
         element: options.morphology,
         windows: options.windows,
@@ -250,19 +245,24 @@ fn card_from_field(
 }
 
 fn conversion_notes(r: &ConvertReport, progress: &mut dyn Progress) {
-    progress.note(format!(
-        "bumps removed ({} cells changed) in {:.1?}",
-        r.smoothed_cells, r.smoothing_time
-    ));
-    progress.note(format!(
-        "filling under overhangs added {} voxels in {} rows; {} of {} candidate rows became \
-         windows; {:.1?}",
-        r.added_cells, r.filled_rows, r.window_rows, r.window_candidates, r.constraint_time
-    ));
-    progress.note(format!(
-        "{} of {} thin top faces left out; {} pop-up checks ({} over the whole card); {:.1?}",
-        r.tops_omitted, r.thin_tops, r.checks, r.full_checks, r.thin_top_time
-    ));
+    progress.note(BuildNote::BumpsRemoved {
+        cells: r.smoothed_cells,
+        took: r.smoothing_time,
+    });
+    progress.note(BuildNote::Overhangs {
+        added_cells: r.added_cells,
+        filled_rows: r.filled_rows,
+        window_rows: r.window_rows,
+        window_candidates: r.window_candidates,
+        took: r.constraint_time,
+    });
+    progress.note(BuildNote::ThinTops {
+        omitted: r.tops_omitted,
+        thin_tops: r.thin_tops,
+        checks: r.checks,
+        full_checks: r.full_checks,
+        took: r.thin_top_time,
+    });
 }
 
 /// Checks, fits (when asked) and creases a loaded card. `converted` says whether the card

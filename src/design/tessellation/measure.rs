@@ -15,5 +15,6 @@ pub use super::diagnose::{Condition, Violation, before_solving, sector_counts};
 pub use super::distance::{
     SurfaceDistance, SurfaceFit, corner_distance, surface_fit, uncovered_triangles,
 };
+pub use super::estimate::LadderEstimate;
 pub use super::geometry::{Graded, fold_angle};
 pub use super::pipeline::SolveSummary;
