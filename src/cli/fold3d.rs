@@ -69,6 +69,13 @@ pub struct Args {
     /// not rigid-foldable from flat may settle on another branch).
     #[arg(long)]
     pub adaptive_ramp: bool,
+    /// Solve for the settled form directly: load steps of sparse Levenberg–Marquardt
+    /// iterations on the same model instead of thousands of explicit steps (a 10,000-triangle
+    /// Miura-ori at 90% in about 2.5 s instead of 6 s). Falls back to the explicit run when it
+    /// does not settle or leaves a crease against its assignment; with --gif the explicit run
+    /// is used (it records the frames).
+    #[arg(long)]
+    pub implicit: bool,
     /// Most solver steps.
     #[arg(value_name = "N", long, default_value_t = 200_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
     pub steps: u64,
@@ -112,6 +119,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         percent: args.percent,
         max_steps: usize::try_from(args.steps).unwrap_or(usize::MAX),
         adaptive_ramp: args.adaptive_ramp,
+        implicit: args.implicit && gif.is_none(),
         max_time: Duration::from_secs_f64(args.time_limit.min(1e6)),
         frames: if gif.is_some() { GIF_FRAMES } else { 0 },
         ..FoldOptions::default()
@@ -197,6 +205,19 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
         r.seconds,
         r.residual
     );
+    if let Some(solve) = &r.static_solve {
+        let how = if solve.used {
+            "settled"
+        } else {
+            "did not settle within the tolerance with every crease on its side: the explicit run \
+             folded it"
+        };
+        outln!(
+            "  static solve: {} linear solves, {} factorizations; {how}",
+            solve.linear_solves,
+            solve.factorizations
+        );
+    }
     for slow in &r.slower_ramps {
         outln!(
             "  a ramp of {} steps left {} crease(s) folded against their assignment: folded \

@@ -905,3 +905,84 @@ fn cli_fold3d_output_of_a_fold_past_flat_is_read_back_by_check() {
         );
     }
 }
+
+/// The static solve (load steps of Levenberg–Marquardt iterations, `FoldOptions::implicit`)
+/// settles a Miura-ori on the closed form of its rigid kinematics, on the same fold angles as
+/// the explicit dynamics settled as far, and is the result the report gives.
+#[test]
+fn the_static_solve_settles_a_miura_on_the_closed_form_and_the_explicit_form() {
+    let (cols, rows) = (6, 6);
+    let (m, cp) = miura(cols, rows);
+    let run = |implicit| {
+        let opts = FoldOptions {
+            percent: 90.0,
+            implicit,
+            tolerance: 1e-7,
+            ..FoldOptions::default()
+        };
+        fold(&cp, &opts).unwrap()
+    };
+    let (explicit, implicit) = (run(false), run(true));
+    let r = &implicit.report;
+    let solve = r.static_solve.expect("the static solve ran");
+    assert!(solve.used, "{solve:?}");
+    assert!(solve.factorizations >= 4 && solve.linear_solves >= solve.factorizations);
+    assert_eq!(r.stop, Stop::Settled);
+    assert!(r.residual < 1e-7, "{}", r.residual);
+    assert!(r.wrong_sign.is_empty() && r.past_flat.is_empty());
+    assert!(r.crossing_faces.is_empty());
+    assert!(r.max_strain < 0.01, "{}", r.max_strain);
+    assert!(explicit.report.static_solve.is_none());
+    let (rho_z, rho_x) = zigzag_and_pleat(&cp, &r.fold_angles, cols, rows);
+    let c = (m.shear * m.shear + m.height * m.height).sqrt();
+    let (want_x, _, _) = miura_closed_form((m.shear / c).acos(), rho_z);
+    assert!(
+        (rho_x - want_x).abs() < 0.01 * want_x,
+        "{rho_x} vs {want_x}"
+    );
+    let apart = r
+        .fold_angles
+        .iter()
+        .zip(&explicit.report.fold_angles)
+        .filter_map(|(a, b)| Some((a.as_ref()? - b.as_ref()?).abs()))
+        .fold(0.0, f64::max);
+    assert!(apart < 0.1, "fold angles {apart} degrees apart");
+    // The same shape up to a rigid motion (the static solve does not pin the sheet).
+    let n = cp.vertices.len();
+    let (a, b) = (&implicit.folded.positions[..n], &explicit.folded.positions[..n]);
+    let off = align(a, b)
+        .iter()
+        .zip(b)
+        .map(|(p, q)| p.distance(*q))
+        .fold(0.0, f64::max);
+    assert!(off < 1e-3 * diagonal(b), "{off} vs diagonal {}", diagonal(b));
+}
+
+/// A pattern the static solve cannot settle on its assignment's side is folded by the
+/// explicit dynamics after it: the report says so and still meets the explicit run's checks.
+#[test]
+fn a_static_solve_that_does_not_settle_hands_over_to_the_explicit_run() {
+    let cp = kawasaki_violation();
+    let opts = FoldOptions {
+        percent: 100.0,
+        implicit: true,
+        ..FoldOptions::default()
+    };
+    let f = fold(&cp, &opts).unwrap();
+    let solve = f.report.static_solve.expect("the static solve ran");
+    let plain = fold(
+        &cp,
+        &FoldOptions {
+            implicit: false,
+            ..opts.clone()
+        },
+    )
+    .unwrap();
+    // The vertex cannot fold to its targets: the static solve stops short of the tolerance
+    // and the explicit run's steps follow its start, ending as the explicit run alone ends.
+    assert!(!solve.used, "{solve:?}");
+    let start = foldcam::check::fold3d::STATIC_START_STEPS;
+    assert_eq!(f.report.steps, start + plain.report.steps);
+    assert_eq!(f.report.stop, plain.report.stop);
+    assert_eq!(f.report.max_strain_face, plain.report.max_strain_face);
+}

@@ -31,6 +31,7 @@
 pub(crate) mod dihedral;
 pub(crate) mod intersect;
 pub(crate) mod model;
+pub(crate) mod newton;
 pub(crate) mod solver;
 
 use std::time::Duration;
@@ -42,6 +43,7 @@ use serde::Serialize;
 
 use crate::pattern::{CreasePattern, EdgeId, FaceId, FoldedState};
 pub use model::{BarHingeModel, HingeKind, ModelError, crease_target_deg};
+pub use newton::START_STEPS as STATIC_START_STEPS;
 pub use solver::Solver;
 
 /// Most triangle pairs listed as crossing.
@@ -85,6 +87,9 @@ pub struct FoldOptions {
     pub adaptive_ramp: bool,
     /// Positions recorded during the ramp for an animation (0: none; at most [`MAX_FRAMES`]).
     pub frames: usize,
+    /// Solve for static equilibrium by load steps and Levenberg–Marquardt iterations
+    /// ([`newton`]) instead of the explicit dynamics; without frames.
+    pub implicit: bool,
 }
 
 /// Default [`FoldOptions::tolerance`]: the residual force, relative to the bars' axial
@@ -105,6 +110,7 @@ impl Default for FoldOptions {
             max_time: Duration::from_secs(60),
             tolerance: SETTLED_RESIDUAL,
             frames: 0,
+            implicit: false,
         }
     }
 }
@@ -221,6 +227,21 @@ pub struct FoldReport {
     /// Runs given up for creases settled against their assignment, each followed by a run
     /// with a slower ramp (see [`fold_with`]); [`Self::steps`] counts their steps too.
     pub slower_ramps: Vec<SlowerRamp>,
+    /// The static solve, when [`FoldOptions::implicit`] asked for it ([`Self::steps`]
+    /// counts its explicit start, and the explicit run after it when it was not used).
+    pub static_solve: Option<StaticSolve>,
+}
+
+/// How the static solve ([`newton`]) went.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct StaticSolve {
+    /// Linear solves made.
+    pub linear_solves: usize,
+    /// Sparse factorizations made.
+    pub factorizations: usize,
+    /// Whether its result is the report's: it settled within the tolerance with every crease
+    /// on its assignment's side; otherwise the explicit dynamics ran from flat after it.
+    pub used: bool,
 }
 
 /// A reached angle this close to 0 has no sign, degrees.
@@ -287,26 +308,50 @@ pub fn fold_with(
     let mut ramp = opts.ramp_steps.min(opts.max_steps);
     let mut slower_ramps = Vec::new();
     let mut total_steps = 0;
-    let (mut solver, stop, frames) = loop {
-        let budget = Budget {
-            steps: opts.max_steps - total_steps,
-            start: &start,
-        };
-        let (solver, steps, stop, frames) = run(&model, opts, ramp, &budget, &mut observe);
-        total_steps += steps;
+    // The static solve first when asked; the explicit dynamics when it is not asked, or
+    // when it does not settle or settles with creases against their assignment.
+    let mut static_solve = None;
+    let implicit = if opts.implicit {
+        let mut solver = Solver::new(&model, opts);
+        let late = || start.elapsed() > opts.max_time;
+        let settled = newton::settle(&mut solver, fraction, opts.tolerance, &late);
         let wrong = wrong_signs(&model, &solver.angles(), fraction);
-        let room = opts.max_steps - total_steps > ramp * SLOWER_RAMP_FACTOR
-            && start.elapsed() < opts.max_time;
-        let retry = wrong > 0 && stop == Stop::Settled && ramp > 0 && room;
-        if !retry || slower_ramps.len() == SLOWER_RAMPS {
-            break (solver, stop, frames);
-        }
-        slower_ramps.push(SlowerRamp {
-            ramp_steps: ramp,
-            steps,
-            wrong_sign: wrong,
+        let used = settled.is_some_and(|s| s.converged) && wrong == 0 && solver.finite();
+        static_solve = Some(StaticSolve {
+            linear_solves: settled.map_or(0, |s| s.iterations),
+            factorizations: settled.map_or(0, |s| s.factorizations),
+            used,
         });
-        ramp *= SLOWER_RAMP_FACTOR;
+        total_steps = newton::START_STEPS;
+        used.then_some(solver)
+    } else {
+        None
+    };
+    let (mut solver, stop, frames) = if let Some(solver) = implicit {
+        observe(&model, &solver.positions);
+        (solver, Stop::Settled, Vec::new())
+    } else {
+        loop {
+            let budget = Budget {
+                steps: opts.max_steps - total_steps,
+                start: &start,
+            };
+            let (solver, steps, stop, frames) = run(&model, opts, ramp, &budget, &mut observe);
+            total_steps += steps;
+            let wrong = wrong_signs(&model, &solver.angles(), fraction);
+            let room = opts.max_steps - total_steps > ramp * SLOWER_RAMP_FACTOR
+                && start.elapsed() < opts.max_time;
+            let retry = wrong > 0 && stop == Stop::Settled && ramp > 0 && room;
+            if !retry || slower_ramps.len() == SLOWER_RAMPS {
+                break (solver, stop, frames);
+            }
+            slower_ramps.push(SlowerRamp {
+                ramp_steps: ramp,
+                steps,
+                wrong_sign: wrong,
+            });
+            ramp *= SLOWER_RAMP_FACTOR;
+        }
     };
     let mut frames = frames;
     let residual = solver.residual();
@@ -326,6 +371,7 @@ pub fn fold_with(
         },
     );
     report.slower_ramps = slower_ramps;
+    report.static_solve = static_solve;
     frames.push(positions.clone());
     let mut edges = model.edges.clone();
     for (e, a) in report.fold_angles.iter().enumerate() {
@@ -600,5 +646,6 @@ fn report(
         seconds: run.seconds,
         triangles: model.triangles.len(),
         slower_ramps: Vec::new(),
+        static_solve: None,
     }
 }

@@ -70,17 +70,17 @@ impl Default for HingeOut {
 
 /// The state of a running simulation.
 pub struct Solver<'m> {
-    model: &'m BarHingeModel,
+    pub(super) model: &'m BarHingeModel,
     /// Positions.
     pub positions: Vec<DVec3>,
     velocities: Vec<DVec3>,
-    bar_k: Vec<f64>,
+    pub(super) bar_k: Vec<f64>,
     bar_c: Vec<f64>,
-    hinge_k: Vec<f64>,
+    pub(super) hinge_k: Vec<f64>,
     /// Every hinge's angle at 100 % (0 for facet and free hinges), radians.
-    hinge_full: Vec<f64>,
+    pub(super) hinge_full: Vec<f64>,
     /// The fraction of [`Self::hinge_full`] the hinges are driven to.
-    fraction: f64,
+    pub(super) fraction: f64,
     bar_out: Vec<DVec3>,
     hinge_out: Vec<HingeOut>,
     /// Per vertex, the range of its slots in `slots`.
@@ -92,7 +92,7 @@ pub struct Solver<'m> {
     kinetic: f64,
     /// Largest force on a vertex in the last step (damping included), over `EA`.
     step_force: f64,
-    axial: f64,
+    pub(super) axial: f64,
     parallel: bool,
 }
 
@@ -162,6 +162,25 @@ impl<'m> Solver<'m> {
     /// damping out and is taken at the new positions). 0 before the first step.
     pub fn step_force(&self) -> f64 {
         self.step_force
+    }
+
+    /// Every hinge's unwrapped angle and its `(sin, cos)`, as the last step left them.
+    pub(super) fn hinge_state(&self) -> (Vec<f64>, Vec<(f64, f64)>) {
+        self.hinge_out.iter().map(|h| (h.angle, h.turn)).unzip()
+    }
+
+    /// Sets every hinge's unwrapped angle and `(sin, cos)` (a static solve's result), with
+    /// no force and no velocity: the state a settled run leaves.
+    pub(super) fn set_hinge_state(&mut self, angles: &[f64], turns: &[(f64, f64)]) {
+        for ((h, &angle), &turn) in self.hinge_out.iter_mut().zip(angles).zip(turns) {
+            *h = HingeOut {
+                force: [DVec3::ZERO; 4],
+                angle,
+                turn,
+            };
+        }
+        self.velocities.fill(DVec3::ZERO);
+        self.kinetic = 0.0;
     }
 
     /// The unwrapped fold angle of every hinge after the last step, radians.
