@@ -949,13 +949,20 @@ fn the_static_solve_settles_a_miura_on_the_closed_form_and_the_explicit_form() {
     assert!(apart < 0.1, "fold angles {apart} degrees apart");
     // The same shape up to a rigid motion (the static solve does not pin the sheet).
     let n = cp.vertices.len();
-    let (a, b) = (&implicit.folded.positions[..n], &explicit.folded.positions[..n]);
+    let (a, b) = (
+        &implicit.folded.positions[..n],
+        &explicit.folded.positions[..n],
+    );
     let off = align(a, b)
         .iter()
         .zip(b)
         .map(|(p, q)| p.distance(*q))
         .fold(0.0, f64::max);
-    assert!(off < 1e-3 * diagonal(b), "{off} vs diagonal {}", diagonal(b));
+    assert!(
+        off < 1e-3 * diagonal(b),
+        "{off} vs diagonal {}",
+        diagonal(b)
+    );
 }
 
 /// A pattern the static solve cannot settle on its assignment's side is folded by the
