@@ -112,10 +112,9 @@ impl Pattern {
         // Column 3j + b: rows 3i + a of every lower neighbour i < j, then 3j + a for a ≤ b.
         let mut col_ptr = vec![0usize];
         let mut row_idx = Vec::new();
-        // Value index of block (i, j) entry (a, b), found by searching column 3j + b.
-        for j in 0..n {
+        for (j, neighbours) in lower.iter().enumerate() {
             for b in 0..3 {
-                for &i in &lower[j] {
+                for &i in neighbours {
                     let i = i as usize;
                     let rows = if i == j { b + 1 } else { 3 };
                     row_idx.extend((0..rows).map(|a| 3 * i + a));
@@ -129,6 +128,7 @@ impl Pattern {
             let col = 3 * j + b;
             let (start, end) = (col_ptr[col], col_ptr[col + 1]);
             let row = 3 * i + a;
+            // Every pair looked up was linked above, so the search finds it.
             start + row_idx[start..end].binary_search(&row).unwrap_or(0)
         };
         // The entries of block (u, v) in row-major (a, b) order; for u == v the lower half
