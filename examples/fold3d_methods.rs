@@ -44,14 +44,22 @@ fn main() {
         };
         let f = fold(&cp, &opts).expect("fold");
         let r = &f.report;
+        let work = match r.static_solve {
+            Some(s) => format!(
+                "{} explicit steps to start, {} linear solves, {} factorizations, {}",
+                r.steps,
+                s.linear_solves,
+                s.factorizations,
+                if s.used { "used" } else { "not used" }
+            ),
+            None => format!("{} steps", r.steps),
+        };
         println!(
-            "{:>8}: {} triangles, {:.2} s, {} {}, {:?}, residual {:.1e}, strain {:.2e}, angle \
+            "{:>8}: {} triangles, {:.2} s, {work}, {:?}, residual {:.1e}, strain {:.2e}, angle \
              error {:.3} deg, wrong sign {}, crossing faces {}",
             if implicit { "implicit" } else { "explicit" },
             r.triangles,
             r.seconds,
-            r.steps,
-            if implicit { "linear solves" } else { "steps" },
             r.stop,
             r.residual,
             r.max_strain,
