@@ -46,7 +46,7 @@ use super::assets;
 use super::design_open;
 use super::document::{Document, PatternView};
 use super::edit_api;
-use super::error::StudioError;
+use super::error::{Stage, StudioError};
 use super::flat::{FlatView, flat_view};
 use super::guard::{self, Guard};
 use super::history::Versions;
@@ -685,7 +685,7 @@ async fn fold3d(
         if q.flat {
             // The sheet the simulation starts from ([`fold`] builds the same model).
             let model = BarHingeModel::build(&c.pattern)
-                .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+                .map_err(|e| StudioError::about(Stage::Fold, &doc.name, e))?;
             let (triangles, triangle_face) = model_triangles(&model);
             return Ok(Json(FoldView {
                 triangles,
@@ -704,7 +704,7 @@ async fn fold3d(
             ..FoldOptions::default()
         };
         let f =
-            fold(&c.pattern, &opts).map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+            fold(&c.pattern, &opts).map_err(|e| StudioError::about(Stage::Fold, &doc.name, e))?;
         // Frame k of the ramp is taken at step k·every, when the target is k·every/ramp of
         // the full fold (see `fold3d::fold_with`).
         let ramp = opts.ramp_steps.min(opts.max_steps);

@@ -10,7 +10,7 @@ use serde::Serialize;
 use super::error::{Stage, StudioError};
 use crate::check::AssignmentCounts;
 use crate::design::source::summary::text_lines;
-use crate::design::source::{BuildNote, Design, SummaryLine};
+use crate::design::source::{BuildNote, Design};
 use crate::formats::{self, Imported, ReadOptions};
 use crate::pattern::{CreasePattern, FoldedState, PlanarizeOptions};
 
@@ -114,7 +114,7 @@ impl Document {
             },
         )?;
         let mut lines = text_lines(&notes);
-        lines.extend(SummaryLine::texts(&design.summary));
+        lines.extend(text_lines(&design.summary));
         doc.design = Some(DesignNote {
             made: design.made,
             lines,

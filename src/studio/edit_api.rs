@@ -10,6 +10,7 @@ use serde::Deserialize;
 
 use super::api::{ApiError, ApiResult, Opened, PathId, Step, Studio, blocking};
 use super::document::PatternView;
+use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
 use crate::pattern::edit::{Edit, apply as apply_edit};
 use crate::pattern::snap::{SnapOptions, Snapped, snap};
@@ -37,7 +38,7 @@ pub(super) async fn edit(
     blocking(move || {
         let mut pattern = base.planar()?.pattern.clone();
         let report = apply_edit(&mut pattern, &edit, None)
-            .map_err(|e| ApiError::input(format!("{}: {e}", base.name)))?;
+            .map_err(|e| StudioError::about(Stage::Request, &base.name, e))?;
         let next = base.edited(pattern);
         let view = PatternView::new(&next.name, next.planar()?);
         let history = s.push(id, &base, next)?;

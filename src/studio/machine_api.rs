@@ -16,6 +16,7 @@ use serde_json::{Value, json};
 use super::api::{
     ApiError, ApiResult, PathId, Studio, blocking, download, upload_body, upload_name,
 };
+use super::error::{Stage, StudioError};
 use super::settings::{Kind, MAX_PROFILE_BYTES};
 use super::toolpath::{PlanChoice, PlanView, plan_document};
 use crate::fab::PlanSettings;
@@ -107,7 +108,7 @@ pub(super) async fn cut(
         let p = plan_document(&doc, &choice)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
         let bytes = job_file(kind, &p.plan, job, &p.machine)
-            .map_err(|e| ApiError::input(format!("{}: {e}", doc.name)))?;
+            .map_err(|e| StudioError::about(Stage::Plan, &doc.name, e))?;
         let stem = crate::design::source::file_stem(&doc.name, "job");
         let several = (p.plan.jobs.len() > 1).then_some(job.name.as_str());
         let file = job_file_name(&stem, &p.machine, &choice.material, several, kind);
@@ -128,7 +129,7 @@ pub(super) async fn simulate(
     blocking(move || {
         let p = plan_document(&doc, &choice)?;
         let job = pick_job(&p.plan, q.job.as_deref())?;
-        let failed = |e: &dyn std::fmt::Display| ApiError::input(format!("{}: {e}", doc.name));
+        let failed = |e: &dyn std::fmt::Display| StudioError::about(Stage::Plan, &doc.name, e);
         let text = crate::post::gcode(&p.plan, job, &p.machine).map_err(|e| failed(&e))?;
         let r = check_gcode(&text, &p.machine).map_err(|e| failed(&e))?;
         Ok(Json(json!({

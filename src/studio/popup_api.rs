@@ -36,7 +36,7 @@ use super::api::{
 };
 use super::design_open::{design_error, open_upload};
 use super::edit_api::json_body;
-use super::error::StudioError;
+use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
 use super::history::Versions;
 use super::sessions::Sessions;
@@ -44,8 +44,8 @@ use crate::design::popup::polygon::{
     Add, CardSize, Design, Edit, Operation, PlaneName, apply_edit, crease_pattern, findings,
     fold_card, outline_box, parse_design, write_design,
 };
-use crate::design::source::SummaryLine;
 use crate::design::source::poly::{PolyOptions, build};
+use crate::design::source::summary::text_lines;
 use crate::design::source::{DesignFile, MeshUse};
 use crate::pattern::CreasePattern;
 
@@ -222,7 +222,7 @@ fn session_view(id: u64, s: &Session) -> ApiResult<SessionView> {
     let found = findings(&replay.card, &replay.report);
     let built = cli_build(&s.name, &write_design(design));
     let (valid, lines, pattern) = match built {
-        Ok(made) => (true, SummaryLine::texts(&made.summary), Some(made.pattern)),
+        Ok(made) => (true, text_lines(&made.summary), Some(made.pattern)),
         Err(refusal) => (
             false,
             refusal.to_string().lines().map(str::to_string).collect(),
@@ -370,7 +370,7 @@ async fn edit(
     let request: EditRequest = json_body(body, "edit")?;
     on_session(popups, id, move |s| {
         let next = apply_edit(s.design(), &request.into())
-            .map_err(|e| ApiError::input(format!("{}: {e}", s.name)))?;
+            .map_err(|e| StudioError::about(Stage::Design, &s.name, e))?;
         s.versions.push(next);
         Ok(Json(session_view(id, s)?))
     })
@@ -447,7 +447,8 @@ async fn card(
             .design()
             .build()
             .map_err(|e| ApiError::input(e.to_string()))?;
-        let cp = crease_pattern(&card).map_err(|e| ApiError::input(format!("{}: {e}", s.name)))?;
+        let cp =
+            crease_pattern(&card).map_err(|e| StudioError::about(Stage::Design, &s.name, e))?;
         let folded = fold_card(&card, &cp, q.angle);
         let faces = folded.state.faces.as_deref().unwrap_or_default();
         let faces = faces

@@ -45,6 +45,8 @@ use super::document::Document;
 use super::edit_api::json_body;
 use super::error::{Stage, StudioError};
 use super::guard::JsonBody;
+use crate::design::source::BuildNote;
+use crate::design::source::summary::text_lines;
 use crate::design::source::tess_design::{
     TessSettings, layout_by_name, remesh_by_name, tuck_by_name, tuck_name, write_design,
 };
@@ -53,7 +55,6 @@ use crate::design::source::tessellate::{
     SolvePlan, SolveTracker, TessellationOptions, TessellationOutcome, iteration_line, solve_plan,
     tessellate_outcome,
 };
-use crate::design::source::{BuildNote, SummaryLine};
 use crate::design::source::{DesignFile, Progress, SourceError};
 use crate::design::tessellation::Iteration;
 use crate::design::tessellation::estimate::solve_bytes;
@@ -699,9 +700,9 @@ fn result_view(job: &Solve, outcome: &TessellationOutcome) -> Value {
                     e.assignment.letter().to_string(),
                 ])).collect::<Vec<_>>(),
             });
-            (true, SummaryLine::texts(&d.summary), pattern)
+            (true, text_lines(&d.summary), pattern)
         }
-        Err(lines) => (false, SummaryLine::texts(lines), Value::Null),
+        Err(lines) => (false, text_lines(lines), Value::Null),
     };
     json!({
         "name": job.mesh.name,

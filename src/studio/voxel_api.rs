@@ -455,14 +455,15 @@ struct OpenView {
     faults: Vec<Vec<[[f64; 3]; 4]>>,
 }
 
-fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, StudioError> {
+/// The card `name` opened to `angle` degrees.
+fn open_view(name: &str, card: &VoxelCard, angle: f64) -> Result<OpenView, StudioError> {
     if !angle.is_finite() {
-        return Err(StudioError::request(format!(
-            "angle {angle}: expected degrees from 0 to 180"
-        )));
+        let reason = format!("angle {angle}: expected degrees from 0 to 180");
+        return Err(StudioError::about(Stage::Request, name, reason));
     }
-    let pattern_error =
-        |e: &dyn std::fmt::Display| StudioError::about(Stage::Design, "the crease pattern", e);
+    let pattern_error = |e: &dyn std::fmt::Display| {
+        StudioError::about(Stage::Design, name, format!("the crease pattern: {e}"))
+    };
     let cp = crease_pattern(card).map_err(|e| pattern_error(&e))?;
     let folded = fold_card(card, &cp, angle).state;
     let mut triangles = Vec::new();
@@ -475,8 +476,10 @@ fn open_view(card: &VoxelCard, angle: f64) -> Result<OpenView, StudioError> {
             .iter()
             .map(|h| ring(h.as_slice()))
             .collect();
-        let tris = triangulate_polygon(&ring(pattern_face.outer.as_slice()), &holes)
-            .map_err(|e| StudioError::about(Stage::Design, "a face of the card", e))?;
+        let tris =
+            triangulate_polygon(&ring(pattern_face.outer.as_slice()), &holes).map_err(|e| {
+                StudioError::about(Stage::Design, name, format!("a face of the card: {e}"))
+            })?;
         let ids: Vec<usize> = face
             .outer
             .iter()
@@ -515,9 +518,9 @@ async fn open_card(
 ) -> ApiResult<Json<OpenView>> {
     let Query(q) = query?;
     on_session(voxels, id, move |s| {
-        open_view(s.card(), q.angle)
+        open_view(&s.name, s.card(), q.angle)
             .map(Json)
-            .map_err(|e| ApiError::input(format!("{}: {e}", s.name)))
+            .map_err(ApiError::from)
     })
     .await
 }
@@ -562,7 +565,7 @@ mod tests {
         // each face), so the triangles' area is the sheet's at any opening.
         let (w, h) = card.sheet_mm();
         for angle in [0.0, 30.0, 90.0, 150.0, 180.0] {
-            let v = open_view(&card, angle).unwrap();
+            let v = open_view("card", &card, angle).unwrap();
             let area: f64 = v
                 .triangles
                 .iter()
@@ -573,6 +576,6 @@ mod tests {
                 .sum();
             assert!((area - w * h).abs() < 1e-6, "{angle}°: {area} vs {}", w * h);
         }
-        assert!(open_view(&card, f64::NAN).is_err());
+        assert!(open_view("card", &card, f64::NAN).is_err());
     }
 }

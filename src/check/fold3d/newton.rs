@@ -200,10 +200,11 @@ fn add_outer(values: &mut [f64], slots: &[usize; 9], w: f64, gu: DVec3, gv: DVec
 }
 
 /// What one evaluation at the positions gives: the energy, its gradient `Jᵀr` per vertex,
-/// and each hinge's unwrapped angle and `(sin, cos)`.
+/// the largest vertex force over `EA`, and each hinge's unwrapped angle and `(sin, cos)`.
 struct Evaluation {
     energy: f64,
     gradient: Vec<DVec3>,
+    force: f64,
     angles: Vec<f64>,
     turns: Vec<(f64, f64)>,
 }
@@ -243,9 +244,11 @@ fn evaluate(s: &Solver<'_>, x: &[DVec3], angles: &[f64], turns: &[(f64, f64)]) -
             gradient[*v as usize] += g[c] * (s.hinge_k[h] * off);
         }
     }
+    let force = gradient.iter().map(|g| g.length()).fold(0.0, f64::max) / s.axial;
     Evaluation {
         energy,
         gradient,
+        force,
         angles: new_angles,
         turns: new_turns,
     }
@@ -325,7 +328,6 @@ pub(super) fn settle(
     let n3 = 3 * s.positions.len();
     let mut values = vec![0.0; pattern.symbolic.row_idx().len()];
     let (mut iterations, mut factorizations) = (0, 0);
-    let mut converged = false;
     // Out of the flat sheet with the explicit dynamics: at flat every bar's stretch is of
     // second order in the lift, which the Gauss–Newton model does not see.
     let start = fraction / LOAD_STEPS as f64;
@@ -333,16 +335,17 @@ pub(super) fn settle(
         s.set_fraction(start * k as f64 / START_STEPS as f64);
         s.step();
     }
-    let (mut angles, mut turns) = s.hinge_state();
+    let (angles, turns) = s.hinge_state();
+    let mut now = evaluate(s, &s.positions, &angles, &turns);
     for load in 1..=LOAD_STEPS {
         s.set_fraction(fraction * load as f64 / LOAD_STEPS as f64);
         let last = load == LOAD_STEPS;
-        let mut now = evaluate(s, &s.positions, &angles, &turns);
+        // The same positions and angles, energy and forces at the new target.
+        now = evaluate(s, &s.positions, &now.angles, &now.turns);
         let (goal, cap) = if last {
             (tolerance, LAST_ITERATIONS)
         } else {
-            let start = now.gradient.iter().map(|g| g.length()).fold(0.0, f64::max) / s.axial;
-            ((STEP_REDUCTION * start).max(tolerance), STEP_ITERATIONS)
+            ((STEP_REDUCTION * now.force).max(tolerance), STEP_ITERATIONS)
         };
         let mut mu = MU_START;
         // The factor in use and whether it was made at the current positions: a stale one
@@ -351,8 +354,7 @@ pub(super) fn settle(
         let mut factor: Option<Llt<usize, f64>> = None;
         let mut fresh = false;
         for _ in 0..cap {
-            let force = now.gradient.iter().map(|g| g.length()).fold(0.0, f64::max) / s.axial;
-            if force < goal || out_of_time() {
+            if now.force < goal || out_of_time() {
                 break;
             }
             if factor.is_none() {
@@ -369,25 +371,16 @@ pub(super) fn settle(
             let mut step: Vec<f64> = now.gradient.iter().flat_map(|g| (-*g).to_array()).collect();
             llt.solve_in_place(faer::MatMut::from_column_major_slice_mut(&mut step, n3, 1));
             iterations += 1;
-            let trial: Vec<DVec3> = s
-                .positions
-                .iter()
-                .zip(step.chunks_exact(3))
-                .map(|(p, d)| *p + DVec3::new(d[0], d[1], d[2]))
-                .collect();
             // Backtracking along the step before giving up on the factor.
             let mut found = None;
             for t in [1.0, 0.5, 0.25] {
-                let trial: Vec<DVec3> = if t == 1.0 {
-                    trial.clone()
-                } else {
-                    s.positions
-                        .iter()
-                        .zip(step.chunks_exact(3))
-                        .map(|(p, d)| *p + t * DVec3::new(d[0], d[1], d[2]))
-                        .collect()
-                };
-                let next = evaluate(s, &trial, &angles, &turns);
+                let trial: Vec<DVec3> = s
+                    .positions
+                    .iter()
+                    .zip(step.chunks_exact(3))
+                    .map(|(p, d)| *p + t * DVec3::new(d[0], d[1], d[2]))
+                    .collect();
+                let next = evaluate(s, &trial, &now.angles, &now.turns);
                 if next.energy.is_finite() && next.energy < now.energy {
                     found = Some((trial, next));
                     break;
@@ -395,8 +388,6 @@ pub(super) fn settle(
             }
             if let Some((trial, next)) = found {
                 s.positions = trial;
-                angles.clone_from(&next.angles);
-                turns.clone_from(&next.turns);
                 now = next;
                 if fresh {
                     mu = (mu / 3.0).max(MU_FLOOR);
@@ -409,13 +400,12 @@ pub(super) fn settle(
                 factor = None;
             }
         }
-        let force = now.gradient.iter().map(|g| g.length()).fold(0.0, f64::max) / s.axial;
-        converged = force < goal;
     }
-    s.set_hinge_state(&angles, &turns);
+    s.set_hinge_state(&now.angles, &now.turns);
     Some(Settled {
         iterations,
         factorizations,
-        converged,
+        // The last load step's goal is the run's tolerance.
+        converged: now.force < tolerance,
     })
 }

@@ -137,14 +137,10 @@ impl SummaryLine {
             SummaryLine::LayerWarning { .. } | SummaryLine::UnlabelledCutLines(_)
         )
     }
-
-    /// The printed lines of `lines`, each text line separately (the studio's list).
-    pub fn texts(lines: &[SummaryLine]) -> Vec<String> {
-        text_lines(lines)
-    }
 }
 
-/// Every text line of what `items` print, in order (an item may print several).
+/// Every text line of what `items` print, in order (an item may print several): the
+/// studio's list of a design's summary lines or build notes.
 pub(crate) fn text_lines<T: fmt::Display>(items: &[T]) -> Vec<String> {
     items
         .iter()
@@ -275,7 +271,7 @@ mod tests {
         assert!(!card.is_warning());
         let unlabelled = SummaryLine::UnlabelledCutLines(vec![3, 7]);
         assert!(unlabelled.is_warning());
-        let texts = SummaryLine::texts(&[
+        let texts = text_lines(&[
             card,
             SummaryLine::NothingWritten {
                 reason: "a\nb".into(),

@@ -7,7 +7,7 @@ use std::ops::ControlFlow;
 use std::path::Path;
 
 use super::note::BuildNote;
-use super::summary::SummaryLine;
+use super::summary::{SummaryLine, text_lines};
 use super::{DesignFile, DesignKind, Progress, SourceError};
 use crate::design::tessellation::advice::curvature_advice;
 use crate::design::tessellation::distance::{MIN_COVERED, SurfaceFit, fit_and_missing};
@@ -240,7 +240,7 @@ pub fn tessellate_mesh(
 ) -> Result<TessellationDesign, SourceError> {
     let outcome = tessellate_outcome(name, mesh, options, progress)?;
     outcome.design.map_err(|lines| SourceError::NotMade {
-        lines: SummaryLine::texts(&lines),
+        lines: text_lines(&lines),
     })
 }
 
