@@ -4,8 +4,9 @@
 //! time, steps or linear solves, residual, strain, angle error, and how far apart the two
 //! folded forms lie (the largest difference of a fold angle).
 //!
-//! `cargo run --release --example fold3d_methods -- [SIDE] [PERCENT] [TOLERANCE]` (default
-//! 71 × 71 cells, about 10,000 triangles, folded to 90 %, the default residual tolerance).
+//! `cargo run --release --example fold3d_methods -- [SIDE] [PERCENT] [TOLERANCE] [FRAMES]`
+//! (default 71 × 71 cells, about 10,000 triangles, folded to 90 %, the default residual
+//! tolerance, no frames; with frames the static solve takes one load step per frame).
 
 use foldcam::check::fold3d::{FoldOptions, fold};
 use foldcam::design::classic::MiuraOri;
@@ -19,6 +20,7 @@ fn main() {
         .get(2)
         .and_then(|s| s.parse().ok())
         .unwrap_or(FoldOptions::default().tolerance);
+    let frames: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(0);
     let mut cp = MiuraOri {
         columns: side,
         rows: side,
@@ -40,6 +42,7 @@ fn main() {
             percent,
             implicit,
             tolerance,
+            frames,
             ..FoldOptions::default()
         };
         let f = fold(&cp, &opts).expect("fold");
@@ -56,7 +59,7 @@ fn main() {
         };
         println!(
             "{:>8}: {} triangles, {:.2} s, {work}, {:?}, residual {:.1e}, strain {:.2e}, angle \
-             error {:.3} deg, wrong sign {}, crossing faces {}",
+             error {:.3} deg, wrong sign {}, crossing faces {}, {} frames",
             if implicit { "implicit" } else { "explicit" },
             r.triangles,
             r.seconds,
@@ -65,7 +68,8 @@ fn main() {
             r.max_strain,
             r.max_angle_error_deg,
             r.wrong_sign.len(),
-            r.crossing_faces.len()
+            r.crossing_faces.len(),
+            f.frames.len()
         );
         forms.push(r.fold_angles.clone());
     }

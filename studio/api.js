@@ -19,6 +19,37 @@ export async function call(url, options = {}) {
   return body;
 }
 
+/** Reads a newline-delimited JSON reply (the API's `stream=true` routes), calling `onLine`
+ * with each line as it arrives; resolves when the reply ends. A refusal throws as `call`'s. */
+export async function stream(url, onLine) {
+  const response = await fetch(url, { headers: { 'x-foldcam-token': TOKEN } });
+  if (!response.ok) {
+    const text = await response.text();
+    let body;
+    try {
+      body = JSON.parse(text);
+    } catch {
+      throw new Error(`${url}: ${response.status} ${text.slice(0, 200)}`);
+    }
+    throw new Error(body.error || `${url}: ${response.status}`);
+  }
+  const reader = response.body.getReader();
+  const decoder = new TextDecoder();
+  let buffered = '';
+  for (;;) {
+    const { value, done } = await reader.read();
+    if (value) buffered += decoder.decode(value, { stream: true });
+    let end;
+    while ((end = buffered.indexOf('\n')) >= 0) {
+      const line = buffered.slice(0, end);
+      buffered = buffered.slice(end + 1);
+      if (line.trim()) onLine(JSON.parse(line));
+    }
+    if (done) break;
+  }
+  if (buffered.trim()) onLine(JSON.parse(buffered));
+}
+
 /** The file of a set to open: a paper-craft or tessellation design (its mesh comes with it),
  * else the first. */
 export function mainFile(files) {

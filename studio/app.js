@@ -1,6 +1,6 @@
 // The studio page: opens patterns (command-line files, the file picker, drag and drop),
 // shows counts, legend and check findings, and drives the three views.
-import { call, upload, mainFile } from './api.js';
+import { call, stream, upload, mainFile } from './api.js';
 import { PatternView } from './cp.js';
 import { FoldView } from './fold.js';
 import { MachineView } from './machine.js';
@@ -233,8 +233,9 @@ async function opened(view) {
 }
 
 /** Folds the document in 3D: the flat sheet first, at once (`fold3d?flat=true`), then the
- * simulation, which starts from that sheet. `body[data-fold-stage]` says which is shown
- * (`flat`, then `folded`). */
+ * simulation, which starts from that sheet; its frames are shown as they arrive
+ * (`fold3d?stream=true`), then the whole fold. `body[data-fold-stage]` says which is shown
+ * (`flat`, `folding` from the first folded frame, then `folded`). */
 async function foldNow() {
   if (!state.foldView) state.foldView = new FoldView($('fold-canvas'));
   const doc = state.doc;
@@ -246,13 +247,27 @@ async function foldNow() {
   showFoldFrame();
   document.body.dataset.foldStage = 'flat';
   $('fold-label').textContent = 'the flat sheet; folding…';
-  const fold = await call(`/api/docs/${doc.id}/fold3d`);
+  let fold = null;
+  await stream(`/api/docs/${doc.id}/fold3d?stream=true`, (line) => {
+    if (state.doc !== doc) return;
+    if (line.error) throw new Error(line.error.error);
+    if (line.frame) {
+      state.foldView.showFrame(line.frame);
+      $('fold-label').textContent = `folding… ${line.frame.percent.toFixed(0)}% reached`;
+      document.body.dataset.foldStage = 'folding';
+    }
+    if (line.done) fold = line.done;
+  });
   if (state.doc !== doc) return;
+  if (!fold) throw new Error('the fold ended without its result');
   state.fold = fold;
   state.foldView.show(fold);
   const r = fold.report;
+  const method = r.static_solve && r.static_solve.used
+    ? `static solve, ${r.static_solve.linear_solves} linear solves`
+    : `${r.steps} steps`;
   $('fold-report').textContent = `Bar-and-hinge simulation (Ghassaei, Demaine & Gershenfeld 2018): ` +
-    `${r.triangles} triangles, ${r.steps} steps, ${r.stop.replace('_', ' ')}; largest bar strain ` +
+    `${r.triangles} triangles, ${method}, ${r.stop.replace('_', ' ')}, ${r.seconds.toFixed(1)} s; largest bar strain ` +
     `${(100 * r.max_strain).toFixed(3)}%; ${r.crossing_faces.length} pair(s) of faces passing through each other` +
     (r.past_flat.length ? `; ${r.past_flat.length} crease(s) folded past flat (their faces pass through each other).` : '.');
   showFoldFrame();
@@ -262,7 +277,7 @@ async function foldNow() {
 function showFoldFrame() {
   const frame = state.foldView.showPercent(Number($('fold-slider').value));
   $('fold-label').textContent = `${frame.percent.toFixed(0)}% of every fold angle` +
-    (frame.settled ? '' : ' (while folding)');
+    (frame.settled ? '' : frame.blended ? ' (blended between two computed states)' : ' (while folding)');
   document.body.dataset.foldPercent = frame.percent.toFixed(1);
 }
 

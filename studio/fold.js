@@ -1,5 +1,5 @@
 // The folded form in 3D (three.js): frames of the bar-and-hinge simulation from flat to the
-// settled fold, chosen with a slider. Drag turns the model.
+// settled fold, chosen with a slider (blended between computed frames). Drag turns the model.
 import * as THREE from './vendor/three.module.min.js';
 import { makeScene, onDrag } from './scene3d.js';
 
@@ -46,21 +46,38 @@ export class FoldView {
     this.setFrame(0);
   }
 
-  /** Shows the frame nearest to `percent`; returns it. */
+  /** Shows the fold at `percent`: a computed frame when one is there, else a blend of the
+   * two frames on either side (the static solve's frames are settled states a load step
+   * apart). Returns what is shown: `{ percent, settled, blended }`. */
   showPercent(percent) {
-    const frames = this.fold.frames;
-    let best = 0;
-    frames.forEach((f, i) => {
-      if (Math.abs(f.percent - percent) < Math.abs(frames[best].percent - percent)) best = i;
-    });
-    // Among frames at the same percentage prefer the settled one.
-    const same = frames.findIndex((f) => f.settled && f.percent === frames[best].percent);
-    return this.setFrame(same >= 0 ? same : best);
+    // By percentage; among frames at the same one the settled frame last, so it is found.
+    const frames = [...this.fold.frames].sort((a, b) => a.percent - b.percent || a.settled - b.settled);
+    const at = (p) => frames.filter((f) => f.percent === p).pop();
+    const last = frames[frames.length - 1];
+    if (percent >= last.percent) return this.showFrame(at(last.percent));
+    if (percent <= frames[0].percent) return this.showFrame(at(frames[0].percent));
+    const i = frames.findIndex((f) => f.percent >= percent);
+    const [a, b] = [frames[i - 1], frames[i]];
+    if (b.percent === percent) return this.showFrame(at(percent));
+    const t = (percent - a.percent) / (b.percent - a.percent);
+    const p = new Float32Array(a.positions.length);
+    for (let k = 0; k < p.length; k += 1) p[k] = a.positions[k] + t * (b.positions[k] - a.positions[k]);
+    this.setPositions(p);
+    return { percent, settled: false, blended: true };
+  }
+
+  /** Shows one frame of the API's fold view (or a streamed one); returns it. */
+  showFrame(frame) {
+    this.setPositions(frame.positions);
+    return frame;
   }
 
   setFrame(i) {
-    const frame = this.fold.frames[i];
-    const p = frame.positions;
+    return this.showFrame(this.fold.frames[i]);
+  }
+
+  /** Moves the sheet's vertices to `p` (x, y, z of every model vertex) and draws it. */
+  setPositions(p) {
     const attr = this.geometry.getAttribute('position');
     for (let k = 0; k < p.length; k += 3) {
       attr.setXYZ(k / 3, p[k] - this.centre.x, p[k + 1] - this.centre.y, p[k + 2] - this.centre.z);
@@ -72,7 +89,6 @@ export class FoldView {
     this.wire = new THREE.LineSegments(new THREE.WireframeGeometry(this.geometry), this.wire.material);
     this.model.add(this.wire);
     this.draw();
-    return frame;
   }
 
   draw() {

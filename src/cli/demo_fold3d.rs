@@ -47,7 +47,7 @@ pub fn miura(dir: &Path, index: &mut super::demo_jobs::DemoIndex, width: u32) ->
         .with_key(&format!("Miura-ori folded to {PERCENT}%"), unit);
     let png = render_folded_png(&f.folded, &shown)?;
     let mut states = vec![f.state_at(&f.model.rest)];
-    states.extend(f.frames.iter().map(|x| f.state_at(x)));
+    states.extend(f.frames.iter().map(|x| f.state_at(&x.positions)));
     let folding = format!("Miura-ori folding from flat to {PERCENT}%");
     let gif = render_gif(&states, &view.with_key(&folding, unit), 80)?;
     formats::save(&dir.join(format!("{name}.fold")), cp, Some(&f.folded))?;

@@ -69,13 +69,13 @@ pub struct Args {
     /// not rigid-foldable from flat may settle on another branch).
     #[arg(long)]
     pub adaptive_ramp: bool,
-    /// Solve for the settled form directly: load steps of sparse Levenberg–Marquardt
-    /// iterations on the same model instead of thousands of explicit steps (a 10,000-triangle
-    /// Miura-ori at 90% in about 2.5 s instead of 6 s). Falls back to the explicit run when it
-    /// does not settle or leaves a crease against its assignment; with --gif the explicit run
-    /// is used (it records the frames).
-    #[arg(long)]
-    pub implicit: bool,
+    /// How to find the folded form: `static` solves for it directly, in load steps of sparse
+    /// Levenberg–Marquardt iterations (a 10,000-triangle Miura-ori at 90% in about 2.5 s),
+    /// and hands over to the explicit run when it does not settle or leaves a crease against
+    /// its assignment; `explicit` runs only the damped dynamics of Origami Simulator
+    /// (thousands of steps; --adaptive-ramp and --steps apply to it).
+    #[arg(long, value_enum, default_value_t = Method::Static)]
+    pub method: Method,
     /// Most solver steps.
     #[arg(value_name = "N", long, default_value_t = 200_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
     pub steps: u64,
@@ -87,6 +87,15 @@ pub struct Args {
     pub width: u32,
     #[command(flatten)]
     pub stdout: super::pipe::ToArg,
+}
+
+/// How `fold3d` finds the folded form.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// Load steps of Levenberg–Marquardt iterations on the model's energy.
+    Static,
+    /// Explicit damped dynamics alone.
+    Explicit,
 }
 
 fn percent(s: &str) -> Result<f64, String> {
@@ -119,7 +128,7 @@ pub fn run(args: Args) -> Result<Outcome> {
         percent: args.percent,
         max_steps: usize::try_from(args.steps).unwrap_or(usize::MAX),
         adaptive_ramp: args.adaptive_ramp,
-        implicit: args.implicit && gif.is_none(),
+        implicit: args.method == Method::Static,
         max_time: Duration::from_secs_f64(args.time_limit.min(1e6)),
         frames: if gif.is_some() { GIF_FRAMES } else { 0 },
         ..FoldOptions::default()
@@ -171,7 +180,7 @@ pub fn run(args: Args) -> Result<Outcome> {
     }
     if let Some(gif) = &gif {
         let mut states = vec![result.state_at(&result.model.rest)];
-        states.extend(result.frames.iter().map(|x| result.state_at(x)));
+        states.extend(result.frames.iter().map(|x| result.state_at(&x.positions)));
         let view = view
             .clone()
             .with_key(&format!("folding from flat to {percent}%"), unit);

@@ -11,7 +11,7 @@
 //! | `GET /api/docs/{id}/check` | `foldcam check --json`'s report |
 //! | `GET /api/docs/{id}/layers` | the layer-order check (`foldcam check --layers`) |
 //! | `GET /api/docs/{id}/flat[?state=K]` | the flat-folded state K seen from above (`foldcam fold-flat --png`) |
-//! | `GET /api/docs/{id}/fold3d[?flat=true]` | the 3D fold (bar-and-hinge model) as frames from flat to 100%; with `flat=true` at once, only the flat sheet the fold starts from (no report) |
+//! | `GET /api/docs/{id}/fold3d[?flat=true\|stream=true]` | the 3D fold ([`super::fold3d_api`]) |
 //! | `GET /api/docs/{id}/plan?machine&material[&size][&options]` | the plan drawn: toolpaths, travel, totals |
 //! | `GET /api/docs/{id}/cut?machine&material&format[&job][&size]` | the job file `foldcam cut` writes |
 //! | `GET /api/docs/{id}/simulate?machine&material[&job][&size]` | the G-code run on the simulated machine |
@@ -28,7 +28,6 @@
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Mutex, PoisonError};
-use std::time::Duration;
 
 use axum::Json;
 use axum::Router;
@@ -46,24 +45,17 @@ use super::assets;
 use super::design_open;
 use super::document::{Document, PatternView};
 use super::edit_api;
-use super::error::{Stage, StudioError};
+use super::error::StudioError;
 use super::flat::{FlatView, flat_view};
 use super::guard::{self, Guard};
 use super::history::Versions;
 use super::machine_api;
 use super::settings::UploadedProfiles;
-use crate::check::fold3d::{BarHingeModel, FoldOptions, fold};
 use crate::check::layers::{KawasakiTolerance, LayerOptions, check_layers};
 use crate::check::{CheckOptions, check_with_frame};
 use crate::design::source::MeshUse;
 use crate::pattern::Assignment;
 use crate::pattern::edit::EditReport;
-
-/// Frames of the fold sent to the page while folding (plus the flat sheet and the settled end).
-pub const FOLD_FRAMES: usize = 40;
-
-/// Longest fold simulation the server runs for one request.
-pub const FOLD_TIME_LIMIT: Duration = Duration::from_secs(30);
 
 /// The server's state: its configuration and the open documents.
 pub struct Studio {
@@ -226,13 +218,19 @@ impl ApiError {
     }
 }
 
-impl IntoResponse for ApiError {
-    fn into_response(self) -> Response {
-        let body = match &self.detail {
+impl ApiError {
+    /// The reply's JSON: `{"error"}`, with `"stage"` and `"file"` for a [`StudioError`].
+    pub(super) fn body(&self) -> Value {
+        match &self.detail {
             Some(d) => json!({ "error": self.message, "stage": d.stage, "file": d.file }),
             None => json!({ "error": self.message }),
-        };
-        (self.status, Json(body)).into_response()
+        }
+    }
+}
+
+impl IntoResponse for ApiError {
+    fn into_response(self) -> Response {
+        (self.status, Json(self.body())).into_response()
     }
 }
 
@@ -316,7 +314,6 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/docs/{id}/snap", post(edit_api::snap_point))
         .route("/api/docs/{id}/check", get(check))
         .route("/api/docs/{id}/layers", get(layers))
-        .route("/api/docs/{id}/fold3d", get(fold3d))
         .route("/api/docs/{id}/flat", get(flat))
         .route("/api/docs/{id}/plan", get(machine_api::plan))
         .route("/api/docs/{id}/cut", get(machine_api::cut))
@@ -329,6 +326,7 @@ pub fn router(state: Arc<Studio>) -> Router {
         .route("/api/examples/{name}", post(super::start_api::open))
         .route("/api/blank", post(super::start_api::blank))
         .route("/api/docs/{id}/save", get(super::start_api::save))
+        .merge(super::fold3d_api::router())
         .merge(super::folding_api::router(Arc::clone(&state)))
         .merge(super::tessellate_api::router(Arc::clone(&state)))
         .merge(super::voxel_api::router(Arc::clone(&state)))
@@ -622,119 +620,6 @@ async fn flat(
         flat_view(&doc, q.state.unwrap_or(0), kawasaki)
             .map(Json)
             .map_err(ApiError::from)
-    })
-    .await
-}
-
-/// The fold sent to the page: triangles on model vertices and frames of positions.
-#[derive(Serialize)]
-struct FoldView {
-    /// Model vertex indices, three per triangle.
-    triangles: Vec<u32>,
-    /// Pattern face of each triangle.
-    triangle_face: Vec<usize>,
-    /// Frames from flat to the settled end (only the flat sheet for `flat=true`).
-    frames: Vec<FoldFrame>,
-    /// The simulation's report (strain, fold-angle error, crossings, how it stopped); `None`
-    /// for the flat sheet alone (`flat=true`: nothing was simulated).
-    report: Option<crate::check::fold3d::FoldReport>,
-}
-
-#[derive(Serialize)]
-struct FoldFrame {
-    /// Target at this frame, percent of every crease's fold angle.
-    percent: f64,
-    /// True for the settled end (other frames are taken while the target rises).
-    settled: bool,
-    /// x, y, z of every model vertex, in the pattern's unit.
-    positions: Vec<f32>,
-}
-
-#[derive(Deserialize)]
-struct FoldQuery {
-    /// Only the flat sheet: the model's triangles and its rest positions (z = 0), the
-    /// first frame of the fold, without simulating.
-    #[serde(default)]
-    flat: bool,
-}
-
-/// x, y, z of every position, as the page's frames hold them.
-fn frame_positions(p: &[glam::DVec3]) -> Vec<f32> {
-    p.iter()
-        .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
-        .collect()
-}
-
-/// The model's triangles and the face of each, as the page takes them.
-fn model_triangles(model: &BarHingeModel) -> (Vec<u32>, Vec<usize>) {
-    (
-        model.triangles.iter().flatten().copied().collect(),
-        model.triangle_face.iter().map(|x| x.index()).collect(),
-    )
-}
-
-async fn fold3d(
-    State(s): State<Arc<Studio>>,
-    PathId(id): PathId,
-    query: Result<Query<FoldQuery>, QueryRejection>,
-) -> ApiResult<Json<FoldView>> {
-    let Query(q) = query?;
-    let doc = s.get(id)?;
-    blocking(move || {
-        let c = doc.cleaned(true)?;
-        if q.flat {
-            // The sheet the simulation starts from ([`fold`] builds the same model).
-            let model = BarHingeModel::build(&c.pattern)
-                .map_err(|e| StudioError::about(Stage::Fold, &doc.name, e))?;
-            let (triangles, triangle_face) = model_triangles(&model);
-            return Ok(Json(FoldView {
-                triangles,
-                triangle_face,
-                frames: vec![FoldFrame {
-                    percent: 0.0,
-                    settled: true,
-                    positions: frame_positions(&model.rest),
-                }],
-                report: None,
-            }));
-        }
-        let opts = FoldOptions {
-            frames: FOLD_FRAMES,
-            max_time: FOLD_TIME_LIMIT,
-            ..FoldOptions::default()
-        };
-        let f =
-            fold(&c.pattern, &opts).map_err(|e| StudioError::about(Stage::Fold, &doc.name, e))?;
-        // Frame k of the ramp is taken at step k·every, when the target is k·every/ramp of
-        // the full fold (see `fold3d::fold_with`).
-        let ramp = opts.ramp_steps.min(opts.max_steps);
-        let every = (ramp / FOLD_FRAMES).max(1);
-        let ramp_frames = f.frames.len().saturating_sub(1);
-        let mut frames = vec![FoldFrame {
-            percent: 0.0,
-            settled: true,
-            positions: frame_positions(&f.model.rest),
-        }];
-        for (k, p) in f.frames.iter().enumerate() {
-            let last = k == ramp_frames;
-            let percent = if last {
-                opts.percent
-            } else {
-                opts.percent * (((k + 1) * every) as f64 / ramp.max(1) as f64).min(1.0)
-            };
-            frames.push(FoldFrame {
-                percent,
-                settled: last,
-                positions: frame_positions(p),
-            });
-        }
-        let (triangles, triangle_face) = model_triangles(&f.model);
-        Ok(Json(FoldView {
-            triangles,
-            triangle_face,
-            frames,
-            report: Some(f.report),
-        }))
     })
     .await
 }

@@ -34,6 +34,7 @@ pub(crate) mod document;
 mod edit_api;
 pub(crate) mod error;
 pub(crate) mod flat;
+mod fold3d_api;
 mod folding_api;
 pub(crate) mod guard;
 mod history;

@@ -335,7 +335,7 @@ fn save_bytes(doc: &Document, what: SaveAs) -> Result<Vec<u8>, StudioError> {
                 Some(f) => f,
                 None => {
                     let options = FoldOptions {
-                        max_time: super::api::FOLD_TIME_LIMIT,
+                        max_time: super::fold3d_api::FOLD_TIME_LIMIT,
                         ..FoldOptions::default()
                     };
                     fold(&c.pattern, &options)

@@ -1371,9 +1371,10 @@ fn option_placeholders_share_one_style() {
         "MM", "LEN", "DEG", "N", "SHARE", "PX", "SECONDS", "PERCENT", "CELLS", "FACES", "MIB",
         "SCALE",
     ];
-    const KINDS: [&str; 21] = [
+    const KINDS: [&str; 22] = [
         "X,Y", "OP", "FORMAT", "OUTPUT", "MATERIAL", "MACHINE", "PNG", "GIF", "SVG", "FILE", "DIR",
         "PATH", "ORIGIN", "MEANING", "VALUES", "UP", "TUCK", "SIDE", "PORT", "HOST", "LAYOUT",
+        "METHOD",
     ];
     let dir = tempfile::tempdir().unwrap();
     let commands: [&[&str]; 18] = [

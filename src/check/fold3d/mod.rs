@@ -90,10 +90,14 @@ pub struct FoldOptions {
     /// branch than with the slow ramp (the saddle example lands 2.2 % of its diagonal off its
     /// solved form instead of 1.7 %), so it is not the default.
     pub adaptive_ramp: bool,
-    /// Positions recorded during the ramp for an animation (0: none; at most [`MAX_FRAMES`]).
+    /// States recorded on the way for an animation (0: none; at most [`MAX_FRAMES`]): the
+    /// explicit run takes them while its target rises; the static solve folds in at least this
+    /// many load steps and records the end of each, settled at its target.
     pub frames: usize,
     /// Solve for static equilibrium by load steps and Levenberg–Marquardt iterations
-    /// ([`newton`]) instead of the explicit dynamics; without frames.
+    /// ([`newton`]; the default) instead of the explicit dynamics, which take over when it
+    /// does not settle on the assignment ([`FoldReport::static_solve`]). False: the explicit
+    /// dynamics alone (with [`Self::ramp_steps`], [`Self::adaptive_ramp`]).
     pub implicit: bool,
 }
 
@@ -115,7 +119,7 @@ impl Default for FoldOptions {
             max_time: Duration::from_secs(60),
             tolerance: SETTLED_RESIDUAL,
             frames: 0,
-            implicit: false,
+            implicit: true,
         }
     }
 }
@@ -269,10 +273,20 @@ pub struct Fold {
     /// The folded form: model vertices at their 3D positions, the pattern's faces and edges
     /// on them (edges with the reached fold angles).
     pub folded: FoldedState,
-    /// Positions recorded during the ramp (see [`FoldOptions::frames`]), then the end.
-    pub frames: Vec<Vec<DVec3>>,
+    /// States recorded on the way (see [`FoldOptions::frames`]), from the least folded; the
+    /// last is the end ([`Self::folded`]'s positions, at [`FoldReport::percent`]).
+    pub frames: Vec<Frame>,
     /// What was reached.
     pub report: FoldReport,
+}
+
+/// A state of the fold on its way to the end.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// The target at this state, percent of every crease's fold angle.
+    pub percent: f64,
+    /// Every model vertex, in the pattern's unit.
+    pub positions: Vec<DVec3>,
 }
 
 impl Fold {
@@ -306,6 +320,29 @@ pub fn fold_with(
     opts: &FoldOptions,
     mut observe: impl FnMut(&BarHingeModel, &[DVec3]),
 ) -> Result<Fold, FoldError> {
+    fold_observed(cp, opts, &mut observe, &mut |_| {})
+}
+
+/// [`fold`], handing every frame to `on_frame` as soon as it is recorded (see
+/// [`FoldOptions::frames`]; the end is not handed, it is the result's), so that a viewer can
+/// show the fold while it runs. When the static solve is not used, the explicit run's frames
+/// follow its load steps' and start again from flat; the result's [`Fold::frames`] are those
+/// of the run that produced it.
+pub fn fold_streamed(
+    cp: &CreasePattern,
+    opts: &FoldOptions,
+    mut on_frame: impl FnMut(&Frame),
+) -> Result<Fold, FoldError> {
+    fold_observed(cp, opts, &mut |_, _| {}, &mut on_frame)
+}
+
+/// [`fold_with`] and [`fold_streamed`] in one.
+fn fold_observed(
+    cp: &CreasePattern,
+    opts: &FoldOptions,
+    observe: &mut dyn FnMut(&BarHingeModel, &[DVec3]),
+    on_frame: &mut dyn FnMut(&Frame),
+) -> Result<Fold, FoldError> {
     opts.validate()?;
     let start = Stopwatch::start();
     let model = BarHingeModel::build(cp)?;
@@ -316,10 +353,29 @@ pub fn fold_with(
     // The static solve first when asked; the explicit dynamics when it is not asked, or
     // when it does not settle or settles with creases against their assignment.
     let mut static_solve = None;
+    let mut load_frames = Vec::new();
     let implicit = if opts.implicit {
         let mut solver = Solver::new(&model, opts);
         let late = || start.elapsed() > opts.max_time;
-        let settled = newton::settle(&mut solver, fraction, opts.tolerance, &late);
+        let mut at_load = |reached: f64, x: &[DVec3]| {
+            observe(&model, x);
+            if opts.frames > 0 {
+                let frame = Frame {
+                    percent: 100.0 * reached,
+                    positions: x.to_vec(),
+                };
+                on_frame(&frame);
+                load_frames.push(frame);
+            }
+        };
+        let settled = newton::settle(
+            &mut solver,
+            fraction,
+            opts.frames,
+            opts.tolerance,
+            &late,
+            &mut at_load,
+        );
         let wrong = wrong_signs(&model, &solver.angles(), fraction);
         let used = settled.is_some_and(|s| s.converged) && wrong == 0 && solver.finite();
         static_solve = Some(StaticSolve {
@@ -334,14 +390,14 @@ pub fn fold_with(
     };
     let (mut solver, stop, frames) = if let Some(solver) = implicit {
         observe(&model, &solver.positions);
-        (solver, Stop::Settled, Vec::new())
+        (solver, Stop::Settled, load_frames)
     } else {
         loop {
             let budget = Budget {
                 steps: opts.max_steps - total_steps,
                 start: &start,
             };
-            let (solver, steps, stop, frames) = run(&model, opts, ramp, &budget, &mut observe);
+            let (solver, steps, stop, frames) = run(&model, opts, ramp, &budget, observe, on_frame);
             total_steps += steps;
             let wrong = wrong_signs(&model, &solver.angles(), fraction);
             let room = opts.max_steps - total_steps > ramp * SLOWER_RAMP_FACTOR
@@ -377,7 +433,10 @@ pub fn fold_with(
     );
     report.slower_ramps = slower_ramps;
     report.static_solve = static_solve;
-    frames.push(positions.clone());
+    frames.push(Frame {
+        percent: opts.percent,
+        positions: positions.clone(),
+    });
     let mut edges = model.edges.clone();
     for (e, a) in report.fold_angles.iter().enumerate() {
         if let Some(a) = a {
@@ -429,8 +488,9 @@ fn run<'m>(
     opts: &FoldOptions,
     ramp: usize,
     budget: &Budget<'_>,
-    observe: &mut impl FnMut(&BarHingeModel, &[DVec3]),
-) -> (Solver<'m>, usize, Stop, Vec<Vec<DVec3>>) {
+    observe: &mut dyn FnMut(&BarHingeModel, &[DVec3]),
+    on_frame: &mut dyn FnMut(&Frame),
+) -> (Solver<'m>, usize, Stop, Vec<Frame>) {
     let fraction = opts.percent / 100.0;
     let mut solver = Solver::new(model, opts);
     let mut frames = Vec::new();
@@ -472,7 +532,12 @@ fn run<'m>(
         observe(model, &solver.positions);
         if ramping {
             if ramp > 0 && frames.len() < opts.frames && progress >= frame_at(frames.len() + 1) {
-                frames.push(solver.positions.clone());
+                let frame = Frame {
+                    percent: opts.percent * progress,
+                    positions: solver.positions.clone(),
+                };
+                on_frame(&frame);
+                frames.push(frame);
             }
             // Faster while the sheet keeps up with the target, slower when it lags.
             rate = if solver.step_force() < RAMP_FORCE {

@@ -316,30 +316,42 @@ pub(super) struct Settled {
     pub converged: bool,
 }
 
-/// Folds the solver's model to `fraction` of its targets by load steps (see the module docs),
-/// leaving the solver at the result. `None` when the factorization cannot be set up.
+/// Folds the solver's model to `fraction` of its targets by `loads` load steps (at least
+/// [`LOAD_STEPS`]; see the module docs), leaving the solver at the result; `at_load` sees the
+/// fraction and the positions at the end of every load step but the last. `None` when the
+/// factorization cannot be set up.
 pub(super) fn settle(
     s: &mut Solver<'_>,
     fraction: f64,
+    loads: usize,
     tolerance: f64,
     out_of_time: &dyn Fn() -> bool,
+    at_load: &mut dyn FnMut(f64, &[DVec3]),
 ) -> Option<Settled> {
+    let loads = loads.max(LOAD_STEPS);
     let pattern = Pattern::new(s.model)?;
     let n3 = 3 * s.positions.len();
     let mut values = vec![0.0; pattern.symbolic.row_idx().len()];
     let (mut iterations, mut factorizations) = (0, 0);
     // Out of the flat sheet with the explicit dynamics: at flat every bar's stretch is of
     // second order in the lift, which the Gauss–Newton model does not see.
-    let start = fraction / LOAD_STEPS as f64;
+    let start = fraction / loads as f64;
     for k in 1..=START_STEPS {
         s.set_fraction(start * k as f64 / START_STEPS as f64);
         s.step();
     }
     let (angles, turns) = s.hinge_state();
     let mut now = evaluate(s, &s.positions, &angles, &turns);
-    for load in 1..=LOAD_STEPS {
-        s.set_fraction(fraction * load as f64 / LOAD_STEPS as f64);
-        let last = load == LOAD_STEPS;
+    let mut mu = MU_START;
+    // The factor in use and whether it was made at the current positions: a stale one keeps
+    // serving while its steps lower the energy (chord iterations), across load steps too
+    // (`JᵀJ` depends on the positions, not on the target), and is made anew where they stop.
+    let mut factor: Option<Llt<usize, f64>> = None;
+    let mut fresh = false;
+    for load in 1..=loads {
+        let reached = fraction * load as f64 / loads as f64;
+        s.set_fraction(reached);
+        let last = load == loads;
         // The same positions and angles, energy and forces at the new target.
         now = evaluate(s, &s.positions, &now.angles, &now.turns);
         let (goal, cap) = if last {
@@ -347,12 +359,6 @@ pub(super) fn settle(
         } else {
             ((STEP_REDUCTION * now.force).max(tolerance), STEP_ITERATIONS)
         };
-        let mut mu = MU_START;
-        // The factor in use and whether it was made at the current positions: a stale one
-        // keeps serving while its steps lower the energy (chord iterations), and is made
-        // anew where they stop.
-        let mut factor: Option<Llt<usize, f64>> = None;
-        let mut fresh = false;
         for _ in 0..cap {
             if now.force < goal || out_of_time() {
                 break;
@@ -399,6 +405,9 @@ pub(super) fn settle(
                 }
                 factor = None;
             }
+        }
+        if !last {
+            at_load(reached, &s.positions);
         }
     }
     s.set_hinge_state(&now.angles, &now.turns);
