@@ -215,7 +215,9 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
         r.residual
     );
     if let Some(solve) = &r.static_solve {
-        let how = if solve.used {
+        let how = if solve.used && r.stop == Stop::TimeCap {
+            "stopped by the time cap (its state is the result; raise --time-limit)"
+        } else if solve.used {
             "settled"
         } else {
             "did not settle within the tolerance with every crease on its side: the explicit run \

@@ -1031,3 +1031,33 @@ fn a_static_solve_that_does_not_settle_hands_over_to_the_explicit_run() {
     assert_eq!(f.report.stop, plain.report.stop);
     assert_eq!(f.report.max_strain_face, plain.report.max_strain_face);
 }
+
+/// A static solve stopped by the time cap keeps its state (lifted out of flat on the
+/// assignment's side, short of its target) and says so, instead of handing over to an
+/// explicit run that would start from flat with no time left.
+#[test]
+fn a_static_solve_stopped_by_the_time_cap_keeps_its_state() {
+    let (_, cp) = miura(6, 6);
+    let opts = FoldOptions {
+        percent: 90.0,
+        max_time: std::time::Duration::ZERO,
+        ..FoldOptions::default()
+    };
+    let f = fold(&cp, &opts).unwrap();
+    let r = &f.report;
+    assert_eq!(r.stop, Stop::TimeCap);
+    assert!(
+        r.static_solve.is_some_and(|s| s.used),
+        "{:?}",
+        r.static_solve
+    );
+    // Only the explicit lift out of flat ran.
+    assert_eq!(r.steps, foldcam::check::fold3d::STATIC_START_STEPS);
+    assert!(r.slower_ramps.is_empty());
+    assert!(r.wrong_sign.is_empty(), "{:?}", r.wrong_sign);
+    let height = (f.folded.positions.iter())
+        .map(|p| p.z.abs())
+        .fold(0.0, f64::max);
+    assert!(height > 0.0, "still flat");
+    assert!(r.max_angle_error_deg > 10.0, "{}", r.max_angle_error_deg);
+}

@@ -248,8 +248,9 @@ pub struct StaticSolve {
     pub linear_solves: usize,
     /// Sparse factorizations made.
     pub factorizations: usize,
-    /// Whether its result is the report's: it settled within the tolerance with every crease
-    /// on its assignment's side; otherwise the explicit dynamics ran from flat after it.
+    /// Whether its result is the report's: it settled within the tolerance, or the time cap
+    /// stopped it ([`Stop::TimeCap`]), with every crease on its assignment's side; otherwise
+    /// the explicit dynamics ran from flat after it.
     pub used: bool,
 }
 
@@ -377,20 +378,29 @@ fn fold_observed(
             &mut at_load,
         );
         let wrong = wrong_signs(&model, &solver.angles(), fraction);
-        let used = settled.is_some_and(|s| s.converged) && wrong == 0 && solver.finite();
+        let converged = settled.is_some_and(|s| s.converged);
+        // Stopped by the time cap on the assignment's side: its state stands, as the
+        // explicit run's would at the cap (that run would start from flat with no time left).
+        let out_of_time = settled.is_some() && !converged && late();
+        let used = (converged || out_of_time) && wrong == 0 && solver.finite();
         static_solve = Some(StaticSolve {
             linear_solves: settled.map_or(0, |s| s.iterations),
             factorizations: settled.map_or(0, |s| s.factorizations),
             used,
         });
         total_steps = newton::START_STEPS;
-        used.then_some(solver)
+        let stop = if converged {
+            Stop::Settled
+        } else {
+            Stop::TimeCap
+        };
+        used.then_some((solver, stop))
     } else {
         None
     };
-    let (mut solver, stop, frames) = if let Some(solver) = implicit {
+    let (mut solver, stop, frames) = if let Some((solver, stop)) = implicit {
         observe(&model, &solver.positions);
-        (solver, Stop::Settled, load_frames)
+        (solver, stop, load_frames)
     } else {
         loop {
             let budget = Budget {
