@@ -60,7 +60,7 @@ fn main() {
         println!(
             "{:>8}: {} triangles, {:.2} s, {work}, {:?}, residual {:.1e}, strain {:.2e}, angle \
              error {:.3} deg, wrong sign {}, crossing faces {}, {} frames",
-            if implicit { "implicit" } else { "explicit" },
+            if implicit { "static" } else { "explicit" },
             r.triangles,
             r.seconds,
             r.stop,

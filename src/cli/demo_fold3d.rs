@@ -64,11 +64,11 @@ pub fn miura(dir: &Path, index: &mut super::demo_jobs::DemoIndex, width: u32) ->
     }
     let r = &f.report;
     outln!(
-        "\n{name}: miura-ori.svg read back and folded to {PERCENT}% in 3D ({} triangles, {} \
-         steps, {:.2} s): largest bar strain {:.3}%, largest fold-angle error {:.1} deg, faces \
-         {}; {name}.png and {name}.gif show it",
+        "\n{name}: miura-ori.svg read back and folded to {PERCENT}% in 3D ({} triangles, {}, \
+         {:.2} s): largest bar strain {:.3}%, largest fold-angle error {:.1} deg, faces {}; \
+         {name}.png and {name}.gif show it",
         r.triangles,
-        r.steps,
+        r.produced(),
         r.seconds,
         100.0 * r.max_strain,
         r.max_angle_error_deg,

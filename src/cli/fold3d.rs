@@ -206,11 +206,11 @@ fn print_report(name: &str, f: &Fold, unit: &str) {
         Stop::Diverged => "NOT settled: the simulation diverged (last finite state kept)".into(),
     };
     outln!(
-        "{name}: folded to {}% with {} triangles in {} steps ({:.2} s), {stop}; largest \
-         leftover force {:.1e} of a bar's stiffness EA (Young's modulus × cross-section)",
+        "{name}: folded to {}% with {} triangles ({}, {:.2} s), {stop}; largest leftover \
+         force {:.1e} of a bar's stiffness EA (Young's modulus × cross-section)",
         r.percent,
         r.triangles,
-        r.steps,
+        r.produced(),
         r.seconds,
         r.residual
     );

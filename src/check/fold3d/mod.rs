@@ -241,6 +241,44 @@ pub struct FoldReport {
     pub static_solve: Option<StaticSolve>,
 }
 
+/// Which method produced a report's result, and its work.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Produced {
+    /// The static solve ([`newton`]).
+    StaticSolve {
+        /// Linear solves made.
+        linear_solves: usize,
+    },
+    /// The explicit dynamics (after a static solve that was not used, if any).
+    Explicit {
+        /// Steps taken in all.
+        steps: usize,
+    },
+}
+
+impl std::fmt::Display for Produced {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Produced::StaticSolve { linear_solves } => {
+                write!(f, "static solve, {linear_solves} linear solves")
+            }
+            Produced::Explicit { steps } => write!(f, "explicit run, {steps} steps"),
+        }
+    }
+}
+
+impl FoldReport {
+    /// Which method produced the result ([`Self::static_solve`] says whether it was used).
+    pub fn produced(&self) -> Produced {
+        match self.static_solve {
+            Some(s) if s.used => Produced::StaticSolve {
+                linear_solves: s.linear_solves,
+            },
+            _ => Produced::Explicit { steps: self.steps },
+        }
+    }
+}
+
 /// How the static solve ([`newton`]) went.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct StaticSolve {
