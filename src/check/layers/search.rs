@@ -226,14 +226,20 @@ impl<'a> Engine<'a> {
 
     /// The constraints on variable `v`, transitivity included.
     fn constraints_of(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        (self.general_of(v).iter().copied()).chain(self.transit_of(v).iter().map(|t| t.constraint))
+    }
+
+    /// The constraints of [`System::constraints`] on variable `v` (no transitivity).
+    fn general_of(&self, v: u32) -> &[u32] {
         let v = v as usize;
-        let general = &self.incident[self.offsets[v] as usize..self.offsets[v + 1] as usize];
-        let transit =
-            &self.transit[self.transit_offsets[v] as usize..self.transit_offsets[v + 1] as usize];
-        general
-            .iter()
-            .copied()
-            .chain(transit.iter().map(|t| t.constraint))
+        &self.incident[self.offsets[v] as usize..self.offsets[v + 1] as usize]
+    }
+
+    /// The transitivity constraints on variable `v`, seen from it: their other two variables
+    /// are read here, without the triple (tens of millions of them, read out of order).
+    fn transit_of(&self, v: u32) -> &[Transit] {
+        let v = v as usize;
+        &self.transit[self.transit_offsets[v] as usize..self.transit_offsets[v + 1] as usize]
     }
 
     /// How many constraints are on variable `v`.
@@ -596,8 +602,28 @@ impl<'a> Engine<'a> {
             while k < members.len() {
                 let v = members[k];
                 k += 1;
-                let on_v: Vec<u32> = self.constraints_of(v).collect();
-                for c in on_v {
+                // A transitivity constraint ("not all equal") on the unset `v` binds exactly
+                // when another of its variables is unset too: 3 of the 4 values of two unset
+                // ones are left, 6 of 8 of three. So its unset neighbours join, unread.
+                let (lo, hi) = (
+                    self.transit_offsets[v as usize] as usize,
+                    self.transit_offsets[v as usize + 1] as usize,
+                );
+                for i in lo..hi {
+                    for l in self.transit[i].others {
+                        let w = (l >> 1) as usize;
+                        if self.stamp[w] == inside {
+                            self.stamp[w] = done;
+                            members.push(w as u32);
+                        }
+                    }
+                }
+                let (lo, hi) = (
+                    self.offsets[v as usize] as usize,
+                    self.offsets[v as usize + 1] as usize,
+                );
+                for j in lo..hi {
+                    let c = self.incident[j];
                     let (_, lits, len) = self.sys.lits(c);
                     if !lits[..len]
                         .iter()
@@ -703,9 +729,19 @@ impl<'a> Engine<'a> {
         };
         for &v in comp {
             add(u64::from(v));
-            for c in self.constraints_of(v) {
+            for &c in self.general_of(v) {
                 let (_, lits, len) = self.sys.lits(c);
                 for &l in &lits[..len] {
+                    let x = self.value[(l >> 1) as usize];
+                    if x != -1 {
+                        add((1 << 40) | u64::from((l & !1) | x as u32));
+                    }
+                }
+            }
+            // A transitivity triple's literals are its variables unnegated, `v` unset: the
+            // same entries from its other two variables, without reading the triple.
+            for t in self.transit_of(v) {
+                for l in t.others {
                     let x = self.value[(l >> 1) as usize];
                     if x != -1 {
                         add((1 << 40) | u64::from((l & !1) | x as u32));
