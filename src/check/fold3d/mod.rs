@@ -15,10 +15,11 @@
 //! residual force falls below [`FoldOptions::tolerance`], or [`FoldOptions::max_steps`] or
 //! [`FoldOptions::max_time`] stop it ([`Stop`]).
 //!
-//! **Static solve** ([`newton`], [`FoldOptions::implicit`]). The same equilibrium found
-//! directly: load steps of sparse Levenberg–Marquardt iterations on the model's energy, the
-//! explicit run taking over when it does not settle on the assignment
-//! ([`FoldReport::static_solve`]).
+//! **Static solve** ([`newton`], [`FoldOptions::implicit`], the default). The same
+//! equilibrium found directly: load steps of sparse Levenberg–Marquardt iterations on the
+//! model's energy, the explicit run taking over when it does not settle on the assignment
+//! ([`FoldReport::static_solve`], [`FoldReport::produced`]). Each load step can be a frame,
+//! handed over as soon as it is solved ([`fold_streamed`]).
 //!
 //! **Report** ([`FoldReport`]). Bar strain `(|d| − L)/L` per face (the largest over the bars
 //! of its triangles) and where it is largest; the reached fold angle of every crease and the
