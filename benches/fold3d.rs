@@ -11,25 +11,17 @@ use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use foldcam::check::fold3d::Solver;
 use foldcam::check::fold3d::{BarHingeModel, FoldOptions, fold};
 use foldcam::design::classic::MiuraOri;
-use foldcam::pattern::{CreasePattern, PlanarizeOptions, planarize};
+use foldcam::pattern::CreasePattern;
 
+/// A Miura-ori sheet; `build` cleans it and traces its faces, as the simulation needs.
 fn miura(columns: usize, rows: usize) -> CreasePattern {
-    let mut cp = MiuraOri {
+    MiuraOri {
         columns,
         rows,
         ..MiuraOri::default()
     }
     .build()
-    .expect("miura");
-    planarize(
-        &mut cp,
-        &PlanarizeOptions {
-            faces: true,
-            ..PlanarizeOptions::default()
-        },
-    )
-    .expect("planarize");
-    cp
+    .expect("miura")
 }
 
 fn bench(c: &mut Criterion) {

@@ -10,7 +10,6 @@
 
 use foldcam::check::fold3d::{FoldOptions, fold};
 use foldcam::design::classic::MiuraOri;
-use foldcam::pattern::{PlanarizeOptions, planarize};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -21,21 +20,14 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(FoldOptions::default().tolerance);
     let frames: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(0);
-    let mut cp = MiuraOri {
+    // `build` cleans the drawing and traces its faces, as the simulation needs.
+    let cp = MiuraOri {
         columns: side,
         rows: side,
         ..MiuraOri::default()
     }
     .build()
     .expect("miura");
-    planarize(
-        &mut cp,
-        &PlanarizeOptions {
-            faces: true,
-            ..PlanarizeOptions::default()
-        },
-    )
-    .expect("planarize");
     let mut forms = Vec::new();
     for implicit in [false, true] {
         let opts = FoldOptions {

@@ -4,10 +4,9 @@
  * change something without it (other web pages cannot read the page to learn it). */
 const TOKEN = document.querySelector('meta[name="foldcam-token"]')?.content ?? '';
 
-/** Fetches JSON with the page's token; throws an Error carrying the server's message. */
-export async function call(url, options = {}) {
-  const headers = { ...(options.headers || {}), 'x-foldcam-token': TOKEN };
-  const response = await fetch(url, { ...options, headers });
+/** A whole JSON reply's body; throws an Error carrying the server's message when the reply
+ * is a refusal or not JSON. */
+async function jsonBody(url, response) {
   const text = await response.text();
   let body;
   try {
@@ -19,20 +18,17 @@ export async function call(url, options = {}) {
   return body;
 }
 
+/** Fetches JSON with the page's token; throws an Error carrying the server's message. */
+export async function call(url, options = {}) {
+  const headers = { ...(options.headers || {}), 'x-foldcam-token': TOKEN };
+  return jsonBody(url, await fetch(url, { ...options, headers }));
+}
+
 /** Reads a newline-delimited JSON reply (the API's `stream=true` routes), calling `onLine`
  * with each line as it arrives; resolves when the reply ends. A refusal throws as `call`'s. */
 export async function stream(url, onLine) {
   const response = await fetch(url, { headers: { 'x-foldcam-token': TOKEN } });
-  if (!response.ok) {
-    const text = await response.text();
-    let body;
-    try {
-      body = JSON.parse(text);
-    } catch {
-      throw new Error(`${url}: ${response.status} ${text.slice(0, 200)}`);
-    }
-    throw new Error(body.error || `${url}: ${response.status}`);
-  }
+  if (!response.ok) await jsonBody(url, response);
   const reader = response.body.getReader();
   const decoder = new TextDecoder();
   let buffered = '';

@@ -64,8 +64,9 @@ pub(super) struct FoldView {
 pub(super) struct FoldFrame {
     /// Target at this frame, percent of every crease's fold angle.
     percent: f64,
-    /// True for a settled state (the flat sheet, the static solve's load steps, the end);
-    /// false for the explicit run's frames, taken while the target rises.
+    /// True for a settled state: the flat sheet, and each [`Frame::settled`] (the static
+    /// solve's load steps, a settled end); false for the explicit run's frames, taken while
+    /// the target rises.
     settled: bool,
     /// x, y, z of every model vertex, in the pattern's unit.
     positions: Vec<f32>,
@@ -136,34 +137,20 @@ fn fold_view(doc: &Document, on_frame: &mut dyn FnMut(&FoldFrame)) -> ApiResult<
         implicit: true,
         ..FoldOptions::default()
     };
-    let settled = opts.implicit;
-    let page_frame = |frame: &Frame, settled: bool| FoldFrame {
+    let page_frame = |frame: &Frame| FoldFrame {
         percent: frame.percent,
-        settled,
+        settled: frame.settled,
         positions: frame_positions(&frame.positions),
     };
-    // A streamed frame is settled when the static solve made it (its load steps come first;
-    // the explicit run's restart from flat shows as a frame below the last one).
-    let mut last_percent = f64::NEG_INFINITY;
-    let f = fold_streamed(&c.pattern, &opts, |frame| {
-        let from_static = settled && frame.percent > last_percent;
-        last_percent = if from_static {
-            frame.percent
-        } else {
-            f64::INFINITY
-        };
-        on_frame(&page_frame(frame, from_static));
-    })
-    .map_err(|e| StudioError::about(Stage::Fold, &doc.name, e))?;
-    let used = f.report.static_solve.is_some_and(|s| s.used);
-    let end = f.frames.len().saturating_sub(1);
+    let f = fold_streamed(&c.pattern, &opts, |frame| on_frame(&page_frame(frame)))
+        .map_err(|e| StudioError::about(Stage::Fold, &doc.name, e))?;
     let flat = FoldFrame {
         percent: 0.0,
         settled: true,
         positions: frame_positions(&f.model.rest),
     };
     let frames = std::iter::once(flat)
-        .chain((f.frames.iter().enumerate()).map(|(k, frame)| page_frame(frame, used || k == end)))
+        .chain(f.frames.iter().map(page_frame))
         .collect();
     let (triangles, triangle_face) = model_triangles(&f.model);
     Ok(FoldView {

@@ -859,8 +859,8 @@ fn faces_pierced(cp: &CreasePattern, x: &[DVec3], depth: f64) -> Vec<(usize, usi
 #[test]
 fn a_fold_past_flat_is_reported_and_written_within_folds_range() {
     let cp = miura_one_kind_per_row();
-    // The explicit dynamics overshoot this sheet's creases past flat; the static solve, a
-    // minimum of the energy, does not.
+    // The explicit dynamics overshoot this sheet's creases past flat, which is what is
+    // reported here.
     let opts = FoldOptions {
         percent: 100.0,
         implicit: false,

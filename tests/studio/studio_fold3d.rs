@@ -26,21 +26,28 @@ fn positions(frame: &Value) -> Vec<f64> {
         .collect()
 }
 
-#[test]
-fn the_flat_sheet_comes_first_and_the_fold_starts_from_it() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = foldcam(&["generate", "miura", "-o", "miura.fold"], dir.path());
+/// A server with `foldcam generate miura`'s pattern uploaded: the server, the document id and
+/// the FOLD file as JSON.
+fn open_miura(dir: &std::path::Path) -> (Server, u64, Value) {
+    let out = foldcam(&["generate", "miura", "-o", "miura.fold"], dir);
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let bytes = std::fs::read(dir.path().join("miura.fold")).unwrap();
+    let bytes = std::fs::read(dir.join("miura.fold")).unwrap();
     let file: Value = serde_json::from_slice(&bytes).unwrap();
-    let server = Server::start(&[], dir.path());
+    let server = Server::start(&[], dir);
     let (status, opened) = server.post_json("/api/upload?name=miura.fold", &bytes);
     assert_eq!(status, 200, "{opened}");
     let id = opened["id"].as_u64().unwrap();
+    (server, id, file)
+}
+
+#[test]
+fn the_flat_sheet_comes_first_and_the_fold_starts_from_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let (server, id, file) = open_miura(dir.path());
 
     // The flat sheet: one frame at 0 %, no simulation report, and every vertex where the
     // FOLD file puts it, with z = 0 (a Miura-ori has no cuts: one model vertex per vertex).
@@ -100,14 +107,7 @@ fn the_flat_sheet_comes_first_and_the_fold_starts_from_it() {
 #[test]
 fn a_streamed_fold_sends_its_frames_as_lines_then_the_whole_fold() {
     let dir = tempfile::tempdir().unwrap();
-    let out = foldcam(&["generate", "miura", "-o", "miura.fold"], dir.path());
-    assert!(out.status.success());
-    let bytes = std::fs::read(dir.path().join("miura.fold")).unwrap();
-    let file: Value = serde_json::from_slice(&bytes).unwrap();
-    let server = Server::start(&[], dir.path());
-    let (status, opened) = server.post_json("/api/upload?name=miura.fold", &bytes);
-    assert_eq!(status, 200, "{opened}");
-    let id = opened["id"].as_u64().unwrap();
+    let (server, id, file) = open_miura(dir.path());
 
     let (status, body) = server.get(&format!("/api/docs/{id}/fold3d?stream=true"));
     assert_eq!(status, 200, "{}", String::from_utf8_lossy(&body));

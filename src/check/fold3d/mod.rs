@@ -325,6 +325,10 @@ pub struct Fold {
 pub struct Frame {
     /// The target at this state, percent of every crease's fold angle.
     pub percent: f64,
+    /// Solved to equilibrium at [`Self::percent`]: the static solve's load steps, and an end
+    /// that settled; false for the explicit run's frames, taken while its target rises, and
+    /// for an end a cap stopped.
+    pub settled: bool,
     /// Every model vertex, in the pattern's unit.
     pub positions: Vec<DVec3>,
 }
@@ -402,6 +406,7 @@ fn fold_observed(
             if opts.frames > 0 {
                 let frame = Frame {
                     percent: 100.0 * reached,
+                    settled: true,
                     positions: x.to_vec(),
                 };
                 on_frame(&frame);
@@ -484,6 +489,7 @@ fn fold_observed(
     report.static_solve = static_solve;
     frames.push(Frame {
         percent: opts.percent,
+        settled: stop == Stop::Settled,
         positions: positions.clone(),
     });
     let mut edges = model.edges.clone();
@@ -583,6 +589,7 @@ fn run<'m>(
             if ramp > 0 && frames.len() < opts.frames && progress >= frame_at(frames.len() + 1) {
                 let frame = Frame {
                     percent: opts.percent * progress,
+                    settled: false,
                     positions: solver.positions.clone(),
                 };
                 on_frame(&frame);

@@ -224,11 +224,6 @@ impl<'a> Engine<'a> {
         self.timed_out
     }
 
-    /// The constraints on variable `v`, transitivity included.
-    fn constraints_of(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
-        (self.general_of(v).iter().copied()).chain(self.transit_of(v).iter().map(|t| t.constraint))
-    }
-
     /// The constraints of [`System::constraints`] on variable `v` (no transitivity).
     fn general_of(&self, v: u32) -> &[u32] {
         let v = v as usize;
@@ -256,12 +251,17 @@ impl<'a> Engine<'a> {
         v: u32,
         binding: &'s [bool],
     ) -> impl Iterator<Item = u32> + 's {
-        self.constraints_of(v)
-            .filter(move |&c| binding[c as usize])
-            .flat_map(move |c| {
+        let general = (self.general_of(v).iter())
+            .filter(move |&&c| binding[c as usize])
+            .flat_map(move |&c| {
                 let (_, lits, len) = self.sys.lits(c);
                 (0..len).map(move |i| lits[i] >> 1)
-            })
+            });
+        // A transitivity constraint's variables from `v`'s own rows (see `transit_of`).
+        let transit = (self.transit_of(v).iter())
+            .filter(move |t| binding[t.constraint as usize])
+            .flat_map(move |t| [v, t.others[0] >> 1, t.others[1] >> 1]);
+        general.chain(transit)
     }
 
     fn filter(&self, c: u32) -> Filtered {
